@@ -1,0 +1,114 @@
+//! `zcheck derive`: a method's derivation as text, JSON or LaTeX.
+
+use std::process::ExitCode;
+
+use poly::{Derivation, Poly};
+use serde_json::json;
+
+/// Output format of `zcheck derive`.
+#[derive(Clone, Copy, clap::ValueEnum)]
+pub enum Format {
+    Text,
+    Json,
+    Latex,
+}
+
+/// Arguments of `zcheck derive`.
+#[derive(clap::Args)]
+pub struct Args {
+    /// A built-in method name or a path to a `.zm` file.
+    pub method: String,
+    #[arg(long, value_enum, default_value = "text")]
+    pub format: Format,
+}
+
+pub fn run(args: Args) -> anyhow::Result<ExitCode> {
+    let method = check::load::load_method(&args.method)?;
+    let d = poly::derive(&method)?;
+    let out = match args.format {
+        Format::Text => text(&d),
+        Format::Json => serde_json::to_string_pretty(&to_json(&d))? + "\n",
+        Format::Latex => latex(&d),
+    };
+    print!("{out}");
+    Ok(ExitCode::SUCCESS)
+}
+
+/// The JSON document of a derivation (`routes_agree` is true: [`poly::derive`]
+/// refuses to return a derivation whose routes disagree).
+pub fn to_json(d: &Derivation) -> serde_json::Value {
+    let m = &d.method;
+    let rows = |mat: &poly::PolyMatrix, f: &dyn Fn(&Poly) -> String| -> Vec<Vec<String>> {
+        (0..mat.rows()).map(|i| mat.row(i).iter().map(f).collect()).collect()
+    };
+    let mut v = json!({
+        "method": m.name(),
+        "state": m.state(),
+        "params": m.params().iter().map(|p| p.name()).collect::<Vec<_>>(),
+        "order": m.order(),
+        "slots": m.slots().iter().map(|&(v, l)| m.operand_name(poly::Operand::Start { var: v, lag: l })).collect::<Vec<_>>(),
+        "program": m.to_string(),
+        "z_matrix": rows(&d.z_matrix, &Derivation::z_entry_string),
+        "transition_matrix": rows(&d.transition_matrix, &|p| p.to_string()),
+        "charpoly": d.charpoly.to_string(),
+        "charpoly_coeffs": d.coeffs().iter().map(ToString::to_string).collect::<Vec<_>>(),
+        "routes_agree": true,
+    });
+    if let Some((p, q)) = d.p_q() {
+        v["p"] = json!(p.to_string());
+        v["q"] = json!(q.to_string());
+    }
+    v
+}
+
+/// The human-readable derivation.
+pub fn text(d: &Derivation) -> String {
+    use std::fmt::Write;
+    let m = &d.method;
+    let mut s = String::new();
+    let _ = writeln!(s, "method {}   state ({})   order {}", m.name(), m.state().join(", "), m.order());
+    let _ = writeln!(s, "\nlowered step (%k = value of assignment k; bare names = start of step):");
+    for line in m.to_string().lines().skip(3) {
+        let _ = writeln!(s, "  {line}");
+    }
+    let _ = writeln!(s, "\nM(z), one equation per assignment:");
+    for i in 0..d.z_matrix.rows() {
+        let row: Vec<String> = d.z_matrix.row(i).iter().map(Derivation::z_entry_string).collect();
+        let _ = writeln!(s, "  [{}]", row.join(", "));
+    }
+    let slots: Vec<String> = m
+        .slots()
+        .iter()
+        .map(|&(v, l)| m.operand_name(poly::Operand::Start { var: v, lag: l }))
+        .collect();
+    let _ = writeln!(s, "\nP, on ({}):", slots.join(", "));
+    for i in 0..d.transition_matrix.rows() {
+        let row: Vec<String> = d.transition_matrix.row(i).iter().map(ToString::to_string).collect();
+        let _ = writeln!(s, "  [{}]", row.join(", "));
+    }
+    let _ = writeln!(s, "\nchi(z) = {}", d.charpoly);
+    if let Some((p, q)) = d.p_q() {
+        let _ = writeln!(s, "       = z^2 - 2*p*z + q   with p = {p},  q = {q}");
+    }
+    let _ = writeln!(s, "routes agree: z^N det M(1/z) = det(zI - P)");
+    s
+}
+
+/// LaTeX source of the derivation.
+pub fn latex(d: &Derivation) -> String {
+    use std::fmt::Write;
+    let mat = |m: &poly::PolyMatrix, f: &dyn Fn(&Poly) -> String| -> String {
+        let rows: Vec<String> =
+            (0..m.rows()).map(|i| m.row(i).iter().map(f).collect::<Vec<_>>().join(" & ")).collect();
+        format!("\\begin{{pmatrix}} {} \\end{{pmatrix}}", rows.join(" \\\\ "))
+    };
+    let mut s = String::new();
+    let _ = writeln!(s, "% {}", d.method.name());
+    let _ = writeln!(s, "M(z) = {}", mat(&d.z_matrix, &Derivation::z_entry_latex));
+    let _ = writeln!(s, "\\mathbf{{P}} = {}", mat(&d.transition_matrix, &|p| p.latex()));
+    let _ = writeln!(s, "\\det(zI - \\mathbf{{P}}) = {} = 0", d.charpoly.latex());
+    if let Some((p, q)) = d.p_q() {
+        let _ = writeln!(s, "p = {}, \\quad q = {}", p.latex(), q.latex());
+    }
+    s
+}

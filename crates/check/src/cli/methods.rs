@@ -1,0 +1,19 @@
+//! `zcheck methods`: the built-in methods, with their order and parameters.
+
+use std::process::ExitCode;
+
+/// Arguments of `zcheck methods`.
+#[derive(clap::Args)]
+pub struct Args {}
+
+pub fn run(_: Args) -> anyhow::Result<ExitCode> {
+    println!("{:<24} {:>5}  {:<8} {}", "method", "order", "params", "first comment line");
+    for name in poly::builtin_names() {
+        let m = poly::builtin(name)?;
+        let src = poly::builtin_source(name).unwrap_or_default();
+        let about = src.lines().next().unwrap_or("").trim_start_matches('#').trim();
+        let params: Vec<&str> = m.params().iter().map(|p| p.name()).collect();
+        println!("{:<24} {:>5}  {:<8} {}", name, m.order(), params.join(","), about);
+    }
+    Ok(ExitCode::SUCCESS)
+}

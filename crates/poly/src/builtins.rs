@@ -1,0 +1,50 @@
+//! The paper's methods as embedded `.zm` files.
+//!
+//! Each method of sections 5–11 is written twice, as Appendix B prints it:
+//! the "Direct Integration" branch (`false_euler`) and the "Transition
+//! matrix" branch (`false_euler_matrix`). Verlet has only one program in the
+//! paper; `damped_euler_d` frees the damping ratio D.
+
+use crate::{Error, Method};
+
+/// `(name, source)` for every built-in method, in the paper's order.
+pub const BUILTINS: &[(&str, &str)] = &[
+    ("standard_euler", include_str!("../methods/standard_euler.zm")),
+    ("standard_euler_matrix", include_str!("../methods/standard_euler_matrix.zm")),
+    ("damped_euler", include_str!("../methods/damped_euler.zm")),
+    ("damped_euler_matrix", include_str!("../methods/damped_euler_matrix.zm")),
+    ("damped_euler_d", include_str!("../methods/damped_euler_d.zm")),
+    ("false_euler", include_str!("../methods/false_euler.zm")),
+    ("false_euler_matrix", include_str!("../methods/false_euler_matrix.zm")),
+    ("verlet", include_str!("../methods/verlet.zm")),
+    ("standard_heun", include_str!("../methods/standard_heun.zm")),
+    ("standard_heun_matrix", include_str!("../methods/standard_heun_matrix.zm")),
+    ("false_heun", include_str!("../methods/false_heun.zm")),
+    ("false_heun_matrix", include_str!("../methods/false_heun_matrix.zm")),
+    ("semi_false_heun", include_str!("../methods/semi_false_heun.zm")),
+    ("semi_false_heun_matrix", include_str!("../methods/semi_false_heun_matrix.zm")),
+];
+
+/// The names of the built-in methods, in the paper's order.
+pub fn builtin_names() -> impl Iterator<Item = &'static str> {
+    BUILTINS.iter().map(|(n, _)| *n)
+}
+
+/// The source text of a built-in method.
+pub fn builtin_source(name: &str) -> Option<&'static str> {
+    BUILTINS.iter().find(|(n, _)| *n == name).map(|(_, s)| *s)
+}
+
+/// Parses a built-in method; `None` when no built-in has that name.
+pub fn builtin(name: &str) -> Result<Method, Error> {
+    match builtin_source(name) {
+        Some(src) => Method::parse(&format!("<builtin>/{name}.zm"), src),
+        None => Err(Error::unknown_builtin(name)),
+    }
+}
+
+/// For a `_matrix` built-in, the direct-integration built-in it transcribes.
+pub fn direct_twin(name: &str) -> Option<&'static str> {
+    let base = name.strip_suffix("_matrix")?;
+    builtin_names().find(|n| *n == base)
+}

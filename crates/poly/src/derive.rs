@@ -1,0 +1,263 @@
+//! The two exact derivations of a method's characteristic polynomial.
+//!
+//! **Route (a), the z-domain.** Every assignment of step *i* is one equation
+//! in the unknowns of step *i* (the value of each assignment). A value carried
+//! from the previous step carries z⁻¹, a history read `y@k` carries
+//! z^-(k+1). Moving everything to the left gives `M(z) u = 0` with
+//! `M = I − L − R(z⁻¹)`, a polynomial matrix in w = z⁻¹, and
+//!
+//! $$ \chi(z) = z^N \det M(1/z), \qquad N = \sum_{\text{state}} (1 + \text{history}). $$
+//!
+//! **Route (b), the state space.** Symbolic execution of the step on the
+//! augmented state (each variable at every lag it is read at, companion form)
+//! gives the transition matrix P, and χ(z) = det(zI − P).
+//!
+//! The routes share nothing but the lowered program and the determinant
+//! code, and [`derive`] refuses to answer when they disagree.
+
+use crate::error::{Error, ErrorKind, Span};
+use crate::method::{Method, Operand};
+use crate::{Poly, PolyMatrix, Sym};
+
+/// Everything derived from one method.
+#[derive(Clone, Debug)]
+pub struct Derivation {
+    /// The method derived.
+    pub method: Method,
+    /// M as a polynomial matrix in w = z⁻¹ (see [`w`]); one row and column per
+    /// assignment, plus one per state variable the step never assigns.
+    pub z_matrix: PolyMatrix,
+    /// The transition matrix P over the augmented state
+    /// ([`Method::slots`] order).
+    pub transition_matrix: PolyMatrix,
+    /// χ(z) = det(zI − P), a polynomial in z and the parameters.
+    pub charpoly: Poly,
+}
+
+/// The symbol standing for z⁻¹ inside [`Derivation::z_matrix`]. Its name
+/// cannot be written in a `.zm` file, so it never clashes with a parameter.
+pub fn w() -> Sym {
+    Sym::new("1/z")
+}
+
+impl Derivation {
+    /// χ's coefficients, highest power of z first (the first is 1).
+    pub fn coeffs(&self) -> Vec<Poly> {
+        let mut c = self.charpoly.coeffs_in(Sym::z());
+        c.reverse();
+        c
+    }
+
+    /// For a second-order method, `(p, q)` with χ(z) = z² − 2p·z + q, the
+    /// paper's form (section 4).
+    pub fn p_q(&self) -> Option<(Poly, Poly)> {
+        let c = self.coeffs();
+        if c.len() != 3 {
+            return None;
+        }
+        let half = Poly::constant(crate::Q::new((-1).into(), 2.into()));
+        Some((&c[1] * &half, c[2].clone()))
+    }
+
+    /// An entry of M written as a Laurent polynomial in z: `1 - z^-1`.
+    pub fn z_entry_string(p: &Poly) -> String {
+        laurent(p, false)
+    }
+
+    /// An entry of M in LaTeX.
+    pub fn z_entry_latex(p: &Poly) -> String {
+        laurent(p, true)
+    }
+}
+
+fn laurent(p: &Poly, latex: bool) -> String {
+    if p.is_zero() {
+        return "0".into();
+    }
+    let mut parts: Vec<(bool, String)> = Vec::new();
+    for (k, c) in p.coeffs_in(w()).into_iter().enumerate() {
+        if c.is_zero() {
+            continue;
+        }
+        let body = if latex { c.latex() } else { c.to_string() };
+        let (neg, body) = match body.strip_prefix('-') {
+            Some(rest) if c.len() == 1 => (true, rest.to_owned()),
+            _ => (false, body),
+        };
+        let zpow = match (k, latex) {
+            (0, _) => String::new(),
+            (_, false) => format!("z^-{k}"),
+            (_, true) => format!("z^{{-{k}}}"),
+        };
+        let s = if k == 0 {
+            body
+        } else if c.len() > 1 {
+            if latex {
+                format!("\\left({body}\\right) {zpow}")
+            } else {
+                format!("({body})*{zpow}")
+            }
+        } else if body == "1" {
+            zpow
+        } else if latex {
+            format!("{body} {zpow}")
+        } else {
+            format!("{body}*{zpow}")
+        };
+        parts.push((neg, s));
+    }
+    let mut out = String::new();
+    for (i, (neg, s)) in parts.into_iter().enumerate() {
+        match (i, neg) {
+            (0, true) => out.push('-'),
+            (0, false) => {}
+            (_, true) => out.push_str(" - "),
+            (_, false) => out.push_str(" + "),
+        }
+        out.push_str(&s);
+    }
+    out
+}
+
+/// Route (a): M(w) with w = z⁻¹.
+pub fn z_matrix(m: &Method) -> PolyMatrix {
+    let n_assign = m.assigns().len();
+    // The unknown holding each state variable's value at the end of step i.
+    let mut extra = 0;
+    let unknown_of: Vec<usize> = (0..m.state().len())
+        .map(|v| {
+            m.final_assign(v).unwrap_or_else(|| {
+                extra += 1;
+                n_assign + extra - 1
+            })
+        })
+        .collect();
+    let n = n_assign + extra;
+    let wp = Poly::sym(w());
+    let mut mat = PolyMatrix::identity(n);
+    for (s, a) in m.assigns().iter().enumerate() {
+        for (op, c) in &a.terms {
+            match *op {
+                Operand::Stmt(t) => mat[(s, t)] -= c,
+                Operand::Start { var, lag } => {
+                    mat[(s, unknown_of[var])] -= &(c * &wp.pow(lag + 1));
+                }
+            }
+        }
+    }
+    // A variable the step never assigns keeps its value: x_i = z⁻¹ x_i.
+    for (v, &u) in unknown_of.iter().enumerate() {
+        if m.final_assign(v).is_none() {
+            mat[(u, u)] -= &wp;
+        }
+    }
+    mat
+}
+
+/// Route (a)'s characteristic polynomial, z^N det M(1/z).
+pub fn charpoly_z_route(m: &Method) -> Result<Poly, Error> {
+    let det = z_matrix(m).det();
+    let coeffs = det.coeffs_in(w());
+    let n = m.order();
+    if coeffs.len() > n + 1 {
+        return Err(Error::new(
+            ErrorKind::RoutesDisagree,
+            Span::default(),
+            format!("det M(z) has degree {} in 1/z, above the order {n}", coeffs.len() - 1),
+        ));
+    }
+    let z = Sym::z();
+    let mut out = Poly::zero();
+    for (k, c) in coeffs.iter().enumerate() {
+        out += &(c * &Poly::sym(z).pow((n - k) as u32));
+    }
+    Ok(out)
+}
+
+/// Route (b): the transition matrix P by symbolic execution.
+pub fn transition_matrix(m: &Method) -> PolyMatrix {
+    let slots = m.slots();
+    let n = slots.len();
+    let slot_of = |var: usize, lag: u32| {
+        slots.iter().position(|&s| s == (var, lag)).expect("lag within the method's history")
+    };
+    let unit = |k: usize| {
+        let mut v = vec![Poly::zero(); n];
+        v[k] = Poly::one();
+        v
+    };
+    let mut values: Vec<Vec<Poly>> = Vec::with_capacity(m.assigns().len());
+    for a in m.assigns() {
+        let mut acc = vec![Poly::zero(); n];
+        for (op, c) in &a.terms {
+            let src = match *op {
+                Operand::Stmt(t) => values[t].clone(),
+                Operand::Start { var, lag } => unit(slot_of(var, lag)),
+            };
+            for (x, s) in acc.iter_mut().zip(&src) {
+                if !s.is_zero() {
+                    *x += &(c * s);
+                }
+            }
+        }
+        values.push(acc);
+    }
+    let mut p = PolyMatrix::zeros(n, n);
+    for (row, &(var, lag)) in slots.iter().enumerate() {
+        let new = if lag == 0 {
+            match m.final_assign(var) {
+                Some(t) => values[t].clone(),
+                None => unit(slot_of(var, 0)),
+            }
+        } else {
+            unit(slot_of(var, lag - 1))
+        };
+        for (col, x) in new.into_iter().enumerate() {
+            p[(row, col)] = x;
+        }
+    }
+    p
+}
+
+/// Route (b)'s characteristic polynomial, det(zI − P), by Berkowitz.
+pub fn charpoly_state_route(p: &PolyMatrix) -> Poly {
+    let c = p.charpoly_berkowitz();
+    let n = c.len() - 1;
+    let z = Sym::z();
+    let mut out = Poly::zero();
+    for (k, ck) in c.iter().enumerate() {
+        out += &(ck * &Poly::sym(z).pow((n - k) as u32));
+    }
+    out
+}
+
+/// Derives a method by both routes and checks that they agree exactly.
+///
+/// ```
+/// let m = poly::builtin("false_euler")?;
+/// let d = poly::derive(&m)?;
+/// assert_eq!(d.charpoly.to_string(), "z^2 - 2*z + Phi^2*z + 1");
+/// # Ok::<(), poly::Error>(())
+/// ```
+pub fn derive(method: &Method) -> Result<Derivation, Error> {
+    let z_matrix = z_matrix(method);
+    let a = charpoly_z_route(method)?;
+    let transition_matrix = transition_matrix(method);
+    let b = charpoly_state_route(&transition_matrix);
+    if a != b {
+        return Err(Error::new(
+            ErrorKind::RoutesDisagree,
+            Span::default(),
+            format!(
+                "method `{}`: the z-domain route gives {a} but the state-space route gives {b}",
+                method.name()
+            ),
+        ));
+    }
+    Ok(Derivation { method: method.clone(), z_matrix, transition_matrix, charpoly: a })
+}
+
+/// The characteristic polynomial of a method, derived by both routes.
+pub fn charpoly(method: &Method) -> Result<Poly, Error> {
+    derive(method).map(|d| d.charpoly)
+}

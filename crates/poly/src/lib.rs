@@ -1,0 +1,53 @@
+//! Exact characteristic polynomials of linear time integrators.
+//!
+//! `poly` is the exact half of zcheck. It reads a method written in the
+//! `.zm` language, lowers it to a linear step program, and derives the
+//! method's characteristic polynomial χ(z) twice, by the z-domain
+//! polynomial-matrix determinant and by det(zI − P), refusing to answer when
+//! the two disagree. Everything is exact: rationals ([`Q`]), canonical sparse
+//! polynomials over named symbols ([`Poly`]), dense univariate polynomials
+//! ([`UPoly`]) and polynomial matrices ([`PolyMatrix`]).
+//!
+//! This crate never touches `f64` and never does I/O; numeric work lives in
+//! the `check` crate.
+//!
+//! ```
+//! let m = poly::builtin("standard_heun")?;
+//! let d = poly::derive(&m)?;
+//! let (p, q) = d.p_q().expect("second order");
+//! assert_eq!(p.to_string(), "1 - 1/2*Phi^2");
+//! assert_eq!(q.to_string(), "1 + 1/4*Phi^4");
+//! # Ok::<(), poly::Error>(())
+//! ```
+
+mod builtins;
+mod derive;
+mod error;
+mod matrix;
+mod method;
+mod poly;
+mod sym;
+mod syntax;
+mod upoly;
+
+pub use crate::builtins::{builtin, builtin_names, builtin_source, direct_twin, BUILTINS};
+pub use crate::derive::{
+    charpoly, charpoly_state_route, charpoly_z_route, derive, transition_matrix, w, z_matrix,
+    Derivation,
+};
+pub use crate::error::{Error, ErrorKind, Span};
+pub use crate::matrix::PolyMatrix;
+pub use crate::method::{Assign, Method, Operand, Target};
+pub use crate::poly::{Monomial, Poly};
+pub use crate::sym::Sym;
+pub use crate::upoly::UPoly;
+
+/// The one exact scalar type: arbitrary-precision rationals.
+pub type Q = num_rational::BigRational;
+
+/// The rational `num/den`; panics when `den` is zero (a programmer error).
+#[track_caller]
+pub fn q(num: i64, den: i64) -> Q {
+    assert!(den != 0, "zero denominator");
+    Q::new(num.into(), den.into())
+}

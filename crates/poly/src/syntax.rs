@@ -1,0 +1,497 @@
+//! The `.zm` surface syntax: lexer and recursive-descent parser.
+//!
+//! ```text
+//! file   := line*
+//! line   := [ 'method' NAME | 'state' NAME+ | 'param' NAME+ | NAME '=' expr ] [ '#' comment ]
+//! expr   := term (('+' | '-') term)*
+//! term   := unary (('*' | '/') unary)*
+//! unary  := ('-' | '+') unary | power
+//! power  := atom [ '^' INT | '^' '(' INT ')' ]
+//! atom   := NUMBER | NAME [ '@' INT ] | '(' expr ')'
+//! ```
+//!
+//! Numbers are integers or decimals (`0.5`, `2.5e-3`), taken exactly. The
+//! parser only checks the grammar; names, linearity and the other semantic
+//! rules are checked when the program is lowered (see `method.rs`).
+
+use crate::error::{Error, ErrorKind, Span};
+use crate::Q;
+use num_bigint::BigInt;
+use num_traits::Zero;
+
+#[derive(Clone, Debug, PartialEq)]
+enum Tok {
+    Name(String),
+    Num(Q),
+    Int(u32),
+    Sym(char),
+    Newline,
+    Eof,
+}
+
+#[derive(Clone, Debug)]
+struct Token {
+    tok: Tok,
+    span: Span,
+}
+
+/// A parsed expression with its span.
+#[derive(Clone, Debug)]
+pub(crate) struct Expr {
+    pub kind: ExprKind,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug)]
+pub(crate) enum ExprKind {
+    Num(Q),
+    Name(String),
+    /// `name@k`.
+    Hist(String, u32),
+    Neg(Box<Expr>),
+    Bin(BinOp, Box<Expr>, Box<Expr>),
+    Pow(Box<Expr>, u32),
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum BinOp {
+    Add,
+    Sub,
+    Mul,
+    Div,
+}
+
+/// One meaningful line of a `.zm` file.
+#[derive(Clone, Debug)]
+pub(crate) enum Item {
+    Method(String, Span),
+    State(Vec<(String, Span)>, Span),
+    Param(Vec<(String, Span)>, Span),
+    Assign { target: String, target_span: Span, expr: Expr, line_text: String },
+}
+
+fn lex(src: &str) -> Result<Vec<Token>, Error> {
+    let mut out = Vec::new();
+    for (li, line) in src.lines().enumerate() {
+        let line_no = li as u32 + 1;
+        let chars: Vec<char> = line.chars().collect();
+        let mut i = 0;
+        while i < chars.len() {
+            let c = chars[i];
+            let col = i as u32 + 1;
+            let span = |len: usize| Span { line: line_no, col, len: len as u32 };
+            if c == '#' {
+                break;
+            }
+            if c.is_whitespace() {
+                i += 1;
+                continue;
+            }
+            if c.is_ascii_alphabetic() || c == '_' {
+                let start = i;
+                while i < chars.len() && (chars[i].is_ascii_alphanumeric() || chars[i] == '_') {
+                    i += 1;
+                }
+                let name: String = chars[start..i].iter().collect();
+                out.push(Token { tok: Tok::Name(name), span: span(i - start) });
+                continue;
+            }
+            if c.is_ascii_digit() || (c == '.' && chars.get(i + 1).is_some_and(char::is_ascii_digit))
+            {
+                let start = i;
+                let (tok, len) = lex_number(&chars[start..]).map_err(|msg| {
+                    Error::new(ErrorKind::Syntax, Span { line: line_no, col, len: 1 }, msg)
+                })?;
+                i += len;
+                out.push(Token { tok, span: span(len) });
+                continue;
+            }
+            if "+-*/^()=@".contains(c) {
+                out.push(Token { tok: Tok::Sym(c), span: span(1) });
+                i += 1;
+                continue;
+            }
+            return Err(Error::new(
+                ErrorKind::Syntax,
+                span(1),
+                format!("unexpected character `{c}`: expected a name, a number, an operator (+ - * / ^), `=`, `@` or parentheses"),
+            ));
+        }
+        out.push(Token {
+            tok: Tok::Newline,
+            span: Span { line: line_no, col: chars.len() as u32 + 1, len: 1 },
+        });
+    }
+    let last = src.lines().count() as u32;
+    out.push(Token { tok: Tok::Eof, span: Span { line: last.max(1), col: 1, len: 1 } });
+    Ok(out)
+}
+
+/// Lexes an exact decimal number; plain integers become `Tok::Int` so they can
+/// serve as exponents and history depths.
+fn lex_number(chars: &[char]) -> Result<(Tok, usize), String> {
+    let mut i = 0;
+    let mut digits = String::new();
+    while i < chars.len() && chars[i].is_ascii_digit() {
+        digits.push(chars[i]);
+        i += 1;
+    }
+    let mut frac = String::new();
+    let mut is_int = true;
+    if i < chars.len() && chars[i] == '.' {
+        is_int = false;
+        i += 1;
+        while i < chars.len() && chars[i].is_ascii_digit() {
+            frac.push(chars[i]);
+            i += 1;
+        }
+    }
+    let mut exp: i64 = 0;
+    if i < chars.len() && (chars[i] == 'e' || chars[i] == 'E') {
+        let mut j = i + 1;
+        let mut sign = 1;
+        if j < chars.len() && (chars[j] == '+' || chars[j] == '-') {
+            if chars[j] == '-' {
+                sign = -1;
+            }
+            j += 1;
+        }
+        let start = j;
+        while j < chars.len() && chars[j].is_ascii_digit() {
+            j += 1;
+        }
+        if j == start {
+            return Err("malformed number: expected digits after the exponent `e`".into());
+        }
+        let e: String = chars[start..j].iter().collect();
+        exp = sign * e.parse::<i64>().map_err(|_| "exponent too large".to_string())?;
+        if exp.abs() > 1000 {
+            return Err("exponent too large: expected at most 1000 in magnitude".into());
+        }
+        is_int = false;
+        i = j;
+    }
+    if i < chars.len() && (chars[i].is_ascii_alphabetic() || chars[i] == '_') {
+        return Err(format!(
+            "malformed number: `{}` runs into a name; expected an operator between them",
+            chars[..=i].iter().collect::<String>()
+        ));
+    }
+    let mantissa: BigInt = format!("{digits}{frac}").parse().unwrap_or_else(|_| BigInt::zero());
+    let mut q = Q::from_integer(mantissa);
+    let scale = exp - frac.len() as i64;
+    let ten = Q::from_integer(BigInt::from(10));
+    let factor = num_traits::pow(ten, scale.unsigned_abs() as usize);
+    if scale >= 0 {
+        q *= factor;
+    } else {
+        q /= factor;
+    }
+    if is_int {
+        if let Ok(n) = digits.parse::<u32>() {
+            return Ok((Tok::Int(n), i));
+        }
+    }
+    Ok((Tok::Num(q), i))
+}
+
+struct Parser {
+    toks: Vec<Token>,
+    pos: usize,
+}
+
+fn describe(t: &Tok) -> String {
+    match t {
+        Tok::Name(n) => format!("name `{n}`"),
+        Tok::Num(q) => format!("number `{q}`"),
+        Tok::Int(n) => format!("number `{n}`"),
+        Tok::Sym(c) => format!("`{c}`"),
+        Tok::Newline => "end of line".into(),
+        Tok::Eof => "end of file".into(),
+    }
+}
+
+const KEYWORDS: [&str; 3] = ["method", "state", "param"];
+
+impl Parser {
+    fn peek(&self) -> &Token {
+        &self.toks[self.pos]
+    }
+
+    fn bump(&mut self) -> Token {
+        let t = self.toks[self.pos].clone();
+        if self.pos + 1 < self.toks.len() {
+            self.pos += 1;
+        }
+        t
+    }
+
+    fn err(&self, expected: &str) -> Error {
+        let t = self.peek();
+        Error::new(
+            ErrorKind::Syntax,
+            t.span,
+            format!("expected {expected}, found {}", describe(&t.tok)),
+        )
+    }
+
+    fn expect_sym(&mut self, c: char, expected: &str) -> Result<Span, Error> {
+        if self.peek().tok == Tok::Sym(c) {
+            Ok(self.bump().span)
+        } else {
+            Err(self.err(expected))
+        }
+    }
+
+    fn end_of_line(&mut self) -> Result<(), Error> {
+        match self.peek().tok {
+            Tok::Newline => {
+                self.bump();
+                Ok(())
+            }
+            Tok::Eof => Ok(()),
+            _ => Err(self.err("an operator or the end of the line")),
+        }
+    }
+
+    fn names(&mut self, what: &str) -> Result<Vec<(String, Span)>, Error> {
+        let mut v = Vec::new();
+        while let Tok::Name(n) = &self.peek().tok {
+            let n = n.clone();
+            let s = self.bump().span;
+            v.push((n, s));
+        }
+        if v.is_empty() {
+            return Err(self.err(what));
+        }
+        Ok(v)
+    }
+
+    fn item(&mut self, src_lines: &[&str]) -> Result<Option<Item>, Error> {
+        loop {
+            match &self.peek().tok {
+                Tok::Newline => {
+                    self.bump();
+                }
+                Tok::Eof => return Ok(None),
+                _ => break,
+            }
+        }
+        let head = self.bump();
+        let Tok::Name(word) = head.tok.clone() else {
+            self.pos -= 1;
+            return Err(self.err("`method`, `state`, `param` or an assignment `name = ...`"));
+        };
+        let item = match word.as_str() {
+            "method" => {
+                let t = self.peek().clone();
+                let Tok::Name(n) = t.tok else {
+                    return Err(self.err("the method's name after `method`"));
+                };
+                self.bump();
+                Item::Method(n, t.span)
+            }
+            "state" => Item::State(self.names("one or more state variable names")?, head.span),
+            "param" => Item::Param(self.names("one or more parameter names")?, head.span),
+            _ => {
+                if self.peek().tok != Tok::Sym('=') {
+                    return Err(self.err("`=` after the assigned name"));
+                }
+                self.bump();
+                let expr = self.expr()?;
+                let line_text = src_lines
+                    .get(head.span.line as usize - 1)
+                    .map(|l| l.split('#').next().unwrap_or("").trim().to_owned())
+                    .unwrap_or_default();
+                Item::Assign { target: word, target_span: head.span, expr, line_text }
+            }
+        };
+        self.end_of_line()?;
+        Ok(Some(item))
+    }
+
+    fn expr(&mut self) -> Result<Expr, Error> {
+        let mut lhs = self.term()?;
+        loop {
+            let op = match self.peek().tok {
+                Tok::Sym('+') => BinOp::Add,
+                Tok::Sym('-') => BinOp::Sub,
+                _ => return Ok(lhs),
+            };
+            self.bump();
+            let rhs = self.term()?;
+            lhs = bin(op, lhs, rhs);
+        }
+    }
+
+    fn term(&mut self) -> Result<Expr, Error> {
+        let mut lhs = self.unary()?;
+        loop {
+            let op = match self.peek().tok {
+                Tok::Sym('*') => BinOp::Mul,
+                Tok::Sym('/') => BinOp::Div,
+                _ => return Ok(lhs),
+            };
+            self.bump();
+            let rhs = self.unary()?;
+            lhs = bin(op, lhs, rhs);
+        }
+    }
+
+    fn unary(&mut self) -> Result<Expr, Error> {
+        match self.peek().tok {
+            Tok::Sym('-') => {
+                let s = self.bump().span;
+                let e = self.unary()?;
+                let span = join(s, e.span);
+                Ok(Expr { kind: ExprKind::Neg(Box::new(e)), span })
+            }
+            Tok::Sym('+') => {
+                self.bump();
+                self.unary()
+            }
+            _ => self.power(),
+        }
+    }
+
+    fn power(&mut self) -> Result<Expr, Error> {
+        let base = self.atom()?;
+        if self.peek().tok != Tok::Sym('^') {
+            return Ok(base);
+        }
+        let caret = self.bump().span;
+        let paren = self.peek().tok == Tok::Sym('(');
+        if paren {
+            self.bump();
+        }
+        let t = self.peek().clone();
+        let Tok::Int(n) = t.tok else {
+            return Err(Error::new(
+                ErrorKind::BadPower,
+                if matches!(t.tok, Tok::Newline | Tok::Eof) { caret } else { t.span },
+                format!(
+                    "expected a non-negative integer exponent after `^`, found {}",
+                    describe(&t.tok)
+                ),
+            ));
+        };
+        self.bump();
+        let mut end = t.span;
+        if paren {
+            end = self.expect_sym(')', "`)` after the exponent")?;
+        }
+        let span = join(base.span, end);
+        Ok(Expr { kind: ExprKind::Pow(Box::new(base), n), span })
+    }
+
+    fn atom(&mut self) -> Result<Expr, Error> {
+        let t = self.peek().clone();
+        match t.tok {
+            Tok::Int(n) => {
+                self.bump();
+                Ok(Expr { kind: ExprKind::Num(Q::from_integer(n.into())), span: t.span })
+            }
+            Tok::Num(q) => {
+                self.bump();
+                Ok(Expr { kind: ExprKind::Num(q), span: t.span })
+            }
+            Tok::Name(n) => {
+                if KEYWORDS.contains(&n.as_str()) {
+                    return Err(self.err("a value (`method`, `state` and `param` are keywords)"));
+                }
+                self.bump();
+                if self.peek().tok == Tok::Sym('@') {
+                    self.bump();
+                    let d = self.peek().clone();
+                    let Tok::Int(k) = d.tok else {
+                        return Err(self.err("a history depth (a non-negative integer) after `@`"));
+                    };
+                    self.bump();
+                    return Ok(Expr { kind: ExprKind::Hist(n, k), span: join(t.span, d.span) });
+                }
+                Ok(Expr { kind: ExprKind::Name(n), span: t.span })
+            }
+            Tok::Sym('(') => {
+                self.bump();
+                let e = self.expr()?;
+                let close = self.expect_sym(')', "`)` or an operator")?;
+                Ok(Expr { kind: e.kind, span: join(t.span, close) })
+            }
+            _ => Err(self.err("a number, a name or `(`")),
+        }
+    }
+}
+
+fn join(a: Span, b: Span) -> Span {
+    if a.line != b.line {
+        return a;
+    }
+    Span { line: a.line, col: a.col, len: (b.col + b.len).saturating_sub(a.col).max(1) }
+}
+
+fn bin(op: BinOp, l: Expr, r: Expr) -> Expr {
+    let span = join(l.span, r.span);
+    Expr { kind: ExprKind::Bin(op, Box::new(l), Box::new(r)), span }
+}
+
+/// Parses a whole file into items; the first syntax error is returned.
+pub(crate) fn parse(src: &str) -> Result<Vec<Item>, Error> {
+    let toks = lex(src)?;
+    let lines: Vec<&str> = src.lines().collect();
+    let mut p = Parser { toks, pos: 0 };
+    let mut items = Vec::new();
+    while let Some(item) = p.item(&lines)? {
+        items.push(item);
+    }
+    Ok(items)
+}
+
+/// Parses a single polynomial expression (no statements): every name is a
+/// symbol, `^` takes non-negative integer exponents and `/` nonzero
+/// constants. Used to transcribe the paper's printed equations.
+pub(crate) fn parse_poly(src: &str) -> Result<crate::Poly, Error> {
+    let toks = lex(src)?;
+    let mut p = Parser { toks, pos: 0 };
+    while p.peek().tok == Tok::Newline {
+        p.bump();
+    }
+    let e = p.expr()?;
+    while p.peek().tok == Tok::Newline {
+        p.bump();
+    }
+    if p.peek().tok != Tok::Eof {
+        return Err(p.err("an operator or the end of the expression"));
+    }
+    to_poly(&e)
+}
+
+fn to_poly(e: &Expr) -> Result<crate::Poly, Error> {
+    use crate::Poly;
+    Ok(match &e.kind {
+        ExprKind::Num(q) => Poly::constant(q.clone()),
+        ExprKind::Name(n) => Poly::var(n),
+        ExprKind::Hist(..) => {
+            return Err(Error::new(ErrorKind::Syntax, e.span, "expected a polynomial, found a history read `@`"))
+        }
+        ExprKind::Neg(x) => -to_poly(x)?,
+        ExprKind::Pow(b, n) => to_poly(b)?.pow(*n),
+        ExprKind::Bin(op, l, r) => {
+            let (a, b) = (to_poly(l)?, to_poly(r)?);
+            match op {
+                BinOp::Add => a + b,
+                BinOp::Sub => a - b,
+                BinOp::Mul => a * b,
+                BinOp::Div => match b.as_constant() {
+                    Some(c) if !c.is_zero() => a.scale(&(Q::from_integer(1.into()) / c)),
+                    _ => {
+                        return Err(Error::new(
+                            ErrorKind::BadDivision,
+                            r.span,
+                            "expected a nonzero constant divisor",
+                        ))
+                    }
+                },
+            }
+        }
+    })
+}
