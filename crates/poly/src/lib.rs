@@ -21,6 +21,7 @@
 //! ```
 
 mod builtins;
+mod class;
 mod derive;
 mod error;
 mod matrix;
@@ -31,6 +32,7 @@ mod syntax;
 mod upoly;
 
 pub use crate::builtins::{builtin, builtin_names, builtin_source, direct_twin, BUILTINS};
+pub use crate::class::RootClass;
 pub use crate::derive::{
     charpoly, charpoly_state_route, charpoly_z_route, derive, transition_matrix, w, z_matrix,
     Derivation,

@@ -1,0 +1,99 @@
+//! The taxonomy of section 4: what the roots of χ(z) say about a sample
+//! sequence.
+//!
+//! The class is decided by the dominant root(s), those of largest modulus ρ,
+//! because they govern the long-run behaviour. The paper lists real roots in
+//! (0, ∞) and complex pairs; the negative real axis (an alternating sequence,
+//! Ψ = π) and repeated roots on the unit circle complete the picture. This
+//! type is shared by the exact analysis (`poly`) and the numeric witnesses
+//! (`check`), so both speak the same words.
+
+use std::fmt;
+
+/// The behaviour of a sample sequence, decided by its dominant root(s).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum RootClass {
+    /// Every root is zero: the sequence vanishes after finitely many steps.
+    Deadbeat,
+    /// Dominant complex pair with |z| < 1.
+    DampedOscillation,
+    /// Dominant simple complex pair with |z| = 1.
+    Harmonic,
+    /// Dominant complex pair with |z| > 1.
+    UnstableOscillation,
+    /// Dominant real root 0 < z < 1.
+    MonotonicStable,
+    /// Dominant simple real root z = 1.
+    Constant,
+    /// Dominant real root z > 1.
+    MonotonicUnstable,
+    /// Dominant real root −1 < z < 0: sign flips every step, decaying.
+    AlternatingStable,
+    /// Dominant simple real root z = −1: sign flips every step, Ψ = π.
+    Alternating,
+    /// Dominant real root z < −1: sign flips every step, growing.
+    AlternatingUnstable,
+    /// A repeated root on the unit circle (z₁ = z₂ = ±1, or a repeated pair):
+    /// polynomial growth when the root is defective, as section 4 notes.
+    DoubleRootOnCircle,
+}
+
+impl RootClass {
+    /// Every class, in a fixed order.
+    pub const ALL: [RootClass; 11] = [
+        RootClass::Deadbeat,
+        RootClass::DampedOscillation,
+        RootClass::Harmonic,
+        RootClass::UnstableOscillation,
+        RootClass::MonotonicStable,
+        RootClass::Constant,
+        RootClass::MonotonicUnstable,
+        RootClass::AlternatingStable,
+        RootClass::Alternating,
+        RootClass::AlternatingUnstable,
+        RootClass::DoubleRootOnCircle,
+    ];
+
+    /// The snake_case name used in JSON and reports.
+    pub fn name(self) -> &'static str {
+        match self {
+            RootClass::Deadbeat => "deadbeat",
+            RootClass::DampedOscillation => "damped_oscillation",
+            RootClass::Harmonic => "harmonic",
+            RootClass::UnstableOscillation => "unstable_oscillation",
+            RootClass::MonotonicStable => "monotonic_stable",
+            RootClass::Constant => "constant",
+            RootClass::MonotonicUnstable => "monotonic_unstable",
+            RootClass::AlternatingStable => "alternating_stable",
+            RootClass::Alternating => "alternating",
+            RootClass::AlternatingUnstable => "alternating_unstable",
+            RootClass::DoubleRootOnCircle => "double_root_on_circle",
+        }
+    }
+
+    /// The class with this [`RootClass::name`].
+    pub fn from_name(name: &str) -> Option<RootClass> {
+        RootClass::ALL.into_iter().find(|c| c.name() == name)
+    }
+
+    /// Whether the sequence stays bounded: ρ < 1, or ρ = 1 with simple
+    /// dominant roots. A repeated root on the circle counts as unstable.
+    pub fn is_bounded(self) -> bool {
+        matches!(
+            self,
+            RootClass::Deadbeat
+                | RootClass::DampedOscillation
+                | RootClass::Harmonic
+                | RootClass::MonotonicStable
+                | RootClass::Constant
+                | RootClass::AlternatingStable
+                | RootClass::Alternating
+        )
+    }
+}
+
+impl fmt::Display for RootClass {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
