@@ -1,5 +1,11 @@
 //! One module per subcommand: its clap `Args` and its `run`.
 
+pub mod advise;
 pub mod derive;
 pub mod methods;
 pub mod paper;
+pub mod plot;
+pub mod scene;
+pub mod stability;
+pub mod tradeoff;
+pub mod verify;

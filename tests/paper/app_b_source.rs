@@ -1,0 +1,1 @@
+//! Section Appendix B (Source code).

@@ -1,0 +1,1 @@
+//! Section Appendix C (3 bodies, False Euler).

@@ -1,0 +1,1 @@
+//! Section Appendix D (3 bodies, Standard Euler).

@@ -1,0 +1,1 @@
+//! Section Appendix E (Aircraft).
