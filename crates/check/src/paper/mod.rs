@@ -47,3 +47,14 @@ pub struct Claim {
     /// How the verdict was reached (exact derivation, numbers, runs).
     pub evidence: String,
 }
+
+pub mod appendix;
+pub mod sections;
+
+/// Every claim of the paper, in the paper's order: sections 4–12 and
+/// Appendices A–B, then the appendix scenes C–E.
+pub fn all_claims() -> Vec<Claim> {
+    let mut v = sections::claims();
+    v.extend(appendix::claims());
+    v
+}
