@@ -33,6 +33,8 @@ mod upoly;
 
 pub use crate::builtins::{builtin, builtin_names, builtin_source, direct_twin, BUILTINS};
 pub use crate::class::RootClass;
+pub mod cost;
+pub use crate::cost::{step_cost, OpCount, StepCost};
 pub use crate::derive::{
     charpoly, charpoly_state_route, charpoly_z_route, derive, transition_matrix, w, z_matrix,
     Derivation,
