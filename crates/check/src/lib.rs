@@ -7,6 +7,11 @@
 //! simulation. It also hosts the proof report, the appendix scenes and the
 //! speed/accuracy trade-off. It depends on `poly`; `poly` never depends on it.
 
+pub mod classify;
 pub mod load;
+pub mod numeric;
 pub mod paper;
 pub mod scene;
+pub mod plot;
+pub mod sweep;
+pub mod witness;

@@ -1,0 +1,649 @@
+//! The numeric interpreter of a lowered `.zm` method: one definition, run in
+//! `f64`.
+//!
+//! [`Step::compile`] turns a [`poly::Method`] and numeric parameter values
+//! ([`Params`]) into a flat list of instructions over registers:
+//!
+//! * registers `0 .. N` hold the augmented state, one per slot of
+//!   [`Method::slots`] (each state variable at lag 0, 1, ..., its history);
+//! * register `N + k` holds the value of assignment `k` of the current step.
+//!
+//! Each instruction computes `dst = Σ cᵢ·srcᵢ` (at most four terms; longer
+//! sums continue with accumulating instructions) with coefficients evaluated
+//! once at compile time: every coefficient polynomial is summed term by term,
+//! each rational coefficient converted to the nearest `f64`. After the
+//! instructions, history shifts (`y@1 ← y`) and the new state values are put
+//! in place by swapping registers, never by recomputing.
+//!
+//! The same instructions run on one state ([`State`], [`Step::advance`]) or on
+//! many states stored struct-of-arrays ([`Batch`], [`Step::advance_batch`]).
+//! The batch runner works on blocks of [`BLOCK`] lanes that stay in L1 cache
+//! for all requested steps, and every instruction loops over the lanes of a
+//! fixed-width block so the compiler vectorises it. Both runners perform the
+//! identical floating-point operations in the identical order, so one lane of
+//! a batch is bit-for-bit the single-state run.
+//!
+//! [`Step::transition_matrix`] runs the step on the basis vectors: column `j`
+//! of P is the state after one step from `e_j`.
+//!
+//! ```
+//! use check::numeric::{Params, Step};
+//! let method = poly::builtin("false_euler")?;
+//! let step = Step::compile(&method, &Params::phi(0.5))?;
+//! let mut state = step.state(&[0.0, 1.0]); // v0 = 0, y0 = 1
+//! step.advance(&mut state, 1);
+//! assert_eq!(state.slots(), [-0.5, 0.75]); // v = v - Phi*y, y = y + Phi*v
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+
+use std::collections::BTreeMap;
+use std::fmt;
+
+use nalgebra::DMatrix;
+use num_traits::ToPrimitive;
+use poly::{Method, Operand, Poly};
+
+/// Lanes per block in [`Step::advance_batch`]: small enough that the
+/// registers of a block stay in L1 cache, wide enough to amortise the
+/// dispatch of each instruction.
+pub const BLOCK: usize = 256;
+
+/// Why numeric work on a method failed.
+#[derive(Debug)]
+pub enum NumericError {
+    /// A parameter the method declares has no value.
+    MissingParam {
+        /// The method's name.
+        method: String,
+        /// The parameter without a value.
+        param: String,
+    },
+    /// The exact derivation failed (the two routes disagreed).
+    Derive(poly::Error),
+    /// An eigenvalue solver did not converge within its iteration bound.
+    NoConvergence {
+        /// Which solver.
+        solver: &'static str,
+    },
+    /// A value that must be finite was not.
+    NotFinite {
+        /// What was not finite.
+        what: String,
+    },
+}
+
+impl fmt::Display for NumericError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            NumericError::MissingParam { method, param } => {
+                write!(f, "method `{method}` needs a value for parameter `{param}`: expected it among the given parameters")
+            }
+            NumericError::Derive(e) => write!(f, "{e}"),
+            NumericError::NoConvergence { solver } => {
+                write!(f, "{solver}: eigenvalues did not converge within the iteration bound")
+            }
+            NumericError::NotFinite { what } => {
+                write!(f, "{what} is not finite: expected a finite number")
+            }
+        }
+    }
+}
+
+impl std::error::Error for NumericError {}
+
+impl From<poly::Error> for NumericError {
+    fn from(e: poly::Error) -> Self {
+        NumericError::Derive(e)
+    }
+}
+
+/// Numeric values of a method's parameters, by name (`Phi`, `D`, ...).
+///
+/// Values for parameters a method does not declare are ignored, so one
+/// `Params` can serve several methods.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Params {
+    values: BTreeMap<String, f64>,
+}
+
+impl Params {
+    /// Only `Phi` set.
+    pub fn phi(phi: f64) -> Params {
+        Params::default().with("Phi", phi)
+    }
+
+    /// This set with `name = value` added or replaced.
+    pub fn with(mut self, name: &str, value: f64) -> Params {
+        self.set(name, value);
+        self
+    }
+
+    /// Sets `name = value`.
+    pub fn set(&mut self, name: &str, value: f64) {
+        self.values.insert(name.to_owned(), value);
+    }
+
+    /// The value of `name`, if set.
+    pub fn get(&self, name: &str) -> Option<f64> {
+        self.values.get(name).copied()
+    }
+
+    /// The value of `Phi` (NaN when unset).
+    pub fn phi_value(&self) -> f64 {
+        self.get("Phi").unwrap_or(f64::NAN)
+    }
+
+    /// Every `(name, value)` pair, sorted by name.
+    pub fn iter(&self) -> impl Iterator<Item = (&str, f64)> {
+        self.values.iter().map(|(k, v)| (k.as_str(), *v))
+    }
+
+    /// The values of `method`'s parameters in [`Method::params`] order.
+    pub fn values_for(&self, method: &Method) -> Result<Vec<f64>, NumericError> {
+        method
+            .params()
+            .iter()
+            .map(|s| {
+                self.get(s.name()).ok_or_else(|| NumericError::MissingParam {
+                    method: method.name().to_owned(),
+                    param: s.name().to_owned(),
+                })
+            })
+            .collect()
+    }
+}
+
+/// Evaluates a polynomial in the parameters at numeric values: each term's
+/// rational coefficient is rounded to the nearest `f64`, multiplied by the
+/// powers of the parameter values, and the terms are summed in order.
+///
+/// Errors when a symbol of `p` has no value in `params`.
+pub fn eval_poly(p: &Poly, params: &Params) -> Result<f64, NumericError> {
+    let mut sum = 0.0;
+    for (mono, c) in p.terms() {
+        let mut term = q_to_f64(c);
+        for &(sym, exp) in mono.factors() {
+            let x = params.get(sym.name()).ok_or_else(|| NumericError::MissingParam {
+                method: String::from("(polynomial)"),
+                param: sym.name().to_owned(),
+            })?;
+            term *= x.powi(exp as i32);
+        }
+        sum += term;
+    }
+    Ok(sum)
+}
+
+/// The `f64` nearest to an exact rational (saturating to ±∞ beyond range).
+pub fn q_to_f64(c: &poly::Q) -> f64 {
+    c.to_f64().unwrap_or_else(|| {
+        if c < &poly::Q::from_integer(0.into()) {
+            f64::NEG_INFINITY
+        } else {
+            f64::INFINITY
+        }
+    })
+}
+
+/// The exact rational value of a finite `f64` (None for NaN or ±∞).
+pub fn f64_to_q(x: f64) -> Option<poly::Q> {
+    poly::Q::from_float(x)
+}
+
+/// One instruction: `dst = Σ coef[i]·reg[src[i]]` over `len` terms (or
+/// `dst += ...` when `accumulate`). When `unit_first`, `coef[0]` is exactly
+/// 1 and the first product is skipped.
+#[derive(Clone, Debug, PartialEq)]
+struct Instr {
+    dst: usize,
+    src: [usize; 4],
+    coef: [f64; 4],
+    len: u8,
+    unit_first: bool,
+    accumulate: bool,
+}
+
+/// A register move done at the end of a step.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Move {
+    Swap(usize, usize),
+    Copy { dst: usize, src: usize },
+}
+
+/// A method compiled to `f64` instructions at fixed parameter values.
+#[derive(Clone, Debug)]
+pub struct Step {
+    name: String,
+    slot_names: Vec<String>,
+    n_slots: usize,
+    n_regs: usize,
+    instrs: Vec<Instr>,
+    moves: Vec<Move>,
+    params: Params,
+}
+
+impl Step {
+    /// Compiles `method` at the parameter values `params`.
+    ///
+    /// Errors when a parameter of the method has no value.
+    pub fn compile(method: &Method, params: &Params) -> Result<Step, NumericError> {
+        let values = params.values_for(method)?;
+        let named: Params = method
+            .params()
+            .iter()
+            .zip(&values)
+            .fold(Params::default(), |acc, (s, &v)| acc.with(s.name(), v));
+        let slots = method.slots();
+        let n_slots = slots.len();
+        let slot_reg = |var: usize, lag: u32| {
+            slots.iter().position(|&s| s == (var, lag)).expect("lag within the method's history")
+        };
+        let mut instrs = Vec::new();
+        for (k, a) in method.assigns().iter().enumerate() {
+            let dst = n_slots + k;
+            let mut terms: Vec<(usize, f64)> = Vec::with_capacity(a.terms.len());
+            for (op, c) in &a.terms {
+                let src = match *op {
+                    Operand::Start { var, lag } => slot_reg(var, lag),
+                    Operand::Stmt(t) => n_slots + t,
+                };
+                let coef = eval_poly(c, &named).map_err(|e| match e {
+                    NumericError::MissingParam { param, .. } => {
+                        NumericError::MissingParam { method: method.name().to_owned(), param }
+                    }
+                    other => other,
+                })?;
+                terms.push((src, coef));
+            }
+            // A unit coefficient first saves a multiplication; the sum is
+            // then `a + c1*b + ...`, as a hand-written update reads.
+            if let Some(i) = terms.iter().position(|&(_, c)| c == 1.0) {
+                let t = terms.remove(i);
+                terms.insert(0, t);
+            }
+            if terms.is_empty() {
+                instrs.push(Instr {
+                    dst,
+                    src: [0; 4],
+                    coef: [0.0; 4],
+                    len: 1,
+                    unit_first: false,
+                    accumulate: false,
+                });
+            }
+            for (chunk_idx, chunk) in terms.chunks(4).enumerate() {
+                let mut src = [0usize; 4];
+                let mut coef = [0.0f64; 4];
+                for (i, &(s, c)) in chunk.iter().enumerate() {
+                    src[i] = s;
+                    coef[i] = c;
+                }
+                instrs.push(Instr {
+                    dst,
+                    src,
+                    coef,
+                    len: chunk.len() as u8,
+                    unit_first: chunk_idx == 0 && coef[0] == 1.0,
+                    accumulate: chunk_idx > 0,
+                });
+            }
+        }
+        // End of step: shift each variable's history one lag deeper and put
+        // its new value in slot lag 0. Swaps rotate the registers, so the
+        // register that held the final assignment receives a stale value it
+        // overwrites next step before anything reads it.
+        let mut moves = Vec::new();
+        for (var, &depth) in method.history().iter().enumerate() {
+            match method.final_assign(var) {
+                Some(k) => {
+                    for lag in (1..=depth).rev() {
+                        moves.push(Move::Swap(slot_reg(var, lag), slot_reg(var, lag - 1)));
+                    }
+                    moves.push(Move::Swap(slot_reg(var, 0), n_slots + k));
+                }
+                None => {
+                    for lag in (1..=depth).rev() {
+                        moves.push(Move::Copy {
+                            dst: slot_reg(var, lag),
+                            src: slot_reg(var, lag - 1),
+                        });
+                    }
+                }
+            }
+        }
+        let slot_names = slots
+            .iter()
+            .map(|&(var, lag)| method.operand_name(Operand::Start { var, lag }))
+            .collect();
+        Ok(Step {
+            name: method.name().to_owned(),
+            slot_names,
+            n_slots,
+            n_regs: n_slots + method.assigns().len(),
+            instrs,
+            moves,
+            params: named,
+        })
+    }
+
+    /// The method's name.
+    pub fn name(&self) -> &str {
+        &self.name
+    }
+
+    /// The order N: the number of slots of the augmented state.
+    pub fn order(&self) -> usize {
+        self.n_slots
+    }
+
+    /// Slot names in state order: `v`, `y`, `y@1`, ...
+    pub fn slot_names(&self) -> &[String] {
+        &self.slot_names
+    }
+
+    /// The parameter values the step was compiled at (only the method's).
+    pub fn params(&self) -> &Params {
+        &self.params
+    }
+
+    /// The number of instructions per step (a cost measure).
+    pub fn n_instructions(&self) -> usize {
+        self.instrs.len()
+    }
+
+    /// A single state starting from `initial` (one value per slot).
+    #[track_caller]
+    pub fn state(&self, initial: &[f64]) -> State {
+        assert_eq!(initial.len(), self.n_slots, "one initial value per slot");
+        let mut regs = vec![0.0; self.n_regs];
+        regs[..self.n_slots].copy_from_slice(initial);
+        State { regs, n_slots: self.n_slots }
+    }
+
+    /// Advances one state by `n_steps` steps.
+    #[track_caller]
+    pub fn advance(&self, state: &mut State, n_steps: u64) {
+        assert_eq!(state.regs.len(), self.n_regs, "state made by this step");
+        let regs = &mut state.regs[..];
+        for _ in 0..n_steps {
+            for ins in &self.instrs {
+                let r = &*regs;
+                let (s, c) = (&ins.src, &ins.coef);
+                let v = if ins.accumulate {
+                    accumulate_scalar(r[ins.dst], ins, r)
+                } else {
+                    let first = if ins.unit_first { r[s[0]] } else { c[0] * r[s[0]] };
+                    match ins.len {
+                        1 => first,
+                        2 => first + c[1] * r[s[1]],
+                        3 => first + c[1] * r[s[1]] + c[2] * r[s[2]],
+                        _ => first + c[1] * r[s[1]] + c[2] * r[s[2]] + c[3] * r[s[3]],
+                    }
+                };
+                regs[ins.dst] = v;
+            }
+            for m in &self.moves {
+                match *m {
+                    Move::Swap(a, b) => regs.swap(a, b),
+                    Move::Copy { dst, src } => regs[dst] = regs[src],
+                }
+            }
+        }
+    }
+
+    /// Advances every lane of `batch` by `n_steps` steps.
+    #[track_caller]
+    pub fn advance_batch(&self, batch: &mut Batch, n_steps: u64) {
+        assert_eq!(batch.n_slots, self.n_slots, "batch made for this step");
+        let lanes = batch.lanes;
+        let mut regs: Vec<Vec<f64>> = vec![vec![0.0; BLOCK]; self.n_regs];
+        let mut start = 0;
+        while start < lanes {
+            let width = BLOCK.min(lanes - start);
+            for (s, reg) in regs.iter_mut().enumerate().take(self.n_slots) {
+                reg[..width].copy_from_slice(&batch.data[s * lanes + start..][..width]);
+                reg[width..].fill(0.0);
+            }
+            for _ in 0..n_steps {
+                run_block::<BLOCK>(&self.instrs, &mut regs);
+                for m in &self.moves {
+                    match *m {
+                        Move::Swap(a, b) => regs.swap(a, b),
+                        Move::Copy { dst, src } => {
+                            let v = std::mem::take(&mut regs[dst]);
+                            let mut v = v;
+                            v.copy_from_slice(&regs[src]);
+                            regs[dst] = v;
+                        }
+                    }
+                }
+            }
+            for (s, reg) in regs.iter().enumerate().take(self.n_slots) {
+                batch.data[s * lanes + start..][..width].copy_from_slice(&reg[..width]);
+            }
+            start += width;
+        }
+    }
+
+    /// The numeric transition matrix P: column `j` is one step from `e_j`.
+    pub fn transition_matrix(&self) -> DMatrix<f64> {
+        let n = self.n_slots;
+        let mut p = DMatrix::zeros(n, n);
+        let mut e = vec![0.0; n];
+        for j in 0..n {
+            e.iter_mut().for_each(|x| *x = 0.0);
+            e[j] = 1.0;
+            let mut s = self.state(&e);
+            self.advance(&mut s, 1);
+            for (i, &x) in s.slots().iter().enumerate() {
+                p[(i, j)] = x;
+            }
+        }
+        p
+    }
+}
+
+fn accumulate_scalar(old: f64, ins: &Instr, r: &[f64]) -> f64 {
+    let (s, c) = (&ins.src, &ins.coef);
+    let mut v = old + c[0] * r[s[0]];
+    for i in 1..ins.len as usize {
+        v += c[i] * r[s[i]];
+    }
+    v
+}
+
+/// Runs every instruction once on a block of `B` lanes.
+fn run_block<const B: usize>(instrs: &[Instr], regs: &mut [Vec<f64>]) {
+    for ins in instrs {
+        // Taking the destination out of the register file lets the sources
+        // be borrowed at the same time; a destination is never its own source.
+        let mut dst = std::mem::take(&mut regs[ins.dst]);
+        {
+            let d: &mut [f64; B] = (&mut dst[..]).try_into().expect("block width");
+            let r =
+                |i: usize| -> &[f64; B] { regs[ins.src[i]][..].try_into().expect("block width") };
+            let c = ins.coef;
+            match (ins.len, ins.unit_first, ins.accumulate) {
+                (_, _, true) => {
+                    for i in 0..ins.len as usize {
+                        add_scaled(d, c[i], r(i));
+                    }
+                }
+                (1, true, _) => d.copy_from_slice(r(0)),
+                (1, false, _) => lin1(d, c[0], r(0)),
+                (2, true, _) => lin2u(d, r(0), c[1], r(1)),
+                (2, false, _) => lin2(d, c[0], r(0), c[1], r(1)),
+                (3, true, _) => lin3u(d, r(0), c[1], r(1), c[2], r(2)),
+                (3, false, _) => lin3(d, c[0], r(0), c[1], r(1), c[2], r(2)),
+                (_, true, _) => lin4u(d, r(0), c[1], r(1), c[2], r(2), c[3], r(3)),
+                (_, false, _) => lin4(d, c[0], r(0), c[1], r(1), c[2], r(2), c[3], r(3)),
+            }
+        }
+        regs[ins.dst] = dst;
+    }
+}
+
+#[inline(always)]
+fn add_scaled<const B: usize>(d: &mut [f64; B], c: f64, a: &[f64; B]) {
+    for l in 0..B {
+        d[l] += c * a[l];
+    }
+}
+
+#[inline(always)]
+fn lin1<const B: usize>(d: &mut [f64; B], c0: f64, a: &[f64; B]) {
+    for l in 0..B {
+        d[l] = c0 * a[l];
+    }
+}
+
+#[inline(always)]
+fn lin2u<const B: usize>(d: &mut [f64; B], a: &[f64; B], c1: f64, b: &[f64; B]) {
+    for l in 0..B {
+        d[l] = a[l] + c1 * b[l];
+    }
+}
+
+#[inline(always)]
+fn lin2<const B: usize>(d: &mut [f64; B], c0: f64, a: &[f64; B], c1: f64, b: &[f64; B]) {
+    for l in 0..B {
+        d[l] = c0 * a[l] + c1 * b[l];
+    }
+}
+
+#[inline(always)]
+fn lin3u<const B: usize>(
+    d: &mut [f64; B],
+    a: &[f64; B],
+    c1: f64,
+    b: &[f64; B],
+    c2: f64,
+    e: &[f64; B],
+) {
+    for l in 0..B {
+        d[l] = a[l] + c1 * b[l] + c2 * e[l];
+    }
+}
+
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+fn lin3<const B: usize>(
+    d: &mut [f64; B],
+    c0: f64,
+    a: &[f64; B],
+    c1: f64,
+    b: &[f64; B],
+    c2: f64,
+    e: &[f64; B],
+) {
+    for l in 0..B {
+        d[l] = c0 * a[l] + c1 * b[l] + c2 * e[l];
+    }
+}
+
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+fn lin4u<const B: usize>(
+    d: &mut [f64; B],
+    a: &[f64; B],
+    c1: f64,
+    b: &[f64; B],
+    c2: f64,
+    e: &[f64; B],
+    c3: f64,
+    g: &[f64; B],
+) {
+    for l in 0..B {
+        d[l] = a[l] + c1 * b[l] + c2 * e[l] + c3 * g[l];
+    }
+}
+
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+fn lin4<const B: usize>(
+    d: &mut [f64; B],
+    c0: f64,
+    a: &[f64; B],
+    c1: f64,
+    b: &[f64; B],
+    c2: f64,
+    e: &[f64; B],
+    c3: f64,
+    g: &[f64; B],
+) {
+    for l in 0..B {
+        d[l] = c0 * a[l] + c1 * b[l] + c2 * e[l] + c3 * g[l];
+    }
+}
+
+/// One state of a compiled method: the slots plus the step's scratch
+/// registers. Made by [`Step::state`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct State {
+    regs: Vec<f64>,
+    n_slots: usize,
+}
+
+impl State {
+    /// The augmented state, in [`Step::slot_names`] order.
+    pub fn slots(&self) -> &[f64] {
+        &self.regs[..self.n_slots]
+    }
+
+    /// The augmented state, writable (for renormalising or resetting).
+    pub fn slots_mut(&mut self) -> &mut [f64] {
+        &mut self.regs[..self.n_slots]
+    }
+}
+
+/// Many states of one compiled method, stored struct-of-arrays: slot `s` of
+/// every lane is contiguous.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Batch {
+    lanes: usize,
+    n_slots: usize,
+    data: Vec<f64>,
+}
+
+impl Batch {
+    /// `lanes` states of `step`, all zero.
+    pub fn zeros(step: &Step, lanes: usize) -> Batch {
+        Batch { lanes, n_slots: step.n_slots, data: vec![0.0; lanes * step.n_slots] }
+    }
+
+    /// The number of states.
+    pub fn lanes(&self) -> usize {
+        self.lanes
+    }
+
+    /// Slot `slot` of every lane.
+    pub fn slot(&self, slot: usize) -> &[f64] {
+        &self.data[slot * self.lanes..][..self.lanes]
+    }
+
+    /// Slot `slot` of every lane, writable.
+    pub fn slot_mut(&mut self, slot: usize) -> &mut [f64] {
+        &mut self.data[slot * self.lanes..][..self.lanes]
+    }
+
+    /// Sets every slot of lane `lane`.
+    #[track_caller]
+    pub fn set_lane(&mut self, lane: usize, values: &[f64]) {
+        assert_eq!(values.len(), self.n_slots, "one value per slot");
+        for (s, &v) in values.iter().enumerate() {
+            self.data[s * self.lanes + lane] = v;
+        }
+    }
+
+    /// Every slot of lane `lane`.
+    pub fn lane(&self, lane: usize) -> Vec<f64> {
+        (0..self.n_slots).map(|s| self.data[s * self.lanes + lane]).collect()
+    }
+}
+
+/// Initial slot values from one value per state variable: every lag of a
+/// variable starts at the variable's value (for Verlet, `y@1 = y0`, the
+/// paper's `y2:=1 { v0=0 }`).
+pub fn initial_slots(method: &Method, value_of: impl Fn(&str) -> f64) -> Vec<f64> {
+    method.slots().iter().map(|&(var, _)| value_of(&method.state()[var])).collect()
+}
