@@ -20,6 +20,7 @@
 //! # Ok::<(), poly::Error>(())
 //! ```
 
+mod algebraic;
 mod builtins;
 mod class;
 mod derive;
@@ -27,10 +28,14 @@ mod error;
 mod matrix;
 mod method;
 mod poly;
+pub mod series;
+pub mod stability;
+pub mod sturm;
 mod sym;
 mod syntax;
 mod upoly;
 
+pub use crate::algebraic::Algebraic;
 pub use crate::builtins::{builtin, builtin_names, builtin_source, direct_twin, BUILTINS};
 pub use crate::class::RootClass;
 pub mod cost;

@@ -1,0 +1,518 @@
+//! Real algebraic numbers: exact stability limits such as 2, √2 or
+//! √(2√5 − 2).
+//!
+//! An [`Algebraic`] is either a rational or an irrational real root of a
+//! defining polynomial together with an isolating interval. The defining
+//! polynomial is kept monic, square-free and free of rational roots (and of
+//! the factors x² − y for rational y that do not vanish at the number), so a
+//! limit found as a root of Φ²(Φ² − 2) is stored as the root of Φ² − 2, and a
+//! root of Φ² − 4 is the rational 2. Everything is decided exactly: signs of
+//! polynomials at the number come from gcds and Sturm counts, comparisons
+//! refine intervals until they separate, decimals come from refinement, never
+//! from floating point.
+
+use std::cmp::Ordering;
+use std::fmt;
+
+use num_bigint::BigInt;
+use num_integer::Integer;
+use num_traits::{One, Signed, Zero};
+
+use crate::sturm::{count_real_roots, isolate_real_roots, refine_interval, sign};
+use crate::{UPoly, Q};
+
+/// A real algebraic number, exact.
+#[derive(Clone)]
+pub struct Algebraic {
+    repr: Repr,
+}
+
+#[derive(Clone)]
+enum Repr {
+    Rational(Q),
+    /// An irrational root: `poly` monic, square-free, degree ≥ 2, without
+    /// rational roots; exactly one root in (lo, hi); poly(lo), poly(hi)
+    /// non-zero with opposite signs.
+    Root {
+        poly: UPoly,
+        lo: Q,
+        hi: Q,
+    },
+}
+
+impl Algebraic {
+    /// The rational `q` as an algebraic number.
+    pub fn from_rational(q: Q) -> Algebraic {
+        Algebraic { repr: Repr::Rational(q) }
+    }
+
+    /// Zero.
+    pub fn zero() -> Algebraic {
+        Algebraic::from_rational(Q::zero())
+    }
+
+    /// Every distinct real root of `p`, increasing (empty for constants and
+    /// the zero polynomial).
+    pub fn real_roots(p: &UPoly) -> Vec<Algebraic> {
+        let sf = p.squarefree();
+        isolate_real_roots(&sf).into_iter().map(|(lo, hi)| reduce(sf.clone(), lo, hi)).collect()
+    }
+
+    /// The real roots of `p` in the open interval (0, ∞), increasing.
+    pub fn positive_roots(p: &UPoly) -> Vec<Algebraic> {
+        Algebraic::real_roots(p).into_iter().filter(|a| a.sign() == Ordering::Greater).collect()
+    }
+
+    /// The unique root of `p` in `(lo, hi]`, or `None` when `(lo, hi]` does
+    /// not hold exactly one distinct root.
+    pub fn from_isolating(p: &UPoly, lo: &Q, hi: &Q) -> Option<Algebraic> {
+        let sf = p.squarefree();
+        if sf.degree().unwrap_or(0) == 0 || count_real_roots(&sf, lo, hi) != 1 {
+            return None;
+        }
+        if sf.eval(hi).is_zero() {
+            return Some(Algebraic::from_rational(hi.clone()));
+        }
+        // The root is inside (lo, hi); when lo itself is another root, find
+        // the root among the isolating intervals of p instead.
+        if sf.eval(lo).is_zero() {
+            return Algebraic::real_roots(&sf).into_iter().find(|a| {
+                a.cmp_rational(lo) == Ordering::Greater && a.cmp_rational(hi) == Ordering::Less
+            });
+        }
+        Some(reduce(sf, lo.clone(), hi.clone()))
+    }
+
+    /// The rational value, when the number is rational.
+    pub fn as_rational(&self) -> Option<&Q> {
+        match &self.repr {
+            Repr::Rational(q) => Some(q),
+            Repr::Root { .. } => None,
+        }
+    }
+
+    /// Whether the number is rational.
+    pub fn is_rational(&self) -> bool {
+        self.as_rational().is_some()
+    }
+
+    /// The defining polynomial: monic, square-free, without rational roots
+    /// when the number is irrational; `x − r` for a rational `r`.
+    pub fn defining_poly(&self) -> UPoly {
+        match &self.repr {
+            Repr::Rational(q) => UPoly::new(vec![-q.clone(), Q::one()]),
+            Repr::Root { poly, .. } => poly.clone(),
+        }
+    }
+
+    /// The isolating interval `(lo, hi)`; `(r, r)` for a rational `r`.
+    pub fn interval(&self) -> (Q, Q) {
+        match &self.repr {
+            Repr::Rational(q) => (q.clone(), q.clone()),
+            Repr::Root { lo, hi, .. } => (lo.clone(), hi.clone()),
+        }
+    }
+
+    /// The same number with an isolating interval no wider than `width`.
+    pub fn refine(&self, width: &Q) -> Algebraic {
+        match &self.repr {
+            Repr::Rational(_) => self.clone(),
+            Repr::Root { poly, lo, hi } => {
+                let (lo, hi) = refine_interval(poly, lo, hi, width);
+                debug_assert!(lo != hi, "an irrational root was hit exactly");
+                Algebraic { repr: Repr::Root { poly: poly.clone(), lo, hi } }
+            }
+        }
+    }
+
+    /// A rational within `width` of the number (the midpoint of a refined
+    /// interval); the number itself when it is rational.
+    pub fn approx(&self, width: &Q) -> Q {
+        let (lo, hi) = self.refine(width).interval();
+        (lo + hi) / Q::from_integer(2.into())
+    }
+
+    /// The sign of the number.
+    pub fn sign(&self) -> Ordering {
+        self.cmp_rational(&Q::zero())
+    }
+
+    /// Compares the number with a rational, exactly.
+    pub fn cmp_rational(&self, r: &Q) -> Ordering {
+        match &self.repr {
+            Repr::Rational(q) => q.cmp(r),
+            Repr::Root { poly, lo, hi } => {
+                if r <= lo {
+                    Ordering::Greater
+                } else if r >= hi {
+                    Ordering::Less
+                } else if sign(&poly.eval(r)) == sign(&poly.eval(lo)) {
+                    // No sign change in (lo, r], so the root lies above r
+                    // (poly(r) is non-zero: poly has no rational roots).
+                    Ordering::Greater
+                } else {
+                    Ordering::Less
+                }
+            }
+        }
+    }
+
+    /// The sign of `g` at this number, exactly.
+    pub fn sign_of(&self, g: &UPoly) -> Ordering {
+        match &self.repr {
+            Repr::Rational(q) => sign(&g.eval(q)),
+            Repr::Root { poly, lo, hi } => sign_at_root(poly, lo, hi, g),
+        }
+    }
+
+    /// Whether `g` vanishes at this number.
+    pub fn is_root_of(&self, g: &UPoly) -> bool {
+        self.sign_of(g) == Ordering::Equal
+    }
+
+    /// The decimal expansion rounded to `digits` places after the point
+    /// (half away from zero), exact: the interval is refined until both ends
+    /// round alike, which ends because an irrational number never sits on a
+    /// rounding boundary.
+    pub fn to_decimal(&self, digits: usize) -> String {
+        match &self.repr {
+            Repr::Rational(q) => round_decimal(q, digits),
+            Repr::Root { .. } => {
+                let ten = Q::from_integer(10.into());
+                let mut width = Q::one() / num_traits::pow(ten.clone(), digits + 2);
+                loop {
+                    let (lo, hi) = self.refine(&width).interval();
+                    let (a, b) = (round_decimal(&lo, digits), round_decimal(&hi, digits));
+                    if a == b {
+                        return a;
+                    }
+                    width /= &ten;
+                }
+            }
+        }
+    }
+
+    /// A closed form in plain CAS text when one is known: rationals
+    /// ("2", "-1/3"), roots of quadratics ("sqrt(2)", "2*sqrt(5) - 2") and of
+    /// biquadratics x⁴ + b x² + c ("sqrt(2*sqrt(5) - 2)").
+    pub fn closed_form(&self) -> Option<String> {
+        let (poly, lo, hi) = match &self.repr {
+            Repr::Rational(q) => return Some(q.to_string()),
+            Repr::Root { poly, lo, hi } => (poly, lo, hi),
+        };
+        let c = poly.coeffs();
+        match poly.degree() {
+            Some(2) => {
+                // x² + b x + c: roots −b/2 ± √(b²/4 − c); the number is the
+                // larger root exactly when it lies above −b/2.
+                let centre = -&c[1] / Q::from_integer(2.into());
+                let plus = self.cmp_rational(&centre) == Ordering::Greater;
+                Some(quadratic_form(&centre, &(&centre * &centre - &c[0]), plus))
+            }
+            Some(4) if c[1].is_zero() && c[3].is_zero() => {
+                // x⁴ + b x² + c: x² = −b/2 ± √(b²/4 − c).
+                let centre = -&c[2] / Q::from_integer(2.into());
+                let radicand = &centre * &centre - &c[0];
+                let shifted = UPoly::new(vec![-centre.clone(), Q::zero(), Q::one()]);
+                let plus = sign_at_root(poly, lo, hi, &shifted) == Ordering::Greater;
+                let inner = quadratic_form(&centre, &radicand, plus);
+                let negative = self.sign() == Ordering::Less;
+                Some(format!("{}sqrt({inner})", if negative { "-" } else { "" }))
+            }
+            _ => None,
+        }
+    }
+
+    /// The square of this number, exact. Its defining polynomial comes from
+    /// f(x) = E(x²) + x·O(x²): every square of a root of f is a root of
+    /// E(y)² − y·O(y)².
+    pub fn square(&self) -> Algebraic {
+        let (poly, mut lo, mut hi) = match &self.repr {
+            Repr::Rational(q) => return Algebraic::from_rational(q * q),
+            Repr::Root { poly, lo, hi } => (poly.clone(), lo.clone(), hi.clone()),
+        };
+        let even = UPoly::new(poly.coeffs().iter().step_by(2).cloned().collect());
+        let odd = UPoly::new(poly.coeffs().iter().skip(1).step_by(2).cloned().collect());
+        let sq = (&(&even * &even) - &(&UPoly::x() * &(&odd * &odd))).squarefree();
+        let four = Q::from_integer(4.into());
+        loop {
+            // Once the interval lies on one side of 0 (refinement gets there:
+            // the number is not 0), squaring maps it onto an interval.
+            if !lo.is_negative() || !hi.is_positive() {
+                let (a, b) =
+                    if !lo.is_negative() { (&lo * &lo, &hi * &hi) } else { (&hi * &hi, &lo * &lo) };
+                if count_real_roots(&sq, &a, &b) == 1 && !sq.eval(&b).is_zero() {
+                    if let Some(r) = Algebraic::from_isolating(&sq, &a, &b) {
+                        return r;
+                    }
+                }
+            }
+            let width = (&hi - &lo) / &four;
+            (lo, hi) = refine_interval(&poly, &lo, &hi, &width);
+        }
+    }
+
+    /// The multiplicity of this number as a root of `g` (0 when it is not a
+    /// root); `g` must be non-zero.
+    pub fn multiplicity_in(&self, g: &UPoly) -> usize {
+        let mut k = 0;
+        let mut h = g.clone();
+        while !h.is_zero() && self.is_root_of(&h) {
+            k += 1;
+            h = h.derivative();
+        }
+        k
+    }
+
+    /// Like `Display`, but writes a defining polynomial in the variable `var`.
+    pub fn describe(&self, var: &str) -> String {
+        if let Some(s) = self.closed_form() {
+            return s;
+        }
+        let (lo, hi) = self.interval();
+        format!("root of {} in [{lo}, {hi}]", self.defining_poly().to_string_in(var))
+    }
+}
+
+/// The sign of `g` at the unique root of `poly` in (lo, hi).
+fn sign_at_root(poly: &UPoly, lo: &Q, hi: &Q, g: &UPoly) -> Ordering {
+    if g.is_zero() {
+        return Ordering::Equal;
+    }
+    let h = poly.gcd(g);
+    // h divides poly, so its only possible root in (lo, hi) is our number;
+    // hi is not a root of poly, hence not of h.
+    if h.degree().unwrap_or(0) > 0 && count_real_roots(&h, lo, hi) > 0 {
+        return Ordering::Equal;
+    }
+    let (mut lo, mut hi) = (lo.clone(), hi.clone());
+    let four = Q::from_integer(4.into());
+    loop {
+        if count_real_roots(g, &lo, &hi) == 0 && !g.eval(&lo).is_zero() {
+            return sign(&g.eval(&hi));
+        }
+        let width = (&hi - &lo) / &four;
+        (lo, hi) = refine_interval(poly, &lo, &hi, &width);
+    }
+}
+
+/// Canonical form of the root of the square-free `f` in the isolating
+/// interval (lo, hi) (or the rational `lo` when `lo == hi`).
+fn reduce(f: UPoly, lo: Q, hi: Q) -> Algebraic {
+    if lo == hi {
+        return Algebraic::from_rational(lo);
+    }
+    if f.degree() == Some(1) {
+        return Algebraic::from_rational(-f.coeff(0) / f.coeff(1));
+    }
+    if let Some(r) = rational_root_in(&f, &lo, &hi) {
+        return Algebraic::from_rational(r);
+    }
+    let mut f = f;
+    // Drop the other rational roots: they are not ours and would only hide
+    // a closed form.
+    for (a, b) in isolate_real_roots(&f) {
+        if let Some(r) = if a == b { Some(a) } else { rational_root_in(&f, &a, &b) } {
+            f = f.div_rem(&UPoly::new(vec![-r, Q::one()])).0;
+        }
+    }
+    // For an even f(x) = F(x²), a rational root y of F gives the factor
+    // x² − y: either it is ours (a square root of a rational) or it goes.
+    if f.coeffs().iter().enumerate().all(|(k, c)| k % 2 == 0 || c.is_zero()) {
+        let big_f = UPoly::new(f.coeffs().iter().step_by(2).cloned().collect());
+        for y in isolate_real_roots(&big_f.squarefree()).into_iter().filter_map(|(a, b)| {
+            if a == b {
+                Some(a)
+            } else {
+                rational_root_in(&big_f.squarefree(), &a, &b)
+            }
+        }) {
+            let factor = UPoly::new(vec![-y, Q::zero(), Q::one()]);
+            if sign_at_root(&f, &lo, &hi, &factor) == Ordering::Equal {
+                f = factor;
+                break;
+            }
+            let (quotient, rem) = f.div_rem(&factor);
+            if rem.is_zero() {
+                f = quotient;
+            }
+        }
+    }
+    Algebraic { repr: Repr::Root { poly: f.monic(), lo, hi } }
+}
+
+/// The rational root of the square-free `f` in (lo, hi), if the root
+/// isolated there is rational. By the rational root theorem a root of the
+/// primitive integer form with leading coefficient a_n is j / a_n for an
+/// integer j, so once the interval is narrower than 1/|a_n| one candidate
+/// remains.
+fn rational_root_in(f: &UPoly, lo: &Q, hi: &Q) -> Option<Q> {
+    let lead = integer_leading(f);
+    let width = Q::new(BigInt::one(), lead.clone()) / Q::from_integer(2.into());
+    let (lo, hi) = refine_interval(f, lo, hi, &width);
+    if lo == hi {
+        return Some(lo);
+    }
+    let lead_q = Q::from_integer(lead.clone());
+    // The smallest j with j / a_n > lo; at most one such candidate fits.
+    let j = (&lo * &lead_q).floor().to_integer() + BigInt::one();
+    let candidate = Q::new(j, lead);
+    (candidate < hi && f.eval(&candidate).is_zero()).then_some(candidate)
+}
+
+/// |a_n| of the primitive integer polynomial proportional to `f`.
+fn integer_leading(f: &UPoly) -> BigInt {
+    let mut den = BigInt::one();
+    for c in f.coeffs() {
+        den = den.lcm(c.denom());
+    }
+    let ints: Vec<BigInt> =
+        f.coeffs().iter().map(|c| (c * Q::from_integer(den.clone())).to_integer()).collect();
+    let mut g = BigInt::zero();
+    for i in &ints {
+        g = g.gcd(i);
+    }
+    (ints.last().cloned().unwrap_or_else(BigInt::one) / g).abs()
+}
+
+/// `centre ± √radicand` in plain text, simplifying the square root.
+fn quadratic_form(centre: &Q, radicand: &Q, plus: bool) -> String {
+    let (mut u, d) = sqrt_parts(radicand);
+    if !plus {
+        u = -u;
+    }
+    if d.is_one() {
+        return (centre + u).to_string();
+    }
+    let term = |u: &Q| -> String {
+        let (a, b) = (u.numer().abs(), u.denom().clone());
+        match (a.is_one(), b.is_one()) {
+            (true, true) => format!("sqrt({d})"),
+            (false, true) => format!("{a}*sqrt({d})"),
+            (true, false) => format!("sqrt({d})/{b}"),
+            (false, false) => format!("{a}*sqrt({d})/{b}"),
+        }
+    };
+    if centre.is_zero() {
+        format!("{}{}", if u.is_negative() { "-" } else { "" }, term(&u))
+    } else if u.is_positive() {
+        let op = if centre.is_positive() { "+" } else { "-" };
+        format!("{} {op} {}", term(&u), centre.abs())
+    } else {
+        format!("{centre} - {}", term(&u))
+    }
+}
+
+/// √q = u √d with u rational and d a square-free positive integer (as far as
+/// trial division up to 10⁵ can tell); requires q ≥ 0.
+fn sqrt_parts(q: &Q) -> (Q, BigInt) {
+    let n = q.numer() * q.denom();
+    let mut rest = n.abs();
+    let mut out = BigInt::one();
+    let mut p = BigInt::from(2);
+    while &p * &p <= rest && p < BigInt::from(100_000) {
+        let pp = &p * &p;
+        while (&rest % &pp).is_zero() {
+            rest /= &pp;
+            out *= &p;
+        }
+        p += BigInt::one();
+    }
+    // A large remaining square (beyond trial division) still simplifies.
+    let s = rest.sqrt();
+    if &s * &s == rest {
+        out *= s;
+        rest = BigInt::one();
+    }
+    (Q::new(out, q.denom().clone()), rest)
+}
+
+/// `q` rounded to `digits` decimals, half away from zero.
+fn round_decimal(q: &Q, digits: usize) -> String {
+    let scale = num_traits::pow(BigInt::from(10), digits);
+    let scaled = q.abs() * Q::from_integer(scale.clone());
+    let n = (scaled + Q::new(BigInt::one(), BigInt::from(2))).floor().to_integer();
+    let (int, frac) = n.div_rem(&scale);
+    let negative = q.is_negative() && !n.is_zero();
+    let mut s = String::new();
+    if negative {
+        s.push('-');
+    }
+    s.push_str(&int.to_string());
+    if digits > 0 {
+        s.push('.');
+        s.push_str(&format!("{:0>width$}", frac.to_string(), width = digits));
+    }
+    s
+}
+
+impl PartialEq for Algebraic {
+    fn eq(&self, other: &Algebraic) -> bool {
+        self.cmp(other) == Ordering::Equal
+    }
+}
+
+impl Eq for Algebraic {}
+
+impl PartialOrd for Algebraic {
+    fn partial_cmp(&self, other: &Algebraic) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl Ord for Algebraic {
+    /// Exact: equal roots are recognised through the gcd of the defining
+    /// polynomials; distinct ones by refining until the intervals separate.
+    fn cmp(&self, other: &Algebraic) -> Ordering {
+        match (&self.repr, &other.repr) {
+            (Repr::Rational(a), Repr::Rational(b)) => a.cmp(b),
+            (_, Repr::Rational(b)) => self.cmp_rational(b),
+            (Repr::Rational(a), _) => other.cmp_rational(a).reverse(),
+            (
+                Repr::Root { poly: p1, lo: lo1, hi: hi1 },
+                Repr::Root { poly: p2, lo: lo2, hi: hi2 },
+            ) => {
+                let g = p1.gcd(p2);
+                let lo = lo1.max(lo2);
+                let hi = hi1.min(hi2);
+                if g.degree().unwrap_or(0) > 0 && lo < hi && count_real_roots(&g, lo, hi) > 0 {
+                    return Ordering::Equal;
+                }
+                let (mut a, mut b) = (self.clone(), other.clone());
+                loop {
+                    let ((alo, ahi), (blo, bhi)) = (a.interval(), b.interval());
+                    if ahi <= blo {
+                        return Ordering::Less;
+                    }
+                    if bhi <= alo {
+                        return Ordering::Greater;
+                    }
+                    let four = Q::from_integer(4.into());
+                    a = a.refine(&((&ahi - &alo) / &four));
+                    b = b.refine(&((&bhi - &blo) / &four));
+                }
+            }
+        }
+    }
+}
+
+impl fmt::Display for Algebraic {
+    /// The closed form when known, else `root of <poly> in [lo, hi]` with
+    /// the polynomial written in `x`.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.describe("x"))
+    }
+}
+
+impl fmt::Debug for Algebraic {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let (lo, hi) = self.interval();
+        write!(f, "Algebraic({self} ≈ [{lo}, {hi}])")
+    }
+}
+
+impl From<Q> for Algebraic {
+    fn from(q: Q) -> Algebraic {
+        Algebraic::from_rational(q)
+    }
+}

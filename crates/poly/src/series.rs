@@ -1,0 +1,1 @@
+//! Truncated power series over Q (placeholder, filled in next).

@@ -1,0 +1,221 @@
+//! Sturm sequences over Q: exact counting and isolation of real roots.
+//!
+//! For a square-free polynomial p the Sturm sequence p₀ = p, p₁ = p′,
+//! p_{k+1} = −rem(p_{k−1}, p_k) satisfies Sturm's theorem: the number of
+//! distinct real roots in (a, b] is V(a) − V(b), where V(x) counts the sign
+//! changes of the sequence at x (zeros skipped). The half-open interval comes
+//! for free: at a root c of a square-free p the remaining terms keep their
+//! signs, so V(c) = V(c⁺). Every count here works on the square-free part, so
+//! repeated roots count once.
+//!
+//! Isolation bisects a power-of-two Cauchy bound, so every endpoint is a
+//! dyadic rational. An isolating interval `(lo, hi)` with `lo < hi` holds
+//! exactly one root strictly inside, and p(lo), p(hi) are non-zero with
+//! opposite signs, which lets callers refine by sign alone; a rational root
+//! met on the way is returned as the degenerate interval `(r, r)`.
+
+use std::cmp::Ordering;
+
+use num_traits::{One, Signed, Zero};
+
+use crate::{UPoly, Q};
+
+/// The Sturm sequence of `p` (of its square-free part, so that counts see
+/// each distinct root once). Empty for the zero polynomial.
+pub fn sturm_sequence(p: &UPoly) -> Vec<UPoly> {
+    if p.is_zero() {
+        return Vec::new();
+    }
+    let p = p.squarefree();
+    let mut seq = vec![p.clone()];
+    let mut b = p.derivative();
+    let mut a = p;
+    while !b.is_zero() {
+        let r = a.div_rem(&b).1;
+        seq.push(b.clone());
+        a = b;
+        b = -&r;
+    }
+    seq
+}
+
+/// Sign changes of the sequence at `x`, zeros skipped.
+fn variations(seq: &[UPoly], x: &Q) -> usize {
+    let mut count = 0;
+    let mut last = Ordering::Equal;
+    for p in seq {
+        let s = sign(&p.eval(x));
+        if s != Ordering::Equal {
+            if last != Ordering::Equal && s != last {
+                count += 1;
+            }
+            last = s;
+        }
+    }
+    count
+}
+
+/// Sign changes at +∞ (leading coefficients) or −∞.
+fn variations_at_infinity(seq: &[UPoly], positive: bool) -> usize {
+    let mut count = 0;
+    let mut last = Ordering::Equal;
+    for p in seq {
+        let mut s = sign(&p.leading());
+        if !positive && p.degree().unwrap_or(0) % 2 == 1 {
+            s = s.reverse();
+        }
+        if s != Ordering::Equal {
+            if last != Ordering::Equal && s != last {
+                count += 1;
+            }
+            last = s;
+        }
+    }
+    count
+}
+
+/// The sign of a rational as an ordering against zero.
+pub(crate) fn sign(q: &Q) -> Ordering {
+    if q.is_zero() {
+        Ordering::Equal
+    } else if q.is_positive() {
+        Ordering::Greater
+    } else {
+        Ordering::Less
+    }
+}
+
+/// The number of distinct real roots of `p` in the half-open interval
+/// `(lo, hi]`; zero when `hi <= lo` or `p` is zero.
+pub fn count_real_roots(p: &UPoly, lo: &Q, hi: &Q) -> usize {
+    if hi <= lo || p.is_zero() {
+        return 0;
+    }
+    let seq = sturm_sequence(p);
+    count_with(&seq, lo, hi)
+}
+
+fn count_with(seq: &[UPoly], lo: &Q, hi: &Q) -> usize {
+    variations(seq, lo).saturating_sub(variations(seq, hi))
+}
+
+/// The number of distinct real roots of `p` (zero for the zero polynomial).
+pub fn count_all_real_roots(p: &UPoly) -> usize {
+    if p.is_zero() {
+        return 0;
+    }
+    let seq = sturm_sequence(p);
+    variations_at_infinity(&seq, false).saturating_sub(variations_at_infinity(&seq, true))
+}
+
+/// A power of two strictly greater than the modulus of every root of `p`
+/// (Cauchy's bound 1 + max |a_k / a_n|, rounded up).
+pub fn root_bound(p: &UPoly) -> Q {
+    let lead = p.leading().abs();
+    let mut m = Q::zero();
+    for c in &p.coeffs()[..p.coeffs().len().saturating_sub(1)] {
+        let r = c.abs() / &lead;
+        if r > m {
+            m = r;
+        }
+    }
+    let bound = m + Q::one();
+    let mut b = Q::one();
+    while b <= bound {
+        b *= Q::from_integer(2.into());
+    }
+    b
+}
+
+/// Disjoint isolating intervals of the distinct real roots of `p`, sorted
+/// increasingly. Each entry is either `(r, r)` for a rational root `r` met
+/// by bisection, or `(lo, hi)` with `lo < hi`, exactly one root strictly
+/// inside, and `p(lo)`, `p(hi)` non-zero of opposite signs.
+pub fn isolate_real_roots(p: &UPoly) -> Vec<(Q, Q)> {
+    if p.degree().unwrap_or(0) == 0 {
+        return Vec::new();
+    }
+    let sf = p.squarefree();
+    let seq = sturm_sequence(&sf);
+    let b = root_bound(&sf);
+    let mut out = Vec::new();
+    let lo = -b.clone();
+    let n = count_with(&seq, &lo, &b);
+    isolate_in(&sf, &seq, lo, b, n, &mut out);
+    out
+}
+
+/// Isolates the `n` roots in `(lo, hi]`, appending them in increasing order.
+/// `lo` is never a root here: it is the (root-free) bound or a bisection
+/// point that was tested.
+fn isolate_in(sf: &UPoly, seq: &[UPoly], lo: Q, hi: Q, n: usize, out: &mut Vec<(Q, Q)>) {
+    if n == 0 {
+        return;
+    }
+    if n == 1 {
+        if sf.eval(&hi).is_zero() {
+            out.push((hi.clone(), hi));
+        } else {
+            out.push((lo, hi));
+        }
+        return;
+    }
+    let two = Q::from_integer(2.into());
+    let mid = (&lo + &hi) / &two;
+    let left = count_with(seq, &lo, &mid);
+    if sf.eval(&mid).is_zero() {
+        // `mid` is a root: isolate the others on either side from points
+        // next to it that are not roots, so every endpoint stays non-zero.
+        let below = beside(sf, seq, &lo, &mid);
+        let above = beside(sf, seq, &hi, &mid);
+        isolate_in(sf, seq, lo, below, left - 1, out);
+        out.push((mid.clone(), mid));
+        isolate_in(sf, seq, above, hi, n - left, out);
+    } else {
+        isolate_in(sf, seq, lo, mid.clone(), left, out);
+        isolate_in(sf, seq, mid, hi, n - left, out);
+    }
+}
+
+/// A point strictly between `toward` and the root `r`, not a root itself,
+/// with no root between it and `r`. Roots are isolated, so halving the step
+/// ends.
+fn beside(sf: &UPoly, seq: &[UPoly], toward: &Q, r: &Q) -> Q {
+    let two = Q::from_integer(2.into());
+    let mut step = (toward - r) / &two;
+    loop {
+        let x = r + &step;
+        let (a, b) = if x < *r { (x.clone(), r.clone()) } else { (r.clone(), x.clone()) };
+        // (a, b] holds r when x is below, nothing else wanted either way.
+        let expected = usize::from(x < *r);
+        if !sf.eval(&x).is_zero() && count_with(seq, &a, &b) == expected {
+            return x;
+        }
+        step /= &two;
+    }
+}
+
+/// Narrows an isolating interval `(lo, hi)` (as returned by
+/// [`isolate_real_roots`]) of a square-free `p` by bisection until its width
+/// is at most `width`. A rational root hit exactly becomes `(r, r)`.
+pub fn refine_interval(p: &UPoly, lo: &Q, hi: &Q, width: &Q) -> (Q, Q) {
+    let (mut lo, mut hi) = (lo.clone(), hi.clone());
+    if lo == hi {
+        return (lo, hi);
+    }
+    let two = Q::from_integer(2.into());
+    let s_lo = sign(&p.eval(&lo));
+    while &hi - &lo > *width {
+        let mid = (&lo + &hi) / &two;
+        let s = sign(&p.eval(&mid));
+        if s == Ordering::Equal {
+            return (mid.clone(), mid);
+        }
+        if s == s_lo {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    (lo, hi)
+}
