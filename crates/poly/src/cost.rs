@@ -28,7 +28,9 @@
 //!    additions/subtractions. A lone −1 term (`x = −y`) or a sum whose terms
 //!    are all −1 costs one more (a negation), since no register can absorb
 //!    the sign.
-//! 5. **Copies are counted apart.** An assignment `x = y` (one term,
+//! 5. **Dead code is removed.** An assignment nothing reads (neither a later
+//!    assignment nor the end of the step) costs nothing; see [`live_assigns`].
+//! 6. **Copies are counted apart.** An assignment `x = y` (one term,
 //!    coefficient +1) and each history shift (`y@1 ← y` for a method that
 //!    reads `y@1`) is a copy, not arithmetic: [`OpCount::copy`]. A compiler
 //!    usually removes copies by renaming registers in an unrolled loop.
@@ -56,7 +58,7 @@ use std::ops::{Add, AddAssign};
 
 use num_traits::One;
 
-use crate::method::Method;
+use crate::method::{Method, Operand};
 use crate::{Poly, PolyMatrix};
 
 /// Counts of per-step operations.
@@ -107,7 +109,8 @@ impl fmt::Display for OpCount {
 pub struct StepCost {
     /// The whole step as written (all assignments plus history shifts).
     pub program: OpCount,
-    /// One count per lowered assignment, in program order.
+    /// One count per lowered assignment, in program order (zero for dead
+    /// assignments).
     pub per_assign: Vec<OpCount>,
     /// History shifts per step (also included in `program.copy`).
     pub shifts: u32,
@@ -173,13 +176,48 @@ pub fn matrix_cost(p: &PolyMatrix) -> OpCount {
 /// # Ok::<(), poly::Error>(())
 /// ```
 pub fn step_cost(method: &Method) -> StepCost {
-    let per_assign: Vec<OpCount> =
-        method.assigns().iter().map(|a| combination_cost(a.terms.iter().map(|(_, c)| c))).collect();
+    let live = live_assigns(method);
+    let per_assign: Vec<OpCount> = method
+        .assigns()
+        .iter()
+        .zip(&live)
+        .map(|(a, &live)| {
+            if live {
+                combination_cost(a.terms.iter().map(|(_, c)| c))
+            } else {
+                OpCount::default()
+            }
+        })
+        .collect();
     let shifts: u32 = method.history().iter().sum();
     let mut program = per_assign.iter().copied().fold(OpCount::default(), Add::add);
     program.copy += shifts;
     let matrix_form = matrix_cost(&crate::transition_matrix(method));
     StepCost { program, per_assign, shifts, matrix_form }
+}
+
+/// Which assignments are live: the last assignment to each state variable,
+/// and every assignment a live one reads. The rest is dead code a compiler
+/// removes (Semi-False Heun's `v11:= v0+dv1`, which nothing reads).
+pub fn live_assigns(method: &Method) -> Vec<bool> {
+    let assigns = method.assigns();
+    let mut live = vec![false; assigns.len()];
+    for var in 0..method.state().len() {
+        if let Some(k) = method.final_assign(var) {
+            live[k] = true;
+        }
+    }
+    for k in (0..assigns.len()).rev() {
+        if !live[k] {
+            continue;
+        }
+        for (op, _) in &assigns[k].terms {
+            if let Operand::Stmt(t) = *op {
+                live[t] = true;
+            }
+        }
+    }
+    live
 }
 
 /// Whether a coefficient is a plain ±1 (free under the model).
