@@ -1,11 +1,244 @@
-//! `zcheck stability` (placeholder until its issue lands; replace this file).
+//! `zcheck stability`: the exact stability limit, the boundary kind and
+//! every class change of a method over Φ > 0.
+//!
+//! The analysis is `poly::stability::analyze`, exact throughout; this file
+//! only substitutes `--param` values and prints. Numbers are shown two ways:
+//! the exact form (closed form, or defining polynomial and an isolating
+//! interval narrowed to 1e-15) and an f64 taken from the exact decimal
+//! expansion, which is the only place a float appears.
 
+use std::collections::HashMap;
+use std::fmt::Write as _;
 use std::process::ExitCode;
+
+use anyhow::{bail, Context};
+use poly::stability::{analyze, StabilityReport};
+use poly::{Algebraic, Sym, Q};
+use serde_json::{json, Value};
+
+/// Output format of `zcheck stability`.
+#[derive(Clone, Copy, clap::ValueEnum)]
+pub enum Format {
+    Text,
+    Json,
+}
 
 /// Arguments of `zcheck stability`.
 #[derive(clap::Args)]
-pub struct Args {}
+pub struct Args {
+    /// A built-in method name or a path to a `.zm` file.
+    pub method: String,
+    /// A parameter value, `NAME=VALUE`, with VALUE an integer, a fraction
+    /// (`1/2`) or a decimal (`0.5`, read exactly); repeatable.
+    #[arg(long = "param", value_name = "NAME=VALUE")]
+    pub params: Vec<String>,
+    #[arg(long, value_enum, default_value = "text")]
+    pub format: Format,
+}
 
-pub fn run(_: Args) -> anyhow::Result<ExitCode> {
-    anyhow::bail!("zcheck stability is not implemented yet")
+pub fn run(args: Args) -> anyhow::Result<ExitCode> {
+    let method = check::load::load_method(&args.method)?;
+    let chi = poly::charpoly(&method)?;
+    let mut values = HashMap::new();
+    let mut shown = Vec::new();
+    for p in &args.params {
+        let (name, value) = parse_param(p)?;
+        if !method.params().iter().any(|s| s.name() == name) {
+            let known: Vec<&str> =
+                method.params().iter().map(|s| s.name()).filter(|n| *n != "Phi").collect();
+            bail!(
+                "--param {p}: method {} has no parameter {name} (its parameters: {})",
+                method.name(),
+                if known.is_empty() { "none".to_owned() } else { known.join(", ") }
+            );
+        }
+        if name == "Phi" {
+            bail!("--param {p}: Phi is the step size the analysis sweeps; it cannot be fixed");
+        }
+        values.insert(Sym::new(&name), value.clone());
+        shown.push((name, value));
+    }
+    let chi = chi.eval_partial(&values);
+    let report = analyze(&chi).with_context(|| format!("method {}", method.name()))?;
+    let out = match args.format {
+        Format::Text => text(method.name(), &shown, &chi, &report),
+        Format::Json => {
+            serde_json::to_string_pretty(&to_json(method.name(), &shown, &chi, &report))? + "\n"
+        }
+    };
+    print!("{out}");
+    Ok(ExitCode::SUCCESS)
+}
+
+/// Parses `NAME=VALUE` with an exact rational VALUE.
+pub fn parse_param(s: &str) -> anyhow::Result<(String, Q)> {
+    let Some((name, value)) = s.split_once('=') else {
+        bail!("--param {s}: expected NAME=VALUE, e.g. D=1/2");
+    };
+    let name = name.trim();
+    if name.is_empty() {
+        bail!("--param {s}: expected a parameter name before '='");
+    }
+    let value = parse_rational(value.trim())
+        .with_context(|| format!("--param {s}: expected VALUE as 3, 1/2 or 0.25"))?;
+    Ok((name.to_owned(), value))
+}
+
+/// An exact rational from `3`, `-1/2` or `0.125` (decimals are exact).
+pub fn parse_rational(s: &str) -> anyhow::Result<Q> {
+    if s.contains('/') {
+        let q: Q = s.parse().map_err(|_| anyhow::anyhow!("not a fraction: {s:?}"))?;
+        return Ok(q);
+    }
+    let (negative, body) = match s.strip_prefix('-') {
+        Some(rest) => (true, rest),
+        None => (false, s.strip_prefix('+').unwrap_or(s)),
+    };
+    let (int, frac) = body.split_once('.').unwrap_or((body, ""));
+    if (int.is_empty() && frac.is_empty())
+        || !int.chars().all(|c| c.is_ascii_digit())
+        || !frac.chars().all(|c| c.is_ascii_digit())
+    {
+        bail!("not a number: {s:?}");
+    }
+    let digits: Q = format!("{int}{frac}").parse().map_err(|_| anyhow::anyhow!("digits"))?;
+    let q = digits / num_traits::pow(Q::from_integer(10.into()), frac.len());
+    Ok(if negative { -q } else { q })
+}
+
+/// 1e-15, the width the issue asks isolating intervals to be narrowed to.
+fn fine() -> Q {
+    Q::from_integer(1.into()) / num_traits::pow(Q::from_integer(10.into()), 15)
+}
+
+/// The f64 nearest the exact number, from its exact 17-digit expansion.
+fn to_f64(a: &Algebraic) -> f64 {
+    a.to_decimal(17).parse().expect("a decimal expansion parses as f64")
+}
+
+/// Exact text: the closed form, else the defining polynomial in Phi and an
+/// isolating interval of width at most 1e-15.
+fn exact(a: &Algebraic) -> String {
+    a.refine(&fine()).describe("Phi")
+}
+
+fn number_json(a: &Algebraic) -> Value {
+    let (lo, hi) = a.refine(&fine()).interval();
+    json!({
+        "value": to_f64(a),
+        "exact": exact(a),
+        "decimal": a.to_decimal(15),
+        "defining_poly": a.defining_poly().to_string_in("Phi"),
+        "interval": [lo.to_string(), hi.to_string()],
+    })
+}
+
+/// The JSON document of a stability report.
+pub fn to_json(name: &str, params: &[(String, Q)], chi: &poly::Poly, r: &StabilityReport) -> Value {
+    let params: serde_json::Map<String, Value> =
+        params.iter().map(|(n, v)| (n.clone(), json!(v.to_string()))).collect();
+    let stability = if r.bounded_for_all {
+        "bounded_for_all_phi"
+    } else if r.phi_max.is_some() {
+        "limited"
+    } else {
+        "unbounded_for_all_phi"
+    };
+    json!({
+        "method": name,
+        "params": params,
+        "charpoly": chi.to_string(),
+        "degree": r.degree,
+        "stability": stability,
+        "phi_max": r.phi_max.as_ref().map(to_f64),
+        "phi_max_exact": r.phi_max.as_ref().map(exact),
+        "phi_max_detail": r.phi_max.as_ref().map(number_json),
+        "bounded_at_phi_max": r.bounded_at_phi_max,
+        "boundary": r.boundary.map(|b| b.name()),
+        "class_changes": r.class_changes.iter().map(|c| json!({
+            "phi": to_f64(&c.at),
+            "phi_exact": exact(&c.at),
+            "from": c.from.name(),
+            "to": c.to.name(),
+            "at": c.at_class.map(|k| k.name()),
+        })).collect::<Vec<_>>(),
+        "intervals": r.intervals.iter().map(|i| json!({
+            "lo": to_f64(&i.lo),
+            "lo_exact": exact(&i.lo),
+            "hi": i.hi.as_ref().map(to_f64),
+            "hi_exact": i.hi.as_ref().map(exact),
+            "class": i.class.name(),
+            "sample_phi": i.sample.to_string(),
+        })).collect::<Vec<_>>(),
+        "critical_points": r.critical_points.iter().map(|p| json!({
+            "phi": to_f64(&p.at),
+            "phi_exact": exact(&p.at),
+            "conditions": p.conditions,
+        })).collect::<Vec<_>>(),
+    })
+}
+
+/// A short exact-plus-decimal rendering for people.
+fn show(a: &Algebraic) -> String {
+    let closed = a.closed_form();
+    let dec = a.to_decimal(15);
+    match closed {
+        Some(c) if c == dec.trim_end_matches('0').trim_end_matches('.') => c,
+        Some(c) => format!("{c} ≈ {dec}"),
+        None => format!("{dec} (root of {})", a.defining_poly().to_string_in("Phi")),
+    }
+}
+
+fn text(name: &str, params: &[(String, Q)], chi: &poly::Poly, r: &StabilityReport) -> String {
+    let mut s = String::new();
+    let given: Vec<String> = params.iter().map(|(n, v)| format!("{n} = {v}")).collect();
+    let _ = writeln!(
+        s,
+        "method {name}{}",
+        if given.is_empty() { String::new() } else { format!("   ({})", given.join(", ")) }
+    );
+    let _ = writeln!(s, "chi(z) = {chi}\n");
+    match (&r.phi_max, r.bounded_for_all) {
+        (_, true) => {
+            let _ = writeln!(s, "bounded for every Phi > 0");
+        }
+        (None, false) => {
+            let _ = writeln!(s, "unbounded for every Phi > 0 (no stability limit)");
+        }
+        (Some(m), false) => {
+            let _ = writeln!(s, "stable for 0 < Phi < {}", show(m));
+            if let Some(b) = r.boundary {
+                let at = match r.bounded_at_phi_max {
+                    Some(true) => "bounded",
+                    Some(false) => "unbounded",
+                    None => "not decided",
+                };
+                let _ = writeln!(s, "at the limit: {b}; the limit itself is {at}");
+            }
+            let (lo, hi) = m.refine(&fine()).interval();
+            if m.is_rational() {
+                return s + &classes(r);
+            }
+            let _ = writeln!(
+                s,
+                "exact: root of {} in [{lo}, {hi}]",
+                m.defining_poly().to_string_in("Phi")
+            );
+        }
+    }
+    s + &classes(r)
+}
+
+fn classes(r: &StabilityReport) -> String {
+    let mut s = String::new();
+    let _ = writeln!(s, "\nroot classes over Phi > 0:");
+    for (k, i) in r.intervals.iter().enumerate() {
+        let hi = i.hi.as_ref().map_or("inf".to_owned(), show);
+        let _ = writeln!(s, "  ({}, {hi}): {}", show(&i.lo), i.class);
+        if let Some(c) = r.class_changes.get(k) {
+            let at = c.at_class.map_or("not computed".to_owned(), |k| k.name().to_owned());
+            let _ = writeln!(s, "  at Phi = {}: {at}", show(&c.at));
+        }
+    }
+    s
 }
