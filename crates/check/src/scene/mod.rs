@@ -11,6 +11,7 @@ use std::fmt;
 use serde::Serialize;
 
 pub mod aircraft;
+pub mod figure;
 pub mod reference;
 pub mod three_body;
 
@@ -68,6 +69,8 @@ pub enum SceneError {
     UnknownScene(String),
     /// Newton's method found no steady turn of the aircraft.
     NoSteadyState,
+    /// A figure could not be drawn or written.
+    Figure(String),
 }
 
 impl fmt::Display for SceneError {
@@ -79,6 +82,7 @@ impl fmt::Display for SceneError {
             SceneError::NoSteadyState => {
                 write!(f, "no steady turn found for the aircraft's command")
             }
+            SceneError::Figure(message) => write!(f, "cannot draw figure {message}"),
         }
     }
 }

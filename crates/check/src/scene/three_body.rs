@@ -180,9 +180,24 @@ impl State {
         acceleration(&self.position, law)
     }
 
-    /// Kinetic energy (unit masses).
+    /// Kinetic energy (unit masses), summed in the paper's order
+    /// `(sqr(v1o)+sqr(w1o)+...+sqr(w3o))/2`.
     pub fn kinetic_energy(&self) -> f64 {
-        self.velocity.iter().map(|v| 0.5 * (v[0] * v[0] + v[1] * v[1])).sum()
+        let mut sum = 0.0;
+        for v in &self.velocity {
+            sum += v[0] * v[0];
+            sum += v[1] * v[1];
+        }
+        sum / 2.0
+    }
+
+    /// The squared distances r12, r13, r23, as the paper's `r12` holds them.
+    pub fn squared_distances(&self) -> [f64; 3] {
+        let p = &self.position;
+        PAIRS.map(|(i, j)| {
+            let (dx, dy) = (p[j][0] - p[i][0], p[j][1] - p[i][1]);
+            dx * dx + dy * dy
+        })
     }
 
     /// The three pair distances r12, r13, r23 (not squared).
@@ -190,9 +205,10 @@ impl State {
         PAIRS.map(|(i, j)| distance(&self.position[i], &self.position[j]))
     }
 
-    /// Appendix D's total energy: kinetic minus `Sqrt(1/r12) + ...`.
+    /// Appendix D's total energy, operation for operation:
+    /// `(sqr(v1o)+...)/2 - Sqrt(1/r12) - Sqrt(1/r23) - Sqrt(1/r13)`.
     pub fn energy_paper(&self) -> f64 {
-        self.kinetic_energy() - self.distances().iter().map(|r| 1.0 / r).sum::<f64>()
+        energy_paper(self.kinetic_energy(), &self.squared_distances())
     }
 
     /// The energy conserved by the equations of motion under `law`.
@@ -268,8 +284,43 @@ impl State {
     }
 }
 
+/// Everything the run follows, from one pass over the pairs: the energies
+/// need the distances anyway, and `ln r12 + ln r13 + ln r23` is one `ln`.
+struct Measures {
+    energy_paper: f64,
+    energy_consistent: f64,
+    centre_of_mass: [f64; 2],
+    radii: [f64; 3],
+    distance_min: f64,
+}
+
+fn measure(state: &State, law: ForceLaw) -> Measures {
+    let p = &state.position;
+    let squared = state.squared_distances();
+    let kinetic = state.kinetic_energy();
+    let energy_paper = energy_paper(kinetic, &squared);
+    let energy_consistent = energy_consistent(kinetic, &squared, energy_paper, law);
+    let c = state.centre_of_mass();
+    let radii = p.map(|q| ((q[0] - c[0]).powi(2) + (q[1] - c[1]).powi(2)).sqrt());
+    let distance_min = squared.iter().fold(f64::INFINITY, |m, &r2| m.min(r2)).sqrt();
+    Measures { energy_paper, energy_consistent, centre_of_mass: c, radii, distance_min }
+}
+
+/// `squared` in the order r12, r13, r23; the paper subtracts r12, r23, r13.
+fn energy_paper(kinetic: f64, squared: &[f64; 3]) -> f64 {
+    kinetic - (1.0 / squared[0]).sqrt() - (1.0 / squared[2]).sqrt() - (1.0 / squared[1]).sqrt()
+}
+
+fn energy_consistent(kinetic: f64, squared: &[f64; 3], energy_paper: f64, law: ForceLaw) -> f64 {
+    match law {
+        // ln r12 + ln r13 + ln r23 = ln(r12^2 r13^2 r23^2) / 2: one logarithm.
+        ForceLaw::InverseDistance => kinetic + 0.5 * (squared[0] * squared[1] * squared[2]).ln(),
+        ForceLaw::InverseSquare => energy_paper,
+    }
+}
+
 fn distance(a: &[f64; 2], b: &[f64; 2]) -> f64 {
-    (b[0] - a[0]).hypot(b[1] - a[1])
+    ((b[0] - a[0]).powi(2) + (b[1] - a[1]).powi(2)).sqrt()
 }
 
 fn acceleration(position: &Bodies, law: ForceLaw) -> Bodies {
@@ -279,14 +330,17 @@ fn acceleration(position: &Bodies, law: ForceLaw) -> Bodies {
         let dy = position[j][1] - position[i][1];
         // r12 in the paper is the squared distance.
         let r2 = dx * dx + dy * dy;
-        let f = match law {
-            ForceLaw::InverseDistance => 1.0 / r2,
-            ForceLaw::InverseSquare => 1.0 / (r2 * r2.sqrt()),
+        // Divide as the paper does, (x2-x1)/r12, so that the scene repeats
+        // the Pascal code bit for bit.
+        let denominator = match law {
+            ForceLaw::InverseDistance => r2,
+            ForceLaw::InverseSquare => r2 * r2.sqrt(),
         };
-        a[i][0] += f * dx;
-        a[i][1] += f * dy;
-        a[j][0] -= f * dx;
-        a[j][1] -= f * dy;
+        let (fx, fy) = (dx / denominator, dy / denominator);
+        a[i][0] += fx;
+        a[i][1] += fy;
+        a[j][0] -= fx;
+        a[j][1] -= fy;
     }
     a
 }
@@ -422,25 +476,23 @@ pub fn simulate(
         }
         completed = k;
         let t = k as f64 * config.dt;
-        energy_paper.push(state.energy_paper());
-        energy_consistent.push(state.energy_consistent(law));
+        let m = measure(&state, law);
+        energy_paper.push(m.energy_paper);
+        energy_consistent.push(m.energy_consistent);
         angular_momentum.push(state.angular_momentum());
-        let m = state.momentum();
-        momentum_x.push(m[0]);
-        momentum_y.push(m[1]);
-        let c = state.centre_of_mass();
-        centre_of_mass_drift.push(distance(
-            &c,
-            &[centre0[0] + momentum0[0] * t / 3.0, centre0[1] + momentum0[1] * t / 3.0],
-        ));
-        for r in state.radii() {
+        let p = state.momentum();
+        momentum_x.push(p[0]);
+        momentum_y.push(p[1]);
+        let c = m.centre_of_mass;
+        let drift_x = c[0] - (centre0[0] + momentum0[0] * t / 3.0);
+        let drift_y = c[1] - (centre0[1] + momentum0[1] * t / 3.0);
+        centre_of_mass_drift.push((drift_x * drift_x + drift_y * drift_y).sqrt());
+        for r in m.radii {
             radius_min = radius_min.min(r);
             radius_max = radius_max.max(r);
             radius_sum += r;
         }
-        for d in state.distances() {
-            distance_min = distance_min.min(d);
-        }
+        distance_min = distance_min.min(m.distance_min);
         if k <= 100 {
             first_steps.push(state.position);
         }
