@@ -14,4 +14,5 @@ pub mod paper;
 pub mod scene;
 pub mod plot;
 pub mod sweep;
+pub mod tradeoff;
 pub mod witness;

@@ -1,11 +1,141 @@
-//! `zcheck advise` (placeholder until its issue lands; replace this file).
+//! `zcheck advise`: which method and how many substeps for a spring in a
+//! game scene, in game units (Hz).
 
 use std::process::ExitCode;
+use std::time::Duration;
+
+use check::numeric::f64_to_q;
+use check::tradeoff::{self, family, kernels, Advice, Candidate, Scene};
+
+/// Output format of `zcheck advise`.
+#[derive(Clone, Copy, clap::ValueEnum)]
+pub enum Format {
+    Text,
+    Json,
+}
 
 /// Arguments of `zcheck advise`.
 #[derive(clap::Args)]
-pub struct Args {}
+pub struct Args {
+    /// The spring's natural frequency, Hz.
+    #[arg(long)]
+    pub freq: f64,
+    /// The simulation tick rate, Hz.
+    #[arg(long)]
+    pub tick: f64,
+    /// How long the scene must stay within tolerance, seconds.
+    #[arg(long, default_value_t = Scene::DEFAULT_DURATION_S)]
+    pub duration: f64,
+    /// Largest accumulated phase error over the duration, radians.
+    #[arg(long, default_value_t = Scene::DEFAULT_PHASE_TOL)]
+    pub phase_tol: f64,
+    /// Largest relative amplitude error over the duration (0.01 = 1 %).
+    #[arg(long, default_value_t = Scene::DEFAULT_AMP_TOL)]
+    pub amp_tol: f64,
+    /// Physical damping ratio D (0 <= D < 1); without it the spring is undamped.
+    #[arg(long)]
+    pub damping: Option<f64>,
+    #[arg(long, value_enum, default_value = "text")]
+    pub format: Format,
+}
 
-pub fn run(_: Args) -> anyhow::Result<ExitCode> {
-    anyhow::bail!("zcheck advise is not implemented yet")
+/// The candidates for a scene: the seven direct methods, on the damped
+/// spring when the scene has damping.
+pub fn candidates(scene: &Scene) -> anyhow::Result<Vec<Candidate>> {
+    Ok(match scene.damping {
+        Some(d) => {
+            let q = f64_to_q(d)
+                .ok_or_else(|| anyhow::anyhow!("--damping {d}: expected a finite number"))?;
+            family::damped_family(&q)?
+        }
+        None => family::undamped_family()?
+            .into_iter()
+            .filter(|c| family::direct_names().contains(&c.name.as_str()))
+            .collect(),
+    })
+}
+
+pub fn run(args: Args) -> anyhow::Result<ExitCode> {
+    let scene = Scene {
+        freq_hz: args.freq,
+        tick_hz: args.tick,
+        duration_s: args.duration,
+        phase_tol: args.phase_tol,
+        amp_tol: args.amp_tol,
+        damping: args.damping,
+    };
+    scene.validate()?;
+    let cands = candidates(&scene)?;
+    let d = scene.damping.unwrap_or(0.0);
+    let advice = tradeoff::advise(&scene, &cands, |c| {
+        kernels::time_hand_kernel(c.kernel_name(), d, Duration::from_millis(3)).unwrap_or(f64::NAN)
+    })?;
+    match args.format {
+        Format::Json => println!("{}", serde_json::to_string_pretty(&advice)?),
+        Format::Text => print!("{}", text(&advice)),
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+/// The advice as a table and a sentence.
+pub fn text(a: &Advice) -> String {
+    let s = &a.scene;
+    let mut out = format!(
+        "scene: {} Hz spring on a {} Hz tick: Phi = 2*pi*{}/{} = {:.4} rad per tick ({:.2} ticks per period)\n",
+        s.freq_hz,
+        s.tick_hz,
+        s.freq_hz,
+        s.tick_hz,
+        a.phi,
+        2.0 * std::f64::consts::PI / a.phi
+    );
+    out += &format!(
+        "target over {} s ({} periods): phase drift <= {} rad, amplitude drift <= {}\n",
+        s.duration_s, a.periods, s.phase_tol, s.amp_tol
+    );
+    out += &match s.damping {
+        Some(d) => {
+            format!("spring: damped, D = {d}; judged against the exact damped oscillator\n\n")
+        }
+        None => "spring: undamped\n\n".to_owned(),
+    };
+    out += &format!(
+        "{:<16} {:>10} {:>10} {:>16} {:>18} {:>14} {:>11}\n",
+        "method",
+        "phi_max",
+        "stable",
+        "substeps stable",
+        "substeps tolerance",
+        "ops/tick",
+        "ns/tick"
+    );
+    for m in &a.methods {
+        out += &format!(
+            "{:<16} {:>10} {:>10} {:>16} {:>18} {:>14} {:>11}\n",
+            m.method,
+            m.phi_max,
+            if m.stable_at_phi { "yes" } else { "no" },
+            m.substeps_stable.map_or("never".to_owned(), |k| k.to_string()),
+            m.substeps_tol.map_or("never".to_owned(), |k| k.to_string()),
+            m.ops_per_tick.map_or("-".to_owned(), |o| format!("{}m+{}a", o.mul, o.add)),
+            m.ns_per_tick.map_or("-".to_owned(), |ns| format!("{ns:.1}")),
+        );
+    }
+    let stable: Vec<&str> =
+        a.methods.iter().filter(|m| m.stable_at_phi).map(|m| m.method.as_str()).collect();
+    out += &format!(
+        "\nstable at Phi = {:.4} with one step per tick: {}\n",
+        a.phi,
+        if stable.is_empty() { "none".to_owned() } else { stable.join(", ") }
+    );
+    out += &match a.cheapest.as_ref().and_then(|c| a.methods.iter().find(|m| &m.method == c)) {
+        Some(m) => format!(
+            "cheapest meeting the tolerance: {} with {} substeps per tick ({:.1} ns per tick measured here)\n",
+            m.method,
+            m.substeps_tol.unwrap_or(0),
+            m.ns_per_tick.unwrap_or(f64::NAN)
+        ),
+        None => "no method meets the tolerance at a stable step\n".to_owned(),
+    };
+    out
 }

@@ -1,0 +1,196 @@
+//! The scene advisor: a spring in game units (Hz), on a fixed tick.
+//!
+//! A spring of frequency f simulated at a tick rate of `tick` Hz advances by
+//! Φ = 2π·f/tick per tick. With k substeps per tick each substep is Φ/k. For
+//! each method the advisor reports:
+//!
+//! - whether it is stable at Φ itself (Φ < Φ_max, decided exactly);
+//! - the fewest substeps k that make it stable (Φ/k < Φ_max);
+//! - the fewest substeps that meet the tolerance over the scene's duration
+//!   (Φ/k at most the largest admissible Φ, so never at or past Φ_max);
+//! - the cost per tick at that k, in operations and in measured ns;
+//!
+//! and names the cheapest method meeting the tolerance (by ns per tick).
+//!
+//! It models only what the scene requires: an undamped spring, unless a
+//! damping ratio is given; then every method runs on the damped spring and is
+//! judged against the exact damped oscillator's per-step decay e^{−DΦ} and
+//! phase advance Φ√(1 − D²).
+
+use std::f64::consts::PI;
+
+use serde::Serialize;
+
+use super::rank::Ops;
+use super::{Candidate, Spring, Target, TradeoffError};
+
+/// A spring in a game scene.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Scene {
+    /// The spring's natural frequency, Hz.
+    pub freq_hz: f64,
+    /// The simulation tick rate, Hz.
+    pub tick_hz: f64,
+    /// How long the scene must stay within tolerance, seconds.
+    pub duration_s: f64,
+    /// Largest accumulated phase error over the duration, radians.
+    pub phase_tol: f64,
+    /// Largest relative amplitude error over the duration.
+    pub amp_tol: f64,
+    /// The physical damping ratio D, when the spring is damped.
+    pub damping: Option<f64>,
+}
+
+impl Scene {
+    /// Default duration: one second.
+    pub const DEFAULT_DURATION_S: f64 = 1.0;
+    /// Default phase tolerance: 0.1 rad accumulated over the duration.
+    pub const DEFAULT_PHASE_TOL: f64 = 0.1;
+    /// Default amplitude tolerance: 1 % over the duration.
+    pub const DEFAULT_AMP_TOL: f64 = 0.01;
+
+    /// Checks the scene's numbers; the error names the bad value and what
+    /// was expected.
+    pub fn validate(&self) -> Result<(), TradeoffError> {
+        let positive = [
+            ("--freq", self.freq_hz),
+            ("--tick", self.tick_hz),
+            ("--duration", self.duration_s),
+            ("--phase-tol", self.phase_tol),
+            ("--amp-tol", self.amp_tol),
+        ];
+        for (name, x) in positive {
+            if !(x.is_finite() && x > 0.0) {
+                return Err(TradeoffError::new(format!(
+                    "{name} {x}: expected a finite number > 0"
+                )));
+            }
+        }
+        if let Some(d) = self.damping {
+            if !(0.0..1.0).contains(&d) {
+                return Err(TradeoffError::new(format!(
+                    "--damping {d}: expected a damping ratio with 0 <= D < 1 (an oscillating spring)"
+                )));
+            }
+        }
+        Ok(())
+    }
+
+    /// Φ = 2π·f/tick, radians per tick.
+    pub fn phi(&self) -> f64 {
+        2.0 * PI * self.freq_hz / self.tick_hz
+    }
+
+    /// The duration in periods of the spring, f·duration.
+    pub fn periods(&self) -> f64 {
+        self.freq_hz * self.duration_s
+    }
+
+    /// The accuracy target.
+    pub fn target(&self) -> Target {
+        Target { phase_tol: self.phase_tol, amp_tol: self.amp_tol, periods: self.periods() }
+    }
+
+    /// The exact spring judged against.
+    pub fn spring(&self) -> Spring {
+        Spring { damping: self.damping.unwrap_or(0.0) }
+    }
+}
+
+/// One method's answer for a scene.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct MethodAdvice {
+    /// The method (damped variants by their base name).
+    pub method: String,
+    /// Exact Φ_max as text ("none": unbounded at every Φ > 0).
+    pub phi_max: String,
+    /// Stable at the scene's Φ with one step per tick (Φ < Φ_max).
+    pub stable_at_phi: bool,
+    /// The fewest substeps k with Φ/k < Φ_max (`None`: never stable).
+    pub substeps_stable: Option<u64>,
+    /// The fewest substeps meeting the tolerance (`None`: no stable step
+    /// meets it).
+    pub substeps_tol: Option<u64>,
+    /// Operations per step.
+    pub ops_per_step: Ops,
+    /// Measured ns per step.
+    pub ns_per_step: f64,
+    /// Operations per tick at `substeps_tol`.
+    pub ops_per_tick: Option<Ops>,
+    /// ns per tick at `substeps_tol`.
+    pub ns_per_tick: Option<f64>,
+    /// Phase drift over the duration at `substeps_tol`, radians.
+    pub phase_drift: Option<f64>,
+    /// Relative amplitude drift over the duration at `substeps_tol`.
+    pub amplitude_drift: Option<f64>,
+}
+
+/// The advisor's answer.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Advice {
+    /// The scene as given.
+    pub scene: Scene,
+    /// Φ per tick.
+    pub phi: f64,
+    /// The duration in periods.
+    pub periods: f64,
+    /// One entry per method.
+    pub methods: Vec<MethodAdvice>,
+    /// The cheapest method (ns per tick) meeting the tolerance.
+    pub cheapest: Option<String>,
+}
+
+/// Advises on `scene` among `candidates`, with each candidate's measured
+/// ns per step from `ns_per_step`.
+pub fn advise(
+    scene: &Scene,
+    candidates: &[Candidate],
+    mut ns_per_step: impl FnMut(&Candidate) -> f64,
+) -> Result<Advice, TradeoffError> {
+    scene.validate()?;
+    let phi = scene.phi();
+    let (spring, target) = (scene.spring(), scene.target());
+    let mut methods = Vec::with_capacity(candidates.len());
+    for c in candidates {
+        let ns = ns_per_step(c);
+        let admissible = c
+            .limit
+            .search_cap()
+            .and_then(|cap| c.model.largest_admissible_phi(spring, &target, cap));
+        let substeps_tol = admissible.map(|a| {
+            let mut k = ((phi / a).ceil() as u64).max(1);
+            // Float rounding in Φ/k: step up until the substep is admissible.
+            while !(phi / k as f64 <= a && c.limit.is_below(phi / k as f64)) {
+                k += 1;
+            }
+            k
+        });
+        let at = substeps_tol.map(|k| c.model.accuracy(phi / k as f64, spring));
+        let per_step = c.cost.program;
+        methods.push(MethodAdvice {
+            method: c.display.clone(),
+            phi_max: super::rank::limit_text(c),
+            stable_at_phi: c.limit.is_below(phi),
+            substeps_stable: c.limit.substeps_for(phi),
+            substeps_tol,
+            ops_per_step: per_step.into(),
+            ns_per_step: ns,
+            ops_per_tick: substeps_tol.map(|k| Ops {
+                mul: k * u64::from(per_step.mul),
+                add: k * u64::from(per_step.add),
+                copy: k * u64::from(per_step.copy),
+            }),
+            ns_per_tick: substeps_tol.map(|k| k as f64 * ns),
+            phase_drift: at.map(|a| a.phase_drift(target.periods)),
+            amplitude_drift: at.map(|a| a.amplitude_drift(target.periods)),
+        });
+    }
+    let cheapest = methods
+        .iter()
+        .filter_map(|m| {
+            m.ns_per_tick.map(|ns| (ns, m.ops_per_tick.map_or(0, |o| o.mul + o.add), m))
+        })
+        .min_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)))
+        .map(|(_, _, m)| m.method.clone());
+    Ok(Advice { scene: *scene, phi, periods: scene.periods(), methods, cheapest })
+}

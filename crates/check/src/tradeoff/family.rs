@@ -1,0 +1,256 @@
+//! The methods a trade-off compares, each with its exact stability limit.
+//!
+//! The undamped family is every built-in except `damped_euler_d` (whose
+//! damping ratio is free): the seven methods of sections 5–11 and their
+//! Appendix B "Transition matrix" twins. The damped family, used only when a
+//! scene has physical damping D, is each direct method applied to
+//! v̇ = −ω₀(y + 2Dv), ẏ = ω₀v, written as `.zm` data below (Standard Euler's
+//! is the built-in `damped_euler_d`). At D = 0 each has its undamped
+//! method's characteristic polynomial (tested).
+
+use std::cmp::Ordering;
+use std::collections::HashMap;
+use std::f64::consts::PI;
+
+use poly::cost::StepCost;
+use poly::{Algebraic, Method, Sym, Q};
+
+use super::{SecondOrder, TradeoffError};
+use crate::numeric::{f64_to_q, q_to_f64};
+
+/// The damped-spring variants, as `.zm` sources (name, source).
+pub const DAMPED_SOURCES: [(&str, &str); 6] = [
+    (
+        "damped_euler_damped",
+        "# Damped Euler on a damped spring: the physical D plus the artificial Phi/2.
+method damped_euler_damped
+state v y
+param D
+E = D + 0.5*Phi
+v1 = v - Phi*(y + 2*E*v)
+y = y + Phi*v
+v = v1
+",
+    ),
+    (
+        "false_euler_damped",
+        "# False Euler on a damped spring.
+method false_euler_damped
+state v y
+param D
+v = v - Phi*(y + 2*D*v)
+y = y + Phi*v
+",
+    ),
+    (
+        "verlet_damped",
+        "# Verlet on a damped spring, the velocity taken as (y - y@1)/T.
+method verlet_damped
+state y
+param D
+y = 2*y - y@1 - Phi^2*y - 2*D*Phi*(y - y@1)
+",
+    ),
+    (
+        "standard_heun_damped",
+        "# Standard Heun on a damped spring.
+method standard_heun_damped
+state v y
+param D
+dv1 = -Phi*(y + 2*D*v)
+v11 = v + dv1
+dy1 = Phi*v
+y11 = y + dy1
+dv2 = -Phi*(y11 + 2*D*v11)
+dy2 = Phi*v11
+v = v + 0.5*(dv1 + dv2)
+y = y + 0.5*(dy1 + dy2)
+",
+    ),
+    (
+        "false_heun_damped",
+        "# False Heun on a damped spring.
+method false_heun_damped
+state v y
+param D
+dv1 = -Phi*(y + 2*D*v)
+v11 = v + dv1
+dy1 = Phi*v11
+y11 = y + dy1
+dv2 = -Phi*(y11 + 2*D*v11)
+v12 = v + dv2
+dy2 = Phi*v12
+v = v + 0.5*(dv1 + dv2)
+y = y + 0.5*(dy1 + dy2)
+",
+    ),
+    (
+        "semi_false_heun_damped",
+        "# Semi-False Heun on a damped spring.
+method semi_false_heun_damped
+state v y
+param D
+dv1 = -Phi*(y + 2*D*v)
+v11 = v + dv1
+dy1 = Phi*v
+y11 = y + dy1
+dv2 = -Phi*(y11 + 2*D*v11)
+v12 = v + dv2
+dy2 = Phi*v12
+v = v + 0.5*(dv1 + dv2)
+y = y + 0.5*(dy1 + dy2)
+",
+    ),
+];
+
+/// The exact stability limit of one method (at fixed other parameters).
+#[derive(Clone, Debug)]
+pub struct Limit {
+    /// Φ_max from `poly::stability::analyze`: every 0 < Φ < Φ_max is
+    /// bounded. `None` with `bounded_for_all == false`: unbounded for every
+    /// small Φ > 0 (Standard Euler, Standard Heun).
+    pub phi_max: Option<Algebraic>,
+    /// Bounded for every Φ > 0.
+    pub bounded_for_all: bool,
+}
+
+impl Limit {
+    /// Whether Φ (the exact value of this `f64`) is strictly below Φ_max,
+    /// decided exactly.
+    pub fn is_below(&self, phi: f64) -> bool {
+        if self.bounded_for_all {
+            return phi > 0.0;
+        }
+        match (&self.phi_max, f64_to_q(phi)) {
+            (Some(max), Some(q)) => phi > 0.0 && max.cmp_rational(&q) == Ordering::Greater,
+            _ => false,
+        }
+    }
+
+    /// Φ_max to f64 precision (`None` when there is none).
+    pub fn phi_max_f64(&self) -> Option<f64> {
+        self.phi_max.as_ref().map(|m| q_to_f64(&m.approx(&poly::q(1, 1_000_000_000_000_000))))
+    }
+
+    /// The largest step a search may try: the largest `f64` strictly below
+    /// Φ_max (checked exactly), π when every Φ is bounded (beyond π the
+    /// phase per step is ambiguous, Nyquist), `None` when no Φ is stable.
+    pub fn search_cap(&self) -> Option<f64> {
+        if self.bounded_for_all {
+            return Some(PI);
+        }
+        let mut cap = self.phi_max_f64()?.min(PI);
+        while !self.is_below(cap) {
+            cap *= 1.0 - 2.0 * f64::EPSILON;
+        }
+        Some(cap)
+    }
+
+    /// The smallest number of substeps k with Φ/k strictly below Φ_max
+    /// (exact comparison); `None` when no Φ > 0 is stable.
+    pub fn substeps_for(&self, phi: f64) -> Option<u64> {
+        if self.bounded_for_all {
+            return Some(1);
+        }
+        let max = self.phi_max_f64()?;
+        let mut k = ((phi / max).floor() as u64).max(1);
+        while !self.is_below(phi / k as f64) {
+            k += 1;
+        }
+        // The float guess may overshoot by one; step back while still stable.
+        while k > 1 && self.is_below(phi / (k - 1) as f64) {
+            k -= 1;
+        }
+        Some(k)
+    }
+}
+
+/// One method ready to trade: its definition, exact cost, accuracy model
+/// and stability limit, at fixed values of its parameters other than Φ.
+#[derive(Clone, Debug)]
+pub struct Candidate {
+    /// The method's name (its `.zm` name).
+    pub name: String,
+    /// The name shown to a user: the damped variants drop `_damped`.
+    pub display: String,
+    /// The lowered method.
+    pub method: Method,
+    /// Values of the parameters other than Φ (the damping D).
+    pub params: Vec<(Sym, Q)>,
+    /// Exact operations per step.
+    pub cost: StepCost,
+    /// The second-order accuracy model.
+    pub model: SecondOrder,
+    /// The exact stability limit at these parameter values.
+    pub limit: Limit,
+    /// χ with the parameters substituted (a polynomial in z and Φ).
+    pub charpoly: poly::Poly,
+}
+
+impl Candidate {
+    /// Builds a candidate: derive, count, model and analyse exactly.
+    pub fn new(method: Method, params: Vec<(Sym, Q)>) -> Result<Candidate, TradeoffError> {
+        let name = method.name().to_owned();
+        let full = poly::charpoly(&method)
+            .map_err(|e| TradeoffError::new(format!("method `{name}`: {e}")))?;
+        let values: HashMap<Sym, Q> = params.iter().cloned().collect();
+        let charpoly = full.eval_partial(&values);
+        let report = poly::stability::analyze(&charpoly)
+            .map_err(|e| TradeoffError::new(format!("method `{name}`: stability: {e}")))?;
+        let limit = Limit { phi_max: report.phi_max, bounded_for_all: report.bounded_for_all };
+        let model = SecondOrder::new(&charpoly, &[])
+            .map_err(|e| TradeoffError::new(format!("method `{name}`: {e}")))?;
+        let display = match name.as_str() {
+            "damped_euler_d" => "standard_euler".to_owned(),
+            n => n.strip_suffix("_damped").unwrap_or(n).to_owned(),
+        };
+        let cost = poly::step_cost(&method);
+        Ok(Candidate { name, display, method, params, cost, model, limit, charpoly })
+    }
+
+    /// The name of this candidate's hand-written kernel.
+    pub fn kernel_name(&self) -> &str {
+        match self.name.as_str() {
+            "damped_euler_d" => "standard_euler_damped",
+            n => n,
+        }
+    }
+}
+
+fn builtin(name: &str) -> Result<Method, TradeoffError> {
+    poly::builtin(name).map_err(|e| TradeoffError::new(format!("built-in `{name}`: {e}")))
+}
+
+/// Every built-in with no free parameter but Φ, in built-in order.
+pub fn undamped_family() -> Result<Vec<Candidate>, TradeoffError> {
+    poly::builtin_names()
+        .filter(|n| builtin(n).map(|m| m.params().len() == 1).unwrap_or(false))
+        .map(|n| Candidate::new(builtin(n)?, Vec::new()))
+        .collect()
+}
+
+/// The seven direct methods of sections 5–11 (no transition-matrix twins).
+pub fn direct_names() -> [&'static str; 7] {
+    [
+        "standard_euler",
+        "damped_euler",
+        "false_euler",
+        "verlet",
+        "standard_heun",
+        "false_heun",
+        "semi_false_heun",
+    ]
+}
+
+/// The seven direct methods applied to a spring with damping ratio `d`
+/// (an exact rational).
+pub fn damped_family(d: &Q) -> Result<Vec<Candidate>, TradeoffError> {
+    let dsym = Sym::new("D");
+    let mut out = vec![Candidate::new(builtin("damped_euler_d")?, vec![(dsym, d.clone())])?];
+    for (name, src) in DAMPED_SOURCES {
+        let m = Method::parse(&format!("{name}.zm"), src)
+            .map_err(|e| TradeoffError::new(format!("{e}")))?;
+        out.push(Candidate::new(m, vec![(dsym, d.clone())])?);
+    }
+    Ok(out)
+}
