@@ -1,1 +1,130 @@
-fn main(){}
+//! Speed of the exact derivation: every built-in by both routes, and the
+//! determinant det(zI − P) of 12×12 polynomial matrices (RK4 on a six-mass
+//! spring chain, and random dense entries of degree ≤ 2 in Phi).
+//!
+//! Run with `cargo bench -p poly --bench derive`; the figures are recorded in
+//! BENCHMARKS.md, "Derivation (poly)".
+
+use criterion::{black_box, criterion_group, criterion_main, Criterion};
+use poly::{Method, Poly, PolyMatrix, Sym};
+
+/// RK4 on a chain of six unit masses joined by springs to each other and to
+/// two walls, written as a `.zm` step program with the four stages as
+/// temporaries. Spring `k` (between mass k and k+1, walls at 0 and 7) has
+/// stiffness `STIFFNESS[k]`, all scaled by Phi = omega0*T.
+fn rk4_spring_chain_source() -> String {
+    const N: usize = 6;
+    const STIFFNESS: [i64; N + 1] = [1, 2, 3, 1, 2, 3, 1];
+    let mut s = String::from("method rk4_chain\nstate");
+    for i in 1..=N {
+        s += &format!(" x{i}");
+    }
+    for i in 1..=N {
+        s += &format!(" v{i}");
+    }
+    s.push('\n');
+    // The acceleration of mass i from positions named `{pre}{j}`.
+    let force = |pre: &str, i: usize| {
+        let (kl, kr) = (STIFFNESS[i - 1], STIFFNESS[i]);
+        let mut f = format!("-{}*{pre}{i}", kl + kr);
+        if i > 1 {
+            f += &format!(" + {kl}*{pre}{}", i - 1);
+        }
+        if i < N {
+            f += &format!(" + {kr}*{pre}{}", i + 1);
+        }
+        f
+    };
+    for stage in 1..=4 {
+        let (xs, vs) = if stage == 1 {
+            ("x".to_owned(), "v".to_owned())
+        } else {
+            (format!("xs{stage}_"), format!("vs{stage}_"))
+        };
+        for i in 1..=N {
+            s += &format!("kx{stage}_{i} = Phi*{vs}{i}\n");
+            s += &format!("kv{stage}_{i} = Phi*({})\n", force(&xs, i));
+        }
+        if stage < 4 {
+            let w = if stage < 3 { "0.5*" } else { "" };
+            for i in 1..=N {
+                s += &format!("xs{}_{i} = x{i} + {w}kx{stage}_{i}\n", stage + 1);
+                s += &format!("vs{}_{i} = v{i} + {w}kv{stage}_{i}\n", stage + 1);
+            }
+        }
+    }
+    for i in 1..=N {
+        s += &format!("x{i} = x{i} + (kx1_{i} + 2*kx2_{i} + 2*kx3_{i} + kx4_{i})/6\n");
+    }
+    for i in 1..=N {
+        s += &format!("v{i} = v{i} + (kv1_{i} + 2*kv2_{i} + 2*kv3_{i} + kv4_{i})/6\n");
+    }
+    s
+}
+
+/// A 12×12 matrix with dense entries `a + b*Phi + c*Phi^2`, small integers
+/// from a fixed-seed generator (xorshift), so every run sees the same matrix.
+fn random_phi_matrix(n: usize, mut seed: u64) -> PolyMatrix {
+    let mut next = move || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed % 7) as i64 - 3
+    };
+    let phi = Poly::sym(Sym::phi());
+    let rows = (0..n)
+        .map(|_| {
+            (0..n)
+                .map(|_| {
+                    let (a, b, c) = (next(), next(), next());
+                    Poly::int(a) + &phi * Poly::int(b) + phi.pow(2) * Poly::int(c)
+                })
+                .collect()
+        })
+        .collect();
+    PolyMatrix::from_rows(rows)
+}
+
+fn bench_builtins(c: &mut Criterion) {
+    let methods: Vec<Method> =
+        poly::builtin_names().map(|n| poly::builtin(n).expect("built-ins parse")).collect();
+    c.bench_function("derive/all_builtins_both_routes", |b| {
+        b.iter(|| {
+            for m in &methods {
+                black_box(poly::derive(black_box(m)).expect("routes agree"));
+            }
+        })
+    });
+    c.bench_function("derive/all_builtins_parse_and_derive", |b| {
+        b.iter(|| {
+            for name in poly::builtin_names() {
+                let m = poly::builtin(black_box(name)).expect("built-ins parse");
+                black_box(poly::derive(&m).expect("routes agree"));
+            }
+        })
+    });
+}
+
+fn bench_det12(c: &mut Criterion) {
+    let rk4 = Method::parse("rk4_chain.zm", &rk4_spring_chain_source()).expect("rk4 chain parses");
+    let p = poly::transition_matrix(&rk4);
+    assert_eq!(p.rows(), 12);
+    c.bench_function("det12/rk4_spring_chain/charpoly_berkowitz", |b| {
+        b.iter(|| black_box(poly::charpoly_state_route(black_box(&p))))
+    });
+    let zi_minus_p = p.char_matrix(&Poly::sym(Sym::z()));
+    c.bench_function("det12/rk4_spring_chain/det_of_zI_minus_P", |b| {
+        b.iter(|| black_box(black_box(&zi_minus_p).det()))
+    });
+    c.bench_function("det12/rk4_spring_chain/derive_both_routes", |b| {
+        b.iter(|| black_box(poly::derive(black_box(&rk4)).expect("routes agree")))
+    });
+    let r = random_phi_matrix(12, 0x9E37_79B9_7F4A_7C15);
+    c.bench_function("det12/random_deg2_phi/charpoly_berkowitz", |b| {
+        b.iter(|| black_box(poly::charpoly_state_route(black_box(&r))))
+    });
+    c.bench_function("det12/random_deg2_phi/det", |b| b.iter(|| black_box(black_box(&r).det())));
+}
+
+criterion_group!(benches, bench_builtins, bench_det12);
+criterion_main!(benches);

@@ -1,0 +1,121 @@
+//! The determinant: Berkowitz's division-free algorithm against the Laplace
+//! expansion oracle, the product rule det(AB) = det(A)·det(B), and the
+//! characteristic polynomial against det(xI − A) expanded by Laplace.
+
+use poly::{Poly, PolyMatrix, Sym};
+use proptest::prelude::*;
+
+use crate::common::{matrix, poly_in, transpose};
+
+/// A size from 1 to 6 and a random matrix of that size.
+fn sized_matrix(max: usize) -> impl Strategy<Value = PolyMatrix> {
+    (1..=max).prop_flat_map(matrix)
+}
+
+/// det(zI − A) as a polynomial in z, from Berkowitz's coefficient list.
+fn charpoly_from_berkowitz(a: &PolyMatrix) -> Poly {
+    let mut c = a.charpoly_berkowitz();
+    c.reverse();
+    Poly::from_coeffs_in(Sym::z(), &c)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(96))]
+
+    #[test]
+    fn berkowitz_matches_laplace(a in sized_matrix(6)) {
+        prop_assert_eq!(a.det(), a.det_laplace());
+    }
+
+    #[test]
+    fn transposing_keeps_the_determinant(a in sized_matrix(5)) {
+        prop_assert_eq!(transpose(&a).det(), a.det());
+    }
+
+    #[test]
+    fn charpoly_matches_laplace_of_the_characteristic_matrix(a in sized_matrix(5)) {
+        let z = Poly::sym(Sym::z());
+        let laplace = a.char_matrix(&z).det_laplace();
+        let berkowitz = charpoly_from_berkowitz(&a);
+        prop_assert_eq!(&berkowitz, &laplace);
+        prop_assert_eq!(berkowitz.degree_in(Sym::z()) as usize, a.rows());
+        prop_assert!(berkowitz.coeffs_in(Sym::z()).last().is_some_and(Poly::is_one), "monic");
+        // The z⁰ coefficient is det(−A) = (−1)^n det A.
+        let sign = if a.rows() % 2 == 0 { Poly::one() } else { Poly::int(-1) };
+        prop_assert_eq!(berkowitz.coeffs_in(Sym::z())[0].clone(), &sign * &a.det());
+    }
+
+    #[test]
+    fn determinant_of_a_product_is_the_product_of_determinants(
+        (a, b) in (1usize..=4).prop_flat_map(|n| (matrix(n), matrix(n)))
+    ) {
+        prop_assert_eq!((&a * &b).det(), &a.det() * &b.det());
+    }
+
+    /// Swapping two rows negates the determinant; adding a polynomial
+    /// multiple of one row to another keeps it.
+    #[test]
+    fn row_operations(a in (2usize..=5).prop_flat_map(matrix), k in poly_in(2, 2)) {
+        let n = a.rows();
+        let rows: Vec<Vec<Poly>> = (0..n).map(|i| a.row(i).to_vec()).collect();
+        let mut swapped = rows.clone();
+        swapped.swap(0, n - 1);
+        prop_assert_eq!(PolyMatrix::from_rows(swapped).det(), -a.det());
+        let mut added = rows;
+        added[1] = added[1].iter().zip(a.row(0)).map(|(x, y)| x + &(&k * y)).collect();
+        prop_assert_eq!(PolyMatrix::from_rows(added).det(), a.det());
+    }
+}
+
+#[track_caller]
+fn check_det(rows: &[&[&str]], expected: &str) {
+    let m = PolyMatrix::from_rows(
+        rows.iter()
+            .map(|r| r.iter().map(|e| Poly::parse(e).expect("test entry parses")).collect())
+            .collect(),
+    );
+    let expected = Poly::parse(expected).expect("expected value parses");
+    assert_eq!(m.det(), expected, "Berkowitz");
+    assert_eq!(m.det_laplace(), expected, "Laplace");
+}
+
+/// Hand-computed determinants, including the empty matrix and the paper's
+/// Standard Euler characteristic matrix zI − P.
+#[test]
+fn known_determinants() {
+    check_det(&[], "1");
+    check_det(&[&["Phi - 3"]], "Phi - 3");
+    check_det(&[&["a", "b"], &["c", "d"]], "a*d - b*c");
+    check_det(&[&["z - 1", "Phi"], &["-Phi", "z - 1"]], "z^2 - 2*z + 1 + Phi^2");
+    check_det(&[&["1", "2", "3"], &["4", "5", "6"], &["7", "8", "10"]], "-3");
+    // Upper triangular: the product of the diagonal.
+    check_det(
+        &[&["Phi", "7", "D"], &["0", "1 - Phi", "Phi^9"], &["0", "0", "D^2"]],
+        "Phi*(1 - Phi)*D^2",
+    );
+}
+
+/// The companion matrix of a monic polynomial has that polynomial as its
+/// characteristic polynomial, for every degree up to 8.
+#[test]
+fn companion_matrices_recover_their_polynomial() {
+    for n in 1..=8usize {
+        // χ(z) = z^n + Σ_k (k + 1 - Phi*D^k) z^k.
+        let coeff = |k: usize| Poly::parse(&format!("{} - Phi*D^{k}", k + 1)).expect("parses");
+        let mut rows = vec![vec![Poly::zero(); n]; n];
+        for (i, row) in rows.iter_mut().enumerate().skip(1) {
+            row[i - 1] = Poly::one();
+        }
+        for (k, row) in rows.iter_mut().enumerate() {
+            row[n - 1] = -coeff(k);
+        }
+        let a = PolyMatrix::from_rows(rows);
+        let mut expected: Vec<Poly> = (0..n).map(coeff).collect();
+        expected.push(Poly::one());
+        assert_eq!(
+            charpoly_from_berkowitz(&a),
+            Poly::from_coeffs_in(Sym::z(), &expected),
+            "n = {n}"
+        );
+    }
+}

@@ -1,0 +1,18 @@
+//! Integration tests of the `poly` crate, built as one test binary.
+//!
+//! - `algebra`: ring laws of [`poly::Poly`] and the [`poly::UPoly`] toolkit;
+//! - `det`: Berkowitz against the Laplace oracle, det(AB) = det(A)·det(B);
+//! - `routes`: the two derivations agree on random step programs, and the
+//!   transition matrix matches an independent exact interpreter;
+//! - `errors`: every kind of bad `.zm` input gives a located error, and the
+//!   parser never panics;
+//! - `parser`: details of the expression language;
+//! - `snapshots`: each built-in's derivation, reviewed against the paper.
+
+mod algebra;
+mod common;
+mod det;
+mod errors;
+mod parser;
+mod routes;
+mod snapshots;

@@ -1,0 +1,235 @@
+//! Sturm counting, root isolation and exact algebraic numbers, checked
+//! against polynomials built from known roots and hand-derived closed forms.
+
+use std::cmp::Ordering;
+
+use poly::sturm::{count_all_real_roots, count_real_roots, isolate_real_roots, sturm_sequence};
+use poly::{q, Algebraic, UPoly, Q};
+use proptest::prelude::*;
+
+/// ∏ (x − r) over the given roots (repeats allowed).
+fn from_roots(roots: &[Q]) -> UPoly {
+    roots.iter().fold(UPoly::from_ints(&[1]), |acc, r| &acc * &UPoly::new(vec![-r.clone(), q(1, 1)]))
+}
+
+fn qs(v: &[(i64, i64)]) -> Vec<Q> {
+    v.iter().map(|&(n, d)| q(n, d)).collect()
+}
+
+/// The number of distinct known roots in (lo, hi], counted directly.
+fn expected_count(roots: &[Q], lo: &Q, hi: &Q) -> usize {
+    let mut distinct: Vec<&Q> = roots.iter().filter(|r| lo < *r && *r <= hi).collect();
+    distinct.sort();
+    distinct.dedup();
+    distinct.len()
+}
+
+#[track_caller]
+fn check_counts(roots: &[Q]) {
+    let p = from_roots(roots);
+    let mut points: Vec<Q> = roots.to_vec();
+    points.extend([q(-100, 1), q(-1, 3), q(0, 1), q(1, 7), q(5, 2), q(100, 1)]);
+    for lo in &points {
+        for hi in &points {
+            assert_eq!(
+                count_real_roots(&p, lo, hi),
+                expected_count(roots, lo, hi),
+                "roots {roots:?} in ({lo}, {hi}]"
+            );
+        }
+    }
+}
+
+/// Sturm's count of distinct roots in (lo, hi] matches the known roots,
+/// including intervals that end (or start) exactly at a root.
+#[test]
+fn counts_match_known_roots() {
+    check_counts(&qs(&[(-3, 1), (-1, 2), (0, 1), (1, 3), (2, 1)]));
+    check_counts(&qs(&[(2, 1), (2, 1), (2, 1), (-1, 1)])); // repeated roots count once
+    check_counts(&qs(&[(1, 1000), (2, 1000), (3, 1000)])); // close roots
+    check_counts(&qs(&[(7, 3)]));
+}
+
+/// Known irrational and complex roots: x² − 2 has ±√2, x² + 1 none,
+/// Chebyshev T₅ = 16x⁵ − 20x³ + 5x has five roots in (−1, 1).
+#[test]
+fn counts_of_irrational_and_complex_roots() {
+    let two = UPoly::from_ints(&[-2, 0, 1]);
+    assert_eq!(count_real_roots(&two, &q(1, 1), &q(2, 1)), 1);
+    assert_eq!(count_real_roots(&two, &q(-2, 1), &q(0, 1)), 1);
+    assert_eq!(count_real_roots(&two, &q(141, 100), &q(142, 100)), 1);
+    assert_eq!(count_real_roots(&two, &q(142, 100), &q(2, 1)), 0);
+    assert_eq!(count_all_real_roots(&UPoly::from_ints(&[1, 0, 1])), 0);
+    let t5 = UPoly::from_ints(&[0, 5, 0, -20, 0, 16]);
+    assert_eq!(count_real_roots(&t5, &q(-1, 1), &q(1, 1)), 5);
+    assert_eq!(count_all_real_roots(&t5), 5);
+    // The sequence of a square-free p starts p, p′ and ends in a constant.
+    let seq = sturm_sequence(&t5);
+    assert_eq!(seq[1].monic(), t5.derivative().monic());
+    assert_eq!(seq.last().unwrap().degree(), Some(0));
+}
+
+#[track_caller]
+fn check_isolation(roots: &[Q]) {
+    let p = from_roots(roots);
+    let mut distinct = roots.to_vec();
+    distinct.sort();
+    distinct.dedup();
+    let intervals = isolate_real_roots(&p);
+    assert_eq!(intervals.len(), distinct.len(), "roots {roots:?}: {intervals:?}");
+    for (k, ((lo, hi), r)) in intervals.iter().zip(&distinct).enumerate() {
+        assert!(lo <= r && r <= hi, "root {r} outside [{lo}, {hi}]");
+        if lo != hi {
+            assert!(lo < r && r < hi);
+            // The square-free part changes sign across the interval.
+            let (a, b) = (p.squarefree().eval(lo), p.squarefree().eval(hi));
+            assert!(!a.is_zero_q() && !b.is_zero_q() && (a < Q::default()) != (b < Q::default()));
+        }
+        if k > 0 {
+            // Open intervals may share an endpoint (which is then no root).
+            let (prev_lo, prev_hi) = &intervals[k - 1];
+            let shared_ok = prev_lo != prev_hi && lo != hi;
+            assert!(prev_hi < lo || (prev_hi == lo && shared_ok), "intervals overlap: {intervals:?}");
+        }
+    }
+}
+
+trait IsZero {
+    fn is_zero_q(&self) -> bool;
+}
+impl IsZero for Q {
+    fn is_zero_q(&self) -> bool {
+        *self == Q::default()
+    }
+}
+
+/// Isolation of products of linear factors: one interval per distinct root,
+/// sorted and disjoint, each holding its root.
+#[test]
+fn isolation_of_known_rational_roots() {
+    check_isolation(&qs(&[(-3, 1), (-1, 2), (0, 1), (1, 3), (2, 1)]));
+    check_isolation(&qs(&[(1, 1000), (2, 1000), (3, 1000), (-7, 9)]));
+    check_isolation(&qs(&[(5, 1), (5, 1), (-5, 1)]));
+    check_isolation(&qs(&[(1, 2)]));
+}
+
+proptest! {
+    #[test]
+    fn isolation_of_random_rational_roots(
+        raw in proptest::collection::vec((-40i64..40, 1i64..9), 1..7)
+    ) {
+        let roots: Vec<Q> = raw.iter().map(|&(n, d)| q(n, d)).collect();
+        check_isolation(&roots);
+    }
+}
+
+/// The positive root of `p` in (lo, hi], for building expected numbers.
+#[track_caller]
+fn root_of(p: &[i64], lo: Q, hi: Q) -> Algebraic {
+    Algebraic::from_isolating(&UPoly::from_ints(p), &lo, &hi).expect("one root in the interval")
+}
+
+#[track_caller]
+fn check_closed_form(a: &Algebraic, expected: Option<&str>) {
+    assert_eq!(a.closed_form().as_deref(), expected, "{a:?}");
+}
+
+/// Closed forms: rationals, square roots (simplified), quadratic
+/// irrationals and square roots of quadratic irrationals.
+#[test]
+fn closed_forms() {
+    check_closed_form(&root_of(&[-2, 0, 1], q(1, 1), q(2, 1)), Some("sqrt(2)"));
+    check_closed_form(&root_of(&[-2, 0, 1], q(-2, 1), q(-1, 1)), Some("-sqrt(2)"));
+    check_closed_form(&root_of(&[-8, 0, 1], q(2, 1), q(3, 1)), Some("2*sqrt(2)"));
+    check_closed_form(&root_of(&[-1, 0, 2], q(0, 1), q(1, 1)), Some("sqrt(2)/2"));
+    // x² − 2x − 1 = 0: x = 1 ± √2.
+    check_closed_form(&root_of(&[-1, -2, 1], q(2, 1), q(3, 1)), Some("sqrt(2) + 1"));
+    check_closed_form(&root_of(&[-1, -2, 1], q(-1, 1), q(0, 1)), Some("1 - sqrt(2)"));
+    // Φ⁴ + 4Φ² − 16 = 0: Φ² = −2 + 2√5 (the Semi-False Heun limit).
+    check_closed_form(&root_of(&[-16, 0, 4, 0, 1], q(3, 2), q(8, 5)), Some("sqrt(2*sqrt(5) - 2)"));
+    // x² − 8x + 4 = 0: x = 4 ± 2√3.
+    check_closed_form(&root_of(&[4, -8, 1], q(0, 1), q(1, 1)), Some("4 - 2*sqrt(3)"));
+    check_closed_form(&root_of(&[-2, 0, 0, 1], q(1, 1), q(2, 1)), None);
+    check_closed_form(&Algebraic::from_rational(q(-3, 4)), Some("-3/4"));
+}
+
+/// Reduction: rational roots come out as rationals, other rational roots and
+/// foreign x² − y factors leave the defining polynomial.
+#[test]
+fn defining_polynomials_are_reduced() {
+    let two = root_of(&[-4, 0, 1], q(1, 1), q(3, 1));
+    assert_eq!(two.as_rational(), Some(&q(2, 1)));
+    assert_eq!(two.defining_poly(), UPoly::from_ints(&[-2, 1]));
+    // x²(x² − 2)(x − 3): the root near 1.41 is defined by x² − 2.
+    let p = &from_roots(&qs(&[(0, 1), (0, 1), (3, 1)])) * &UPoly::from_ints(&[-2, 0, 1]);
+    let r = Algebraic::from_isolating(&p, &q(1, 1), &q(2, 1)).unwrap();
+    assert_eq!(r.defining_poly(), UPoly::from_ints(&[-2, 0, 1]));
+    // (x² − 2)(x² − 3): √3 is defined by x² − 3.
+    let r = root_of(&[6, 0, -5, 0, 1], q(3, 2), q(2, 1));
+    assert_eq!(r.defining_poly(), UPoly::from_ints(&[-3, 0, 1]));
+    assert_eq!(r.to_string(), "sqrt(3)");
+    // No closed form: the display names the polynomial and an interval.
+    let cube = root_of(&[-2, 0, 0, 1], q(1, 1), q(2, 1));
+    assert!(cube.to_string().starts_with("root of x^3 - 2 in ["), "{cube}");
+}
+
+/// Exact comparisons: with rationals, between equal numbers given by
+/// different polynomials, and between close distinct numbers.
+#[test]
+fn comparisons() {
+    let sqrt2 = root_of(&[-2, 0, 1], q(0, 1), q(2, 1));
+    assert_eq!(sqrt2.cmp_rational(&q(7, 5)), Ordering::Greater);
+    assert_eq!(sqrt2.cmp_rational(&q(3, 2)), Ordering::Less);
+    assert_eq!(sqrt2.cmp_rational(&q(1_414_214, 1_000_000)), Ordering::Less);
+    // √2 as a root of (x² − 2)(x² − 3) = x⁴ − 5x² + 6, on a different interval.
+    let also = root_of(&[6, 0, -5, 0, 1], q(13, 10), q(3, 2));
+    assert_eq!(sqrt2, also);
+    // 1.41421356237 < √2 < 1.41421356238: a rational squeezed close.
+    let close = Algebraic::from_rational(q(141_421_356_237, 100_000_000_000));
+    assert!(close < sqrt2);
+    let sqrt3 = root_of(&[-3, 0, 1], q(0, 1), q(2, 1));
+    assert!(sqrt2 < sqrt3);
+    assert_eq!(sqrt2.sign_of(&UPoly::from_ints(&[-2, 0, 1])), Ordering::Equal);
+    assert_eq!(sqrt2.sign_of(&UPoly::from_ints(&[-3, 0, 1])), Ordering::Less);
+    assert_eq!(sqrt2.multiplicity_in(&UPoly::from_ints(&[4, 0, -4, 0, 1])), 2);
+    assert_eq!(sqrt2.square().as_rational(), Some(&q(2, 1)));
+    let limit = root_of(&[-16, 0, 4, 0, 1], q(3, 2), q(8, 5));
+    assert_eq!(limit.square().closed_form().as_deref(), Some("2*sqrt(5) - 2"));
+}
+
+/// `to_decimal(k)` rounds correctly: the defining polynomial changes sign
+/// between d − ½·10⁻ᵏ and d + ½·10⁻ᵏ, checked exactly.
+#[track_caller]
+fn check_decimal(a: &Algebraic, digits: usize, expected: &str) {
+    let d = a.to_decimal(digits);
+    assert_eq!(d, expected);
+    let value: Q = {
+        let (int, frac) = d.split_once('.').unwrap();
+        let n: Q = format!("{int}{frac}").parse().unwrap();
+        n / num_traits::pow(q(10, 1), frac.len())
+    };
+    let half = q(1, 2) / num_traits::pow(q(10, 1), digits);
+    let p = a.defining_poly();
+    let (below, above) = (p.eval(&(&value - &half)), p.eval(&(&value + &half)));
+    assert!((below < Q::default()) != (above < Q::default()), "{d} does not bracket {a}");
+}
+
+#[test]
+fn decimals_are_exact() {
+    check_decimal(&root_of(&[-2, 0, 1], q(0, 1), q(2, 1)), 15, "1.414213562373095");
+    check_decimal(&root_of(&[-16, 0, 4, 0, 1], q(3, 2), q(8, 5)), 12, "1.572302755515");
+    check_decimal(&root_of(&[-2, 0, 0, 1], q(1, 1), q(2, 1)), 20, "1.25992104989487316477");
+    assert_eq!(Algebraic::from_rational(q(-1, 8)).to_decimal(2), "-0.13");
+    assert_eq!(Algebraic::from_rational(q(2, 1)).to_decimal(3), "2.000");
+}
+
+/// Refinement keeps the number and narrows its interval below the width.
+#[test]
+fn refinement_narrows() {
+    let a = root_of(&[-16, 0, 4, 0, 1], q(0, 1), q(4, 1));
+    let w = q(1, 1) / num_traits::pow(q(10, 1), 15);
+    let r = a.refine(&w);
+    let (lo, hi) = r.interval();
+    assert!(&hi - &lo <= w);
+    assert_eq!(r, a);
+}
