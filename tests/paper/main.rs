@@ -5,6 +5,7 @@
 //! Where the paper differs, the test asserts the difference and the claim
 //! carries the verdict `errata` or `refined` in `zcheck paper`.
 
+mod common;
 mod sec04_z_transform;
 mod sec05_standard_euler;
 mod sec06_damped_euler;
@@ -19,3 +20,4 @@ mod app_b_source;
 mod app_c_three_body;
 mod app_d_three_body_euler;
 mod app_e_aircraft;
+mod report;

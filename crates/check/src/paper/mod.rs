@@ -49,6 +49,7 @@ pub struct Claim {
 }
 
 pub mod appendix;
+pub mod report;
 pub mod sections;
 
 /// Every claim of the paper, in the paper's order: sections 4–12 and

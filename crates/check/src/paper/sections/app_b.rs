@@ -1,0 +1,135 @@
+//! Appendix B, the Pascal source: each method's "Direct Integration" and
+//! "Transition matrix" branches give the same recursion; Verlet's start
+//! y2:=1 is False Euler with v0 = 0; Damped Euler's D:=0.5*woT is section
+//! 6's choice; and the slips in the listing.
+
+use poly::{Operand, Sym};
+
+use super::common::*;
+use super::sec08;
+use crate::paper::{Claim, Verdict};
+
+pub fn claims() -> Vec<Claim> {
+    let mut s = Section::new("B", "appB");
+    for matrix in poly::builtin_names().filter(|n| poly::direct_twin(n).is_some()) {
+        twins(&mut s, matrix);
+    }
+    verlet_start(&mut s);
+    damping(&mut s);
+    slips(&mut s);
+    s.finish()
+}
+
+fn twins(s: &mut Section, matrix: &str) {
+    let direct = poly::direct_twin(matrix).expect("filtered");
+    let a = derivation(direct);
+    let b = derivation(matrix);
+    let same = a.transition_matrix == b.transition_matrix;
+    let mut evidence = format!(
+        "symbolic execution of both branches (built-ins {direct} and {matrix}) gives the same P exactly"
+    );
+    if !same {
+        evidence = format!(
+            "{direct}: P = {}; {matrix}: P = {}",
+            matrix_text(&a.transition_matrix),
+            matrix_text(&b.transition_matrix)
+        );
+    }
+    let dead = dead_assignments(&a.method);
+    if !dead.is_empty() {
+        evidence.push_str(&format!(
+            "; the direct branch computes {} and never reads it",
+            dead.join(", ")
+        ));
+    }
+    s.push(
+        &format!("{direct}_branches"),
+        format!(
+            "{}: {{ Direct Integration }} and {{ Transition matrix }} compute the same step",
+            title(direct)
+        ),
+        format!("P = {}", matrix_text(&a.transition_matrix)),
+        exact_verdict(same),
+        evidence,
+    );
+}
+
+fn title(name: &str) -> String {
+    name.split('_')
+        .map(|w| {
+            let mut c = w.chars();
+            c.next().map(|f| f.to_uppercase().collect::<String>() + c.as_str()).unwrap_or_default()
+        })
+        .collect::<Vec<_>>()
+        .join(" ")
+        .replace("Semi False", "Semi-False")
+}
+
+/// Temporaries written and never read.
+fn dead_assignments(m: &poly::Method) -> Vec<String> {
+    let n = m.assigns().len();
+    (0..n)
+        .filter(|&k| matches!(m.assigns()[k].target, poly::Target::Temp(_)))
+        .filter(|&k| {
+            !m.assigns().iter().any(|a| a.terms.iter().any(|(op, _)| *op == Operand::Stmt(k)))
+        })
+        .map(|k| m.target_name(&m.assigns()[k]).to_owned())
+        .collect()
+}
+
+fn verlet_start(s: &mut Section) {
+    let phis =
+        [poly::q(1, 10), poly::q(1, 2), poly::q(1, 1), poly::q(3, 2), poly::q(2, 1), poly::q(9, 4)];
+    let fe = derivation("false_euler");
+    let n = 40;
+    let ok = phis.iter().all(|phi| {
+        let p = matrix_at(&fe.transition_matrix, phi);
+        let euler = iterate_exact(&p, &[poly::q(0, 1), poly::q(1, 1)], n);
+        let verlet = sec08::verlet_samples(phi, &poly::q(1, 1), &poly::q(1, 1), n);
+        euler.iter().map(|x| &x[1]).eq(verlet.iter())
+    });
+    s.push(
+        "verlet_start",
+        "Verlet: t0:=0; y0:=1; y2:=1; { v0=0 }",
+        "Verlet from y0 = y2 = 1 produces exactly False Euler's y samples from v0 = 0, y0 = 1",
+        exact_verdict(ok),
+        format!(
+            "exact rational runs of {n} steps at Φ = 1/10, 1/2, 1, 3/2, 2, 9/4; False Euler's y obeys \
+             y_i = (2 − Φ²) y_(i−1) − y_(i−2) with y_(−1) = y_0 − Φ·v_0 = y_0 when v0 = 0"
+        ),
+    );
+}
+
+fn damping(s: &mut Section) {
+    let d = derivation("damped_euler_d");
+    let half = paper("Phi/2");
+    let p = d.transition_matrix.map(|e| e.subs(Sym::new("D"), &half));
+    let ok = p == derivation("damped_euler").transition_matrix;
+    s.push(
+        "damped_euler_d",
+        "Damped Euler: D:=0.5*woT;  v1:= v0-woT*(y0+2*D*v0)",
+        format!("P = {}", matrix_text(&p)),
+        exact_verdict(ok),
+        "section 6's damped scheme with D a parameter, after D := Φ/2, has exactly the transition matrix of \
+         the Appendix B program (and of its (1-woT2)*v0 matrix branch)",
+    );
+}
+
+fn slips(s: &mut Section) {
+    s.push(
+        "typo_matrixix",
+        "Standard Heun: { Transition matrixix }",
+        "a typo in a comment (\"matrix\"); the code is unaffected",
+        Verdict::Errata,
+        "the listing of case 5; Pascal ignores comments",
+    );
+    s.push(
+        "semi_false_heun_time_variable",
+        "Semi-False Heun: x0:=0; ... x1 := x0+dT; MapP(x1,y1,p1,q1)",
+        "case 7 names the time x0/x1 where every other case uses t0/t1, and x0, x1 are not among the \
+         declared variables of Func (nor is D of case 2)",
+        Verdict::Errata,
+        "the Var section declares t0, y0, v0, t1, y1, v1, y2, dv1, dy1, dv2, dy2, y11, v11, v12, woT, woT2, \
+         woT4, i, k; the step itself is unaffected",
+    );
+}

@@ -1,0 +1,525 @@
+//! Shared machinery of the section modules: a claim collector, the paper's
+//! equations parsed as exact polynomials, symbolic execution of a method's
+//! step, and the exact range analysis of "always" statements.
+//!
+//! Every transcription is a pair: what the paper prints (Unicode, for the
+//! report) and the same expression in `Poly::parse` syntax (for the
+//! comparison). The comparison itself is always exact.
+
+use std::collections::HashMap;
+use std::fmt::Write as _;
+
+use poly::{Derivation, Method, Operand, Poly, PolyMatrix, Sym, Q};
+
+use crate::paper::{Claim, Verdict};
+
+/// The claims of one section, in the paper's order.
+pub struct Section {
+    section: &'static str,
+    prefix: &'static str,
+    claims: Vec<Claim>,
+}
+
+impl Section {
+    /// An empty section: `section` is the paper's numbering ("5", "A"),
+    /// `prefix` starts every claim id ("sec05", "appA").
+    pub fn new(section: &'static str, prefix: &'static str) -> Section {
+        Section { section, prefix, claims: Vec::new() }
+    }
+
+    /// Records one claim.
+    pub fn push(
+        &mut self,
+        key: &str,
+        statement: impl Into<String>,
+        derived: impl Into<String>,
+        verdict: Verdict,
+        evidence: impl Into<String>,
+    ) {
+        self.claims.push(Claim {
+            id: format!("{}.{key}", self.prefix),
+            section: self.section.to_owned(),
+            statement: statement.into(),
+            derived: derived.into(),
+            verdict,
+            evidence: evidence.into(),
+        });
+    }
+
+    /// Adds to the evidence of the claim recorded last.
+    pub fn append_evidence(&mut self, more: &str) {
+        if let Some(c) = self.claims.last_mut() {
+            c.evidence.push_str(more);
+        }
+    }
+
+    /// The claims collected.
+    pub fn finish(self) -> Vec<Claim> {
+        self.claims
+    }
+}
+
+/// A built-in method's derivation. The built-ins are part of the binary, so
+/// a failure is a programmer error.
+#[track_caller]
+pub fn derivation(name: &str) -> Derivation {
+    let method = poly::builtin(name).unwrap_or_else(|e| panic!("built-in {name}: {e}"));
+    poly::derive(&method).unwrap_or_else(|e| panic!("built-in {name}: {e}"))
+}
+
+/// One of our own transcriptions in `Poly::parse` syntax; a parse failure
+/// is a programmer error.
+#[track_caller]
+pub fn paper(text: &str) -> Poly {
+    Poly::parse(text).unwrap_or_else(|e| panic!("transcription {text:?}: {e}"))
+}
+
+/// `Confirmed` when `same`, else `Errata`.
+pub fn exact_verdict(same: bool) -> Verdict {
+    if same {
+        Verdict::Confirmed
+    } else {
+        Verdict::Errata
+    }
+}
+
+/// The symbol of a state variable (or its history) in symbolic execution:
+/// `y` for the start value, `y_lag1` for `y@1`.
+pub fn start_sym(m: &Method, op: Operand) -> Poly {
+    match op {
+        Operand::Start { var, lag: 0 } => Poly::var(&m.state()[var]),
+        Operand::Start { var, lag } => Poly::var(&format!("{}_lag{lag}", m.state()[var])),
+        Operand::Stmt(_) => Poly::var(&m.operand_name(op)),
+    }
+}
+
+/// Symbolic execution of one step: the value of every assignment, in program
+/// order, as a polynomial in the start values (`v`, `y`, `y@1`) and the
+/// parameters, named by the variable it writes.
+pub fn stage_values(m: &Method) -> Vec<(String, Poly)> {
+    let mut values: Vec<Poly> = Vec::with_capacity(m.assigns().len());
+    for a in m.assigns() {
+        let mut acc = Poly::zero();
+        for (op, c) in &a.terms {
+            let src = match *op {
+                Operand::Stmt(t) => values[t].clone(),
+                start => start_sym(m, start),
+            };
+            acc += &(c * &src);
+        }
+        values.push(acc);
+    }
+    m.assigns().iter().map(|a| m.target_name(a).to_owned()).zip(values).collect()
+}
+
+/// The value of the last assignment to `name` in one step.
+#[track_caller]
+pub fn stage_value(m: &Method, name: &str) -> Poly {
+    stage_values(m)
+        .into_iter()
+        .rev()
+        .find(|(n, _)| n == name)
+        .map(|(_, p)| p)
+        .unwrap_or_else(|| panic!("{} assigns no {name}", m.name()))
+}
+
+/// One printed line of the paper: as printed, and in `Poly::parse` syntax.
+#[derive(Clone, Copy)]
+pub struct Printed {
+    /// As the paper prints it.
+    pub printed: &'static str,
+    /// The right-hand side in `Poly::parse` syntax.
+    pub parse: &'static str,
+}
+
+/// Compares printed right-hand sides with the step values of `method`
+/// (the value assigned to `name`): returns (all equal, derived listing,
+/// differences).
+pub fn compare_stages(method: &Method, lines: &[(&str, Printed)]) -> (bool, String, String) {
+    let mut derived = String::new();
+    let mut diffs = String::new();
+    for (name, line) in lines {
+        let want = stage_value(method, name);
+        let got = paper(line.parse);
+        let _ = write!(derived, "{}{name} = {want}", if derived.is_empty() { "" } else { "; " });
+        if want != got {
+            let _ = write!(
+                diffs,
+                "{}printed `{}` expands to {got}, but the step gives {name} = {want} (difference {})",
+                if diffs.is_empty() { "" } else { "; " },
+                line.printed,
+                &got - &want,
+            );
+        }
+    }
+    (diffs.is_empty(), derived, diffs)
+}
+
+/// A z-domain row of the paper, `x = a v z⁻¹ + b y z⁻¹`, as the printed
+/// text and the coefficients of v and y in `Poly::parse` syntax.
+pub struct ZRow {
+    /// As the paper prints it.
+    pub printed: &'static str,
+    /// The coefficient of `v z⁻¹`.
+    pub v: &'static str,
+    /// The coefficient of `y z⁻¹`.
+    pub y: &'static str,
+}
+
+/// Compares printed z-domain rows with the rows of the derived transition
+/// matrix P (state order v, y): row i of the z-domain equations is
+/// `x_i = Σ_j P_ij x_j z⁻¹`.
+pub fn compare_z_rows(d: &Derivation, rows: &[ZRow]) -> (bool, String, String) {
+    let p = &d.transition_matrix;
+    let names = d.method.state();
+    let mut derived = Vec::new();
+    let mut diffs = Vec::new();
+    for (i, row) in rows.iter().enumerate() {
+        let want = [p[(i, 0)].clone(), p[(i, 1)].clone()];
+        let got = [paper(row.v), paper(row.y)];
+        derived.push(format!("{} = ({}) v z^-1 + ({}) y z^-1", names[i], want[0], want[1]));
+        for (k, var) in ["v", "y"].iter().enumerate() {
+            if want[k] != got[k] {
+                diffs.push(format!(
+                    "row `{}`: the coefficient of {var} z^-1 is printed as {}, derived {}",
+                    row.printed, got[k], want[k]
+                ));
+            }
+        }
+    }
+    (diffs.is_empty(), derived.join("; "), diffs.join("; "))
+}
+
+/// The paper's second-order form: `chi = z^2 - 2 p z + q`.
+#[track_caller]
+pub fn p_q(d: &Derivation) -> (Poly, Poly) {
+    d.p_q().unwrap_or_else(|| panic!("{} is not second order", d.method.name()))
+}
+
+/// χ written in the paper's form `z^2 - 2*(p)*z + (q)`.
+pub fn chi_text(d: &Derivation) -> String {
+    match d.p_q() {
+        Some((p, q)) => format!("z^2 - 2*({p})*z + ({q})"),
+        None => d.charpoly.to_string(),
+    }
+}
+
+/// The transition matrix as text, row by row.
+pub fn matrix_text(m: &PolyMatrix) -> String {
+    let rows: Vec<String> = (0..m.rows())
+        .map(|i| {
+            let r: Vec<String> = m.row(i).iter().map(ToString::to_string).collect();
+            format!("[{}]", r.join(", "))
+        })
+        .collect();
+    format!("[{}]", rows.join(", "))
+}
+
+/// `p` evaluated at Φ = `phi` (all other parameters must be absent).
+pub fn at_phi(p: &Poly, phi: &Q) -> Q {
+    let values = HashMap::from([(Sym::phi(), phi.clone())]);
+    p.eval(&values).expect("a polynomial in Phi only")
+}
+
+/// A polynomial truncated to powers of Φ below `k`.
+pub fn truncate(p: &Poly, k: usize) -> Poly {
+    let mut c = p.coeffs_in(Sym::phi());
+    c.truncate(k);
+    Poly::from_coeffs_in(Sym::phi(), &c)
+}
+
+/// A rational shown as a decimal with `digits` places (at most 18), rounded
+/// half away from zero; exact, no float involved.
+pub fn q_decimal(x: &Q, digits: u32) -> String {
+    use num_traits::Signed;
+    let scale = poly::q(10i64.pow(digits), 1);
+    let rounded = (x.abs() * &scale + poly::q(1, 2)).floor().to_integer().to_string();
+    let negative = x.is_negative() && rounded.chars().any(|c| c != '0');
+    let padded = format!("{rounded:0>width$}", width = digits as usize + 1);
+    let (int, frac) = padded.split_at(padded.len() - digits as usize);
+    let sign = if negative { "-" } else { "" };
+    if digits == 0 {
+        format!("{sign}{int}")
+    } else {
+        format!("{sign}{int}.{frac}")
+    }
+}
+
+/// A float rounded for a report: never a raw float.
+pub fn fixed(x: f64, digits: usize) -> String {
+    let s = format!("{x:.digits$}");
+    // "-0.000" reads as a sign error; print it as zero.
+    if s.trim_start_matches('-').chars().all(|c| c == '0' || c == '.') {
+        s.trim_start_matches('-').to_owned()
+    } else {
+        s
+    }
+}
+
+/// Ψ(Φ) of a second-order method at one Φ in floating point: the argument
+/// of the upper root, `atan2(sqrt(q - p²), p)`, when the roots are complex.
+pub fn psi_f64(d: &Derivation, phi: f64) -> Option<f64> {
+    let (p, q) = p_q(d);
+    let p = eval_f64(&p, phi);
+    let q = eval_f64(&q, phi);
+    let s = q - p * p;
+    (s > 0.0).then(|| s.sqrt().atan2(p))
+}
+
+/// A polynomial in Φ evaluated in floating point (Horner).
+pub fn eval_f64(p: &Poly, phi: f64) -> f64 {
+    use num_traits::ToPrimitive;
+    p.coeffs_in(Sym::phi())
+        .iter()
+        .rev()
+        .map(|c| c.as_constant().and_then(|c| c.to_f64()).expect("a polynomial in Phi only"))
+        .fold(0.0, |acc, c| acc * phi + c)
+}
+
+/// The canonical test oscillator of section 5 (v̇ = −ω0 y, ẏ = ω0 v) as the
+/// matrix A in units of ω0, state order (v, y), in `Poly::parse` syntax.
+pub const OSCILLATOR: [[&str; 2]; 2] = [["0", "-1"], ["1", "0"]];
+
+/// How a method's transition matrix P must relate to the ODE matrix A.
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub enum Scheme {
+    /// Standard Euler: P = I + ΦA exactly (section 4).
+    Euler,
+    /// Standard Heun on a linear system: P = I + ΦA + (ΦA)²/2 exactly.
+    Heun,
+    /// Any consistent method: P = I + ΦA + O(Φ²).
+    Consistent,
+}
+
+/// The ODE matrix from its transcription.
+pub fn ode_matrix(a: [[&str; 2]; 2]) -> PolyMatrix {
+    PolyMatrix::from_rows(a.iter().map(|r| r.iter().map(|e| paper(e)).collect()).collect())
+}
+
+/// P − (I + ΦA [+ (ΦA)²/2]) for the scheme; zero (or O(Φ²) for
+/// `Consistent`) when the method integrates the ODE A.
+pub fn scheme_defect(d: &Derivation, a: &PolyMatrix, scheme: Scheme) -> PolyMatrix {
+    let phi = Poly::sym(Sym::phi());
+    let phi_a = a.map(|e| e * &phi);
+    let mut model = PolyMatrix::identity(a.rows());
+    for i in 0..a.rows() {
+        for j in 0..a.cols() {
+            model[(i, j)] = &model[(i, j)] + &phi_a[(i, j)];
+        }
+    }
+    if scheme == Scheme::Heun {
+        let sq = &phi_a * &phi_a;
+        for i in 0..a.rows() {
+            for j in 0..a.cols() {
+                model[(i, j)] = &model[(i, j)] + &sq[(i, j)].scale(&poly::q(1, 2));
+            }
+        }
+    }
+    let p = &d.transition_matrix;
+    let mut out = PolyMatrix::zeros(p.rows(), p.cols());
+    for i in 0..p.rows() {
+        for j in 0..p.cols() {
+            let e = &p[(i, j)] - &model[(i, j)];
+            out[(i, j)] = if scheme == Scheme::Consistent { truncate(&e, 2) } else { e };
+        }
+    }
+    out
+}
+
+/// Whether every entry of a matrix is zero.
+pub fn is_zero_matrix(m: &PolyMatrix) -> bool {
+    (0..m.rows()).all(|i| m.row(i).iter().all(Poly::is_zero))
+}
+
+/// Records the claim that a section's printed ODE is the one its method
+/// integrates.
+pub fn ode_claim(s: &mut Section, method: &str, printed: &str, a: [[&str; 2]; 2], scheme: Scheme) {
+    let d = derivation(method);
+    let printed_a = ode_matrix(a);
+    let defect = scheme_defect(&d, &printed_a, scheme);
+    let ok = is_zero_matrix(&defect);
+    let canonical = scheme_defect(&d, &ode_matrix(OSCILLATOR), scheme);
+    let rule = match scheme {
+        Scheme::Euler => "P = I + ΦA exactly",
+        Scheme::Heun => "P = I + ΦA + (ΦA)²/2 exactly",
+        Scheme::Consistent => "P = I + ΦA + O(Φ²)",
+    };
+    let derived = format!(
+        "{method}: P = {}; the printed ODE has A = {} (units of ω0, state v, y)",
+        matrix_text(&d.transition_matrix),
+        matrix_text(&printed_a)
+    );
+    let evidence = if ok {
+        format!("{rule} holds for the printed A")
+    } else {
+        format!(
+            "{rule} fails for the printed A (defect {} in the terms it checks); {}",
+            matrix_text(&defect),
+            if is_zero_matrix(&canonical) {
+                "it holds for A = [[0, -1], [1, 0]], i.e. v̇ = −ω0 y, ẏ = ω0 v, the oscillator of \
+                 section 5 that the section's own next lines use"
+                    .to_owned()
+            } else {
+                "it fails for the canonical oscillator too".to_owned()
+            }
+        )
+    };
+    s.push("ode", printed, derived, exact_verdict(ok), evidence);
+}
+
+/// Records a printed characteristic equation against the derived χ.
+pub fn charpoly_claim(s: &mut Section, key: &str, method: &str, printed: &str, parse: &str) {
+    let d = derivation(method);
+    let got = paper(parse);
+    let ok = got == d.charpoly;
+    let evidence = if ok {
+        format!(
+            "poly::derive({method}) gives χ by the z-domain determinant and by det(zI − P), \
+             which agree; the printed equation, parsed, is the same polynomial"
+        )
+    } else {
+        format!(
+            "poly::derive({method}) gives {}; the printed equation differs by {}",
+            d.charpoly,
+            &got - &d.charpoly
+        )
+    };
+    s.push(key, printed, format!("χ(z) = {}", chi_text(&d)), exact_verdict(ok), evidence);
+}
+
+/// Records printed intermediate values of one step against symbolic
+/// execution of the method's program.
+pub fn stages_claim(
+    s: &mut Section,
+    key: &str,
+    method: &str,
+    printed: &str,
+    lines: &[(&str, Printed)],
+) {
+    let m = derivation(method).method;
+    let (ok, derived, diffs) = compare_stages(&m, lines);
+    let evidence = if ok {
+        format!("symbolic execution of the {method} program (Appendix B) gives every printed value exactly")
+    } else {
+        format!("symbolic execution of the {method} program: {diffs}")
+    };
+    s.push(key, printed, derived, exact_verdict(ok), evidence);
+}
+
+/// Records printed z-domain rows against the derived transition matrix.
+pub fn z_rows_claim(s: &mut Section, method: &str, printed: &str, rows: &[ZRow]) {
+    let d = derivation(method);
+    let (ok, derived, diffs) = compare_z_rows(&d, rows);
+    let evidence = if ok {
+        format!("the rows of P from poly::derive({method}) equal the printed coefficients exactly")
+    } else {
+        format!("poly::derive({method}): {diffs}")
+    };
+    s.push("z_rows", printed, derived, exact_verdict(ok), evidence);
+}
+
+/// Records a printed r² against q (section 4: r1² = q for a conjugate pair).
+pub fn r_squared_claim(s: &mut Section, method: &str, printed: &str, parse: &str) {
+    let d = derivation(method);
+    let (p, q) = p_q(&d);
+    let ok = paper(parse) == q;
+    let range = super::ranges::sign_text(
+        &(&q - &(&p * &p)),
+        "the roots are a conjugate pair",
+        "they are real",
+    );
+    s.push(
+        "r_squared",
+        printed,
+        format!("r² = q = {q} while {range}"),
+        exact_verdict(ok),
+        format!(
+            "for a conjugate pair z1·z2 = r² = q (section 4); q from poly::derive({method}) {} the printed r²",
+            if ok { "equals" } else { "differs from" }
+        ),
+    );
+}
+
+/// Records printed eigenvalues `p ± j·sqrt(im²)` against χ: they are the
+/// roots iff p is the derived p and im² = q − p².
+pub fn eigen_claim(
+    s: &mut Section,
+    key: &str,
+    method: &str,
+    printed: &str,
+    p_text: &str,
+    im_sq: &str,
+) {
+    let d = derivation(method);
+    let (p, q) = p_q(&d);
+    let disc = &q - &(&p * &p);
+    let ok_p = paper(p_text) == p;
+    let ok_im = paper(im_sq) == disc;
+    let range = super::ranges::sign_text(
+        &disc,
+        "they are a conjugate pair",
+        "the same formula gives two real roots",
+    );
+    let evidence = match (ok_p, ok_im) {
+        (true, true) => format!(
+            "z = p ± j·sqrt(q − p²) solves z² − 2pz + q = 0 identically; the printed real part equals \
+             p and the printed imaginary part squared equals q − p² = {disc} exactly"
+        ),
+        (false, _) => format!("the printed real part is {}, but p = {p}", paper(p_text)),
+        (true, false) => format!("the printed imaginary part squared is {}, but q − p² = {disc}", paper(im_sq)),
+    };
+    s.push(
+        key,
+        printed,
+        format!("p = {p}, q − p² = {disc}; {range}"),
+        exact_verdict(ok_p && ok_im),
+        evidence,
+    );
+}
+
+/// Records a printed tan Ψ = num/den against the roots: tan Ψ = sqrt(q − p²)/p,
+/// so den must be p and num² must be q − p².
+pub fn tan_claim(s: &mut Section, key: &str, method: &str, printed: &str, num_sq: &str, den: &str) {
+    let d = derivation(method);
+    let (p, q) = p_q(&d);
+    let disc = &q - &(&p * &p);
+    let ok = paper(den) == p && paper(num_sq) == disc;
+    let p_sign = super::ranges::sign_text(
+        &p,
+        "p > 0 and Ψ = arctan(...) lies in (0, π/2)",
+        "Ψ = π + arctan(...) lies in (π/2, π)",
+    );
+    s.push(
+        key,
+        printed,
+        format!("tan Ψ = sqrt({disc}) / ({p}); {p_sign}"),
+        exact_verdict(ok),
+        if ok {
+            "Ψ is the argument of z1 = p + j·sqrt(q − p²): the printed numerator squared equals q − p² \
+             and the printed denominator equals p exactly"
+                .to_owned()
+        } else {
+            format!("the printed form does not match p = {p}, q − p² = {disc}")
+        },
+    );
+}
+
+/// A transition matrix at one rational Φ (other parameters substituted by
+/// the caller).
+pub fn matrix_at(p: &PolyMatrix, phi: &Q) -> Vec<Vec<Q>> {
+    (0..p.rows()).map(|i| p.row(i).iter().map(|e| at_phi(e, phi)).collect()).collect()
+}
+
+/// The exact states x_0, x_1, ..., x_n of x_{k+1} = P x_k.
+pub fn iterate_exact(p: &[Vec<Q>], x0: &[Q], n: usize) -> Vec<Vec<Q>> {
+    let mut out = vec![x0.to_vec()];
+    for _ in 0..n {
+        let x = out.last().expect("starts non-empty");
+        let next = p
+            .iter()
+            .map(|row| row.iter().zip(x).fold(Q::from_integer(0.into()), |acc, (a, b)| acc + a * b))
+            .collect();
+        out.push(next);
+    }
+    out
+}

@@ -1,0 +1,236 @@
+//! Exact ranges in Φ > 0: where a polynomial in Φ is positive or negative,
+//! and which root class (section 4) a method shows on each piece of the
+//! positive axis. Every boundary is an exact algebraic number from
+//! `poly::Algebraic` / `poly::stability`; no float decides anything here.
+
+use std::cmp::Ordering;
+
+use poly::stability::{self, StabilityReport};
+use poly::{Algebraic, Poly, RootClass, Sym, UPoly, Q};
+
+use super::common::derivation;
+
+/// An exact number written for a reader: the closed form when known, with
+/// its decimal value ("sqrt(2) ≈ 1.4142", "2").
+pub fn show(a: &Algebraic) -> String {
+    match (a.is_rational(), a.closed_form()) {
+        (true, Some(c)) => c,
+        (false, Some(c)) => format!("{c} ≈ {}", a.to_decimal(4)),
+        (_, None) => {
+            format!("{} (the root of {})", a.to_decimal(4), a.defining_poly().to_string_in("Phi"))
+        }
+    }
+}
+
+/// The positive real roots of a polynomial in Φ, ascending.
+pub fn positive_roots(p: &Poly) -> Vec<Algebraic> {
+    let u: UPoly = p.to_upoly(Sym::phi()).expect("a polynomial in Phi only");
+    if u.is_zero() {
+        return Vec::new();
+    }
+    let mut roots = Algebraic::positive_roots(&u);
+    roots.sort();
+    roots
+}
+
+/// A rational strictly between two numbers (`a < b`).
+pub fn rational_between(a: &Algebraic, b: &Algebraic) -> Q {
+    let mut width = poly::q(1, 16);
+    loop {
+        let (_, a_hi) = a.refine(&width).interval();
+        let (b_lo, _) = b.refine(&width).interval();
+        if a_hi < b_lo {
+            return (a_hi + b_lo) / poly::q(2, 1);
+        }
+        width /= poly::q(16, 1);
+    }
+}
+
+/// A rational in (0, a) for a positive `a`.
+fn rational_below(a: &Algebraic) -> Q {
+    rational_between(&Algebraic::zero(), a)
+}
+
+/// A rational above `a`.
+fn rational_above(a: &Algebraic) -> Q {
+    a.refine(&poly::q(1, 16)).interval().1 + poly::q(1, 1)
+}
+
+/// One piece of Φ > 0: an open interval (lo, hi) or a single point.
+#[derive(Clone, Debug)]
+pub enum Piece {
+    /// lo < Φ < hi; `None` for 0 (lo) or ∞ (hi).
+    Open(Option<Algebraic>, Option<Algebraic>),
+    /// Φ = the number.
+    Point(Algebraic),
+}
+
+impl Piece {
+    /// The piece in words: "0 < Φ < sqrt(2) ≈ 1.4142", "Φ = 2".
+    pub fn text(&self) -> String {
+        match self {
+            Piece::Open(None, None) => "every Φ > 0".to_owned(),
+            Piece::Open(None, Some(h)) => format!("0 < Φ < {}", show(h)),
+            Piece::Open(Some(l), None) => format!("Φ > {}", show(l)),
+            Piece::Open(Some(l), Some(h)) => format!("{} < Φ < {}", show(l), show(h)),
+            Piece::Point(a) => format!("Φ = {}", show(a)),
+        }
+    }
+
+    /// A rational inside an open piece.
+    pub fn sample(&self) -> Option<Q> {
+        match self {
+            Piece::Open(None, None) => Some(poly::q(1, 1)),
+            Piece::Open(None, Some(h)) => Some(rational_below(h)),
+            Piece::Open(Some(l), None) => Some(rational_above(l)),
+            Piece::Open(Some(l), Some(h)) => Some(rational_between(l, h)),
+            Piece::Point(a) => a.as_rational().cloned(),
+        }
+    }
+}
+
+/// The open pieces of Φ > 0 cut at `cuts` (ascending), with the cut points
+/// in between.
+pub fn pieces(cuts: &[Algebraic]) -> Vec<Piece> {
+    let mut out = Vec::new();
+    let mut lo: Option<Algebraic> = None;
+    for c in cuts {
+        out.push(Piece::Open(lo.clone(), Some(c.clone())));
+        out.push(Piece::Point(c.clone()));
+        lo = Some(c.clone());
+    }
+    out.push(Piece::Open(lo, None));
+    out
+}
+
+/// Where a polynomial in Φ is positive and where negative, in words:
+/// "`pos` for 0 < Φ < 2; `neg` for Φ > 2" (or "`pos` for every Φ > 0").
+pub fn sign_text(p: &Poly, pos: &str, neg: &str) -> String {
+    if p.symbols().iter().any(|s| *s != Sym::phi()) {
+        return format!("{pos} where {p} > 0; {neg} where {p} < 0");
+    }
+    let roots = positive_roots(p);
+    let mut parts = Vec::new();
+    for piece in pieces(&roots) {
+        let Piece::Open(..) = piece else { continue };
+        let x = piece.sample().expect("open pieces have samples");
+        let value = super::common::at_phi(p, &x);
+        let word = match value.cmp(&poly::q(0, 1)) {
+            Ordering::Greater => pos,
+            Ordering::Less => neg,
+            Ordering::Equal => "zero",
+        };
+        parts.push(format!("{word} for {}", piece.text()));
+    }
+    parts.join("; ")
+}
+
+/// The exact stability report of a built-in method.
+#[track_caller]
+pub fn report(method: &str) -> StabilityReport {
+    let d = derivation(method);
+    stability::analyze(&d.charpoly).unwrap_or_else(|e| panic!("stability of {method}: {e}"))
+}
+
+/// A method's root class on every piece of Φ > 0: the open intervals of
+/// constant class and the change points between them (a point's class is
+/// `None` when poly::stability did not decide it).
+pub fn class_map(method: &str) -> Vec<(Piece, Option<RootClass>)> {
+    let r = report(method);
+    let mut out = Vec::new();
+    for (k, interval) in r.intervals.iter().enumerate() {
+        let lo = (interval.lo.sign() == Ordering::Greater).then(|| interval.lo.clone());
+        out.push((Piece::Open(lo, interval.hi.clone()), Some(interval.class)));
+        if let Some(change) = r.class_changes.get(k) {
+            out.push((Piece::Point(change.at.clone()), change.at_class));
+        }
+    }
+    out
+}
+
+/// A class map in words: "damped_oscillation for 0 < Φ < ...; ...".
+pub fn class_map_text(map: &[(Piece, Option<RootClass>)]) -> String {
+    map.iter()
+        .filter_map(|(piece, class)| class.map(|c| format!("{c} for {}", piece.text())))
+        .collect::<Vec<_>>()
+        .join("; ")
+}
+
+/// The built-ins whose class maps cover the paper's methods (the `_matrix`
+/// twins have the same χ).
+pub const METHODS: [&str; 8] = [
+    "standard_euler",
+    "damped_euler",
+    "false_euler",
+    "verlet",
+    "standard_heun",
+    "false_heun",
+    "semi_false_heun",
+    "damped_euler_d",
+];
+
+/// Classes reached by the paper's methods (`damped_euler_d` excluded: it has
+/// a free parameter) that are not in `known`, with where they occur.
+pub fn classes_outside(known: &[RootClass]) -> String {
+    let mut out = Vec::new();
+    for method in METHODS.iter().filter(|m| **m != "damped_euler_d") {
+        for (piece, class) in class_map(method) {
+            if let Some(c) = class {
+                if !known.contains(&c) {
+                    out.push(format!("{method}: {c} for {}", piece.text()));
+                }
+            }
+        }
+    }
+    if out.is_empty() {
+        "none".to_owned()
+    } else {
+        out.join("; ")
+    }
+}
+
+/// Where the paper's second-order methods have a complex pair with negative
+/// real part (Ψ > π/2), so that arctan(b1/a1) is off by π.
+pub fn negative_real_part_text() -> String {
+    let mut out = Vec::new();
+    for method in METHODS.iter().filter(|m| !matches!(**m, "damped_euler_d" | "verlet")) {
+        let d = derivation(method);
+        let (p, q) = super::common::p_q(&d);
+        let disc = &q - &(&p * &p);
+        let mut cuts = positive_roots(&p);
+        cuts.extend(positive_roots(&disc));
+        cuts.sort();
+        cuts.dedup();
+        for piece in pieces(&cuts) {
+            let Piece::Open(..) = piece else { continue };
+            let x = piece.sample().expect("open piece");
+            let zero = poly::q(0, 1);
+            if super::common::at_phi(&p, &x) < zero && super::common::at_phi(&disc, &x) > zero {
+                out.push(format!("{method} for {}", piece.text()));
+            }
+        }
+    }
+    out.join("; ")
+}
+
+/// The verdict of an "always" claim: `Confirmed` when every class on Φ > 0
+/// satisfies `ok`, else `Refined`; with the class map in words and the
+/// pieces where `ok` fails.
+pub fn always(
+    method: &str,
+    ok: impl Fn(RootClass) -> bool,
+) -> (crate::paper::Verdict, String, String) {
+    let map = class_map(method);
+    let failing: Vec<String> = map
+        .iter()
+        .filter_map(|(piece, class)| {
+            class.filter(|c| !ok(*c)).map(|c| format!("{c} for {}", piece.text()))
+        })
+        .collect();
+    let verdict = if failing.is_empty() {
+        crate::paper::Verdict::Confirmed
+    } else {
+        crate::paper::Verdict::Refined
+    };
+    (verdict, class_map_text(&map), failing.join("; "))
+}

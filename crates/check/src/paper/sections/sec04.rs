@@ -1,0 +1,295 @@
+//! Section 4, z-Transformation: the transition matrix, the characteristic
+//! equation, the taxonomy of roots, samples per period and the p, q form.
+
+use poly::{Poly, RootClass, Sym};
+
+use super::common::*;
+use super::ranges;
+use crate::paper::{Claim, Verdict};
+
+pub fn claims() -> Vec<Claim> {
+    let mut s = Section::new("4", "sec04");
+    euler_transition(&mut s);
+    characteristic_equation(&mut s);
+    eigenvalues_decide(&mut s);
+    taxonomy_real(&mut s);
+    taxonomy_complex(&mut s);
+    psi_arctan(&mut s);
+    samples_per_period(&mut s);
+    double_roots(&mut s);
+    approach_minus_one(&mut s);
+    p_q_form(&mut s);
+    s.finish()
+}
+
+fn euler_transition(s: &mut Section) {
+    let plain =
+        scheme_defect(&derivation("standard_euler"), &ode_matrix(OSCILLATOR), Scheme::Euler);
+    let damped = scheme_defect(
+        &derivation("damped_euler_d"),
+        &ode_matrix([["-2*D", "-1"], ["1", "0"]]),
+        Scheme::Euler,
+    );
+    let ok = is_zero_matrix(&plain) && is_zero_matrix(&damped);
+    s.push(
+        "euler_transition",
+        "y_i = (I + TA) y_i z⁻¹ + TB x_i z⁻¹;  y = P y z⁻¹ + Q x z⁻¹ (P is the transition matrix)",
+        format!(
+            "standard_euler: P = {}; damped_euler_d: P = {}",
+            matrix_text(&derivation("standard_euler").transition_matrix),
+            matrix_text(&derivation("damped_euler_d").transition_matrix)
+        ),
+        exact_verdict(ok),
+        "P = I + ΦA exactly for the oscillator A = [[0, −1], [1, 0]] (section 5) and for the damped \
+         oscillator A = [[−2D, −1], [1, 0]] (section 6), with Φ = ω0·T",
+    );
+}
+
+fn characteristic_equation(s: &mut Section) {
+    let mut agree = 0;
+    for name in poly::builtin_names() {
+        let m = poly::builtin(name).expect("built-in");
+        // derive() fails when the z-domain determinant and det(zI − P) differ.
+        if poly::derive(&m).is_ok() {
+            agree += 1;
+        }
+    }
+    let total = poly::builtin_names().count();
+    s.push(
+        "characteristic_equation",
+        "(Iz − P) y = 0;  det(Iz − P) = 0, an n-th order polynomial in z",
+        format!("χ(z) = det(zI − P) for {agree} of {total} built-in methods"),
+        exact_verdict(agree == total),
+        "for every built-in, the determinant of the z-domain equations of the program (z^N·det M(1/z)) \
+         equals det(zI − P) of the transition matrix found by symbolic execution, exactly",
+    );
+}
+
+/// Repeated roots on the unit circle: the same eigenvalues, different fates.
+fn eigenvalues_decide(s: &mut Section) {
+    let one = poly::q(1, 1);
+    let identity = vec![vec![one.clone(), poly::q(0, 1)], vec![poly::q(0, 1), one.clone()]];
+    let jordan = vec![vec![one.clone(), one.clone()], vec![poly::q(0, 1), one.clone()]];
+    let x0 = [poly::q(0, 1), one.clone()];
+    let n = 20;
+    let still = iterate_exact(&identity, &x0, n);
+    let grows = iterate_exact(&jordan, &[one.clone(), one.clone()], n);
+    s.push(
+        "eigenvalues_decide",
+        "The stability of all solutions of the sample sequence ... is entirely described by the location of \
+         the eigenvalues in the complex plane. Major result: the stability of a sample sequence for a \
+         homogeneous test case can be predicted by the eigenvalues of the transition matrix.",
+        "true when the roots on the unit circle are simple; a repeated root on the circle needs the Jordan \
+         structure of P as well",
+        Verdict::Refined,
+        format!(
+            "P = I and P = [[1, 1], [0, 1]] both have z1 = z2 = 1; exactly, after {n} steps the first keeps \
+             (v, y) = ({}, {}) while the second has grown to ({}, {}) (linear growth). Section 4 itself \
+             notes the double root at −1 is unstable; all roots strictly inside or simple on the circle \
+             decide stability by location alone",
+            still[n][0], still[n][1], grows[n][0], grows[n][1]
+        ),
+    );
+}
+
+fn taxonomy_real(s: &mut Section) {
+    let paper_classes =
+        [RootClass::MonotonicStable, RootClass::Constant, RootClass::MonotonicUnstable];
+    let missing = ranges::classes_outside(&paper_classes_with_pairs(&paper_classes));
+    s.push(
+        "taxonomy_real",
+        "Single real eigenvalues z1 = a1: 0 < z1 < 1 monotonic stable g(t); z1 = 1 constant g(t); 1 < z1 \
+         monotonic unstable g(t)",
+        "the three rows are right; the taxonomy omits z1 ≤ 0: z1 = 0 (deadbeat), −1 < z1 < 0 (alternating, \
+         decaying), z1 = −1 (alternating, Ψ = π), z1 < −1 (alternating, growing)",
+        Verdict::Refined,
+        format!(
+            "a root z1 gives samples c·z1^i; for z1 < 0 they flip sign every step. Classes the paper's \
+             methods reach (exact class maps over Φ > 0) that the taxonomy lacks: {missing}"
+        ),
+    );
+}
+
+fn paper_classes_with_pairs(real: &[RootClass]) -> Vec<RootClass> {
+    let mut v = real.to_vec();
+    v.extend([
+        RootClass::Harmonic,
+        RootClass::DampedOscillation,
+        RootClass::UnstableOscillation,
+        RootClass::DoubleRootOnCircle,
+    ]);
+    v
+}
+
+fn taxonomy_complex(s: &mut Section) {
+    // r² = z·z̄ = q for the pair, and |z^i| = r^i.
+    let a = Poly::var("a");
+    let b = Poly::var("b");
+    let re = &(&a * &a) - &(&b * &b);
+    let im = (&a * &b).scale(&poly::q(2, 1));
+    let modulus_sq_of_square = &(&re * &re) + &(&im * &im);
+    let r2 = &(&a * &a) + &(&b * &b);
+    let ok = modulus_sq_of_square == &r2 * &r2;
+    s.push(
+        "taxonomy_complex",
+        "Single pairs of conjugate complex eigenvalues z1/2 = a1 ± j b1: r1 = (a1² + b1²)^0.5; r1 = 1 \
+         harmonic g(t); r1 < 1 damped oscillation g(t); r1 > 1 unstable oscillation g(t)",
+        "samples are c·r1^i·cos(iΨ1 + φ): bounded and non-decaying iff r1 = 1",
+        exact_verdict(ok),
+        "|z^i| = |z|^i (checked exactly for i = 2: |(a + jb)²|² = (a² + b²)²), so the envelope is r1^i; \
+         the class maps of sections 5–11 use exactly this rule",
+    );
+}
+
+fn psi_arctan(s: &mut Section) {
+    // Case 3 of the figure: Ψ = 150°, a1 = cos 150° < 0.
+    let psi = 150f64.to_radians();
+    let (a1, b1) = (psi.cos(), psi.sin());
+    let arctan = (b1 / a1).atan().to_degrees();
+    let atan2 = b1.atan2(a1).to_degrees();
+    s.push(
+        "psi_arctan",
+        "Ψ1 = arctan(b1/a1) = Ω0·T, angle increment, 0 ... π",
+        "Ψ1 = atan2(b1, a1) ∈ (0, π); arctan(b1/a1) ∈ (−π/2, π/2) is wrong whenever a1 < 0",
+        Verdict::Errata,
+        format!(
+            "the paper's own harmonic case 3 (Ψ1 = 150°, 2.4 samples) has a1 = cos 150° < 0: \
+             arctan(b1/a1) = {}° but the angle is atan2(b1, a1) = {}°. The methods reach a1 = p < 0 with \
+             complex roots: {}",
+            fixed(arctan, 1),
+            fixed(atan2, 1),
+            ranges::negative_real_part_text()
+        ),
+    );
+}
+
+fn samples_per_period(s: &mut Section) {
+    let rows = [(30, "12"), (90, "4"), (150, "2.4")];
+    let mut derived = Vec::new();
+    let mut ok = true;
+    for (angle, printed) in rows {
+        let n = poly::q(360, angle);
+        let text = q_decimal(&n, 1);
+        ok &= text.trim_end_matches('0').trim_end_matches('.') == printed;
+        let shown =
+            if n.is_integer() { n.to_string() } else { format!("{n} = {}", q_decimal(&n, 1)) };
+        derived.push(format!("360/{angle} = {shown} samples"));
+    }
+    s.push(
+        "samples_per_period",
+        "harmonic cases 1, 2, 3: 360/30 = 12 samples; 360/90 = 4 samples; 360/150 = 2.4 samples",
+        derived.join("; "),
+        exact_verdict(ok),
+        "exact rational arithmetic; samples per period of g(t) = 2π/Ψ1 = 360°/Ψ1",
+    );
+}
+
+fn double_roots(s: &mut Section) {
+    let one = poly::q(1, 1);
+    let zero = poly::q(0, 1);
+    let minus = poly::q(-1, 1);
+    let n = 20;
+    let start = [one.clone(), one.clone()];
+    let identity = iterate_exact(
+        &[vec![one.clone(), zero.clone()], vec![zero.clone(), one.clone()]],
+        &start,
+        n,
+    );
+    let jordan = iterate_exact(
+        &[vec![one.clone(), one.clone()], vec![zero.clone(), one.clone()]],
+        &start,
+        n,
+    );
+    s.push(
+        "double_root_plus_one",
+        "z1 = z2 = 1: monotonic unstable g(t)",
+        "monotonic unstable only when the double root is defective (a Jordan block); P = I gives a constant g(t)",
+        Verdict::Refined,
+        format!(
+            "exact iteration from (1, 1): P = [[1, 1], [0, 1]] reaches {} after {n} steps (linear growth), \
+             P = I stays at {}",
+            jordan[n][0], identity[n][0]
+        ),
+    );
+    let neg_identity = iterate_exact(
+        &[vec![minus.clone(), zero.clone()], vec![zero.clone(), minus.clone()]],
+        &start,
+        n + 1,
+    );
+    let fe = derivation("false_euler");
+    let p2 = matrix_at(&fe.transition_matrix, &poly::q(2, 1));
+    let fe_run = iterate_exact(&p2, &[zero.clone(), one.clone()], n);
+    s.push(
+        "double_root_minus_one",
+        "z1 = z2 = −1: unstable oscillation g(t)",
+        "an unstable oscillation only when the double root is defective; P = −I alternates with bounded amplitude",
+        Verdict::Refined,
+        format!(
+            "P = −I from (1, 1) is at {} after {} steps; False Euler at Φ = 2 has P = {} ≠ −I and y goes \
+             from 1 to {} in {n} steps (exact)",
+            neg_identity[n + 1][0],
+            n + 1,
+            matrix_text(&fe.transition_matrix),
+            fe_run[n][1]
+        ),
+    );
+}
+
+fn approach_minus_one(s: &mut Section) {
+    let fe = derivation("false_euler");
+    let two = poly::q(2, 1);
+    let p2 = matrix_at(&fe.transition_matrix, &two);
+    let run = iterate_exact(&p2, &[poly::q(0, 1), poly::q(1, 1)], 40);
+    let samples: Vec<String> =
+        [10, 20, 40].iter().map(|&k| format!("y_{k} = {}", run[k][1])).collect();
+    let chi2 = fe.charpoly.subs(Sym::phi(), &Poly::int(2));
+    let double_minus_one = chi2 == Poly::parse("(z + 1)^2").expect("literal");
+    let not_minus_identity = p2[0][1] != poly::q(0, 1);
+    s.push(
+        "approach_minus_one",
+        "If ... a single pair of complex eigenvalues with r1 = 1 approaches z1 = z2 = −1, then the result is not \
+         a harmonic oscillation with Ψ1 = π but an instable oscillation",
+        format!(
+            "False Euler at Φ = 2: χ = {}, P = [[{}, {}], [{}, {}]] is a Jordan block; {}",
+            chi2,
+            p2[0][0],
+            p2[0][1],
+            p2[1][0],
+            p2[1][1],
+            samples.join(", ")
+        ),
+        exact_verdict(double_minus_one && not_minus_identity),
+        "χ(z) = (z + 1)² at Φ = 2 and P ≠ −I, so P has a single eigenvector and the samples grow linearly \
+         with alternating sign (exact iteration from v0 = 0, y0 = 1)",
+    );
+}
+
+fn p_q_form(s: &mut Section) {
+    let p = Poly::var("p");
+    let q = Poly::var("q");
+    let t = Poly::var("t");
+    let chi = |x: &Poly| &(&(x * x) - &(&(&p * x) * &Poly::int(2))) + &q;
+    // Real roots: z = p + t solves χ iff t² = p² − q.
+    let real = chi(&(&p + &t)) - (&(&t * &t) - &(&(&p * &p) - &q));
+    // Complex roots: z = p + j t, with (a + jb)² = a² − b² + 2jab.
+    let re = &(&(&(&p * &p) - &(&t * &t)) - &(&(&p * &p) * &Poly::int(2))) + &q;
+    let im = &(&(&p * &t) * &Poly::int(2)) - &(&(&p * &t) * &Poly::int(2));
+    let complex = &re - &(&(&q - &(&p * &p)) - &(&t * &t));
+    let r2 = &(&p * &p) + &(&q - &(&p * &p));
+    s.push(
+        "p_q_roots",
+        "z² − 2pz + q = 0;  z1/2 = p ± (−q + p²)^0.5 real;  z1/2 = p ± j(q − p²)^0.5 conjugate pair",
+        "z = p + t is a root iff t² = p² − q; z = p + jt is a root iff t² = q − p² (and the imaginary part \
+         vanishes identically)",
+        exact_verdict(real.is_zero() && complex.is_zero() && im.is_zero()),
+        "substitution into χ with symbolic p, q, t: χ(p + t) = t² − (p² − q) and χ(p + jt) = (q − p² − t²) + \
+         j·0, exactly",
+    );
+    s.push(
+        "r_squared_q",
+        "r1² = p² + (q − p²) = q. Therefore we can test the harmonic case r1 = 1 for conjugate pairs simply by q = 1",
+        format!("p² + (q − p²) = {r2}"),
+        exact_verdict(r2 == q),
+        "exact polynomial identity; for a conjugate pair z1·z2 = |z1|² = q (Vieta)",
+    );
+}

@@ -1,0 +1,155 @@
+//! Section 6, Damped Euler: the damped oscillator, its characteristic
+//! equation, the stabilising choice D = Φ/2, tan Ψ, the Taylor
+//! approximation and the table at Φ = 1 and Φ = 1.414.
+
+use poly::{Poly, RootClass, Sym};
+
+use super::common::*;
+use super::{frequency, ranges};
+use crate::paper::{Claim, Verdict};
+
+pub fn claims() -> Vec<Claim> {
+    let mut s = Section::new("6", "sec06");
+    ode_claim(
+        &mut s,
+        "damped_euler_d",
+        "v̇ = −ω0 (2Dv + y), ẏ = ω0 v;  dv = −Φ(2Dv + y), dy = Φv",
+        [["-2*D", "-1"], ["1", "0"]],
+        Scheme::Euler,
+    );
+    stages_claim(
+        &mut s,
+        "update",
+        "damped_euler_d",
+        "v = v + dv = v − Φ(2Dv + y);  y = y + dy = y + Φv",
+        &[
+            ("v", Printed { printed: "v = v − Φ(2Dv + y)", parse: "v - Phi*(2*D*v + y)" }),
+            ("y", Printed { printed: "y = y + Φv", parse: "y + Phi*v" }),
+        ],
+    );
+    z_rows_claim(
+        &mut s,
+        "damped_euler_d",
+        "v = (1 − Φ2D) v z⁻¹ − Φ y z⁻¹;  y = Φ v z⁻¹ + y z⁻¹",
+        &[
+            ZRow {
+                printed: "v = (1 − Φ2D) v z⁻¹ − Φ y z⁻¹", v: "1 - Phi*2*D", y: "-Phi"
+            },
+            ZRow { printed: "y = Φ v z⁻¹ + y z⁻¹", v: "Phi", y: "1" },
+        ],
+    );
+    charpoly_claim(
+        &mut s,
+        "charpoly",
+        "damped_euler_d",
+        "z² − 2(1 − DΦ)z + (1 − 2DΦ + Φ²) = 0",
+        "z^2 - 2*(1 - D*Phi)*z + (1 - 2*D*Phi + Phi^2)",
+    );
+    eigenvalues(&mut s);
+    r_squared(&mut s);
+    damping_choice(&mut s);
+    now_harmonic(&mut s);
+    tan_claim(
+        &mut s,
+        "tan_psi_d",
+        "damped_euler_d",
+        "tan Ψ = Φ(1 − D²)^0.5 / (1 − DΦ)",
+        "Phi^2*(1 - D^2)",
+        "1 - D*Phi",
+    );
+    tan_claim(
+        &mut s,
+        "tan_psi",
+        "damped_euler",
+        "tan Ψ = Φ(1 − Φ²/4)^0.5 / (1 − Φ²/2)   (D = Φ/2)",
+        "Phi^2*(1 - Phi^2/4)",
+        "1 - Phi^2/2",
+    );
+    frequency::too_high(
+        &mut s,
+        "damped_euler",
+        "The frequency of the sample sequence is always too high.",
+    );
+    frequency::approximation(&mut s, "damped_euler", "Ψ ≅ Φ(1 + Φ²/24)", "Phi*(1 + Phi^2/24)");
+    frequency::validity(&mut s, "damped_euler", "Phi*(1 + Phi^2/24)");
+    frequency::table(
+        &mut s,
+        "damped_euler",
+        "Phi*(1 + Phi^2/24)",
+        &[
+            (
+                "table_phi_1",
+                "Φ = 1: True Ψ = 1.047, Approximation Ψ = 1.042",
+                1.0,
+                "1.047",
+                "1.042",
+            ),
+            (
+                "table_phi_1414",
+                "Φ = 1.414: True Ψ = 1.570, Approximation Ψ = 1.532",
+                1.414,
+                "1.570",
+                "1.532",
+            ),
+        ],
+    );
+    s.finish()
+}
+
+fn eigenvalues(s: &mut Section) {
+    let d = derivation("damped_euler_d");
+    let (p, q) = p_q(&d);
+    let disc = &q - &(&p * &p);
+    let ok = paper("1 - D*Phi") == p && paper("Phi^2*(1 - D^2)") == disc;
+    s.push(
+        "eigenvalues",
+        "z1/2 = (1 − DΦ) ± jΦ(1 − D²)^0.5",
+        format!("p = {p}, q − p² = {disc}: a conjugate pair iff D² < 1 (Φ > 0); for D ≥ 1 the same formula gives real roots"),
+        exact_verdict(ok),
+        "the printed real part equals p and the printed imaginary part squared equals q − p² exactly \
+         (poly::derive(damped_euler_d)); q − p² = Φ²(1 − D²) changes sign at D = 1",
+    );
+}
+
+fn r_squared(s: &mut Section) {
+    let d = derivation("damped_euler_d");
+    let (_, q) = p_q(&d);
+    s.push(
+        "r_squared",
+        "r1² = 1 − 2DΦ + Φ²",
+        format!("r² = q = {q} while D² < 1"),
+        exact_verdict(paper("1 - 2*D*Phi + Phi^2") == q),
+        "for a conjugate pair r² = z1·z2 = q (section 4); q from poly::derive(damped_euler_d)",
+    );
+}
+
+fn damping_choice(s: &mut Section) {
+    let d = derivation("damped_euler_d");
+    let (_, q) = p_q(&d);
+    let factored = paper("Phi*(Phi - 2*D)");
+    let at_half = q.subs(Sym::new("D"), &paper("Phi/2"));
+    let builtin_q = p_q(&derivation("damped_euler")).1;
+    let ok = &q - &Poly::one() == factored && at_half.is_one() && builtin_q.is_one();
+    s.push(
+        "damping_choice",
+        "... stabilizing the solution of an undamped oscillator numerically, by r1² = 1: D = 0.5Φ",
+        format!("r1² − 1 = {} = Φ(Φ − 2D): zero for Φ > 0 iff D = Φ/2", &q - &Poly::one()),
+        exact_verdict(ok),
+        "exact: q − 1 factors as Φ(Φ − 2D); substituting D = Φ/2 gives q = 1, and the built-in \
+         damped_euler (Appendix B: D:=0.5*woT) has q = 1",
+    );
+}
+
+fn now_harmonic(s: &mut Section) {
+    let (verdict, map, failing) = ranges::always("damped_euler", |c| c == RootClass::Harmonic);
+    let verdict = if failing.is_empty() { Verdict::Confirmed } else { verdict };
+    s.push(
+        "now_harmonic",
+        "Because the sample sequence is now harmonic we can calculate the true frequency Ω0 by using Ψ = Ω0 T.",
+        map,
+        verdict,
+        format!(
+            "exact class map of damped_euler (D = Φ/2) over Φ > 0: harmonic only while D < 1; it fails for {failing}"
+        ),
+    );
+}
