@@ -104,9 +104,11 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
         let mut points = Vec::new();
         for &phi in phis {
             let params = base.clone().with("Phi", phi);
-            let r = w.at_with_progress(&params, args.steps, &mut |k| {
-                bar.set_position(done_before + k)
-            })?;
+            let r = w
+                .at_with_progress(&params, args.steps, &mut |k| bar.set_position(done_before + k))
+                .with_context(|| {
+                    format!("{name} at Phi = {phi} (other parameters: --param NAME=VALUE)")
+                })?;
             done_before += args.steps.max(1);
             bar.set_position(done_before);
             points.push(r);
