@@ -589,40 +589,77 @@ fn critical_conditions(chi: &Charpoly) -> Vec<(&'static str, UPoly)> {
         return out;
     }
     let an = &a[n];
-    // Unit circle: ∏_{i<j} (1 − z_i z_j), scaled by a_n^{2M}, M = n(n−1)/2.
+    // Products of roots, from power sums scaled by a_n^k: the squares z_i²
+    // (power sums p_{2k}) and the pair products z_i z_j, i < j (power sums
+    // (p_k² − p_{2k})/2), each as a polynomial in x with coefficients in Φ.
     let pairs = n * (n - 1) / 2;
-    let p = scaled_power_sums(a, (2 * pairs).max(2 * n));
+    // Indices needed: 2·pairs for the pair sums, 4(n − 1) for the Hankel
+    // matrix of the squares.
+    let p = scaled_power_sums(a, (2 * pairs).max(4 * (n - 1)).max(2 * n));
     let half = Q::new(1.into(), 2.into());
     let pair_sums: Vec<UPoly> =
         (0..=pairs).map(|k| (&(&p[k] * &p[k]) - &p[2 * k]).scale(&half)).collect();
-    let mut e = vec![UPoly::constant(Q::one())];
-    for m in 1..=pairs {
-        let mut acc = UPoly::zero();
-        for i in 1..=m {
-            let term = &e[m - i] * &pair_sums[i];
-            acc = if i % 2 == 1 { &acc + &term } else { &acc - &term };
-        }
-        e.push(acc.scale(&(Q::one() / Q::from_integer(m.into()))));
-    }
+    let square_sums: Vec<UPoly> = (0..=2 * (n - 1)).map(|k| p[2 * k].clone()).collect();
     let an_sq = an * an;
-    let mut circle = UPoly::zero();
-    let mut an_pow = UPoly::constant(Q::one());
-    for m in (0..=pairs).rev() {
-        let term = &e[m] * &an_pow;
-        circle = if m % 2 == 0 { &circle + &term } else { &circle - &term };
-        an_pow = &an_pow * &an_sq;
-    }
+    let products = poly_from_scaled_sums(&pair_sums, pairs, &an_sq);
+    let squares = poly_from_scaled_sums(&square_sums, n, &an_sq);
+    // Unit circle: ∏_{i<j} (1 − z_i z_j) = the pair-product polynomial at 1.
+    let circle = products.iter().fold(UPoly::zero(), |acc, c| &acc + c);
     out.push(("z_i z_j = 1", circle));
     out.push(("discriminant", hankel_det(&p, n)));
-    if n == 3 {
-        // Ties in modulus: a repeated value among z_i z_j (i ≤ j).
-        let m = n * (n + 1) / 2;
-        let p = scaled_power_sums(a, 4 * (m - 1));
-        let t: Vec<UPoly> =
-            (0..=2 * (m - 1)).map(|k| (&(&p[k] * &p[k]) + &p[2 * k]).scale(&half)).collect();
-        out.push(("modulus tie", hankel_det(&t, m)));
-    }
+    // Ties for the largest modulus: r_i = −r_j (a repeated square) and
+    // r² = z z̄ (a square equal to a pair product). Ties between two complex
+    // pairs (degree ≥ 4) are not covered; see the module notes.
+    out.push(("modulus tie", hankel_det(&square_sums, n)));
+    out.push(("modulus tie", sylvester_det(&squares, &products)));
     out
+}
+
+/// The coefficients (lowest power of x first, each a polynomial in Φ) of
+/// a_n^{2m}·∏(x − w) over the m numbers w whose power sums, scaled by
+/// a_n^{2k}, are `sums[k]`; Newton's identities with ẽ_k = a_n^{2k} e_k.
+fn poly_from_scaled_sums(sums: &[UPoly], m: usize, an_sq: &UPoly) -> Vec<UPoly> {
+    let mut e = vec![UPoly::constant(Q::one())];
+    for k in 1..=m {
+        let mut acc = UPoly::zero();
+        for i in 1..=k {
+            let term = &e[k - i] * &sums[i];
+            acc = if i % 2 == 1 { &acc + &term } else { &acc - &term };
+        }
+        e.push(acc.scale(&(Q::one() / Q::from_integer(k.into()))));
+    }
+    // Coefficient of x^{m−k} is (−1)^k ẽ_k a_n^{2(m−k)}.
+    let mut coeffs = vec![UPoly::zero(); m + 1];
+    let mut an_pow = UPoly::constant(Q::one());
+    for k in (0..=m).rev() {
+        let c = &e[k] * &an_pow;
+        coeffs[m - k] = if k % 2 == 0 { c } else { -&c };
+        an_pow = &an_pow * an_sq;
+    }
+    coeffs
+}
+
+/// The resultant of two polynomials in x (coefficients in Φ, lowest power
+/// first) as the Sylvester determinant.
+fn sylvester_det(f: &[UPoly], g: &[UPoly]) -> UPoly {
+    let (m, n) = (f.len() - 1, g.len() - 1);
+    let size = m + n;
+    let mut rows = Vec::with_capacity(size);
+    for shift in 0..n {
+        let mut row = vec![UPoly::zero(); size];
+        for (k, c) in f.iter().rev().enumerate() {
+            row[shift + k] = c.clone();
+        }
+        rows.push(row);
+    }
+    for shift in 0..m {
+        let mut row = vec![UPoly::zero(); size];
+        for (k, c) in g.iter().rev().enumerate() {
+            row[shift + k] = c.clone();
+        }
+        rows.push(row);
+    }
+    det_upoly(rows)
 }
 
 /// A rational strictly between the numbers `lo < hi`, as simple as possible.
@@ -680,6 +717,7 @@ pub fn analyze(charpoly: &Poly) -> Result<StabilityReport, StabilityError> {
         }
         for root in Algebraic::positive_roots(cond) {
             match points.iter_mut().find(|p| p.at == root) {
+                Some(p) if p.conditions.contains(name) => {}
                 Some(p) => p.conditions.push(name),
                 None => points.push(CriticalPoint { at: root, conditions: vec![name] }),
             }

@@ -22,7 +22,8 @@ fn asin_coeffs(order: usize) -> Vec<Q> {
     let mut c = vec![Q::default(); order + 1];
     for k in 0..=(order.saturating_sub(1) / 2) as u64 {
         let num = factorial(2 * k);
-        let den = BigInt::from(4).pow(k as u32) * factorial(k) * factorial(k) * BigInt::from(2 * k + 1);
+        let den =
+            BigInt::from(4).pow(k as u32) * factorial(k) * factorial(k) * BigInt::from(2 * k + 1);
         c[2 * k as usize + 1] = Q::new(num, den);
     }
     c
@@ -138,12 +139,14 @@ fn appendix_a_and_its_extension() {
 /// for D = 1/2 that is √3·Φ/2, not a series over Q.
 #[test]
 fn fixed_damping_gives_a_scaled_series() {
-    let chi = chi_of("damped_euler_d").eval_partial(&[(Sym::new("D"), q(1, 2))].into_iter().collect());
+    let chi =
+        chi_of("damped_euler_d").eval_partial(&[(Sym::new("D"), q(1, 2))].into_iter().collect());
     let (d, c) = psi_series_scaled(&chi, 3).unwrap();
     assert_eq!((d, c[1].clone()), (q(3, 1), q(1, 2)));
     assert_eq!(psi_series(&chi, 3).unwrap_err().kind(), SeriesErrorKind::Irrational);
     // D = 3/5: √(1 − D²) = 4/5 is rational.
-    let chi = chi_of("damped_euler_d").eval_partial(&[(Sym::new("D"), q(3, 5))].into_iter().collect());
+    let chi =
+        chi_of("damped_euler_d").eval_partial(&[(Sym::new("D"), q(3, 5))].into_iter().collect());
     assert_eq!(psi_series(&chi, 1).unwrap()[1], q(4, 5));
 }
 

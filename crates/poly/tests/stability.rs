@@ -66,7 +66,9 @@ fn check(
     }
     for i in &r.intervals {
         assert!(i.lo.cmp_rational(&i.sample).is_lt());
-        assert!(i.hi.as_ref().map_or(true, |h| h.cmp_rational(&i.sample).is_gt()));
+        if let Some(h) = &i.hi {
+            assert!(h.cmp_rational(&i.sample).is_gt());
+        }
     }
     check_samples(chi, &r);
     r
@@ -90,7 +92,10 @@ fn jury_strictly_stable(chi: &Poly, phi: &Q) -> bool {
     let f = chi.subs(Sym::phi(), &Poly::constant(phi.clone())).to_upoly(Sym::z()).unwrap();
     let (c, b, a) = (f.coeff(0), f.coeff(1), f.coeff(2));
     assert!(a > Q::default());
-    c.clone() < a && -c.clone() < a && &(&a + &b) + &c > Q::default() && &(&a - &b) + &c > Q::default()
+    c.clone() < a
+        && -c.clone() < a
+        && &(&a + &b) + &c > Q::default()
+        && &(&a - &b) + &c > Q::default()
 }
 
 /// False Euler, Damped Euler (D = Φ/2) and Verlet share
@@ -98,7 +103,8 @@ fn jury_strictly_stable(chi: &Poly, phi: &Q) -> bool {
 /// discriminant Φ²(Φ² − 4) vanishes too: a double root at −1.
 #[test]
 fn false_euler_family_limit_is_two_with_double_root_at_minus_one() {
-    for name in ["false_euler", "false_euler_matrix", "damped_euler", "damped_euler_matrix", "verlet"]
+    for name in
+        ["false_euler", "false_euler_matrix", "damped_euler", "damped_euler_matrix", "verlet"]
     {
         let chi = chi_of(name, &[]);
         let r = check(
@@ -120,7 +126,8 @@ fn false_euler_family_limit_is_two_with_double_root_at_minus_one() {
 /// complex pair (p² − q = −Φ² < 0) outside the circle for every Φ > 0.
 #[test]
 fn standard_methods_are_unstable_for_every_phi() {
-    for name in ["standard_euler", "standard_euler_matrix", "standard_heun", "standard_heun_matrix"] {
+    for name in ["standard_euler", "standard_euler_matrix", "standard_heun", "standard_heun_matrix"]
+    {
         let chi = chi_of(name, &[]);
         let r = check(&chi, None, None, &[(RootClass::UnstableOscillation, None)]);
         assert!(!r.bounded_for_all);
@@ -302,7 +309,7 @@ fn degree_four_user_method() {
 /// built-in at many rational Φ, including the exact critical rationals.
 #[test]
 fn general_classifier_agrees_with_quadratic_rules() {
-    let phis: Vec<Q> = (1..=60).map(|k| q(k, 20)).collect();
+    let phis: Vec<Q> = (1..=30).map(|k| q(k, 10)).collect();
     for name in poly::builtin_names() {
         let chi = chi_of(name, &[("D", q(3, 5))]);
         for phi in &phis {

@@ -9,7 +9,9 @@ use proptest::prelude::*;
 
 /// ∏ (x − r) over the given roots (repeats allowed).
 fn from_roots(roots: &[Q]) -> UPoly {
-    roots.iter().fold(UPoly::from_ints(&[1]), |acc, r| &acc * &UPoly::new(vec![-r.clone(), q(1, 1)]))
+    roots
+        .iter()
+        .fold(UPoly::from_ints(&[1]), |acc, r| &acc * &UPoly::new(vec![-r.clone(), q(1, 1)]))
 }
 
 fn qs(v: &[(i64, i64)]) -> Vec<Q> {
@@ -89,7 +91,10 @@ fn check_isolation(roots: &[Q]) {
             // Open intervals may share an endpoint (which is then no root).
             let (prev_lo, prev_hi) = &intervals[k - 1];
             let shared_ok = prev_lo != prev_hi && lo != hi;
-            assert!(prev_hi < lo || (prev_hi == lo && shared_ok), "intervals overlap: {intervals:?}");
+            assert!(
+                prev_hi < lo || (prev_hi == lo && shared_ok),
+                "intervals overlap: {intervals:?}"
+            );
         }
     }
 }
