@@ -218,7 +218,7 @@ impl SecondOrder {
         target: &Target,
         phi_cap: f64,
     ) -> Option<f64> {
-        if !(phi_cap > PHI_MIN) || !self.accuracy(PHI_MIN, spring).meets(target) {
+        if phi_cap.is_nan() || phi_cap <= PHI_MIN || !self.accuracy(PHI_MIN, spring).meets(target) {
             return None;
         }
         let per_decade = 64.0;

@@ -91,7 +91,7 @@ pub fn semi_false_heun(v: &mut f64, y: &mut f64, phi: f64) {
 #[inline]
 pub fn standard_euler_matrix(v: &mut f64, y: &mut f64, phi: f64) {
     let v1 = *v - phi * *y;
-    *y = phi * *v + *y;
+    *y += phi * *v; // y1:= woT*v0 + y0 (IEEE addition commutes)
     *v = v1;
 }
 
@@ -99,7 +99,7 @@ pub fn standard_euler_matrix(v: &mut f64, y: &mut f64, phi: f64) {
 #[inline]
 pub fn damped_euler_matrix(v: &mut f64, y: &mut f64, phi: f64) {
     let v1 = (1.0 - phi * phi) * *v - phi * *y;
-    *y = phi * *v + *y;
+    *y += phi * *v; // y1:= woT*v0 + y0 (IEEE addition commutes)
     *v = v1;
 }
 
@@ -222,10 +222,8 @@ pub fn for_each_state(a: &mut [f64], b: &mut [f64], mut step: impl FnMut(&mut f6
     }
 }
 
-/// Runs a hand kernel by method name: `Some(step)` applied once to `(a, b)`
-/// at `phi` (and damping `d` for the `_damped` kernels), `None` for a name
-/// without a kernel. Dispatch goes through `match`, so each arm stays
-/// monomorphic when inlined into [`time_hand_kernel`].
+/// The names of every hand-written kernel: the built-ins and the damped
+/// variants of [`super::family`].
 pub fn hand_kernel_names() -> &'static [&'static str] {
     &[
         "standard_euler",
@@ -251,8 +249,10 @@ pub fn hand_kernel_names() -> &'static [&'static str] {
     ]
 }
 
-/// Applies kernel `name` `n_steps` times to `(a, b)`; `false` when there is
-/// no kernel of that name.
+/// Applies kernel `name` `n_steps` times to `(a, b)` at `phi` (and damping
+/// `d` for the `_damped` kernels); `false` when there is no kernel of that
+/// name. Dispatch is one `match` outside the loop, so each arm's loop is
+/// monomorphic and the kernel inlines into it.
 pub fn run_hand_kernel(
     name: &str,
     a: &mut f64,
@@ -271,6 +271,57 @@ pub fn run_hand_kernel(
         ($k:expr, damped) => {{
             for _ in 0..n_steps {
                 $k(a, b, phi, d);
+            }
+            true
+        }};
+    }
+    match name {
+        "standard_euler" => go!(standard_euler),
+        "damped_euler" => go!(damped_euler),
+        "false_euler" => go!(false_euler),
+        "verlet" => go!(verlet),
+        "standard_heun" => go!(standard_heun),
+        "false_heun" => go!(false_heun),
+        "semi_false_heun" => go!(semi_false_heun),
+        "standard_euler_matrix" => go!(standard_euler_matrix),
+        "damped_euler_matrix" => go!(damped_euler_matrix),
+        "false_euler_matrix" => go!(false_euler_matrix),
+        "standard_heun_matrix" => go!(standard_heun_matrix),
+        "false_heun_matrix" => go!(false_heun_matrix),
+        "semi_false_heun_matrix" => go!(semi_false_heun_matrix),
+        "standard_euler_damped" => go!(standard_euler_damped, damped),
+        "damped_euler_damped" => go!(damped_euler_damped, damped),
+        "false_euler_damped" => go!(false_euler_damped, damped),
+        "verlet_damped" => go!(verlet_damped, damped),
+        "standard_heun_damped" => go!(standard_heun_damped, damped),
+        "false_heun_damped" => go!(false_heun_damped, damped),
+        "semi_false_heun_damped" => go!(semi_false_heun_damped, damped),
+        _ => false,
+    }
+}
+
+/// [`run_hand_kernel`] on a struct-of-arrays batch: every step advances
+/// every state (`a[i]`, `b[i]`), the inner loop over states, which the
+/// compiler vectorises. Panics when the slices differ in length.
+#[track_caller]
+pub fn run_hand_kernel_batch(
+    name: &str,
+    a: &mut [f64],
+    b: &mut [f64],
+    phi: f64,
+    d: f64,
+    n_steps: u64,
+) -> bool {
+    macro_rules! go {
+        ($k:expr) => {{
+            for _ in 0..n_steps {
+                for_each_state(a, b, |x, y| $k(x, y, phi));
+            }
+            true
+        }};
+        ($k:expr, damped) => {{
+            for _ in 0..n_steps {
+                for_each_state(a, b, |x, y| $k(x, y, phi, d));
             }
             true
         }};

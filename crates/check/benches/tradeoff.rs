@@ -1,0 +1,78 @@
+//! Measured cost per step of every built-in: the hand-written kernel and B's
+//! compiled step (`check::numeric::Step`), on one state and on a batch of
+//! 4096 states stored struct-of-arrays.
+//!
+//! Throughput is reported in steps (state-steps for a batch), so criterion's
+//! "elem/s" is steps per second and its time per iteration divided by the
+//! element count is ns per step. Φ = 1e-4 keeps every method's state normal
+//! (no overflow, no subnormals) however long criterion runs.
+//!
+//! `cargo bench -p check --bench tradeoff`
+
+use std::hint::black_box;
+use std::time::Duration;
+
+use check::numeric::{Batch, Params, Step};
+use check::tradeoff::kernels::{run_hand_kernel, run_hand_kernel_batch, TIMING_PHI};
+use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+
+const SINGLE_STEPS: u64 = 1000;
+const LANES: usize = 4096;
+const BATCH_STEPS: u64 = 8;
+
+fn names() -> Vec<&'static str> {
+    poly::builtin_names().filter(|n| poly::builtin(n).unwrap().params().len() == 1).collect()
+}
+
+fn single(c: &mut Criterion) {
+    let mut g = c.benchmark_group("tradeoff_single");
+    g.throughput(Throughput::Elements(SINGLE_STEPS));
+    for name in names() {
+        let (mut a, mut b) = (0.0, 1.0);
+        g.bench_function(BenchmarkId::new("hand", name), |bench| {
+            bench.iter(|| {
+                run_hand_kernel(name, &mut a, &mut b, black_box(TIMING_PHI), 0.0, SINGLE_STEPS)
+            })
+        });
+        let step = Step::compile(&poly::builtin(name).unwrap(), &Params::phi(TIMING_PHI)).unwrap();
+        let mut state = step.state(&vec![1.0; step.order()]);
+        g.bench_function(BenchmarkId::new("compiled", name), |bench| {
+            bench.iter(|| step.advance(black_box(&mut state), SINGLE_STEPS))
+        });
+    }
+    g.finish();
+}
+
+fn batch(c: &mut Criterion) {
+    let mut g = c.benchmark_group("tradeoff_batch4096");
+    g.throughput(Throughput::Elements(BATCH_STEPS * LANES as u64));
+    for name in names() {
+        let mut a: Vec<f64> = (0..LANES).map(|i| (i as f64 * 0.1).sin()).collect();
+        let mut b: Vec<f64> = (0..LANES).map(|i| (i as f64 * 0.1).cos()).collect();
+        g.bench_function(BenchmarkId::new("hand", name), |bench| {
+            bench.iter(|| {
+                run_hand_kernel_batch(name, &mut a, &mut b, black_box(TIMING_PHI), 0.0, BATCH_STEPS)
+            })
+        });
+        let step = Step::compile(&poly::builtin(name).unwrap(), &Params::phi(TIMING_PHI)).unwrap();
+        let mut states = Batch::zeros(&step, LANES);
+        for lane in 0..LANES {
+            let x = lane as f64 * 0.1;
+            states.set_lane(lane, &[x.sin(), x.cos()]);
+        }
+        g.bench_function(BenchmarkId::new("compiled", name), |bench| {
+            bench.iter(|| step.advance_batch(black_box(&mut states), BATCH_STEPS))
+        });
+    }
+    g.finish();
+}
+
+fn config() -> Criterion {
+    Criterion::default()
+        .warm_up_time(Duration::from_millis(300))
+        .measurement_time(Duration::from_millis(800))
+        .sample_size(20)
+}
+
+criterion_group! { name = benches; config = config(); targets = single, batch }
+criterion_main!(benches);

@@ -1,0 +1,139 @@
+//! `zcheck advise` agrees with `zcheck stability` and `zcheck verify` at the
+//! same Φ, binary against binary: the methods advise calls stable at Φ are
+//! exactly those with Φ < phi_max from `stability`, and exactly those whose
+//! `verify` class at Φ is bounded; the stabilising substeps k are the fewest
+//! for which `verify` finds Φ/k bounded. Also: the text output of the README
+//! example, and bad input as an error with exit status 2.
+
+use std::path::PathBuf;
+use std::process::Command;
+
+use check::tradeoff::family::DAMPED_SOURCES;
+use poly::RootClass;
+use serde_json::Value;
+
+fn zcheck(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_zcheck")).args(args).output().expect("zcheck runs");
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+#[track_caller]
+fn json(args: &[&str]) -> Value {
+    let (code, out, err) = zcheck(args);
+    assert_eq!(code, 0, "zcheck {args:?}: {err}");
+    serde_json::from_str(&out).unwrap_or_else(|e| panic!("zcheck {args:?}: {e}: {out}"))
+}
+
+/// The method argument and `--param` flags that name the method advise
+/// used: the built-in itself, or (damped scene) the damped variant's source
+/// written to a temporary `.zm` file.
+fn method_args(method: &str, damping: Option<&str>) -> Vec<String> {
+    let Some(d) = damping else { return vec![method.to_owned()] };
+    let name = if method == "standard_euler" {
+        return vec!["damped_euler_d".into(), "--param".into(), format!("D={d}")];
+    } else {
+        format!("{method}_damped")
+    };
+    let src = DAMPED_SOURCES.iter().find(|(n, _)| *n == name).expect("damped variant").1;
+    let path: PathBuf =
+        std::env::temp_dir().join(format!("zcheck-advise-{}-{name}.zm", std::process::id()));
+    std::fs::write(&path, src).unwrap();
+    vec![path.display().to_string(), "--param".into(), format!("D={d}")]
+}
+
+fn verify_bounded(margs: &[String], phis: &[f64]) -> Vec<bool> {
+    let list: Vec<String> = phis.iter().map(|p| p.to_string()).collect();
+    let list = list.join(",");
+    let mut args: Vec<&str> = vec!["verify"];
+    args.push(&margs[0]);
+    args.extend(margs[1..].iter().map(String::as_str));
+    args.extend(["--phi", &list, "--steps", "0", "--format", "json"]);
+    let v = json(&args);
+    let points = v[0]["points"].as_array().or_else(|| v["methods"][0]["points"].as_array());
+    let points = points.unwrap_or_else(|| panic!("verify JSON without points: {v}"));
+    points
+        .iter()
+        .map(|p| {
+            RootClass::from_name(p["class"].as_str().unwrap()).expect("known class").is_bounded()
+        })
+        .collect()
+}
+
+#[track_caller]
+fn check_scene(freq: &str, tick: &str, damping: Option<&str>) {
+    let mut args = vec!["advise", "--freq", freq, "--tick", tick, "--format", "json"];
+    if let Some(d) = damping {
+        args.extend(["--damping", d]);
+    }
+    let advice = json(&args);
+    let phi = advice["phi"].as_f64().unwrap();
+    for m in advice["methods"].as_array().unwrap() {
+        let name = m["method"].as_str().unwrap();
+        let margs = method_args(name, damping);
+        let mut sargs: Vec<&str> = vec!["stability"];
+        sargs.extend(margs.iter().map(String::as_str));
+        sargs.extend(["--format", "json"]);
+        let stab = json(&sargs);
+        let stable = m["stable_at_phi"].as_bool().unwrap();
+        let below_max = stab["phi_max"].as_f64().is_some_and(|max| phi < max);
+        assert_eq!(stable, below_max, "{name} at {phi}: advise vs stability {}", stab["phi_max"]);
+        let mut phis = vec![phi];
+        if let Some(k) = m["substeps_stable"].as_u64() {
+            phis.push(phi / k as f64);
+            if k > 1 {
+                phis.push(phi / (k - 1) as f64);
+            }
+        }
+        let bounded = verify_bounded(&margs, &phis);
+        assert_eq!(stable, bounded[0], "{name} at {phi}: advise vs verify");
+        if let Some(k) = m["substeps_stable"].as_u64() {
+            assert!(bounded[1], "{name}: verify says {k} substeps are not enough");
+            if k > 1 {
+                assert!(!bounded[2], "{name}: verify says {} substeps suffice", k - 1);
+            }
+        } else {
+            assert!(stab["phi_max"].is_null(), "{name}: never stable but stability has a limit");
+        }
+    }
+}
+
+/// Undamped scenes around every limit (Φ = 4π, 0.52, 1.99, 2.09) and damped ones.
+#[test]
+fn advise_agrees_with_stability_and_verify() {
+    check_scene("120", "60", None);
+    check_scene("5", "60", None);
+    check_scene("19", "60", None);
+    check_scene("10", "30", None);
+    check_scene("9", "60", Some("0.25"));
+}
+
+/// The README example prints the stable set and the cheapest method.
+#[test]
+fn readme_example_text() {
+    let (code, out, err) = zcheck(&["advise", "--freq", "120", "--tick", "60"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("Phi = 2*pi*120/60 = 12.5664 rad per tick"), "{out}");
+    assert!(out.contains("stable at Phi = 12.5664 with one step per tick: none"), "{out}");
+    assert!(out.contains("cheapest meeting the tolerance: "), "{out}");
+}
+
+/// Bad input is an error naming the flag, with exit status 2.
+#[test]
+fn bad_input_is_an_error() {
+    #[track_caller]
+    fn check(args: &[&str], expected: &str) {
+        let (code, _, err) = zcheck(args);
+        assert_eq!(code, 2, "{args:?}");
+        assert!(err.contains(expected), "{args:?}: {err}");
+    }
+    check(&["advise", "--freq", "120", "--tick", "0"], "--tick 0: expected a finite number > 0");
+    check(
+        &["advise", "--freq", "1", "--tick", "60", "--damping", "2"],
+        "--damping 2: expected a damping ratio",
+    );
+    check(&["tradeoff", "--periods=-1"], "--periods -1: expected a finite number > 0");
+}
