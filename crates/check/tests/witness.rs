@@ -1,0 +1,247 @@
+//! The four witnesses agree on every built-in, at ordinary Φ and at every
+//! class boundary a sweep finds; the tolerance model is tight enough to
+//! notice a small error; sweeps find the boundaries known in closed form.
+
+use check::classify::{classify_pq, classify_roots, PqSigns};
+use check::numeric::{Params, Step};
+use check::sweep::{default_grid, sweep, Classifier};
+use check::witness::{
+    eigen_condition, eigenvalues_faer, eigenvalues_nalgebra, pair_up, simulate, tolerances,
+    Witnesses, C64,
+};
+use num_complex::Complex;
+use poly::RootClass;
+
+const STEPS: u64 = 20_000;
+
+fn params() -> Params {
+    Params::default().with("D", 0.3)
+}
+
+/// Every witness agrees at `phi`, and all four were consulted.
+#[track_caller]
+fn check_agrees(name: &str, phi: f64, steps: u64) {
+    let m = poly::builtin(name).unwrap();
+    let w = Witnesses::new(&m).unwrap();
+    let r = w.at(&params().with("Phi", phi), steps).unwrap();
+    let names: Vec<&str> = r.checks.iter().map(|c| c.witness).collect();
+    assert_eq!(names, ["nalgebra", "faer", "simulation", "simulation_norm"], "{name}");
+    assert!(r.agree(), "{name} at phi = {phi}: {:?}", r.checks);
+}
+
+/// The acceptance list of the issue, for every paper built-in.
+#[test]
+fn builtins_agree_at_the_default_phis() {
+    for name in poly::builtin_names() {
+        for phi in [1e-6, 0.1, 0.5, 1.0, 1.5, 1.9] {
+            check_agrees(name, phi, STEPS);
+        }
+    }
+}
+
+/// Both sides of every class boundary a sweep reports.
+#[test]
+fn builtins_agree_at_every_class_boundary() {
+    for name in poly::builtin_names() {
+        let m = poly::builtin(name).unwrap();
+        let s = sweep(&m, &params(), &default_grid()).unwrap();
+        for b in &s.boundaries {
+            assert_eq!(b.above, b.below.next_up(), "{name}: bracket is two adjacent floats");
+            check_agrees(name, b.below, STEPS);
+            check_agrees(name, b.above, STEPS);
+        }
+    }
+}
+
+/// One full-length (10^6 steps) run of an unstable method, and runs whose
+/// state grows by 10^(10^6) without overflowing.
+#[test]
+fn long_and_explosive_simulations_agree() {
+    check_agrees("standard_euler", 0.5, 1_000_000);
+    check_agrees("standard_heun", 4.0, 200_000); // rho = sqrt(65) per step
+    check_agrees("false_heun", 4.0, 200_000); // rho = 106 per step
+}
+
+/// Expected boundaries in closed form lie inside the reported brackets (up
+/// to one ulp, the f64 value of an irrational boundary).
+#[track_caller]
+fn check_boundary(name: &str, expected: f64, below: RootClass, above: RootClass) {
+    let m = poly::builtin(name).unwrap();
+    let s = sweep(&m, &params(), &default_grid()).unwrap();
+    let b = s
+        .boundaries
+        .iter()
+        .find(|b| b.class_below == below && b.class_above == above)
+        .unwrap_or_else(|| panic!("{name}: no {below} -> {above} boundary in {:?}", s.boundaries));
+    assert!(
+        b.below.next_down() <= expected && expected <= b.above.next_up(),
+        "{name}: {expected} outside [{}, {}]",
+        b.below,
+        b.above
+    );
+}
+
+#[test]
+fn sweeps_find_the_closed_form_boundaries() {
+    use RootClass::*;
+    // chi = z^2 - 2(1 - Phi^2/2) z + 1: double root -1 at Phi = 2.
+    for name in ["false_euler", "verlet", "damped_euler", "false_euler_matrix"] {
+        check_boundary(name, 2.0, Harmonic, DoubleRootOnCircle);
+        check_boundary(name, 2.0f64.next_up(), DoubleRootOnCircle, AlternatingUnstable);
+    }
+    // Semi-False Heun: p = 1 - Phi^2/2, q = 1 - Phi^4/4 vanish together at
+    // sqrt 2 (deadbeat), and chi(-1) = 4 - Phi^2 - Phi^4/4 at Phi^2 = 2 sqrt 5 - 2.
+    check_boundary("semi_false_heun", 2f64.sqrt(), DampedOscillation, AlternatingStable);
+    let limit = (2.0 * 5f64.sqrt() - 2.0).sqrt();
+    check_boundary("semi_false_heun", limit, AlternatingStable, AlternatingUnstable);
+    // False Heun: chi(1) = Phi^2 (1 - Phi^2/2) vanishes at sqrt 2.
+    check_boundary("false_heun", 2f64.sqrt(), MonotonicStable, MonotonicUnstable);
+    // Damped Euler with free D: q - 1 = Phi (Phi - 2D) vanishes at 2D.
+    check_boundary("damped_euler_d", 0.6, DampedOscillation, Harmonic);
+    check_boundary("damped_euler_d", 0.6f64.next_up(), Harmonic, UnstableOscillation);
+    // Standard Euler and Standard Heun never change class.
+    for name in ["standard_euler", "standard_heun"] {
+        let s = sweep(&poly::builtin(name).unwrap(), &params(), &default_grid()).unwrap();
+        assert_eq!((s.boundaries.len(), s.first.1), (0, UnstableOscillation), "{name}");
+    }
+}
+
+/// The fast f64 classifier equals the exact class at every grid point.
+#[test]
+fn fast_classifier_equals_the_exact_class() {
+    for name in poly::builtin_names() {
+        let m = poly::builtin(name).unwrap();
+        let c = Classifier::new(&m, &params()).unwrap();
+        let w = Witnesses::new(&m).unwrap();
+        for phi in default_grid().into_iter().step_by(7) {
+            let exact = w.charpoly().at(&params().with("Phi", phi)).unwrap().class;
+            assert_eq!(c.classify(phi), exact, "{name} at {phi}");
+        }
+    }
+}
+
+/// An error of 1e-9 in a root, far below what a plot shows, is caught by
+/// both eigenvalue witnesses and by the simulation.
+#[test]
+fn tolerance_catches_a_small_error() {
+    for name in ["false_euler", "standard_heun", "false_heun", "verlet", "semi_false_heun"] {
+        let m = poly::builtin(name).unwrap();
+        let w = Witnesses::new(&m).unwrap();
+        let (phi, wrong_phi) = (0.5, 0.5 + 1e-9);
+        let step = Step::compile(&m, &Params::phi(phi)).unwrap();
+        let p = step.transition_matrix();
+        let wrong = w.charpoly().at(&Params::phi(wrong_phi)).unwrap();
+        let (tol, _, _) = tolerances(&p, &wrong.coeffs, &wrong.roots);
+        for found in [eigenvalues_nalgebra(&p).unwrap(), eigenvalues_faer(&p).unwrap()] {
+            let found = pair_up(&wrong.roots, &found);
+            let worst = wrong
+                .roots
+                .iter()
+                .zip(&found)
+                .zip(&tol)
+                .map(|((a, b), t)| (a - b).norm() / t)
+                .fold(0.0, f64::max);
+            assert!(worst > 1.0, "{name}: an error of 1e-9 passed (ratio {worst})");
+        }
+        let (_, left) = eigen_condition(&p, wrong.roots[0]);
+        let sim = simulate(&step, wrong.roots[0], &left, STEPS, &mut |_| {});
+        let err = (sim.growth_per_step.exp() - wrong.spectral_radius)
+            .abs()
+            .max(wrong.spectral_radius * (sim.psi_per_step - wrong.psi).abs());
+        assert!(err > tol[0], "{name}: simulation missed an error of 1e-9 ({err} <= {})", tol[0]);
+    }
+}
+
+fn signs(v: [i8; 8]) -> PqSigns {
+    let o = |x: i8| x.cmp(&0);
+    PqSigns {
+        disc: o(v[0]),
+        p: o(v[1]),
+        p_minus_1: o(v[2]),
+        p_plus_1: o(v[3]),
+        q_minus_1: o(v[4]),
+        q_plus_1: o(v[5]),
+        chi_1: o(v[6]),
+        chi_minus_1: o(v[7]),
+    }
+}
+
+/// The sign classifier against the roots it describes.
+#[track_caller]
+fn check_pq(p: f64, q: f64, expected: RootClass) {
+    let s = |x: f64| {
+        if x > 0.0 {
+            1
+        } else if x < 0.0 {
+            -1
+        } else {
+            0
+        }
+    };
+    let v = [
+        s(p * p - q),
+        s(p),
+        s(p - 1.0),
+        s(p + 1.0),
+        s(q - 1.0),
+        s(q + 1.0),
+        s(1.0 - 2.0 * p + q),
+        s(1.0 + 2.0 * p + q),
+    ];
+    assert_eq!(classify_pq(&signs(v)), expected, "p = {p}, q = {q}");
+}
+
+#[test]
+fn second_order_sign_classification() {
+    use RootClass::*;
+    check_pq(0.5, 1.0, Harmonic);
+    check_pq(0.5, 0.5, DampedOscillation);
+    check_pq(0.5, 2.0, UnstableOscillation);
+    check_pq(0.0, 0.0, Deadbeat);
+    check_pq(1.0, 1.0, DoubleRootOnCircle);
+    check_pq(-1.0, 1.0, DoubleRootOnCircle);
+    check_pq(0.5, 0.25, MonotonicStable); // double root 0.5
+    check_pq(-2.0, 4.0, AlternatingUnstable); // double root -2
+    check_pq(0.75, 0.5, Constant); // roots 1 and 0.5
+    check_pq(1.5, 2.0, MonotonicUnstable); // roots 2 and 1
+    check_pq(0.3, 0.08, MonotonicStable); // roots 0.4 and 0.2
+    check_pq(-0.75, 0.5, Alternating); // roots -1 and -0.5
+    check_pq(-0.3, 0.08, AlternatingStable); // roots -0.2 and -0.4
+    check_pq(0.0, -4.0, AlternatingUnstable); // roots +-2: z^2 = 4
+    check_pq(0.0, -1.0, Alternating); // roots +-1
+    check_pq(0.25, -2.0, MonotonicUnstable); // roots 1.69 and -1.19: the positive one dominates
+}
+
+/// The tolerance classifier on root lists.
+#[track_caller]
+fn check_roots(roots: &[(f64, f64)], expected: RootClass) {
+    let roots: Vec<C64> = roots.iter().map(|&(a, b)| Complex::new(a, b)).collect();
+    let tol = vec![64.0 * f64::EPSILON; roots.len()];
+    assert_eq!(classify_roots(&roots, &tol), expected, "{roots:?}");
+}
+
+#[test]
+fn root_list_classification() {
+    use RootClass::*;
+    let h = std::f64::consts::FRAC_1_SQRT_2;
+    check_roots(&[(h, h), (h, -h), (0.5, 0.0)], Harmonic);
+    check_roots(&[(0.5, 0.5), (0.5, -0.5)], DampedOscillation);
+    check_roots(&[(-1.0, 0.0), (-1.0, 1e-17)], DoubleRootOnCircle);
+    check_roots(&[(-1.0, 0.0), (0.2, 0.0)], Alternating);
+    check_roots(&[(1.0 + 1e-17, 0.0), (0.2, 0.0)], Constant);
+    check_roots(&[(1.5, 0.0), (-0.2, 0.0), (0.1, 0.3)], MonotonicUnstable);
+    check_roots(&[(1e-20, 0.0), (-1e-20, 0.0)], Deadbeat);
+}
+
+/// Pairing survives arbitrary order and near-coincident roots.
+#[test]
+fn pairing_is_order_free() {
+    let r = [
+        Complex::new(1.0, 1.0),
+        Complex::new(1.0, -1.0),
+        Complex::new(-0.5, 0.0),
+        Complex::new(-0.5, 1e-9),
+    ];
+    let shuffled = [r[2], r[0], r[3], r[1]];
+    assert_eq!(pair_up(&r, &shuffled), r.to_vec());
+}
