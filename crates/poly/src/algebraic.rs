@@ -55,7 +55,25 @@ impl Algebraic {
     /// the zero polynomial).
     pub fn real_roots(p: &UPoly) -> Vec<Algebraic> {
         let sf = p.squarefree();
-        isolate_real_roots(&sf).into_iter().map(|(lo, hi)| reduce(sf.clone(), lo, hi)).collect()
+        let intervals = isolate_real_roots(&sf);
+        // Find the rational roots once, then reduce the irrational ones with
+        // the polynomial already freed of them.
+        let rational: Vec<Option<Q>> = intervals
+            .iter()
+            .map(|(lo, hi)| if lo == hi { Some(lo.clone()) } else { rational_root_in(&sf, lo, hi) })
+            .collect();
+        let mut irrational = sf.clone();
+        for r in rational.iter().flatten() {
+            irrational = irrational.div_rem(&UPoly::new(vec![-r.clone(), Q::one()])).0;
+        }
+        intervals
+            .into_iter()
+            .zip(rational)
+            .map(|((lo, hi), r)| match r {
+                Some(r) => Algebraic::from_rational(r),
+                None => reduce_irrational(irrational.clone(), lo, hi),
+            })
+            .collect()
     }
 
     /// The real roots of `p` in the open interval (0, ∞), increasing.
@@ -316,6 +334,12 @@ fn reduce(f: UPoly, lo: Q, hi: Q) -> Algebraic {
             f = f.div_rem(&UPoly::new(vec![-r, Q::one()])).0;
         }
     }
+    reduce_irrational(f, lo, hi)
+}
+
+/// [`reduce`] for an irrational root of a square-free `f` without rational
+/// roots.
+fn reduce_irrational(mut f: UPoly, lo: Q, hi: Q) -> Algebraic {
     // For an even f(x) = F(x²), a rational root y of F gives the factor
     // x² − y: either it is ours (a square root of a rational) or it goes.
     if f.coeffs().iter().enumerate().all(|(k, c)| k % 2 == 0 || c.is_zero()) {
