@@ -356,7 +356,7 @@ impl Method {
         let mut assigns = Vec::new();
         for (t, tspan, expr, text) in assigns_src {
             let lin = lw.lower(&expr)?;
-            let is_state = state.iter().any(|s| *s == t);
+            let is_state = state.contains(&t);
             if !is_state && lin.is_scalar() {
                 // A temporary that depends on the parameters only (Appendix B's
                 // `D:=0.5*woT`) is folded into the coefficients that read it.
