@@ -81,7 +81,7 @@ fn verlet_start(s: &mut Section) {
     let phis =
         [poly::q(1, 10), poly::q(1, 2), poly::q(1, 1), poly::q(3, 2), poly::q(2, 1), poly::q(9, 4)];
     let fe = derivation("false_euler");
-    let n = 40;
+    let n = 24;
     let ok = phis.iter().all(|phi| {
         let p = matrix_at(&fe.transition_matrix, phi);
         let euler = iterate_exact(&p, &[poly::q(0, 1), poly::q(1, 1)], n);

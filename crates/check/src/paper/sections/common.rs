@@ -8,6 +8,7 @@
 
 use std::collections::HashMap;
 use std::fmt::Write as _;
+use std::sync::{Mutex, OnceLock};
 
 use poly::{Derivation, Method, Operand, Poly, PolyMatrix, Sym, Q};
 
@@ -59,12 +60,20 @@ impl Section {
     }
 }
 
-/// A built-in method's derivation. The built-ins are part of the binary, so
-/// a failure is a programmer error.
+/// A built-in method's derivation, derived once per process (the report
+/// asks for the same few methods many times). The built-ins are part of the
+/// binary, so a failure is a programmer error.
 #[track_caller]
 pub fn derivation(name: &str) -> Derivation {
+    static CACHE: OnceLock<Mutex<HashMap<String, Derivation>>> = OnceLock::new();
+    let cache = CACHE.get_or_init(Default::default);
+    if let Some(d) = cache.lock().expect("cache lock").get(name) {
+        return d.clone();
+    }
     let method = poly::builtin(name).unwrap_or_else(|e| panic!("built-in {name}: {e}"));
-    poly::derive(&method).unwrap_or_else(|e| panic!("built-in {name}: {e}"))
+    let d = poly::derive(&method).unwrap_or_else(|e| panic!("built-in {name}: {e}"));
+    cache.lock().expect("cache lock").insert(name.to_owned(), d.clone());
+    d
 }
 
 /// One of our own transcriptions in `Poly::parse` syntax; a parse failure
@@ -259,11 +268,37 @@ pub fn fixed(x: f64, digits: usize) -> String {
 /// Ψ(Φ) of a second-order method at one Φ in floating point: the argument
 /// of the upper root, `atan2(sqrt(q - p²), p)`, when the roots are complex.
 pub fn psi_f64(d: &Derivation, phi: f64) -> Option<f64> {
-    let (p, q) = p_q(d);
-    let p = eval_f64(&p, phi);
-    let q = eval_f64(&q, phi);
-    let s = q - p * p;
-    (s > 0.0).then(|| s.sqrt().atan2(p))
+    PsiF64::new(d).at(phi)
+}
+
+/// Ψ(Φ) in floating point with p and q converted to f64 once, for sweeps.
+pub struct PsiF64 {
+    p: Vec<f64>,
+    q: Vec<f64>,
+}
+
+impl PsiF64 {
+    /// The f64 coefficients of p and q of a second-order method.
+    pub fn new(d: &Derivation) -> PsiF64 {
+        let (p, q) = p_q(d);
+        PsiF64 { p: f64_coeffs(&p), q: f64_coeffs(&q) }
+    }
+
+    /// Ψ at Φ, when the roots are complex.
+    pub fn at(&self, phi: f64) -> Option<f64> {
+        let horner = |c: &[f64]| c.iter().rev().fold(0.0, |acc, x| acc * phi + x);
+        let (p, q) = (horner(&self.p), horner(&self.q));
+        let s = q - p * p;
+        (s > 0.0).then(|| s.sqrt().atan2(p))
+    }
+}
+
+fn f64_coeffs(p: &Poly) -> Vec<f64> {
+    use num_traits::ToPrimitive;
+    p.coeffs_in(Sym::phi())
+        .iter()
+        .map(|c| c.as_constant().and_then(|c| c.to_f64()).expect("a polynomial in Phi only"))
+        .collect()
 }
 
 /// A polynomial in Φ evaluated in floating point (Horner).

@@ -30,12 +30,12 @@ pub fn series_poly(c: &[Q]) -> Poly {
 /// The largest Φ (at most `cap`) up to which a method's roots stay a
 /// complex pair, in floating point; `cap` when they never stop.
 fn oscillating_until(method: &str, cap: f64) -> f64 {
-    let d = derivation(method);
+    let psi = PsiF64::new(&derivation(method));
     let n = 4000;
     let mut last = 0.0;
     for k in 1..=n {
         let phi = cap * k as f64 / n as f64;
-        if psi_f64(&d, phi).is_none() {
+        if psi.at(phi).is_none() {
             return last;
         }
         last = phi;
@@ -46,8 +46,8 @@ fn oscillating_until(method: &str, cap: f64) -> f64 {
 /// The first Φ in (0, hi] where Ψ(Φ) − Φ changes sign, by a grid and
 /// bisection; `None` when Ψ > Φ on the whole grid.
 pub fn first_crossing(method: &str, hi: f64) -> Option<f64> {
-    let d = derivation(method);
-    let f = |phi: f64| psi_f64(&d, phi).map(|psi| psi - phi);
+    let psi = PsiF64::new(&derivation(method));
+    let f = |phi: f64| psi.at(phi).map(|psi| psi - phi);
     let n = 4000;
     let mut prev = hi / n as f64;
     for k in 2..=n {

@@ -4,6 +4,8 @@
 //! `poly::Algebraic` / `poly::stability`; no float decides anything here.
 
 use std::cmp::Ordering;
+use std::collections::HashMap;
+use std::sync::{Mutex, OnceLock};
 
 use poly::stability::{self, StabilityReport};
 use poly::{Algebraic, Poly, RootClass, Sym, UPoly, Q};
@@ -125,11 +127,20 @@ pub fn sign_text(p: &Poly, pos: &str, neg: &str) -> String {
     parts.join("; ")
 }
 
-/// The exact stability report of a built-in method.
+/// The exact stability report of a built-in method, computed once per
+/// process.
 #[track_caller]
 pub fn report(method: &str) -> StabilityReport {
+    static CACHE: OnceLock<Mutex<HashMap<String, StabilityReport>>> = OnceLock::new();
+    let cache = CACHE.get_or_init(Default::default);
+    if let Some(r) = cache.lock().expect("cache lock").get(method) {
+        return r.clone();
+    }
     let d = derivation(method);
-    stability::analyze(&d.charpoly).unwrap_or_else(|e| panic!("stability of {method}: {e}"))
+    let r =
+        stability::analyze(&d.charpoly).unwrap_or_else(|e| panic!("stability of {method}: {e}"));
+    cache.lock().expect("cache lock").insert(method.to_owned(), r.clone());
+    r
 }
 
 /// A method's root class on every piece of Φ > 0: the open intervals of
