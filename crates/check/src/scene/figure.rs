@@ -112,7 +112,8 @@ fn draw_energy(path: &Path, name: &str, run: &ThreeBodyRun) -> Result<(), SceneE
     root.fill(&WHITE).map_err(|e| err(&e))?;
     let panels = root.split_evenly((2, 1));
     let t_end = run.samples.last().map_or(1.0, |s| s.time).max(run.config.dt);
-    let series: [(&str, fn(&super::three_body::Sample) -> f64); 2] = [
+    type Value = fn(&super::three_body::Sample) -> f64;
+    let series: [(&str, Value); 2] = [
         ("energy conserved by the force law (sum v^2/2 + sum ln r or - sum 1/r)", |s| {
             s.energy_consistent
         }),

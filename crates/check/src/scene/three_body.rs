@@ -360,12 +360,13 @@ pub fn step(config: &ThreeBodyConfig, state: &mut State, reference_energy: f64, 
         Some(c) => c.factor * (state.energy(c.energy, config.force_law) - reference_energy),
         None => 0.0,
     };
-    for b in 0..3 {
-        for k in 0..2 {
-            let v_old = state.velocity[b][k];
-            let v_new = v_old + h * (acc[b][k] - damping * v_old);
-            state.velocity[b][k] = v_new;
-            state.position[b][k] += h * match config.integrator {
+    let bodies = state.position.iter_mut().zip(state.velocity.iter_mut()).zip(&acc);
+    for ((position, velocity), acc) in bodies {
+        for ((x, v), a) in position.iter_mut().zip(velocity.iter_mut()).zip(acc) {
+            let v_old = *v;
+            let v_new = v_old + h * (a - damping * v_old);
+            *v = v_new;
+            *x += h * match config.integrator {
                 Integrator::FalseEuler => v_new,
                 Integrator::StandardEuler => v_old,
             };
@@ -578,7 +579,8 @@ pub fn accuracy(config: &ThreeBodyConfig, n_steps: u64) -> Result<Accuracy, Refe
         let error =
             (0..3).map(|b| distance(&state.position[b], &r.position[b])).fold(0.0, f64::max);
         // NaN compares false: a non-finite scene state counts as lost.
-        if !(error <= 0.1) && acc.faithful_until.is_none() {
+        let lost = error.is_nan() || error > 0.1;
+        if lost && acc.faithful_until.is_none() {
             acc.faithful_until = Some(k as u64);
         }
         acc.max_position_error =
