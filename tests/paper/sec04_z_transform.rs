@@ -199,3 +199,39 @@ fn p_q_formulas() {
         }
     }
 }
+
+/// The exact class changes (poly::stability, Sturm sequences over Q) agree
+/// with the numeric sweep of the check crate (f64 classification on a grid,
+/// bisected to adjacent floats): every exact change between different
+/// classes has a numeric boundary within 1e-9, and the classes on both
+/// sides agree.
+#[test]
+fn exact_class_changes_agree_with_the_numeric_sweep() {
+    for name in [
+        "standard_euler",
+        "damped_euler",
+        "false_euler",
+        "standard_heun",
+        "false_heun",
+        "semi_false_heun",
+    ] {
+        let d = derive(name);
+        let exact = poly::stability::analyze(&d.charpoly).expect("analysis");
+        let numeric = check::sweep::sweep(
+            &d.method,
+            &check::numeric::Params::phi(1.0),
+            &check::sweep::default_grid(),
+        )
+        .expect("sweep");
+        for change in exact.class_changes.iter().filter(|c| c.from != c.to) {
+            let at: f64 = change.at.to_decimal(12).parse().unwrap();
+            let hit =
+                numeric.boundaries.iter().find(|b| b.below - 1e-9 <= at && at <= b.above + 1e-9);
+            let b = hit.unwrap_or_else(|| {
+                panic!("{name}: no numeric boundary near {at}: {:?}", numeric.boundaries)
+            });
+            assert_eq!(b.class_below, change.from, "{name} below {at}");
+        }
+        assert_eq!(numeric.first.1, exact.intervals[0].class, "{name} near Φ = 0");
+    }
+}
