@@ -95,6 +95,21 @@ fn bench_builtins(c: &mut Criterion) {
             }
         })
     });
+    // The phases of `derive`, each over all built-ins, to show where time goes.
+    c.bench_function("derive/phase/z_route", |b| {
+        b.iter(|| {
+            for m in &methods {
+                black_box(poly::charpoly_z_route(black_box(m)).expect("degree within order"));
+            }
+        })
+    });
+    c.bench_function("derive/phase/state_route", |b| {
+        b.iter(|| {
+            for m in &methods {
+                black_box(poly::charpoly_state_route(&poly::transition_matrix(black_box(m))));
+            }
+        })
+    });
     c.bench_function("derive/all_builtins_parse_and_derive", |b| {
         b.iter(|| {
             for name in poly::builtin_names() {

@@ -119,20 +119,26 @@ fn laurent(p: &Poly, latex: bool) -> String {
     out
 }
 
-/// Route (a): M(w) with w = z⁻¹.
-pub fn z_matrix(m: &Method) -> PolyMatrix {
-    let n_assign = m.assigns().len();
-    // The unknown holding each state variable's value at the end of step i.
-    let mut extra = 0;
-    let unknown_of: Vec<usize> = (0..m.state().len())
+/// The unknown of M holding each state variable's value at the end of the
+/// step: its final assignment, or an extra unknown (numbered after the
+/// assignments) when the step never assigns it.
+fn carried_unknowns(m: &Method) -> Vec<usize> {
+    let mut extra = m.assigns().len();
+    (0..m.state().len())
         .map(|v| {
             m.final_assign(v).unwrap_or_else(|| {
                 extra += 1;
-                n_assign + extra - 1
+                extra - 1
             })
         })
-        .collect();
-    let n = n_assign + extra;
+        .collect()
+}
+
+/// Route (a): M(w) with w = z⁻¹.
+pub fn z_matrix(m: &Method) -> PolyMatrix {
+    let n_assign = m.assigns().len();
+    let unknown_of = carried_unknowns(m);
+    let n = n_assign + unknown_of.iter().filter(|&&u| u >= n_assign).count();
     let wp = Poly::sym(w());
     let mut mat = PolyMatrix::identity(n);
     for (s, a) in m.assigns().iter().enumerate() {
@@ -154,10 +160,53 @@ pub fn z_matrix(m: &Method) -> PolyMatrix {
     mat
 }
 
+/// det M, by Gaussian elimination on the unknowns that no later step reads
+/// (temporaries and overwritten values). Their diagonal entry is 1 and stays
+/// 1 (w only ever enters the columns of the carried unknowns), so each is a
+/// unit pivot: subtracting multiples of its row clears its column without
+/// division and keeps the determinant, and expanding along the cleared column
+/// drops the pivot's row and column. What remains is one row and column per
+/// state variable, whose determinant Berkowitz computes. A program with
+/// hundreds of temporaries (RK4 on a spring chain) thus costs a determinant
+/// of the size of its state, not of its listing.
+fn det_z_matrix(mut mat: PolyMatrix, carried: &[usize]) -> Poly {
+    let n = mat.rows();
+    let mut kept: Vec<usize> = Vec::new();
+    let mut removed = vec![false; n];
+    for c in 0..n {
+        if carried.contains(&c) || !mat[(c, c)].is_one() {
+            kept.push(c);
+            continue;
+        }
+        let pivot_row: Vec<(usize, Poly)> = (0..n)
+            .filter(|&j| j != c && !removed[j] && !mat[(c, j)].is_zero())
+            .map(|j| (j, mat[(c, j)].clone()))
+            .collect();
+        for s in 0..n {
+            if s == c || removed[s] || mat[(s, c)].is_zero() {
+                continue;
+            }
+            let f = std::mem::take(&mut mat[(s, c)]);
+            for (j, x) in &pivot_row {
+                mat[(s, *j)] -= &(&f * x);
+            }
+        }
+        removed[c] = true;
+    }
+    let rest = PolyMatrix::from_rows(
+        kept.iter().map(|&i| kept.iter().map(|&j| mat[(i, j)].clone()).collect()).collect(),
+    );
+    rest.det()
+}
+
 /// Route (a)'s characteristic polynomial, z^N det M(1/z).
 pub fn charpoly_z_route(m: &Method) -> Result<Poly, Error> {
-    let det = z_matrix(m).det();
-    let coeffs = det.coeffs_in(w());
+    charpoly_from_z_matrix(m, z_matrix(m))
+}
+
+fn charpoly_from_z_matrix(m: &Method, mat: PolyMatrix) -> Result<Poly, Error> {
+    let det = det_z_matrix(mat, &carried_unknowns(m));
+    let mut coeffs = det.coeffs_in(w());
     let n = m.order();
     if coeffs.len() > n + 1 {
         return Err(Error::new(
@@ -166,12 +215,10 @@ pub fn charpoly_z_route(m: &Method) -> Result<Poly, Error> {
             format!("det M(z) has degree {} in 1/z, above the order {n}", coeffs.len() - 1),
         ));
     }
-    let z = Sym::z();
-    let mut out = Poly::zero();
-    for (k, c) in coeffs.iter().enumerate() {
-        out += &(c * &Poly::sym(z).pow((n - k) as u32));
-    }
-    Ok(out)
+    // The coefficient of w^k multiplies z^(N-k).
+    coeffs.resize(n + 1, Poly::zero());
+    coeffs.reverse();
+    Ok(Poly::from_coeffs_in(Sym::z(), &coeffs))
 }
 
 /// Route (b): the transition matrix P by symbolic execution.
@@ -221,14 +268,9 @@ pub fn transition_matrix(m: &Method) -> PolyMatrix {
 
 /// Route (b)'s characteristic polynomial, det(zI − P), by Berkowitz.
 pub fn charpoly_state_route(p: &PolyMatrix) -> Poly {
-    let c = p.charpoly_berkowitz();
-    let n = c.len() - 1;
-    let z = Sym::z();
-    let mut out = Poly::zero();
-    for (k, ck) in c.iter().enumerate() {
-        out += &(ck * &Poly::sym(z).pow((n - k) as u32));
-    }
-    out
+    let mut c = p.charpoly_berkowitz();
+    c.reverse();
+    Poly::from_coeffs_in(Sym::z(), &c)
 }
 
 /// Derives a method by both routes and checks that they agree exactly.
@@ -241,7 +283,7 @@ pub fn charpoly_state_route(p: &PolyMatrix) -> Poly {
 /// ```
 pub fn derive(method: &Method) -> Result<Derivation, Error> {
     let z_matrix = z_matrix(method);
-    let a = charpoly_z_route(method)?;
+    let a = charpoly_from_z_matrix(method, z_matrix.clone())?;
     let transition_matrix = transition_matrix(method);
     let b = charpoly_state_route(&transition_matrix);
     if a != b {

@@ -9,11 +9,22 @@
 //!
 //! from which `det A = (-1)^n c_n`. [`PolyMatrix::det_laplace`] is the slow,
 //! obvious oracle the tests hold it against.
+//!
+//! Most matrices zcheck meets are univariate: transition matrices in Phi
+//! alone. For those, Berkowitz runs on dense integer polynomials (`i128`
+//! coefficients, after clearing denominators: the coefficients of the scaled
+//! matrix LA are `L^k c_k`), which is two orders of magnitude faster than the
+//! sparse rational path. Every operation there is overflow-checked, and an
+//! overflow falls back to the sparse path, so the result never changes.
 
 use std::fmt;
 use std::ops::{Index, IndexMut, Mul};
 
-use crate::Poly;
+use num_bigint::BigInt;
+use num_integer::Integer;
+use num_traits::{One, ToPrimitive};
+
+use crate::{Monomial, Poly, Sym, Q};
 
 /// A dense `rows × cols` matrix of [`Poly`] entries.
 #[derive(Clone, PartialEq, Eq)]
@@ -84,6 +95,15 @@ impl PolyMatrix {
     #[track_caller]
     pub fn charpoly_berkowitz(&self) -> Vec<Poly> {
         assert_eq!(self.rows, self.cols, "charpoly of a non-square matrix");
+        if let Some(c) = charpoly_univariate(self) {
+            return c;
+        }
+        self.charpoly_berkowitz_sparse()
+    }
+
+    /// Berkowitz on the sparse multivariate representation: always
+    /// applicable, and the reference the dense path must reproduce.
+    fn charpoly_berkowitz_sparse(&self) -> Vec<Poly> {
         let a = self;
         let mut c = vec![Poly::one()];
         for r in 0..self.rows {
@@ -171,6 +191,125 @@ impl PolyMatrix {
         }
         acc
     }
+}
+
+/// A dense polynomial with integer coefficients, lowest power first, no
+/// trailing zeros (zero is empty).
+type Dense = Vec<i128>;
+
+/// `acc += a * b`, or `None` on overflow.
+fn mul_add(acc: &mut Dense, a: &[i128], b: &[i128]) -> Option<()> {
+    if a.is_empty() || b.is_empty() {
+        return Some(());
+    }
+    if acc.len() < a.len() + b.len() - 1 {
+        acc.resize(a.len() + b.len() - 1, 0);
+    }
+    for (i, &x) in a.iter().enumerate() {
+        if x == 0 {
+            continue;
+        }
+        for (slot, &y) in acc[i..].iter_mut().zip(b) {
+            *slot = slot.checked_add(x.checked_mul(y)?)?;
+        }
+    }
+    while acc.last() == Some(&0) {
+        acc.pop();
+    }
+    Some(())
+}
+
+fn negate(a: &[i128]) -> Option<Dense> {
+    a.iter().map(|x| x.checked_neg()).collect()
+}
+
+/// The univariate fast path of [`PolyMatrix::charpoly_berkowitz`]: `None`
+/// when the entries involve two or more symbols, or when a coefficient
+/// overflows `i128` at any step.
+fn charpoly_univariate(a: &PolyMatrix) -> Option<Vec<Poly>> {
+    let mut sym: Option<Sym> = None;
+    let mut lcm = BigInt::one();
+    for e in &a.data {
+        for (m, c) in e.terms() {
+            for &(s, _) in m.factors() {
+                match sym {
+                    None => sym = Some(s),
+                    Some(t) if t != s => return None,
+                    Some(_) => {}
+                }
+            }
+            lcm = lcm.lcm(c.denom());
+        }
+    }
+    let scale = lcm.to_i128()?;
+    let exponent = |m: &Monomial| sym.map_or(0, |s| m.exponent(s)) as usize;
+    let mut dense = Vec::with_capacity(a.data.len());
+    for e in &a.data {
+        let mut d: Dense = Vec::new();
+        for (m, c) in e.terms() {
+            let k = exponent(m);
+            if d.len() <= k {
+                d.resize(k + 1, 0);
+            }
+            d[k] = (c.numer() * (&lcm / c.denom())).to_i128()?;
+        }
+        dense.push(d);
+    }
+    let c = berkowitz_dense(a.rows, &dense)?;
+    // c_k(A) = c_k(LA) / L^k.
+    let mut power = BigInt::one();
+    let mut out = Vec::with_capacity(c.len());
+    for ck in c {
+        out.push(Poly::from_terms(ck.into_iter().enumerate().filter(|(_, x)| *x != 0).map(
+            |(k, x)| {
+                let m = sym.map_or_else(Monomial::one, |s| Monomial::power(s, k as u32));
+                (Q::new(BigInt::from(x), power.clone()), m)
+            },
+        )));
+        power *= scale;
+    }
+    Some(out)
+}
+
+/// Berkowitz on dense integer polynomials, row-major `n×n` entries; the same
+/// recurrence as the sparse path.
+fn berkowitz_dense(n: usize, a: &[Dense]) -> Option<Vec<Dense>> {
+    let at = |i: usize, j: usize| &a[i * n + j];
+    let mut c: Vec<Dense> = vec![vec![1]];
+    for r in 0..n {
+        let mut col: Vec<Dense> = Vec::with_capacity(r + 2);
+        col.push(vec![1]);
+        col.push(negate(at(r, r))?);
+        let mut v: Vec<Dense> = (0..r).map(|i| at(i, r).clone()).collect();
+        for k in 0..r {
+            let mut dot = Dense::new();
+            for (j, vj) in v.iter().enumerate() {
+                mul_add(&mut dot, at(r, j), vj)?;
+            }
+            col.push(negate(&dot)?);
+            if k + 1 < r {
+                let mut next = Vec::with_capacity(r);
+                for i in 0..r {
+                    let mut s = Dense::new();
+                    for (j, vj) in v.iter().enumerate() {
+                        mul_add(&mut s, at(i, j), vj)?;
+                    }
+                    next.push(s);
+                }
+                v = next;
+            }
+        }
+        let mut next = Vec::with_capacity(r + 2);
+        for i in 0..r + 2 {
+            let mut s = Dense::new();
+            for (j, cj) in c.iter().enumerate().take(i + 1) {
+                mul_add(&mut s, &col[i - j], cj)?;
+            }
+            next.push(s);
+        }
+        c = next;
+    }
+    Some(c)
 }
 
 impl Index<(usize, usize)> for PolyMatrix {

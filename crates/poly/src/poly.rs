@@ -18,7 +18,7 @@ use std::ops::{Add, AddAssign, Mul, Neg, Sub, SubAssign};
 
 use num_traits::{One, Signed, Zero};
 
-use crate::{Q, Sym, UPoly};
+use crate::{Sym, UPoly, Q};
 
 /// A product of symbols with positive exponents, sorted by symbol id.
 #[derive(Clone, PartialEq, Eq, PartialOrd, Ord, Hash, Default, Debug)]
@@ -254,7 +254,7 @@ impl Poly {
         if c.is_zero() {
             return Poly::zero();
         }
-        Poly { terms: self.terms.iter().map(|(m, q)| (m.clone(), q * c)).collect() }
+        Poly { terms: self.terms.iter().map(|(m, q)| (m.clone(), mul_q(q, c))).collect() }
     }
 
     /// `self^exp` by repeated squaring.
@@ -330,7 +330,7 @@ impl Poly {
                 v.insert(c);
             }
             std::collections::btree_map::Entry::Occupied(mut o) => {
-                *o.get_mut() += c;
+                add_assign_q(o.get_mut(), c);
                 if o.get().is_zero() {
                     o.remove();
                 }
@@ -344,14 +344,11 @@ impl Poly {
         let z = Sym::z();
         let mut v: Vec<_> = self.terms.iter().collect();
         v.sort_by(|(a, _), (b, _)| {
-            b.exponent(z)
-                .cmp(&a.exponent(z))
-                .then(a.degree().cmp(&b.degree()))
-                .then_with(|| {
-                    let na: Vec<_> = a.by_name().iter().map(|&(s, e)| (s.name(), e)).collect();
-                    let nb: Vec<_> = b.by_name().iter().map(|&(s, e)| (s.name(), e)).collect();
-                    nb.cmp(&na)
-                })
+            b.exponent(z).cmp(&a.exponent(z)).then(a.degree().cmp(&b.degree())).then_with(|| {
+                let na: Vec<_> = a.by_name().iter().map(|&(s, e)| (s.name(), e)).collect();
+                let nb: Vec<_> = b.by_name().iter().map(|&(s, e)| (s.name(), e)).collect();
+                nb.cmp(&na)
+            })
         });
         v
     }
@@ -411,6 +408,27 @@ fn latex_name(name: &str) -> String {
         format!("\\mathrm{{{name}}}")
     } else {
         name.to_owned()
+    }
+}
+
+/// `a * b`. num-rational reduces every product by two gcds and four
+/// divisions; most coefficients here are integers, whose product needs none.
+#[inline]
+pub(crate) fn mul_q(a: &Q, b: &Q) -> Q {
+    if a.denom().is_one() && b.denom().is_one() {
+        Q::from_integer(a.numer() * b.numer())
+    } else {
+        a * b
+    }
+}
+
+/// `*a += b`, skipping the gcd when both are integers.
+#[inline]
+pub(crate) fn add_assign_q(a: &mut Q, b: Q) {
+    if a.denom().is_one() && b.denom().is_one() {
+        *a = Q::from_integer(a.numer() + b.numer());
+    } else {
+        *a += b;
     }
 }
 
@@ -510,7 +528,7 @@ impl<'a> Mul<&'a Poly> for &'a Poly {
         let mut out = Poly::zero();
         for (ma, ca) in &self.terms {
             for (mb, cb) in &rhs.terms {
-                out.add_term(ma.mul(mb), ca * cb);
+                out.add_term(ma.mul(mb), mul_q(ca, cb));
             }
         }
         out

@@ -27,6 +27,21 @@ proptest! {
         prop_assert_eq!(a.det(), a.det_laplace());
     }
 
+    /// Matrices in Phi alone (and constant ones) take the dense integer path
+    /// of Berkowitz; Laplace runs on the sparse representation.
+    #[test]
+    fn dense_univariate_path_matches_laplace(
+        a in (1usize..=6).prop_flat_map(|n| {
+            let entry = prop_oneof![1 => Just(Poly::zero()), 3 => poly_in(1, 4)];
+            proptest::collection::vec(entry, n * n).prop_map(move |d| {
+                PolyMatrix::from_rows(d.chunks(n).map(<[Poly]>::to_vec).collect())
+            })
+        })
+    ) {
+        prop_assert_eq!(a.det(), a.det_laplace());
+        prop_assert_eq!(charpoly_from_berkowitz(&a), a.char_matrix(&Poly::sym(Sym::z())).det_laplace());
+    }
+
     #[test]
     fn transposing_keeps_the_determinant(a in sized_matrix(5)) {
         prop_assert_eq!(transpose(&a).det(), a.det());
@@ -93,6 +108,26 @@ fn known_determinants() {
         &[&["Phi", "7", "D"], &["0", "1 - Phi", "Phi^9"], &["0", "0", "D^2"]],
         "Phi*(1 - Phi)*D^2",
     );
+}
+
+/// Entries near 2^100 overflow the dense `i128` path part-way; the sparse
+/// path takes over and the result is still exact.
+#[test]
+fn overflowing_entries_fall_back_to_the_exact_path() {
+    for n in 1..=5usize {
+        let big = |i: usize, j: usize| {
+            Poly::parse(&format!("{}*Phi^{} - {}/7", 1u128 << 100, (i + j) % 3, i * n + j + 1))
+                .expect("parses")
+        };
+        let a =
+            PolyMatrix::from_rows((0..n).map(|i| (0..n).map(|j| big(i, j)).collect()).collect());
+        assert_eq!(a.det(), a.det_laplace(), "n = {n}");
+        assert_eq!(
+            charpoly_from_berkowitz(&a),
+            a.char_matrix(&Poly::sym(Sym::z())).det_laplace(),
+            "n = {n}"
+        );
+    }
 }
 
 /// The companion matrix of a monic polynomial has that polynomial as its

@@ -381,6 +381,19 @@ fn check_program(prog: &Program, phi: Q, k: Q) {
     let a = poly::charpoly_z_route(&method).unwrap_or_else(|e| panic!("{e}\n{src}"));
     let b = poly::charpoly_state_route(&p);
     assert_eq!(a, b, "routes disagree on\n{src}");
+    // The z route eliminates temporaries before its determinant; on small
+    // programs, hold it against Berkowitz on the whole of M.
+    let m_full = poly::z_matrix(&method);
+    if m_full.rows() <= 6 {
+        let det = m_full.det();
+        let z = Poly::sym(Sym::z());
+        let w_to_z = det
+            .coeffs_in(poly::w())
+            .iter()
+            .enumerate()
+            .fold(Poly::zero(), |acc, (k, c)| acc + c * z.pow((n - k) as u32));
+        assert_eq!(w_to_z, a, "z^N det M(1/z) on the whole matrix\n{src}");
+    }
     let d = poly::derive(&method).unwrap_or_else(|e| panic!("{e}\n{src}"));
     assert_eq!(d.charpoly, a);
     assert_eq!(d.charpoly.degree_in(Sym::z()) as usize, n, "degree = order\n{src}");
