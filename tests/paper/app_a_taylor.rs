@@ -71,3 +71,54 @@ fn tan_psi_identities() {
     check("damped_euler", "Phi^2*(1 - Phi^2/4)", "1 - Phi^2/2");
     check("standard_heun", "Phi^2", "1 - Phi^2/2");
 }
+
+/// The paper's two approximations are the leading phase-error terms of the
+/// extended table (`zcheck overview`): Ψ − Φ = Φ³/24 and Φ³/6, parsed from
+/// the paper's own printed forms.
+#[test]
+fn extension_reproduces_the_papers_two_series() {
+    #[track_caller]
+    fn check(method: &str, paper_approximation: &str) {
+        let row = check::overview::summarize(&poly::builtin(method).unwrap(), 5).unwrap();
+        let paper = poly::Poly::parse(paper_approximation).unwrap() - poly::Poly::var("Phi");
+        let ours = poly::Poly::parse(&row.phase_error).unwrap();
+        assert_eq!(ours, paper, "{method}: phase error {} vs paper {paper}", row.phase_error);
+    }
+    check("damped_euler", "Phi*(1 + Phi^2/24)");
+    check("false_euler", "Phi*(1 + Phi^2/24)");
+    check("standard_heun", "Phi*(1 + Phi^2/6)");
+}
+
+/// Every method's Ψ series in the extended table matches the true Ψ(Φ) (the
+/// angle of the numeric eigenvalue) with an error of order Φ⁷, the first
+/// omitted power: the series are right, not just their leading terms.
+#[test]
+fn extension_series_match_the_true_psi_for_every_method() {
+    for row in check::overview::paper_overview(5).unwrap() {
+        let text = row.psi_series.split(" + O(").next().unwrap();
+        let series = poly::Poly::parse(text).unwrap();
+        let eval = |phi: f64| -> f64 {
+            series
+                .terms()
+                .map(|(m, c)| {
+                    let e = m.factors().iter().map(|&(_, e)| e).sum::<u32>();
+                    let c = check::numeric::q_to_f64(c);
+                    c * phi.powi(e as i32)
+                })
+                .sum()
+        };
+        let order = error_order(|p| psi(&row.method, p).unwrap(), eval, 0.2);
+        assert!(order > 6.5, "{}: Psi series error order {order}", row.method);
+    }
+}
+
+/// The extended table, for people to review (exact series, limits rounded
+/// to 4 decimals).
+#[test]
+fn extension_table_snapshot() {
+    let rows = check::overview::paper_overview(5).unwrap();
+    let table = check::overview::to_markdown(&rows);
+    insta::with_settings!({snapshot_path => concat!(env!("CARGO_MANIFEST_DIR"), "/snapshots/paper"), prepend_module_to_snapshot => false}, {
+        insta::assert_snapshot!("overview_table", table);
+    });
+}

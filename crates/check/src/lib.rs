@@ -10,6 +10,7 @@
 pub mod classify;
 pub mod load;
 pub mod numeric;
+pub mod overview;
 pub mod paper;
 pub mod scene;
 pub mod plot;

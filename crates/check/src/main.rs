@@ -28,6 +28,8 @@ enum Command {
     Verify(cli::verify::Args),
     /// Draw figures (SVG).
     Plot(cli::plot::Args),
+    /// Every paper method side by side: exact limit, Psi and |z|^2 series, cost.
+    Overview(cli::overview::Args),
     /// Exact stability limit and class changes of a method.
     Stability(cli::stability::Args),
     /// Print the executable proof of the paper (the main job).
@@ -47,6 +49,7 @@ fn main() -> ExitCode {
         Command::Derive(a) => cli::derive::run(a),
         Command::Verify(a) => cli::verify::run(a),
         Command::Plot(a) => cli::plot::run(a),
+        Command::Overview(a) => cli::overview::run(a),
         Command::Stability(a) => cli::stability::run(a),
         Command::Paper(a) => cli::paper::run(a),
         Command::Tradeoff(a) => cli::tradeoff::run(a),

@@ -3,6 +3,7 @@
 pub mod advise;
 pub mod derive;
 pub mod methods;
+pub mod overview;
 pub mod paper;
 pub mod plot;
 pub mod scene;

@@ -1,0 +1,40 @@
+//! `zcheck overview`: the paper's methods side by side, or any methods given:
+//! exact stability limit, Ψ(Φ) and |z|² series (Appendix A, extended), cost.
+
+use std::process::ExitCode;
+
+/// Output format of `zcheck overview`.
+#[derive(Clone, Copy, clap::ValueEnum)]
+pub enum Format {
+    Markdown,
+    Json,
+}
+
+/// Arguments of `zcheck overview`.
+#[derive(clap::Args)]
+pub struct Args {
+    /// Built-in names or `.zm` paths (default: the paper's seven methods).
+    pub methods: Vec<String>,
+    /// The highest power of Phi shown in the series.
+    #[arg(long, default_value_t = 5)]
+    pub order: usize,
+    #[arg(long, value_enum, default_value = "markdown")]
+    pub format: Format,
+}
+
+pub fn run(args: Args) -> anyhow::Result<ExitCode> {
+    anyhow::ensure!(args.order <= 64, "--order {} is too large: expected at most 64", args.order);
+    let rows = if args.methods.is_empty() {
+        check::overview::paper_overview(args.order)?
+    } else {
+        args.methods
+            .iter()
+            .map(|m| Ok(check::overview::summarize(&check::load::load_method(m)?, args.order)?))
+            .collect::<anyhow::Result<Vec<_>>>()?
+    };
+    match args.format {
+        Format::Markdown => print!("{}", check::overview::to_markdown(&rows)),
+        Format::Json => println!("{}", serde_json::to_string_pretty(&rows)?),
+    }
+    Ok(ExitCode::SUCCESS)
+}

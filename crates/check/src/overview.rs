@@ -1,0 +1,160 @@
+//! Every method side by side: exact stability limit, frequency and amplitude
+//! series, and cost per step.
+//!
+//! Appendix A derives Ψ(Φ) only for Damped/False Euler and Standard Heun.
+//! This table extends it to every method the paper analyses, from the exact
+//! characteristic polynomial (`poly::series`), next to the exact limit
+//! (`poly::stability`) and the operation count (`poly::step_cost`), so a
+//! reader can compare the paper's four criteria (stability, frequency
+//! deviation, calculations per step, largest step) in one place.
+
+use poly::series::{self, LeadingTerm};
+use poly::{Poly, Q};
+use serde::Serialize;
+
+/// The direct-integration built-ins of sections 5–11 (their `_matrix`
+/// twins have identical transition matrices, as the proof shows).
+pub const PAPER_METHODS: [&str; 7] = [
+    "standard_euler",
+    "damped_euler",
+    "false_euler",
+    "verlet",
+    "standard_heun",
+    "false_heun",
+    "semi_false_heun",
+];
+
+/// One row of the overview.
+#[derive(Clone, Debug, Serialize)]
+pub struct MethodSummary {
+    /// Built-in name.
+    pub method: String,
+    /// χ(z) in plain text.
+    pub charpoly: String,
+    /// The exact stability limit (closed form or defining polynomial), or a
+    /// sentence when there is none.
+    pub phi_max_exact: String,
+    /// Its value to 15 significant digits, when it exists.
+    pub phi_max: Option<f64>,
+    /// Steps per period at the limit, 2π/Φ_max.
+    pub min_steps_per_period: Option<f64>,
+    /// Ψ(Φ) as an exact truncated series, e.g. `Phi + 1/24*Phi^3 + O(Phi^5)`.
+    pub psi_series: String,
+    /// |z|² of the complex pair as an exact truncated series.
+    pub modulus_sq_series: String,
+    /// Leading term of Ψ − Φ (phase error per step), e.g. `1/24*Phi^3`.
+    pub phase_error: String,
+    /// Leading term of |z|² − 1 (amplitude error per step), or `0`.
+    pub amplitude_error: String,
+    /// Multiplications per step after constant folding.
+    pub mul: u32,
+    /// Additions and subtractions per step.
+    pub add: u32,
+}
+
+/// Why a row could not be computed.
+#[derive(Debug)]
+pub struct OverviewError(String);
+
+impl std::fmt::Display for OverviewError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for OverviewError {}
+
+fn err(e: impl std::fmt::Display) -> OverviewError {
+    OverviewError(e.to_string())
+}
+
+/// `Σ c_k Φ^k + O(Φ^(order+1))` in plain text.
+fn series_text(c: &[Q], scale: &str) -> String {
+    let p = Poly::from_upoly(poly::Sym::phi(), &poly::UPoly::new(c.to_vec()));
+    let body = if scale.is_empty() { p.to_string() } else { format!("{scale}*({p})") };
+    format!("{body} + O(Phi^{})", c.len())
+}
+
+fn leading(t: Option<LeadingTerm>) -> String {
+    match t {
+        None => "0".to_owned(),
+        Some(t) => {
+            let p = Poly::term(t.coeff, poly::Monomial::power(poly::Sym::phi(), t.order as u32));
+            p.to_string()
+        }
+    }
+}
+
+/// The overview row of a method whose χ is in z and Φ only.
+pub fn summarize(method: &poly::Method, order: usize) -> Result<MethodSummary, OverviewError> {
+    let d = poly::derive(method).map_err(err)?;
+    let chi = &d.charpoly;
+    let report = poly::stability::analyze(chi).map_err(err)?;
+    let (phi_max_exact, phi_max) = match &report.phi_max {
+        Some(a) => {
+            let exact = a.closed_form().unwrap_or_else(|| a.describe("Phi"));
+            let value: f64 = a.to_decimal(17).parse().map_err(err)?;
+            (exact, Some(value))
+        }
+        None if report.bounded_for_all => ("none: bounded for every Phi > 0".to_owned(), None),
+        None => ("none: unbounded for every Phi > 0".to_owned(), None),
+    };
+    let (psi_series, phase_error) = match series::psi_series_scaled(chi, order) {
+        Ok((d, c)) if d == Q::from_integer(1.into()) => {
+            (series_text(&c, ""), leading(series::dispersion_order(chi).map_err(err)?))
+        }
+        Ok((d, c)) => (series_text(&c, &format!("sqrt({d})")), "order 1".to_owned()),
+        Err(e) => (format!("n/a ({e})"), "n/a".to_owned()),
+    };
+    let (modulus_sq_series, amplitude_error) = match series::modulus_sq_series(chi, order) {
+        Ok(c) => (series_text(&c, ""), leading(series::dissipation_order(chi).map_err(err)?)),
+        Err(e) => (format!("n/a ({e})"), "n/a".to_owned()),
+    };
+    let cost = poly::step_cost(method);
+    Ok(MethodSummary {
+        method: method.name().to_owned(),
+        charpoly: chi.to_string(),
+        phi_max_exact,
+        phi_max,
+        min_steps_per_period: phi_max.map(|p| std::f64::consts::TAU / p),
+        psi_series,
+        modulus_sq_series,
+        phase_error,
+        amplitude_error,
+        mul: cost.program.mul,
+        add: cost.program.add,
+    })
+}
+
+/// The overview of the paper's seven methods.
+pub fn paper_overview(order: usize) -> Result<Vec<MethodSummary>, OverviewError> {
+    PAPER_METHODS
+        .iter()
+        .map(|name| summarize(&poly::builtin(name).map_err(err)?, order))
+        .collect()
+}
+
+/// The overview as a Markdown table (numbers rounded to 4 decimals).
+pub fn to_markdown(rows: &[MethodSummary]) -> String {
+    let mut s = String::from(
+        "| method | Φ_max (exact) | Φ_max | steps/period at Φ_max | Ψ(Φ) | \\|z\\|² | phase error Ψ−Φ | amplitude error \\|z\\|²−1 | mul | add |\n\
+         |---|---|---:|---:|---|---|---|---|---:|---:|\n",
+    );
+    for r in rows {
+        let f = |x: Option<f64>| x.map_or("–".to_owned(), |v| format!("{v:.4}"));
+        s.push_str(&format!(
+            "| {} | {} | {} | {} | `{}` | `{}` | `{}` | `{}` | {} | {} |\n",
+            r.method,
+            r.phi_max_exact,
+            f(r.phi_max),
+            f(r.min_steps_per_period),
+            r.psi_series,
+            r.modulus_sq_series,
+            r.phase_error,
+            r.amplitude_error,
+            r.mul,
+            r.add
+        ));
+    }
+    s
+}
