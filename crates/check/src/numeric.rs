@@ -465,8 +465,8 @@ fn run_block<const B: usize>(instrs: &[Instr], regs: &mut [Vec<f64>]) {
             let c = ins.coef;
             match (ins.len, ins.unit_first, ins.accumulate) {
                 (_, _, true) => {
-                    for i in 0..ins.len as usize {
-                        add_scaled(d, c[i], r(i));
+                    for (i, &ci) in c.iter().enumerate().take(ins.len as usize) {
+                        add_scaled(d, ci, r(i));
                     }
                 }
                 (1, true, _) => d.copy_from_slice(r(0)),

@@ -142,6 +142,21 @@ impl Classifier {
             Kind::SecondOrder { p, q, signs, exact } => {
                 let (pv, _) = p.eval(phi);
                 let (qv, _) = q.eval(phi);
+                let disc = pv * pv - qv;
+                // The common case, a complex pair away from the unit circle's
+                // edge, needs two signs only.
+                let (d, db) = signs[0].eval(phi);
+                if d < -db {
+                    let (m, mb) = signs[4].eval(phi);
+                    if m.abs() > mb || (m == 0.0 && mb == 0.0) {
+                        let class = match m.partial_cmp(&0.0) {
+                            Some(Ordering::Less) => RootClass::DampedOscillation,
+                            Some(Ordering::Greater) => RootClass::UnstableOscillation,
+                            _ => RootClass::Harmonic,
+                        };
+                        return (qv.sqrt(), class);
+                    }
+                }
                 let mut certain = true;
                 let s = signs.each_ref().map(|h| {
                     let (v, b) = h.eval(phi);
@@ -161,7 +176,6 @@ impl Classifier {
                         [(Sym::phi(), f64_to_q(phi).unwrap_or_default())].into();
                     exact_pq_class(exact, &map)
                 };
-                let disc = pv * pv - qv;
                 let radius = if disc < 0.0 { qv.sqrt() } else { pv.abs() + disc.sqrt() };
                 (radius, class)
             }

@@ -1,0 +1,56 @@
+//! Rounded summaries of sweeps and witness tables, snapshotted so a change
+//! in any class boundary or verdict shows up in review.
+
+use std::fmt::Write;
+
+use check::numeric::Params;
+use check::sweep::{default_grid, sweep};
+use check::witness::Witnesses;
+
+fn params() -> Params {
+    Params::default().with("D", 0.3)
+}
+
+/// Class boundaries of every built-in along Φ in [1e-8, 4] (D = 0.3),
+/// rounded to 6 significant digits.
+#[test]
+fn sweep_boundaries_of_every_builtin() {
+    let mut s = String::new();
+    for name in poly::builtin_names() {
+        let sw = sweep(&poly::builtin(name).unwrap(), &params(), &default_grid()).unwrap();
+        write!(s, "{name}: {}", sw.first.1).unwrap();
+        for b in &sw.boundaries {
+            write!(s, " | {:.6} | {}", b.above, b.class_above).unwrap();
+        }
+        writeln!(s).unwrap();
+    }
+    insta::with_settings!({snapshot_path => concat!(env!("CARGO_MANIFEST_DIR"), "/../../snapshots/check")}, {
+        insta::assert_snapshot!(s);
+    });
+}
+
+/// The verify table at the default Φ list: class, ρ and Ψ to 6 digits, and
+/// whether the four witnesses agree (5000 simulated steps).
+#[test]
+fn verify_summary_of_every_builtin() {
+    let mut s = String::new();
+    for name in poly::builtin_names() {
+        let w = Witnesses::new(&poly::builtin(name).unwrap()).unwrap();
+        writeln!(s, "{name}").unwrap();
+        for phi in [1e-6, 0.1, 0.5, 1.0, 1.5, 1.9] {
+            let r = w.at(&params().with("Phi", phi), 5000).unwrap();
+            writeln!(
+                s,
+                "  phi {phi:<8} {:<22} rho {:.6} psi {:.6} agree {}",
+                r.exact.class.name(),
+                r.exact.spectral_radius,
+                r.exact.psi,
+                r.agree()
+            )
+            .unwrap();
+        }
+    }
+    insta::with_settings!({snapshot_path => concat!(env!("CARGO_MANIFEST_DIR"), "/../../snapshots/check")}, {
+        insta::assert_snapshot!(s);
+    });
+}
