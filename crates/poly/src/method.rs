@@ -467,22 +467,30 @@ impl fmt::Display for Method {
         let ps: Vec<&str> = self.params.iter().map(|p| p.name()).collect();
         writeln!(f, "param {}", ps.join(" "))?;
         for (k, a) in self.assigns.iter().enumerate() {
-            let rhs: Vec<String> = a
-                .terms
-                .iter()
-                .map(|(op, c)| {
-                    let o = self.operand_name(*op);
-                    if c.is_one() {
-                        o
-                    } else if c.len() == 1 {
-                        format!("{c}*{o}")
-                    } else {
-                        format!("({c})*{o}")
-                    }
-                })
-                .collect();
-            let rhs = if rhs.is_empty() { "0".to_owned() } else { rhs.join(" + ") };
-            writeln!(f, "%{k} ({}) = {}", self.target_name(a), rhs.replace("+ -", "- "))?;
+            let mut rhs = String::new();
+            for (i, (op, c)) in a.terms.iter().enumerate() {
+                // A one-term negative coefficient prints as a subtraction.
+                let neg = c.len() == 1 && c.terms().all(|(_, q)| q < &crate::Q::zero());
+                let body = if neg { -c } else { c.clone() };
+                rhs += match (i, neg) {
+                    (0, true) => "-",
+                    (0, false) => "",
+                    (_, true) => " - ",
+                    (_, false) => " + ",
+                };
+                let o = self.operand_name(*op);
+                rhs += &if body.is_one() {
+                    o
+                } else if body.len() == 1 {
+                    format!("{body}*{o}")
+                } else {
+                    format!("({body})*{o}")
+                };
+            }
+            if rhs.is_empty() {
+                rhs.push('0');
+            }
+            writeln!(f, "%{k} ({}) = {rhs}", self.target_name(a))?;
         }
         Ok(())
     }

@@ -19,6 +19,19 @@ use crate::Q;
 use num_bigint::BigInt;
 use num_traits::Zero;
 
+/// The largest exponent `^n` accepted: far above any method's needs, and low
+/// enough that a typo like `Phi^4000000000` is an error, not a hang.
+pub(crate) const MAX_EXPONENT: u32 = 64;
+
+/// The deepest history read `y@k` accepted; each level adds a row and a
+/// column to the transition matrix.
+pub(crate) const MAX_HISTORY: u32 = 32;
+
+/// The most tokens one line may hold. It bounds the depth of the expression
+/// tree, so that parsing and lowering (both recursive) cannot exhaust the
+/// stack on a pathological line.
+pub(crate) const MAX_TOKENS_PER_LINE: usize = 1000;
+
 #[derive(Clone, Debug, PartialEq)]
 enum Tok {
     Name(String),
@@ -76,7 +89,15 @@ fn lex(src: &str) -> Result<Vec<Token>, Error> {
         let line_no = li as u32 + 1;
         let chars: Vec<char> = line.chars().collect();
         let mut i = 0;
+        let line_start = out.len();
         while i < chars.len() {
+            if out.len() - line_start > MAX_TOKENS_PER_LINE {
+                return Err(Error::new(
+                    ErrorKind::Syntax,
+                    Span { line: line_no, col: 1, len: 1 },
+                    format!("line too long: expected at most {MAX_TOKENS_PER_LINE} tokens (split the expression with temporaries)"),
+                ));
+            }
             let c = chars[i];
             let col = i as u32 + 1;
             let span = |len: usize| Span { line: line_no, col, len: len as u32 };
@@ -375,6 +396,13 @@ impl Parser {
                 ),
             ));
         };
+        if n > MAX_EXPONENT {
+            return Err(Error::new(
+                ErrorKind::BadPower,
+                t.span,
+                format!("exponent {n} is too large: expected at most {MAX_EXPONENT}"),
+            ));
+        }
         self.bump();
         let mut end = t.span;
         if paren {
@@ -406,6 +434,13 @@ impl Parser {
                     let Tok::Int(k) = d.tok else {
                         return Err(self.err("a history depth (a non-negative integer) after `@`"));
                     };
+                    if k > MAX_HISTORY {
+                        return Err(Error::new(
+                            ErrorKind::Syntax,
+                            d.span,
+                            format!("history depth {k} is too deep: expected at most {MAX_HISTORY}"),
+                        ));
+                    }
                     self.bump();
                     return Ok(Expr { kind: ExprKind::Hist(n, k), span: join(t.span, d.span) });
                 }

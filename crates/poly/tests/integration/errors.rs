@@ -1,1 +1,228 @@
-//! placeholder
+//! Every kind of bad `.zm` input gives an `Err` located at file:line:column,
+//! with its kind and a message saying what was expected; and no input, valid
+//! or not, makes the parser or the derivation panic.
+
+use poly::{ErrorKind, Method};
+use proptest::prelude::*;
+
+/// The declarations most cases start from (lines 1–3).
+const HEAD: &str = "method m\nstate v y\nparam D\n";
+
+/// Parses `src` (as file `bad.zm`) and checks the error's kind, line, column,
+/// that its message contains `says` and states what was expected, and that
+/// the rendered error starts with `bad.zm:line:col:` and puts a caret under
+/// the column.
+#[track_caller]
+fn check(src: &str, kind: ErrorKind, line: u32, col: u32, says: &str) {
+    let err = match Method::parse("bad.zm", src) {
+        Ok(m) => panic!("expected an error, parsed:\n{m}\nfrom:\n{src}"),
+        Err(e) => e,
+    };
+    let shown = err.to_string();
+    assert_eq!(err.kind(), kind, "{shown}");
+    assert_eq!((err.span().line, err.span().col), (line, col), "{shown}");
+    assert_eq!(err.file(), "bad.zm");
+    assert!(err.message().contains(says), "message lacks {says:?}:\n{shown}");
+    assert!(err.message().contains("expected"), "message does not say what was expected:\n{shown}");
+    assert!(shown.starts_with(&format!("bad.zm:{line}:{col}: ")), "{shown}");
+    let lines: Vec<&str> = shown.lines().collect();
+    let source_line = src.lines().nth(line as usize - 1).expect("error line exists");
+    if !source_line.trim().is_empty() {
+        // `N | text` then `  | ^^^` with the caret under column `col`.
+        let text_row = lines.iter().position(|l| l.ends_with(source_line)).expect("source echoed");
+        let caret_row = lines[text_row + 1];
+        let bar = lines[text_row].find(" | ").expect("gutter") + 3;
+        assert_eq!(caret_row.find('^'), Some(bar + col as usize - 1), "caret misplaced:\n{shown}");
+    }
+}
+
+#[test]
+fn unknown_names() {
+    check(&format!("{HEAD}v = v - Phi*q\n"), ErrorKind::UnknownName, 4, 13, "unknown name `q`");
+    check(&format!("{HEAD}v = v - u@1\n"), ErrorKind::UnknownName, 4, 9, "`u@1`");
+    // `omega` is not Phi: the message lists what is defined.
+    check(&format!("{HEAD}v = v - omega*y\n"), ErrorKind::UnknownName, 4, 9, "Phi, D");
+}
+
+#[test]
+fn reading_a_temporary_before_it_is_assigned() {
+    check(
+        &format!("{HEAD}v = v - Phi*t\nt = y\n"),
+        ErrorKind::ReadBeforeAssign,
+        4,
+        13,
+        "`t` is read before it is assigned",
+    );
+    // Its own right-hand side does not count as an earlier assignment.
+    check(&format!("{HEAD}t = t + v\n"), ErrorKind::ReadBeforeAssign, 4, 5, "`t`");
+}
+
+#[test]
+fn nonlinear_terms() {
+    check(&format!("{HEAD}v = v*y\n"), ErrorKind::Nonlinear, 4, 5, "nonlinear");
+    check(&format!("{HEAD}v = v^2\n"), ErrorKind::Nonlinear, 4, 5, "power 2");
+    check(&format!("{HEAD}v = (v + Phi*y)*(y - v)\n"), ErrorKind::Nonlinear, 4, 5, "nonlinear");
+    // Through a temporary, and through history.
+    check(&format!("{HEAD}t = Phi*v\n\ny = t*y@1\n"), ErrorKind::Nonlinear, 6, 5, "nonlinear");
+}
+
+#[test]
+fn bad_divisions() {
+    check(&format!("{HEAD}v = v/y\n"), ErrorKind::BadDivision, 4, 7, "state-dependent");
+    check(&format!("{HEAD}v = v - y/Phi\n"), ErrorKind::BadDivision, 4, 11, "parameter");
+    check(&format!("{HEAD}v = v - y/(1 + D)\n"), ErrorKind::BadDivision, 4, 11, "parameter");
+    check(&format!("{HEAD}v = v/0\n"), ErrorKind::BadDivision, 4, 7, "division by zero");
+    check(&format!("{HEAD}v = v/(2 - 4*0.5)\n"), ErrorKind::BadDivision, 4, 7, "division by zero");
+}
+
+#[test]
+fn bad_powers() {
+    check(&format!("{HEAD}v = Phi^0.5*v\n"), ErrorKind::BadPower, 4, 9, "integer exponent");
+    check(&format!("{HEAD}v = Phi^y*v\n"), ErrorKind::BadPower, 4, 9, "integer exponent");
+    check(&format!("{HEAD}v = Phi^-1*v\n"), ErrorKind::BadPower, 4, 9, "integer exponent");
+    check(&format!("{HEAD}v = v*Phi^\n"), ErrorKind::BadPower, 4, 10, "integer exponent");
+    check(&format!("{HEAD}v = Phi^65*v\n"), ErrorKind::BadPower, 4, 9, "too large");
+}
+
+#[test]
+fn affine_terms() {
+    check(&format!("{HEAD}v = v + 1\n"), ErrorKind::Affine, 4, 5, "does not depend on the state");
+    check(&format!("{HEAD}y = y + Phi*v - D\n"), ErrorKind::Affine, 4, 5, "`-D`");
+    // A state variable set to a parameter-only value is affine too.
+    check(&format!("{HEAD}v = Phi\n"), ErrorKind::Affine, 4, 5, "does not depend on the state");
+}
+
+#[test]
+fn declaration_errors() {
+    use ErrorKind::Declaration as K;
+    check("state v\nv = v\n", K, 1, 1, "missing `method NAME`");
+    check("# nothing but a comment\n", K, 1, 1, "missing `method NAME`");
+    check("method m\nv = v\n", K, 2, 1, "missing `state` line");
+    check("method m\nparam D\n", K, 2, 1, "missing `state` line");
+    check("method m\nstate v v\n", K, 2, 9, "declared twice");
+    check("method m\nstate v\nparam v\n", K, 3, 7, "declared twice");
+    check("method m\nmethod n\nstate v\n", K, 2, 8, "a second `method`");
+    check("method m\nstate v\nstate y\n", K, 3, 1, "a second `state`");
+    check("method m\nstate v\nv = v\nparam D\n", K, 4, 1, "declaration after an assignment");
+    check("method m\nstate v\nPhi = v\n", K, 3, 1, "`Phi` is a parameter");
+    check(&format!("{HEAD}D = v\n"), K, 4, 1, "`D` is a parameter");
+    check("method m\nstate v\nparam Phi\n", K, 3, 7, "`Phi` is always a parameter");
+    check("method m\nstate v z\n", K, 2, 9, "`z` is reserved");
+    check("method m\nstate v\nz = v\n", K, 3, 1, "`z` is reserved");
+}
+
+#[test]
+fn syntax_errors() {
+    use ErrorKind::Syntax as K;
+    check(&format!("{HEAD}v = v -\n"), K, 4, 8, "a number, a name or `(`");
+    check(&format!("{HEAD}v = v * * y\n"), K, 4, 9, "a number, a name or `(`");
+    check(&format!("{HEAD}v = (v - Phi*y\n"), K, 4, 15, "`)`");
+    check(&format!("{HEAD}v = v - Phi*y)\n"), K, 4, 14, "the end of the line");
+    check(&format!("{HEAD}v = v $ y\n"), K, 4, 7, "unexpected character `$`");
+    check(&format!("{HEAD}v = v - Phi*y@\n"), K, 4, 15, "history depth");
+    check(&format!("{HEAD}v = v - Phi*y@x\n"), K, 4, 15, "history depth");
+    check(&format!("{HEAD}v = v - Phi*y@33\n"), K, 4, 15, "too deep");
+    check(&format!("{HEAD}v = v - Phi@1*y\n"), K, 4, 9, "not a state variable");
+    check(&format!("{HEAD}v v\n"), K, 4, 3, "`=`");
+    check(&format!("{HEAD}= v\n"), K, 4, 1, "an assignment");
+    check("method\nstate v\n", K, 1, 7, "the method's name");
+    check("method m\nstate\n", K, 2, 6, "state variable names");
+    check(&format!("{HEAD}v = 2.5e\n"), K, 4, 5, "digits after the exponent");
+    check(&format!("{HEAD}v = 2Phi*v\n"), K, 4, 5, "runs into a name");
+    check(&format!("{HEAD}v = state*v\n"), K, 4, 5, "keywords");
+    let long = format!("{HEAD}v = v{}\n", " + v".repeat(600));
+    check(&long, K, 4, 1, "line too long");
+}
+
+/// An error on a later line after blank lines and comments still points at
+/// the right place.
+#[test]
+fn locations_count_blank_lines_and_comments() {
+    let src = "# header\n\nmethod m   # name\nstate v y\n\n# the step\nv = v - Phi*y\ny = y + Phi*v*y   # oops\n";
+    check(src, ErrorKind::Nonlinear, 8, 9, "nonlinear");
+}
+
+/// `Poly::parse` reports its errors with the same location scheme.
+#[test]
+fn polynomial_parse_errors_are_located() {
+    let e = poly::Poly::parse("z^2 - 2*p*z + ").expect_err("dangling operator");
+    assert_eq!(e.kind(), ErrorKind::Syntax);
+    assert_eq!((e.span().line, e.span().col), (1, 15));
+    assert!(e.to_string().starts_with("<expression>:1:15: expected"), "{e}");
+    let e = poly::Poly::parse("1/(Phi - 1)").expect_err("division by a polynomial");
+    assert_eq!(e.kind(), ErrorKind::BadDivision);
+}
+
+/// Random text over the language's alphabet and random edits of the
+/// built-in sources: parsing returns Ok or Err and never panics, and every
+/// program that parses derives with both routes agreeing.
+mod fuzz {
+    use super::*;
+
+    const PIECES: &[&str] = &[
+        "method", "state", "param", "m", "v", "y", "t", "D", "Phi", "z", "@", "@1", "@2", "0", "1",
+        "2", "0.5", "1e3", ".25", "+", "-", "*", "/", "^", "^2", "(", ")", "=", "#", " ", " ", "\n",
+        "\n", "$", "é", "\t", "\r\n", "99999999999",
+    ];
+
+    fn no_panic(src: &str) {
+        if let Ok(m) = Method::parse("fuzz.zm", src) {
+            poly::derive(&m).unwrap_or_else(|e| panic!("{e}\nfrom:\n{src}"));
+        }
+        let _ = poly::Poly::parse(src);
+    }
+
+    fn edited_builtin() -> impl Strategy<Value = String> {
+        let names: Vec<&'static str> = poly::builtin_names().collect();
+        let edit = (any::<prop::sample::Index>(), 0usize..4, prop::sample::select(PIECES));
+        (prop::sample::select(names), proptest::collection::vec(edit, 1..=4)).prop_map(
+            |(name, edits)| {
+                let mut chars: Vec<char> =
+                    poly::builtin_source(name).expect("built-in").chars().collect();
+                for (at, what, piece) in edits {
+                    let i = at.index(chars.len() + 1);
+                    match what {
+                        0 if i < chars.len() => {
+                            chars.remove(i);
+                        }
+                        1 if i < chars.len() => chars[i] = piece.chars().next().unwrap_or(' '),
+                        _ => {
+                            for (k, c) in piece.chars().enumerate() {
+                                chars.insert(i + k, c);
+                            }
+                        }
+                    }
+                }
+                chars.into_iter().collect()
+            },
+        )
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(512))]
+
+        #[test]
+        fn random_token_soup_never_panics(
+            pieces in proptest::collection::vec(prop::sample::select(PIECES), 0..40)
+        ) {
+            no_panic(&pieces.concat());
+        }
+
+        #[test]
+        fn a_method_head_then_random_tokens_never_panics(
+            pieces in proptest::collection::vec(prop::sample::select(PIECES), 0..30)
+        ) {
+            no_panic(&format!("{HEAD}v = {}\n", pieces.concat()));
+        }
+
+        #[test]
+        fn arbitrary_strings_never_panic(s in "\\PC{0,80}") {
+            no_panic(&s);
+        }
+
+        #[test]
+        fn edited_builtins_never_panic(src in edited_builtin()) {
+            no_panic(&src);
+        }
+    }
+}
