@@ -79,8 +79,8 @@ fn history_zero_is_the_start_value() {
 /// coefficients that read it (Appendix B's `D:=0.5*woT`).
 #[test]
 fn parameter_only_temporaries_fold() {
-    let folded = Method::parse("a.zm", "method m\nstate v y\nk = 0.5*Phi\nv = v - k*y\n")
-        .expect("parses");
+    let folded =
+        Method::parse("a.zm", "method m\nstate v y\nk = 0.5*Phi\nv = v - k*y\n").expect("parses");
     let direct = Method::parse("b.zm", "method m\nstate v y\nv = v - Phi/2*y\n").expect("parses");
     let lowered = |m: &Method| -> Vec<_> {
         m.assigns().iter().map(|a| (a.target.clone(), a.terms.clone())).collect()

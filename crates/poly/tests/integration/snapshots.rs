@@ -23,11 +23,8 @@ fn record(name: &str) -> String {
         let row: Vec<String> = d.z_matrix.row(i).iter().map(Derivation::z_entry_string).collect();
         s += &format!("  [{}]\n", row.join(", "));
     }
-    let slots: Vec<String> = m
-        .slots()
-        .iter()
-        .map(|&(var, lag)| m.operand_name(Operand::Start { var, lag }))
-        .collect();
+    let slots: Vec<String> =
+        m.slots().iter().map(|&(var, lag)| m.operand_name(Operand::Start { var, lag })).collect();
     s += &format!("\nP on ({}):\n", slots.join(", "));
     for i in 0..d.transition_matrix.rows() {
         let row: Vec<String> = d.transition_matrix.row(i).iter().map(ToString::to_string).collect();
