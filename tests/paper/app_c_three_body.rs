@@ -125,8 +125,8 @@ fn force_law_is_inverse_distance() {
         [(ForceLaw::InverseDistance, 1.0), (ForceLaw::InverseSquare, 1.0 / 3f64.sqrt())]
     {
         let a = state.acceleration(law);
-        for b in 0..3 {
-            let inward = -(a[b][0] * state.position[b][0] + a[b][1] * state.position[b][1]);
+        for (b, (ab, pb)) in a.iter().zip(&state.position).enumerate() {
+            let inward = -(ab[0] * pb[0] + ab[1] * pb[1]);
             assert!((inward - expected).abs() <= 8.0 * f64::EPSILON, "{law:?} body {b}: {inward}");
         }
     }

@@ -209,9 +209,8 @@ fn symmetric_start_gives_a_circle_only_with_tangential_velocities() {
     assert_eq!(state.angular_momentum(), 0.0);
     let mut k = 0;
     while k < 1000 && state.position.iter().flatten().all(|x| x.is_finite()) {
-        for b in 0..3 {
-            let p = state.position[b];
-            let off_ray = p[0] * rays[b][1] - p[1] * rays[b][0];
+        for (b, (p, ray)) in state.position.iter().zip(&rays).enumerate() {
+            let off_ray = p[0] * ray[1] - p[1] * ray[0];
             assert!(
                 off_ray.abs() <= 1e-12 * (1.0 + p[0].hypot(p[1])),
                 "step {k} body {b}: {off_ray}"

@@ -7,7 +7,7 @@ use std::process::ExitCode;
 pub struct Args {}
 
 pub fn run(_: Args) -> anyhow::Result<ExitCode> {
-    println!("{:<24} {:>5}  {:<8} {}", "method", "order", "params", "first comment line");
+    println!("{:<24} {:>5}  {:<8} first comment line", "method", "order", "params");
     for name in poly::builtin_names() {
         let m = poly::builtin(name)?;
         let src = poly::builtin_source(name).unwrap_or_default();
