@@ -12,17 +12,6 @@ use poly::series::{self, LeadingTerm};
 use poly::{Poly, Q};
 use serde::Serialize;
 
-/// The direct-integration built-ins of sections 5–11 (their `_matrix`
-/// twins have identical transition matrices, as the proof shows).
-pub const PAPER_METHODS: [&str; 7] = [
-    "standard_euler",
-    "damped_euler",
-    "false_euler",
-    "verlet",
-    "standard_heun",
-    "false_heun",
-    "semi_false_heun",
-];
 
 /// One row of the overview.
 #[derive(Clone, Debug, Serialize)]
@@ -128,7 +117,7 @@ pub fn summarize(method: &poly::Method, order: usize) -> Result<MethodSummary, O
 
 /// The overview of the paper's seven methods.
 pub fn paper_overview(order: usize) -> Result<Vec<MethodSummary>, OverviewError> {
-    PAPER_METHODS
+    poly::PAPER_METHODS
         .iter()
         .map(|name| summarize(&poly::builtin(name).map_err(err)?, order))
         .collect()

@@ -50,16 +50,6 @@ fn draw_err(path: &Path) -> impl Fn(&dyn std::error::Error) -> PlotError + '_ {
     move |e| PlotError::Draw { path: path.display().to_string(), message: e.to_string() }
 }
 
-/// The methods of sections 5–11, in the paper's order.
-pub const SECTION_METHODS: [&str; 7] = [
-    "standard_euler",
-    "damped_euler",
-    "false_euler",
-    "verlet",
-    "standard_heun",
-    "false_heun",
-    "semi_false_heun",
-];
 
 /// The samples (t_k, y_k), k = 0..=n_steps, of `method` at `params` from
 /// v₀ = 0, y₀ = 1 (the variable named `y`, else the last state variable,

@@ -25,6 +25,18 @@ pub const BUILTINS: &[(&str, &str)] = &[
     ("semi_false_heun_matrix", include_str!("../methods/semi_false_heun_matrix.zm")),
 ];
 
+/// The direct-integration built-ins of sections 5–11, one per method the
+/// paper analyses, in the paper's order (no `_matrix` twins, no free `D`).
+pub const PAPER_METHODS: [&str; 7] = [
+    "standard_euler",
+    "damped_euler",
+    "false_euler",
+    "verlet",
+    "standard_heun",
+    "false_heun",
+    "semi_false_heun",
+];
+
 /// The names of the built-in methods, in the paper's order.
 pub fn builtin_names() -> impl Iterator<Item = &'static str> {
     BUILTINS.iter().map(|(n, _)| *n)

@@ -36,7 +36,9 @@ mod syntax;
 mod upoly;
 
 pub use crate::algebraic::Algebraic;
-pub use crate::builtins::{builtin, builtin_names, builtin_source, direct_twin, BUILTINS};
+pub use crate::builtins::{
+    builtin, builtin_names, builtin_source, direct_twin, BUILTINS, PAPER_METHODS,
+};
 pub use crate::class::RootClass;
 pub mod cost;
 pub use crate::cost::{step_cost, OpCount, StepCost};

@@ -6,7 +6,7 @@ use std::process::ExitCode;
 
 use anyhow::{bail, Context};
 use check::numeric::Params;
-use check::plot::{yt_figure, yt_grid, zplane_figure, SECTION_METHODS};
+use check::plot::{yt_figure, yt_grid, zplane_figure};
 
 /// Arguments of `zcheck plot`.
 #[derive(clap::Args)]
@@ -47,7 +47,7 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
         bail!("--t-max {}: expected a positive span of at most 1e6 steps", args.t_max);
     }
     let names: Vec<String> = if args.methods.is_empty() {
-        SECTION_METHODS.iter().map(|s| s.to_string()).collect()
+        poly::PAPER_METHODS.iter().map(|s| s.to_string()).collect()
     } else {
         args.methods.clone()
     };

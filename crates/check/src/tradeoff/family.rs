@@ -231,15 +231,7 @@ pub fn undamped_family() -> Result<Vec<Candidate>, TradeoffError> {
 
 /// The seven direct methods of sections 5–11 (no transition-matrix twins).
 pub fn direct_names() -> [&'static str; 7] {
-    [
-        "standard_euler",
-        "damped_euler",
-        "false_euler",
-        "verlet",
-        "standard_heun",
-        "false_heun",
-        "semi_false_heun",
-    ]
+    poly::PAPER_METHODS
 }
 
 /// The seven direct methods applied to a spring with damping ratio `d`

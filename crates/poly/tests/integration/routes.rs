@@ -354,14 +354,15 @@ fn det_q(mut a: Vec<Vec<Q>>) -> Q {
             det = -det;
         }
         det *= &a[col][col];
-        for r in col + 1..n {
-            let f = &a[r][col] / &a[col][col];
+        let (above, below) = a.split_at_mut(col + 1);
+        let pivot_row = &above[col];
+        for row in below {
+            let f = &row[col] / &pivot_row[col];
             if f.is_zero() {
                 continue;
             }
-            for c in col..n {
-                let sub = &f * &a[col][c];
-                a[r][c] -= sub;
+            for (x, p) in row.iter_mut().zip(pivot_row).skip(col) {
+                *x -= &f * p;
             }
         }
     }
