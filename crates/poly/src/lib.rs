@@ -8,6 +8,12 @@
 //! polynomials over named symbols ([`Poly`]), dense univariate polynomials
 //! ([`UPoly`]) and polynomial matrices ([`PolyMatrix`]).
 //!
+//! On top of the derivation sit the exact analyses: [`stability`] (Sturm
+//! sequences over Q, exact algebraic stability limits and class changes in
+//! Φ, decided without any float), [`series`] (Taylor series of Ψ(Φ) and
+//! |z|² by exact power-series arithmetic) and [`cost`] (operations per step
+//! under a stated constant-folding model).
+//!
 //! This crate never touches `f64` and never does I/O; numeric work lives in
 //! the `check` crate.
 //!
@@ -23,6 +29,7 @@
 mod algebraic;
 mod builtins;
 mod class;
+pub mod cost;
 mod derive;
 mod error;
 mod matrix;
@@ -40,7 +47,6 @@ pub use crate::builtins::{
     builtin, builtin_names, builtin_source, direct_twin, BUILTINS, PAPER_METHODS,
 };
 pub use crate::class::RootClass;
-pub mod cost;
 pub use crate::cost::{step_cost, OpCount, StepCost};
 pub use crate::derive::{
     charpoly, charpoly_state_route, charpoly_z_route, derive, transition_matrix, w, z_matrix,
