@@ -12,7 +12,6 @@ use poly::series::{self, LeadingTerm};
 use poly::{Poly, Q};
 use serde::Serialize;
 
-
 /// One row of the overview.
 #[derive(Clone, Debug, Serialize)]
 pub struct MethodSummary {

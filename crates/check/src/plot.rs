@@ -50,7 +50,6 @@ fn draw_err(path: &Path) -> impl Fn(&dyn std::error::Error) -> PlotError + '_ {
     move |e| PlotError::Draw { path: path.display().to_string(), message: e.to_string() }
 }
 
-
 /// The samples (t_k, y_k), k = 0..=n_steps, of `method` at `params` from
 /// v₀ = 0, y₀ = 1 (the variable named `y`, else the last state variable,
 /// starts at 1; the others at 0).

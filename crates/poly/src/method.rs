@@ -128,7 +128,10 @@ impl Lowerer<'_> {
     fn describe_names(&self) -> String {
         let st = self.state.join(", ");
         let pa: Vec<&str> = self.params.iter().map(|s| s.name()).collect();
-        format!("a state variable ({st}), a parameter ({}) or a temporary assigned above", pa.join(", "))
+        format!(
+            "a state variable ({st}), a parameter ({}) or a temporary assigned above",
+            pa.join(", ")
+        )
     }
 
     fn lower(&mut self, e: &Expr) -> Result<Lin, Error> {
@@ -192,7 +195,8 @@ impl Lowerer<'_> {
                             ));
                         }
                         let Some(c) = b.scalar.as_constant() else {
-                            let names: Vec<&str> = b.scalar.symbols().iter().map(|s| s.name()).collect();
+                            let names: Vec<&str> =
+                                b.scalar.symbols().iter().map(|s| s.name()).collect();
                             return Err(Error::new(
                                 ErrorKind::BadDivision,
                                 r.span,
@@ -284,14 +288,20 @@ impl Method {
                         return Err(decl_err(span, "a second `method` line: expected exactly one"));
                     }
                     if !assigns_src.is_empty() || state.is_some() {
-                        return Err(decl_err(span, "`method` comes after other lines: expected it first"));
+                        return Err(decl_err(
+                            span,
+                            "`method` comes after other lines: expected it first",
+                        ));
                     }
                     name = Some(n);
                 }
                 Item::State(names, span) | Item::Param(names, span) => {
                     let is_state = matches!(item_kind, ItemKind::State);
                     if name.is_none() {
-                        return Err(decl_err(span, "missing `method NAME` line: expected it before `state` and `param`"));
+                        return Err(decl_err(
+                            span,
+                            "missing `method NAME` line: expected it before `state` and `param`",
+                        ));
                     }
                     if !assigns_src.is_empty() {
                         return Err(decl_err(span, "declaration after an assignment: expected `state` and `param` lines before the first assignment"));
@@ -302,7 +312,10 @@ impl Method {
                     let mut vars = Vec::new();
                     for (n, s) in names {
                         if n == "Phi" {
-                            return Err(decl_err(s, "`Phi` is always a parameter: expected it not to be declared"));
+                            return Err(decl_err(
+                                s,
+                                "`Phi` is always a parameter: expected it not to be declared",
+                            ));
                         }
                         if n == "z" {
                             return Err(decl_err(s, "`z` is reserved for the z-transform variable: expected another name"));
@@ -321,7 +334,10 @@ impl Method {
                 }
                 Item::Assign { target, target_span, expr, line_text } => {
                     if name.is_none() {
-                        return Err(decl_err(target_span, "missing `method NAME` line: expected it before the first assignment"));
+                        return Err(decl_err(
+                            target_span,
+                            "missing `method NAME` line: expected it before the first assignment",
+                        ));
                     }
                     if state.is_none() {
                         return Err(decl_err(target_span, "missing `state` line: expected `state NAME...` before the first assignment"));
@@ -331,8 +347,15 @@ impl Method {
             }
         }
         let eof = Span { line: src.lines().count().max(1) as u32, col: 1, len: 1 };
-        let name = name.ok_or_else(|| decl_err(eof, "missing `method NAME` line: expected one naming the method"))?;
-        let state = state.ok_or_else(|| decl_err(eof, "missing `state` line: expected `state NAME...` listing the state variables"))?;
+        let name = name.ok_or_else(|| {
+            decl_err(eof, "missing `method NAME` line: expected one naming the method")
+        })?;
+        let state = state.ok_or_else(|| {
+            decl_err(
+                eof,
+                "missing `state` line: expected `state NAME...` listing the state variables",
+            )
+        })?;
 
         let mut assigned_anywhere = HashMap::new();
         for (t, s, _, _) in &assigns_src {
@@ -340,7 +363,10 @@ impl Method {
                 return Err(decl_err(*s, format!("`{t}` is a parameter and cannot be assigned: expected a state variable or a temporary")));
             }
             if t == "z" {
-                return Err(decl_err(*s, "`z` is reserved for the z-transform variable: expected another name"));
+                return Err(decl_err(
+                    *s,
+                    "`z` is reserved for the z-transform variable: expected another name",
+                ));
             }
             assigned_anywhere.entry(t.clone()).or_insert(s.line);
         }
@@ -383,7 +409,12 @@ impl Method {
                     Target::Temp(t)
                 }
             };
-            assigns.push(Assign { target, terms: lin.terms.into_iter().collect(), line: tspan.line, text });
+            assigns.push(Assign {
+                target,
+                terms: lin.terms.into_iter().collect(),
+                line: tspan.line,
+                text,
+            });
         }
         let history = lw.history;
         Ok(Method { name, state, params, assigns, history })

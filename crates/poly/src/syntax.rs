@@ -117,7 +117,8 @@ fn lex(src: &str) -> Result<Vec<Token>, Error> {
                 out.push(Token { tok: Tok::Name(name), span: span(i - start) });
                 continue;
             }
-            if c.is_ascii_digit() || (c == '.' && chars.get(i + 1).is_some_and(char::is_ascii_digit))
+            if c.is_ascii_digit()
+                || (c == '.' && chars.get(i + 1).is_some_and(char::is_ascii_digit))
             {
                 let start = i;
                 let (tok, len) = lex_number(&chars[start..]).map_err(|msg| {
@@ -438,7 +439,9 @@ impl Parser {
                         return Err(Error::new(
                             ErrorKind::Syntax,
                             d.span,
-                            format!("history depth {k} is too deep: expected at most {MAX_HISTORY}"),
+                            format!(
+                                "history depth {k} is too deep: expected at most {MAX_HISTORY}"
+                            ),
                         ));
                     }
                     self.bump();
@@ -506,7 +509,11 @@ fn to_poly(e: &Expr) -> Result<crate::Poly, Error> {
         ExprKind::Num(q) => Poly::constant(q.clone()),
         ExprKind::Name(n) => Poly::var(n),
         ExprKind::Hist(..) => {
-            return Err(Error::new(ErrorKind::Syntax, e.span, "expected a polynomial, found a history read `@`"))
+            return Err(Error::new(
+                ErrorKind::Syntax,
+                e.span,
+                "expected a polynomial, found a history read `@`",
+            ))
         }
         ExprKind::Neg(x) => -to_poly(x)?,
         ExprKind::Pow(b, n) => to_poly(b)?.pow(*n),

@@ -162,7 +162,11 @@ impl UPoly {
     /// `p(-x)`.
     pub fn negate_x(&self) -> UPoly {
         UPoly::new(
-            self.c.iter().enumerate().map(|(k, c)| if k % 2 == 1 { -c } else { c.clone() }).collect(),
+            self.c
+                .iter()
+                .enumerate()
+                .map(|(k, c)| if k % 2 == 1 { -c } else { c.clone() })
+                .collect(),
         )
     }
 

@@ -66,7 +66,8 @@ pub fn text(d: &Derivation) -> String {
     use std::fmt::Write;
     let m = &d.method;
     let mut s = String::new();
-    let _ = writeln!(s, "method {}   state ({})   order {}", m.name(), m.state().join(", "), m.order());
+    let _ =
+        writeln!(s, "method {}   state ({})   order {}", m.name(), m.state().join(", "), m.order());
     let _ = writeln!(s, "\nlowered step (%k = value of assignment k; bare names = start of step):");
     for line in m.to_string().lines().skip(3) {
         let _ = writeln!(s, "  {line}");
