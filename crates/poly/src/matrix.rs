@@ -193,18 +193,136 @@ impl PolyMatrix {
     }
 }
 
-/// A dense polynomial with integer coefficients, lowest power first, no
-/// trailing zeros (zero is empty).
-type Dense = Vec<i128>;
+/// Dense integer polynomials in one flat buffer. Slot `i` holds its
+/// coefficients, lowest power first and without trailing zeros, in
+/// `coeffs[i * stride..i * stride + len[i]]`, and `norm[i]` is their 1-norm
+/// (the sum of absolute values, saturating). One buffer serves a whole
+/// Berkowitz run, so the hot loop allocates nothing.
+struct DenseBuffer {
+    stride: usize,
+    coeffs: Vec<i128>,
+    len: Vec<usize>,
+    norm: Vec<u128>,
+}
+
+impl DenseBuffer {
+    fn new(slots: usize, stride: usize) -> DenseBuffer {
+        DenseBuffer {
+            stride,
+            coeffs: vec![0; slots * stride],
+            len: vec![0; slots],
+            norm: vec![0; slots],
+        }
+    }
+
+    fn get(&self, i: usize) -> &[i128] {
+        &self.coeffs[i * self.stride..i * self.stride + self.len[i]]
+    }
+
+    /// Slot `i` with its 1-norm, the operand form [`sum_of_products`] takes.
+    fn operand(&self, i: usize) -> (&[i128], u128) {
+        (self.get(i), self.norm[i])
+    }
+
+    fn set(&mut self, i: usize, value: &[i128]) {
+        let base = i * self.stride;
+        self.coeffs[base..base + value.len()].copy_from_slice(value);
+        self.len[i] = value.len();
+        self.finish(i);
+    }
+
+    /// Negates slot `i`; `None` when it holds `i128::MIN`.
+    fn negate(&mut self, i: usize) -> Option<()> {
+        let base = i * self.stride;
+        for x in &mut self.coeffs[base..base + self.len[i]] {
+            *x = x.checked_neg()?;
+        }
+        Some(())
+    }
+
+    /// Drops trailing zeros of slot `i` and recomputes its 1-norm.
+    fn finish(&mut self, i: usize) {
+        let base = i * self.stride;
+        let mut len = self.len[i];
+        while len > 0 && self.coeffs[base + len - 1] == 0 {
+            len -= 1;
+        }
+        self.len[i] = len;
+        self.norm[i] = self.coeffs[base..base + len]
+            .iter()
+            .fold(0u128, |s, x| s.saturating_add(x.unsigned_abs()));
+    }
+}
+
+/// How the dense path did its arithmetic, so the tests can see which
+/// branch ran.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Arithmetic {
+    /// Every sum of products was proven in range beforehand.
+    Bounded,
+    /// At least one needed overflow-checked arithmetic (and none overflowed).
+    Checked,
+}
+
+/// `out[slot] = Σ a·b` over the operand pairs `pairs()` yields (each with
+/// its 1-norm), or `None` when a coefficient overflows `i128`.
+///
+/// Each coefficient of the result, and each partial sum on the way, is at
+/// most `Σ ‖a‖₁‖b‖₁` in absolute value. When that bound fits in `i128` the
+/// products run with plain wrapping arithmetic, which is then exact (and
+/// several times faster than checked `i128` multiplication); otherwise every
+/// step is checked. `checked` records that the slow branch ran.
+fn sum_of_products<'a, I>(
+    out: &mut DenseBuffer,
+    slot: usize,
+    pairs: impl Fn() -> I,
+    checked: &mut bool,
+) -> Option<()>
+where
+    I: Iterator<Item = ((&'a [i128], u128), (&'a [i128], u128))>,
+{
+    let bound =
+        pairs().fold(0u128, |s, ((_, na), (_, nb))| s.saturating_add(na.saturating_mul(nb)));
+    let in_range = bound <= i128::MAX as u128;
+    *checked |= !in_range;
+    let base = slot * out.stride;
+    let mut len = 0;
+    for ((a, _), (b, _)) in pairs() {
+        if a.is_empty() || b.is_empty() {
+            continue;
+        }
+        let need = a.len() + b.len() - 1;
+        if need > len {
+            out.coeffs[base + len..base + need].fill(0);
+            len = need;
+        }
+        let acc = &mut out.coeffs[base..base + len];
+        if in_range {
+            mul_add_wrapping(acc, a, b);
+        } else {
+            mul_add_checked(acc, a, b)?;
+        }
+    }
+    out.len[slot] = len;
+    out.finish(slot);
+    Some(())
+}
+
+/// `acc += a * b`, wrapping; exact when the caller has bounded the result.
+#[inline]
+fn mul_add_wrapping(acc: &mut [i128], a: &[i128], b: &[i128]) {
+    for (i, &x) in a.iter().enumerate() {
+        if x == 0 {
+            continue;
+        }
+        for (slot, &y) in acc[i..].iter_mut().zip(b) {
+            *slot = slot.wrapping_add(x.wrapping_mul(y));
+        }
+    }
+}
 
 /// `acc += a * b`, or `None` on overflow.
-fn mul_add(acc: &mut Dense, a: &[i128], b: &[i128]) -> Option<()> {
-    if a.is_empty() || b.is_empty() {
-        return Some(());
-    }
-    if acc.len() < a.len() + b.len() - 1 {
-        acc.resize(a.len() + b.len() - 1, 0);
-    }
+fn mul_add_checked(acc: &mut [i128], a: &[i128], b: &[i128]) -> Option<()> {
     for (i, &x) in a.iter().enumerate() {
         if x == 0 {
             continue;
@@ -213,103 +331,135 @@ fn mul_add(acc: &mut Dense, a: &[i128], b: &[i128]) -> Option<()> {
             *slot = slot.checked_add(x.checked_mul(y)?)?;
         }
     }
-    while acc.last() == Some(&0) {
-        acc.pop();
-    }
     Some(())
-}
-
-fn negate(a: &[i128]) -> Option<Dense> {
-    a.iter().map(|x| x.checked_neg()).collect()
 }
 
 /// The univariate fast path of [`PolyMatrix::charpoly_berkowitz`]: `None`
 /// when the entries involve two or more symbols, or when a coefficient
 /// overflows `i128` at any step.
 fn charpoly_univariate(a: &PolyMatrix) -> Option<Vec<Poly>> {
+    charpoly_univariate_with_arithmetic(a).map(|(c, _)| c)
+}
+
+/// [`charpoly_univariate`], also saying which arithmetic it needed.
+fn charpoly_univariate_with_arithmetic(a: &PolyMatrix) -> Option<(Vec<Poly>, Arithmetic)> {
     let mut sym: Option<Sym> = None;
-    let mut lcm = BigInt::one();
+    let mut degree = 0usize;
+    // The lcm L of all denominators. A denominator or numerator beyond i128
+    // would make some scaled coefficient overflow, so it ends the fast path.
+    let mut scale: i128 = 1;
     for e in &a.data {
         for (m, c) in e.terms() {
-            for &(s, _) in m.factors() {
+            for &(s, k) in m.factors() {
                 match sym {
                     None => sym = Some(s),
                     Some(t) if t != s => return None,
                     Some(_) => {}
                 }
+                degree = degree.max(k as usize);
             }
-            lcm = lcm.lcm(c.denom());
+            let d = c.denom().to_i128()?;
+            scale = scale.checked_mul(d / scale.gcd(&d))?;
         }
     }
-    let scale = lcm.to_i128()?;
-    let exponent = |m: &Monomial| sym.map_or(0, |s| m.exponent(s)) as usize;
-    let mut dense = Vec::with_capacity(a.data.len());
-    for e in &a.data {
-        let mut d: Dense = Vec::new();
+    let n = a.rows;
+    let mut entries = DenseBuffer::new(n * n, degree + 1);
+    let mut scratch = vec![0i128; degree + 1];
+    for (slot, e) in a.data.iter().enumerate() {
+        scratch.fill(0);
+        let mut len = 0;
         for (m, c) in e.terms() {
-            let k = exponent(m);
-            if d.len() <= k {
-                d.resize(k + 1, 0);
-            }
-            d[k] = (c.numer() * (&lcm / c.denom())).to_i128()?;
+            let k = sym.map_or(0, |s| m.exponent(s)) as usize;
+            let numer = c.numer().to_i128()?;
+            let denom = c.denom().to_i128()?;
+            scratch[k] = numer.checked_mul(scale / denom)?;
+            len = len.max(k + 1);
         }
-        dense.push(d);
+        entries.set(slot, &scratch[..len]);
     }
-    let c = berkowitz_dense(a.rows, &dense)?;
-    // c_k(A) = c_k(LA) / L^k.
-    let mut power = BigInt::one();
-    let mut out = Vec::with_capacity(c.len());
-    for ck in c {
-        out.push(Poly::from_terms(ck.into_iter().enumerate().filter(|(_, x)| *x != 0).map(
-            |(k, x)| {
-                let m = sym.map_or_else(Monomial::one, |s| Monomial::power(s, k as u32));
-                (Q::new(BigInt::from(x), power.clone()), m)
-            },
-        )));
-        power *= scale;
+    let (c, arithmetic) = berkowitz_dense(n, degree, &entries)?;
+    // c_k(A) = c_k(LA) / L^k. While L^k fits in i128 the fraction is
+    // reduced there; beyond, BigRational reduces it.
+    let mut power = Some(1i128);
+    let mut big_power = BigInt::one();
+    let mut out = Vec::with_capacity(n + 1);
+    for k in 0..=n {
+        let terms = c.get(k).iter().enumerate().filter(|(_, x)| **x != 0).map(|(e, &x)| {
+            let coefficient = match power {
+                Some(1) => Q::from_integer(BigInt::from(x)),
+                Some(p) => {
+                    let g = x.unsigned_abs().gcd(&(p as u128)) as i128;
+                    Q::new_raw(BigInt::from(x / g), BigInt::from(p / g))
+                }
+                None => Q::new(BigInt::from(x), big_power.clone()),
+            };
+            let m = sym.map_or_else(Monomial::one, |s| Monomial::power(s, e as u32));
+            (coefficient, m)
+        });
+        out.push(Poly::from_terms(terms));
+        power = power.and_then(|p| p.checked_mul(scale));
+        big_power *= scale;
     }
-    Some(out)
+    Some((out, arithmetic))
 }
 
-/// Berkowitz on dense integer polynomials, row-major `n×n` entries; the same
-/// recurrence as the sparse path.
-fn berkowitz_dense(n: usize, a: &[Dense]) -> Option<Vec<Dense>> {
-    let at = |i: usize, j: usize| &a[i * n + j];
-    let mut c: Vec<Dense> = vec![vec![1]];
+/// Berkowitz on dense integer polynomials of degree at most `degree`,
+/// row-major `n×n` entries in `a`; the same recurrence as the sparse path.
+/// Returns the buffer whose slot `k` is `c_k`.
+fn berkowitz_dense(n: usize, degree: usize, a: &DenseBuffer) -> Option<(DenseBuffer, Arithmetic)> {
+    // Every polynomial below (M^k S, R M^k S, c_k) has degree at most
+    // n·degree, so one stride fits all.
+    let stride = n * degree + 1;
+    let mut checked = false;
+    let mut c = DenseBuffer::new(n + 2, stride);
+    let mut next = DenseBuffer::new(n + 2, stride);
+    let mut col = DenseBuffer::new(n + 2, stride);
+    let mut v = DenseBuffer::new(n, stride);
+    let mut w = DenseBuffer::new(n, stride);
+    c.set(0, &[1]);
     for r in 0..n {
-        let mut col: Vec<Dense> = Vec::with_capacity(r + 2);
-        col.push(vec![1]);
-        col.push(negate(at(r, r))?);
-        let mut v: Vec<Dense> = (0..r).map(|i| at(i, r).clone()).collect();
+        // Leading principal block of size r+1 = [[M, S], [R, a_rr]].
+        // The Toeplitz column is 1, -a_rr, -R S, -R M S, ..., -R M^(r-1) S.
+        col.set(0, &[1]);
+        col.set(1, a.get(r * n + r));
+        col.negate(1)?;
+        for i in 0..r {
+            v.set(i, a.get(i * n + r));
+        }
         for k in 0..r {
-            let mut dot = Dense::new();
-            for (j, vj) in v.iter().enumerate() {
-                mul_add(&mut dot, at(r, j), vj)?;
-            }
-            col.push(negate(&dot)?);
+            let (vv, row) = (&v, r * n);
+            sum_of_products(
+                &mut col,
+                k + 2,
+                || (0..r).map(move |j| (a.operand(row + j), vv.operand(j))),
+                &mut checked,
+            )?;
+            col.negate(k + 2)?;
             if k + 1 < r {
-                let mut next = Vec::with_capacity(r);
                 for i in 0..r {
-                    let mut s = Dense::new();
-                    for (j, vj) in v.iter().enumerate() {
-                        mul_add(&mut s, at(i, j), vj)?;
-                    }
-                    next.push(s);
+                    sum_of_products(
+                        &mut w,
+                        i,
+                        || (0..r).map(move |j| (a.operand(i * n + j), vv.operand(j))),
+                        &mut checked,
+                    )?;
                 }
-                v = next;
+                std::mem::swap(&mut v, &mut w);
             }
         }
-        let mut next = Vec::with_capacity(r + 2);
         for i in 0..r + 2 {
-            let mut s = Dense::new();
-            for (j, cj) in c.iter().enumerate().take(i + 1) {
-                mul_add(&mut s, &col[i - j], cj)?;
-            }
-            next.push(s);
+            let (cc, cl) = (&c, &col);
+            sum_of_products(
+                &mut next,
+                i,
+                || (0..=i.min(r)).map(move |j| (cl.operand(i - j), cc.operand(j))),
+                &mut checked,
+            )?;
         }
-        c = next;
+        std::mem::swap(&mut c, &mut next);
     }
-    Some(c)
+    let arithmetic = if checked { Arithmetic::Checked } else { Arithmetic::Bounded };
+    Some((c, arithmetic))
 }
 
 impl Index<(usize, usize)> for PolyMatrix {
