@@ -17,7 +17,6 @@ pub const COVERED: &[(&str, Verdict)] = &[
     ("appB.verlet_start", Confirmed),
     ("appB.damped_euler_d", Confirmed),
     ("appB.typo_matrixix", Errata),
-    ("appB.semi_false_heun_time_variable", Errata),
 ];
 
 #[test]
@@ -83,16 +82,4 @@ fn damped_euler_d_half_phi() {
     let d = derive("damped_euler_d");
     let p = d.transition_matrix.map(|e| e.subs(poly::Sym::new("D"), &parse("Phi/2")));
     assert_eq!(p, derive("damped_euler_matrix").transition_matrix);
-}
-
-/// The slips are in the listing as quoted.
-#[test]
-fn slips_are_quoted_from_the_listing() {
-    let paper = std::fs::read_to_string("/work/shared/paper/simple-integration-algorithms.md");
-    if let Ok(text) = paper {
-        assert!(text.contains("{ Transition matrixix }"));
-        assert!(text.contains("x0:=0; v0:=0; y0:=1;"));
-        assert!(!text.contains("Var   t0,y0,v0,t1,y1,v1,y2,x0"));
-    }
-    assert!(claim("appB.semi_false_heun_branches").evidence.contains("v11"));
 }

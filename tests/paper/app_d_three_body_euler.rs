@@ -19,7 +19,27 @@ pub const COVERED: &[(&str, Verdict)] = &[
     ("appD.symmetric_circle", Errata),
     ("appD.control_by_partial_derivatives", Confirmed),
     ("appD.sec12_chaotic_but_bounded", Refined),
+    ("appD.velocity_reads_new_positions", Errata),
 ];
+
+/// Appendix D's loop reads x1..y3 before setting them: with zeroed memory the
+/// first step feels no gravity, so it differs from the intended step by the
+/// force's contribution dT²·|a| (|a| = 1 for the 1/r force on the unit circle),
+/// and from step 2 on the two agree in form (the positions it reads are the old ones).
+#[test]
+fn first_step_reads_unset_positions() {
+    let intended = ThreeBodyConfig::appendix_d_energy();
+    let literal =
+        ThreeBodyConfig { first_step: three_body::FirstStep::ZeroedNewPositions, ..intended };
+    let one = |c: &ThreeBodyConfig| three_body::simulate(c, 1, &mut |_| {}).final_state;
+    let (a, b) = (one(&intended), one(&literal));
+    // Standard Euler moves positions by the old velocity only, so step 1 agrees in x;
+    // the velocities differ by dT·a with |a| of order 1.
+    for i in 0..3 {
+        let dv = (a.velocity[i][0] - b.velocity[i][0]).hypot(a.velocity[i][1] - b.velocity[i][1]);
+        assert!(dv > 0.5 * 0.01 && dv < 2.0 * 0.01, "body {i}: velocity gap {dv}");
+    }
+}
 
 const STEPS: u64 = 100_000;
 
@@ -237,14 +257,17 @@ fn symmetric_start_gives_a_circle_only_with_tangential_velocities() {
         circle.radius_min,
         circle.radius_max
     );
-    // Without control the same start spirals out.
+    // Without control the same start spirals out: past three times the start
+    // radius within the 100,000 steps (about 4.6 on this model).
     let plain = ThreeBodyConfig { control: None, ..tangential };
-    assert!(three_body::simulate(&plain, STEPS, &mut |_| {}).radius_max > 1.5);
+    let r = three_body::simulate(&plain, STEPS, &mut |_| {}).radius_max;
+    assert!(r > 3.0, "{r}");
 }
 
-/// Section 12, "chaotic but bounded": a change of 1e-9 in eps grows to more
-/// than 1e-3 (a million-fold) in 100,000 controlled steps, and both runs
-/// stay bounded.
+/// Section 12, "chaotic but bounded": a change of 1e-9 in eps grows to the
+/// size of the orbit itself (more than 0.5, against a radius of 1) in
+/// 100,000 controlled steps, far beyond linear shear, and both runs stay
+/// bounded.
 #[test]
 fn chaotic_but_bounded() {
     let a = ThreeBodyConfig::appendix_d_energy();
@@ -260,5 +283,5 @@ fn chaotic_but_bounded() {
             (p[0] - q[0]).hypot(p[1] - q[1])
         })
         .fold(0.0, f64::max);
-    assert!(separation > 1e-3, "{separation}");
+    assert!(separation > 0.5, "{separation}");
 }

@@ -15,7 +15,7 @@ pub const COVERED: &[(&str, Verdict)] = &[
     ("sec04.eigenvalues_decide", Refined),
     ("sec04.taxonomy_real", Refined),
     ("sec04.taxonomy_complex", Confirmed),
-    ("sec04.psi_arctan", Errata),
+    ("sec04.psi_arctan", Refined),
     ("sec04.samples_per_period", Confirmed),
     ("sec04.double_root_plus_one", Refined),
     ("sec04.double_root_minus_one", Refined),
@@ -124,7 +124,7 @@ fn psi_needs_atan2() {
     let c = (ys[1][1] - psi_true.cos()) / psi_true.sin();
     let y7 = (7.0 * psi_true).cos() + c * (7.0 * psi_true).sin();
     assert!((ys[7][1] - y7).abs() <= 1e3 * f64::EPSILON, "{} vs {y7}", ys[7][1]);
-    assert_eq!(claim("sec04.psi_arctan").verdict, Errata);
+    assert_eq!(claim("sec04.psi_arctan").verdict, Refined);
 }
 
 /// 12, 4 and 2.4 samples per period: False Euler tuned to Ψ = 30°, 90°, 150°

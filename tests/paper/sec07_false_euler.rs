@@ -88,7 +88,11 @@ fn stability_limit() {
         at(&im_sq, &poly::q(199, 100)) > poly::q(0, 1)
             && at(&im_sq, &poly::q(201, 100)) < poly::q(0, 1)
     );
-    let t_over_t0 = 2.0 / (2.0 * std::f64::consts::PI);
+    // T/T0 = Φ_max/(2π) with Φ_max from the exact analysis, not from the paper.
+    let report = poly::stability::analyze(&derive("false_euler").charpoly).unwrap();
+    let phi_max = report.phi_max.expect("False Euler has a limit");
+    let phi_max: f64 = phi_max.to_decimal(17).parse().unwrap();
+    let t_over_t0 = phi_max / (2.0 * std::f64::consts::PI);
     assert!((t_over_t0 - 1.0 / std::f64::consts::PI).abs() <= f64::EPSILON);
     assert!(1.0 / t_over_t0 > 3.0 && t_over_t0 < 0.5);
     assert!(claim("sec07.stability_limit").derived.contains("double_root_at_minus_one"));

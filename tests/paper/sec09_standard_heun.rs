@@ -2,7 +2,7 @@
 //! the misprinted test ODE (v̇ = −ω0 v, ẏ = ω0 y), the stages, rows, χ,
 //! eigenvalues, r² = 1 + Φ⁴/4, "always an unstable oscillation", the weak
 //! growth for small Φ, tan Ψ, Ψ ≅ Φ(1 + Φ²/6) and "the frequency is always
-//! too high" (only up to Φ ≈ 2.03).
+//! too high" (only up to Φ ≈ 2.0816).
 
 use check::paper::Verdict::{self, *};
 
@@ -91,8 +91,8 @@ fn always_unstable_but_weakly() {
 }
 
 /// tan Ψ = Φ/(1 − Φ²/2) (modulo π), the Φ⁵ error of Φ(1 + Φ²/6), and the
-/// frequency too high only below a crossing near Φ ≈ 2.03: at Φ = 2.1 the
-/// numeric angle is below Φ.
+/// frequency too high only below the crossing Φ ≈ 2.0816 (Ψ = Φ there): at
+/// Φ = 2.08 the numeric angle is still above Φ, at 2.083 already below.
 #[test]
 fn frequency() {
     for phi in [0.3, 1.0, 1.6, 2.5] {
@@ -105,8 +105,8 @@ fn frequency() {
     }
     let order = error_order(|p| psi("standard_heun", p).unwrap(), |p| p * (1.0 + p * p / 6.0), 0.2);
     assert!((order - 5.0).abs() < 0.1, "{order}");
-    assert!(psi("standard_heun", 2.0).unwrap() > 2.0);
-    assert!(psi("standard_heun", 2.1).unwrap() < 2.1);
+    assert!(psi("standard_heun", 2.08).unwrap() > 2.08);
+    assert!(psi("standard_heun", 2.083).unwrap() < 2.083);
     assert!(psi("standard_heun", 3.0).unwrap() < 3.0);
     assert!(claim("sec09.frequency_too_high").derived.contains("0 < Φ < 2.0"));
 }

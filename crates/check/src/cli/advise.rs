@@ -99,27 +99,54 @@ pub fn text(a: &Advice) -> String {
         }
         None => "spring: undamped\n\n".to_owned(),
     };
-    out += &format!(
-        "{:<16} {:>10} {:>10} {:>16} {:>18} {:>14} {:>11}\n",
+    let header = [
         "method",
         "phi_max",
         "stable",
         "substeps stable",
         "substeps tolerance",
         "ops/tick",
-        "ns/tick"
-    );
-    for m in &a.methods {
-        out += &format!(
-            "{:<16} {:>10} {:>10} {:>16} {:>18} {:>14} {:>11}\n",
-            m.method,
-            m.phi_max,
-            if m.stable_at_phi { "yes" } else { "no" },
-            m.substeps_stable.map_or("never".to_owned(), |k| k.to_string()),
-            m.substeps_tol.map_or("never".to_owned(), |k| k.to_string()),
-            m.ops_per_tick.map_or("-".to_owned(), |o| format!("{}m+{}a", o.mul, o.add)),
-            m.ns_per_tick.map_or("-".to_owned(), |ns| format!("{ns:.1}")),
-        );
+        "ns/tick",
+    ]
+    .map(str::to_owned);
+    let rows: Vec<[String; 7]> = a
+        .methods
+        .iter()
+        .map(|m| {
+            [
+                m.method.clone(),
+                m.phi_max.clone(),
+                (if m.stable_at_phi { "yes" } else { "no" }).to_owned(),
+                m.substeps_stable.map_or("never".to_owned(), |k| k.to_string()),
+                m.substeps_tol.map_or("never".to_owned(), |k| k.to_string()),
+                m.ops_per_tick.map_or("-".to_owned(), |o| format!("{}m+{}a", o.mul, o.add)),
+                m.ns_per_tick.map_or("-".to_owned(), |ns| format!("{ns:.1}")),
+            ]
+        })
+        .collect();
+    // Columns as wide as their widest cell: phi_max can be a nested root.
+    let widths: Vec<usize> = (0..7)
+        .map(|c| {
+            std::iter::once(&header).chain(&rows).map(|r| r[c].chars().count()).max().unwrap_or(0)
+        })
+        .collect();
+    for row in std::iter::once(&header).chain(&rows) {
+        let cells: Vec<String> = row
+            .iter()
+            .zip(&widths)
+            .enumerate()
+            .map(
+                |(c, (cell, &w))| {
+                    if c == 0 {
+                        format!("{cell:<w$}")
+                    } else {
+                        format!("{cell:>w$}")
+                    }
+                },
+            )
+            .collect();
+        out += &cells.join("  ");
+        out.push('\n');
     }
     let stable: Vec<&str> =
         a.methods.iter().filter(|m| m.stable_at_phi).map(|m| m.method.as_str()).collect();

@@ -123,13 +123,4 @@ fn slips(s: &mut Section) {
         Verdict::Errata,
         "the listing of case 5; Pascal ignores comments",
     );
-    s.push(
-        "semi_false_heun_time_variable",
-        "Semi-False Heun: x0:=0; ... x1 := x0+dT; MapP(x1,y1,p1,q1)",
-        "case 7 names the time x0/x1 where every other case uses t0/t1, and x0, x1 are not among the \
-         declared variables of Func (nor is D of case 2)",
-        Verdict::Errata,
-        "the Var section declares t0, y0, v0, t1, y1, v1, y2, dv1, dy1, dv2, dy2, y11, v11, v12, woT, woT2, \
-         woT4, i, k; the step itself is unaffected",
-    );
 }

@@ -150,8 +150,9 @@ fn psi_arctan(s: &mut Section) {
     s.push(
         "psi_arctan",
         "Ψ1 = arctan(b1/a1) = Ω0·T, angle increment, 0 ... π",
-        "Ψ1 = atan2(b1, a1) ∈ (0, π); arctan(b1/a1) ∈ (−π/2, π/2) is wrong whenever a1 < 0",
-        Verdict::Errata,
+        "true read as the quadrant-aware angle Ψ1 = atan2(b1, a1) ∈ (0, π), which the printed range \
+         0 … π implies; the plain arctan(b1/a1) ∈ (−π/2, π/2) is wrong whenever a1 < 0",
+        Verdict::Refined,
         format!(
             "the paper's own harmonic case 3 (Ψ1 = 150°, 2.4 samples) has a1 = cos 150° < 0: \
              arctan(b1/a1) = {}° but the angle is atan2(b1, a1) = {}°. The methods reach a1 = p < 0 with \
