@@ -219,11 +219,6 @@ impl DenseBuffer {
         &self.coeffs[i * self.stride..i * self.stride + self.len[i]]
     }
 
-    /// Slot `i` with its 1-norm, the operand form [`sum_of_products`] takes.
-    fn operand(&self, i: usize) -> (&[i128], u128) {
-        (self.get(i), self.norm[i])
-    }
-
     fn set(&mut self, i: usize, value: &[i128]) {
         let base = i * self.stride;
         self.coeffs[base..base + value.len()].copy_from_slice(value);
@@ -264,30 +259,33 @@ enum Arithmetic {
     Checked,
 }
 
-/// `out[slot] = Σ a·b` over the operand pairs `pairs()` yields (each with
-/// its 1-norm), or `None` when a coefficient overflows `i128`.
+/// `out[slot] = Σ left[x]·right[y]` over the slot pairs `(x, y)` in
+/// `pairs`, or `None` when a coefficient overflows `i128`.
 ///
 /// Each coefficient of the result, and each partial sum on the way, is at
-/// most `Σ ‖a‖₁‖b‖₁` in absolute value. When that bound fits in `i128` the
-/// products run with plain wrapping arithmetic, which is then exact (and
-/// several times faster than checked `i128` multiplication); otherwise every
-/// step is checked. `checked` records that the slow branch ran.
-fn sum_of_products<'a, I>(
+/// most `Σ ‖left[x]‖₁‖right[y]‖₁` in absolute value. When that bound fits in
+/// `i64` every operand and partial sum does too, and a product is one
+/// multiply; when it fits in `i128` the products run with plain wrapping
+/// `i128` arithmetic, which is then exact (and several times faster than
+/// checked `i128` multiplication); otherwise every step is checked.
+/// `checked` records that the slow branch ran.
+fn sum_of_products(
     out: &mut DenseBuffer,
     slot: usize,
-    pairs: impl Fn() -> I,
+    left: &DenseBuffer,
+    right: &DenseBuffer,
+    pairs: impl Iterator<Item = (usize, usize)> + Clone,
     checked: &mut bool,
-) -> Option<()>
-where
-    I: Iterator<Item = ((&'a [i128], u128), (&'a [i128], u128))>,
-{
-    let bound =
-        pairs().fold(0u128, |s, ((_, na), (_, nb))| s.saturating_add(na.saturating_mul(nb)));
+) -> Option<()> {
+    let bound = pairs
+        .clone()
+        .fold(0u128, |s, (x, y)| s.saturating_add(left.norm[x].saturating_mul(right.norm[y])));
     let in_range = bound <= i128::MAX as u128;
     *checked |= !in_range;
     let base = slot * out.stride;
     let mut len = 0;
-    for ((a, _), (b, _)) in pairs() {
+    for (x, y) in pairs {
+        let (a, b) = (left.get(x), right.get(y));
         if a.is_empty() || b.is_empty() {
             continue;
         }
@@ -550,20 +548,16 @@ fn berkowitz_dense(n: usize, degree: usize, a: &DenseBuffer) -> Option<(DenseBuf
             v.set(i, a.get(i * n + r));
         }
         for k in 0..r {
-            let (vv, row) = (&v, r * n);
-            sum_of_products(
-                &mut col,
-                k + 2,
-                || (0..r).map(move |j| (a.operand(row + j), vv.operand(j))),
-                &mut checked,
-            )?;
+            sum_of_products(&mut col, k + 2, a, &v, (0..r).map(|j| (r * n + j, j)), &mut checked)?;
             col.negate(k + 2)?;
             if k + 1 < r {
                 for i in 0..r {
                     sum_of_products(
                         &mut w,
                         i,
-                        || (0..r).map(move |j| (a.operand(i * n + j), vv.operand(j))),
+                        a,
+                        &v,
+                        (0..r).map(|j| (i * n + j, j)),
                         &mut checked,
                     )?;
                 }
@@ -571,11 +565,12 @@ fn berkowitz_dense(n: usize, degree: usize, a: &DenseBuffer) -> Option<(DenseBuf
             }
         }
         for i in 0..r + 2 {
-            let (cc, cl) = (&c, &col);
             sum_of_products(
                 &mut next,
                 i,
-                || (0..=i.min(r)).map(move |j| (cl.operand(i - j), cc.operand(j))),
+                &col,
+                &c,
+                (0..=i.min(r)).map(|j| (i - j, j)),
                 &mut checked,
             )?;
         }
