@@ -249,6 +249,36 @@ pub fn hand_kernel_names() -> &'static [&'static str] {
     ]
 }
 
+/// The one table from kernel name to kernel, shared by the single-state and
+/// batch runners: `$go` is the runner's local loop macro.
+macro_rules! dispatch {
+    ($name:expr, $go:ident) => {
+        match $name {
+            "standard_euler" => $go!(standard_euler),
+            "damped_euler" => $go!(damped_euler),
+            "false_euler" => $go!(false_euler),
+            "verlet" => $go!(verlet),
+            "standard_heun" => $go!(standard_heun),
+            "false_heun" => $go!(false_heun),
+            "semi_false_heun" => $go!(semi_false_heun),
+            "standard_euler_matrix" => $go!(standard_euler_matrix),
+            "damped_euler_matrix" => $go!(damped_euler_matrix),
+            "false_euler_matrix" => $go!(false_euler_matrix),
+            "standard_heun_matrix" => $go!(standard_heun_matrix),
+            "false_heun_matrix" => $go!(false_heun_matrix),
+            "semi_false_heun_matrix" => $go!(semi_false_heun_matrix),
+            "standard_euler_damped" => $go!(standard_euler_damped, damped),
+            "damped_euler_damped" => $go!(damped_euler_damped, damped),
+            "false_euler_damped" => $go!(false_euler_damped, damped),
+            "verlet_damped" => $go!(verlet_damped, damped),
+            "standard_heun_damped" => $go!(standard_heun_damped, damped),
+            "false_heun_damped" => $go!(false_heun_damped, damped),
+            "semi_false_heun_damped" => $go!(semi_false_heun_damped, damped),
+            _ => false,
+        }
+    };
+}
+
 /// Applies kernel `name` `n_steps` times to `(a, b)` at `phi` (and damping
 /// `d` for the `_damped` kernels); `false` when there is no kernel of that
 /// name. Dispatch is one `match` outside the loop, so each arm's loop is
@@ -275,29 +305,7 @@ pub fn run_hand_kernel(
             true
         }};
     }
-    match name {
-        "standard_euler" => go!(standard_euler),
-        "damped_euler" => go!(damped_euler),
-        "false_euler" => go!(false_euler),
-        "verlet" => go!(verlet),
-        "standard_heun" => go!(standard_heun),
-        "false_heun" => go!(false_heun),
-        "semi_false_heun" => go!(semi_false_heun),
-        "standard_euler_matrix" => go!(standard_euler_matrix),
-        "damped_euler_matrix" => go!(damped_euler_matrix),
-        "false_euler_matrix" => go!(false_euler_matrix),
-        "standard_heun_matrix" => go!(standard_heun_matrix),
-        "false_heun_matrix" => go!(false_heun_matrix),
-        "semi_false_heun_matrix" => go!(semi_false_heun_matrix),
-        "standard_euler_damped" => go!(standard_euler_damped, damped),
-        "damped_euler_damped" => go!(damped_euler_damped, damped),
-        "false_euler_damped" => go!(false_euler_damped, damped),
-        "verlet_damped" => go!(verlet_damped, damped),
-        "standard_heun_damped" => go!(standard_heun_damped, damped),
-        "false_heun_damped" => go!(false_heun_damped, damped),
-        "semi_false_heun_damped" => go!(semi_false_heun_damped, damped),
-        _ => false,
-    }
+    dispatch!(name, go)
 }
 
 /// [`run_hand_kernel`] on a struct-of-arrays batch: every step advances
@@ -326,29 +334,7 @@ pub fn run_hand_kernel_batch(
             true
         }};
     }
-    match name {
-        "standard_euler" => go!(standard_euler),
-        "damped_euler" => go!(damped_euler),
-        "false_euler" => go!(false_euler),
-        "verlet" => go!(verlet),
-        "standard_heun" => go!(standard_heun),
-        "false_heun" => go!(false_heun),
-        "semi_false_heun" => go!(semi_false_heun),
-        "standard_euler_matrix" => go!(standard_euler_matrix),
-        "damped_euler_matrix" => go!(damped_euler_matrix),
-        "false_euler_matrix" => go!(false_euler_matrix),
-        "standard_heun_matrix" => go!(standard_heun_matrix),
-        "false_heun_matrix" => go!(false_heun_matrix),
-        "semi_false_heun_matrix" => go!(semi_false_heun_matrix),
-        "standard_euler_damped" => go!(standard_euler_damped, damped),
-        "damped_euler_damped" => go!(damped_euler_damped, damped),
-        "false_euler_damped" => go!(false_euler_damped, damped),
-        "verlet_damped" => go!(verlet_damped, damped),
-        "standard_heun_damped" => go!(standard_heun_damped, damped),
-        "false_heun_damped" => go!(false_heun_damped, damped),
-        "semi_false_heun_damped" => go!(semi_false_heun_damped, damped),
-        _ => false,
-    }
+    dispatch!(name, go)
 }
 
 /// The step used for timing: small enough that no kernel overflows or
