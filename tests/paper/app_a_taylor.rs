@@ -2,7 +2,7 @@
 //! (Damped and False Euler) and Ψ ≅ Φ(1 + Φ²/6) (Standard Heun), checked as
 //! power series through Φ³ and by the order of the numeric error.
 
-use check::paper::Verdict::{self, *};
+use zcheck::paper::Verdict::{self, *};
 
 use crate::common::*;
 
@@ -79,7 +79,7 @@ fn tan_psi_identities() {
 fn extension_reproduces_the_papers_two_series() {
     #[track_caller]
     fn check(method: &str, paper_approximation: &str) {
-        let row = check::overview::summarize(&poly::builtin(method).unwrap(), 5).unwrap();
+        let row = zcheck::overview::summarize(&poly::builtin(method).unwrap(), 5).unwrap();
         let paper = poly::Poly::parse(paper_approximation).unwrap() - poly::Poly::var("Phi");
         let ours = poly::Poly::parse(&row.phase_error).unwrap();
         assert_eq!(ours, paper, "{method}: phase error {} vs paper {paper}", row.phase_error);
@@ -94,7 +94,7 @@ fn extension_reproduces_the_papers_two_series() {
 /// omitted power: the series are right, not just their leading terms.
 #[test]
 fn extension_series_match_the_true_psi_for_every_method() {
-    for row in check::overview::paper_overview(5).unwrap() {
+    for row in zcheck::overview::paper_overview(5).unwrap() {
         let text = row.psi_series.split(" + O(").next().unwrap();
         let series = poly::Poly::parse(text).unwrap();
         let eval = |phi: f64| -> f64 {
@@ -116,8 +116,8 @@ fn extension_series_match_the_true_psi_for_every_method() {
 /// to 4 decimals).
 #[test]
 fn extension_table_snapshot() {
-    let rows = check::overview::paper_overview(5).unwrap();
-    let table = check::overview::to_markdown(&rows);
+    let rows = zcheck::overview::paper_overview(5).unwrap();
+    let table = zcheck::overview::to_markdown(&rows);
     insta::with_settings!({snapshot_path => concat!(env!("CARGO_MANIFEST_DIR"), "/snapshots/paper"), prepend_module_to_snapshot => false}, {
         insta::assert_snapshot!("overview_table", table);
     });

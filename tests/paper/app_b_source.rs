@@ -3,7 +3,7 @@
 //! y2 := 1 is False Euler from v0 = 0, Damped Euler's D := 0.5*woT is
 //! section 6's D = Φ/2, and the listing's slips.
 
-use check::paper::Verdict::{self, *};
+use zcheck::paper::Verdict::{self, *};
 
 use crate::common::*;
 

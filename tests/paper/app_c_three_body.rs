@@ -5,14 +5,14 @@
 
 use std::sync::OnceLock;
 
-use check::paper::Claim;
-use check::paper::Verdict::{self, *};
-use check::scene::three_body::{self, Bodies, FirstStep, ForceLaw, ThreeBodyConfig};
+use zcheck::paper::Claim;
+use zcheck::paper::Verdict::{self, *};
+use zcheck::scene::three_body::{self, Bodies, FirstStep, ForceLaw, ThreeBodyConfig};
 
 /// The appendix claims, computed once for all appendix test modules.
 pub fn appendix_claims() -> &'static [Claim] {
     static CLAIMS: OnceLock<Vec<Claim>> = OnceLock::new();
-    CLAIMS.get_or_init(check::paper::appendix::claims)
+    CLAIMS.get_or_init(zcheck::paper::appendix::claims)
 }
 
 #[track_caller]

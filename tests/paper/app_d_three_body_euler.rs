@@ -4,8 +4,8 @@
 //! get a circle." With section 12: "three-body systems with chaotic but
 //! bounded solutions, introducing the constant total energy".
 
-use check::paper::Verdict::{self, *};
-use check::scene::three_body::{
+use zcheck::paper::Verdict::{self, *};
+use zcheck::scene::three_body::{
     self, Bodies, EnergyControl, EnergyDefinition, ForceLaw, InitialVelocities, Integrator,
     ThreeBodyConfig,
 };

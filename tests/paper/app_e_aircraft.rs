@@ -4,8 +4,8 @@
 //! kinematics with a gimbal-lock guard, False Euler at dT = 0.1. The command
 //! checked: Phic = 30°, Thec = 10° from level flight at rest.
 
-use check::paper::Verdict::{self, *};
-use check::scene::aircraft::{self, AircraftConfig};
+use zcheck::paper::Verdict::{self, *};
+use zcheck::scene::aircraft::{self, AircraftConfig};
 
 use crate::app_c_three_body::check_verdicts;
 

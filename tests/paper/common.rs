@@ -9,14 +9,14 @@
 use std::collections::HashMap;
 use std::sync::OnceLock;
 
-use check::paper::{Claim, Verdict};
 use num_complex::Complex64;
 use poly::{Derivation, Poly, PolyMatrix, Sym, Q};
+use zcheck::paper::{Claim, Verdict};
 
 /// Every claim of sections 4–12 and Appendices A–B, built once per test run.
 pub fn claims() -> &'static [Claim] {
     static CLAIMS: OnceLock<Vec<Claim>> = OnceLock::new();
-    CLAIMS.get_or_init(check::paper::sections::claims)
+    CLAIMS.get_or_init(zcheck::paper::sections::claims)
 }
 
 /// The claim with this id.

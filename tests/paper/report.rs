@@ -2,7 +2,7 @@
 //! claims, its JSON has the documented shape, and the Markdown report is
 //! snapshotted (rounded numbers only) in snapshots/paper/.
 
-use check::paper::{all_claims, report, Verdict};
+use zcheck::paper::{all_claims, report, Verdict};
 
 /// The summary counts are the claims' verdicts, per section and in total,
 /// and every section 4–12, A–E appears in the JSON summary.
@@ -35,7 +35,7 @@ fn summary_counts_the_claims() {
 /// C–E have their own snapshot tests), for a person to read.
 #[test]
 fn markdown_report_snapshot() {
-    let claims = check::paper::sections::claims();
+    let claims = zcheck::paper::sections::claims();
     let text = report::to_markdown(&claims);
     insta::with_settings!({snapshot_path => concat!(env!("CARGO_MANIFEST_DIR"), "/snapshots/paper"), prepend_module_to_snapshot => false}, {
         insta::assert_snapshot!("paper_report_sections", text);

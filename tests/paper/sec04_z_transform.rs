@@ -4,8 +4,8 @@
 //! rather than arctan, the samples per period of the harmonic cases, and
 //! the p, q form of second-order χ.
 
-use check::paper::Verdict::{self, *};
 use poly::{Poly, PolyMatrix};
+use zcheck::paper::Verdict::{self, *};
 
 use crate::common::*;
 

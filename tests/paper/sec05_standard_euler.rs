@@ -2,7 +2,7 @@
 //! values, its z-domain rows, χ = z² − 2z + (1 + Φ²), the eigenvalues
 //! 1 ± jΦ, r² = 1 + Φ², and "always an unstable oscillation".
 
-use check::paper::Verdict::{self, *};
+use zcheck::paper::Verdict::{self, *};
 
 use crate::common::*;
 

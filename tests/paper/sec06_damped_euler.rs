@@ -3,7 +3,7 @@
 //! r², the stabilising D = Φ/2, tan Ψ, the Taylor approximation
 //! Ψ ≅ Φ(1 + Φ²/24) and its table at Φ = 1 and Φ = 1.414.
 
-use check::paper::Verdict::{self, *};
+use zcheck::paper::Verdict::{self, *};
 
 use crate::common::*;
 

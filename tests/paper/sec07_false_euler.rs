@@ -3,7 +3,7 @@
 //! a harmonic oscillation" (only for 0 < Φ < 2), tan Ψ, Ψ ≅ Φ(1 + Φ²/24),
 //! the frequency, and the stability limit Φ = 2, T/T0 = 1/π.
 
-use check::paper::Verdict::{self, *};
+use zcheck::paper::Verdict::{self, *};
 
 use crate::common::*;
 

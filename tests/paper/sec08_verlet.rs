@@ -2,7 +2,7 @@
 //! Euler's substitution, the harmonic recursion and χ (the same as False
 //! Euler's), initial velocity through y_(−1), and the operation count.
 
-use check::paper::Verdict::{self, *};
+use zcheck::paper::Verdict::{self, *};
 
 use crate::common::*;
 

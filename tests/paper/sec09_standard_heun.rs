@@ -4,7 +4,7 @@
 //! growth for small Φ, tan Ψ, Ψ ≅ Φ(1 + Φ²/6) and "the frequency is always
 //! too high" (only up to Φ ≈ 2.0816).
 
-use check::paper::Verdict::{self, *};
+use zcheck::paper::Verdict::{self, *};
 
 use crate::common::*;
 

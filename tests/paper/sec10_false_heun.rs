@@ -4,7 +4,7 @@
 //! "either monotonic unstable or a damped oscillation", which misses a
 //! monotonic stable band and the constant point Φ = √2.
 
-use check::paper::Verdict::{self, *};
+use zcheck::paper::Verdict::{self, *};
 
 use crate::common::*;
 

@@ -3,7 +3,7 @@
 //! where a real root passes −1), damped for small Φ, and "as accurate as
 //! Standard Heun" (same orders of phase and amplitude error).
 
-use check::paper::Verdict::{self, *};
+use zcheck::paper::Verdict::{self, *};
 
 use crate::common::*;
 

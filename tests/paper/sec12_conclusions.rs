@@ -3,7 +3,7 @@
 //! sufficiently small timestep can be guaranteed" — no timestep makes it
 //! stable, the amplitude grows by (1 + Φ⁴/4)^(π/Φ) per period.
 
-use check::paper::Verdict::{self, *};
+use zcheck::paper::Verdict::{self, *};
 
 use crate::common::*;
 

@@ -4,16 +4,12 @@
 //! methods as `poly` and checks the exact characteristic polynomials against
 //! independent numeric evidence: eigenvalues of the numeric transition matrix
 //! (nalgebra and faer), roots of the exact polynomial, and long-run
-//! simulation. It also hosts the proof report, the appendix scenes and the
-//! speed/accuracy trade-off. It depends on `poly`; `poly` never depends on it.
+//! simulation. It depends on `poly`; `poly` never depends on it. The
+//! application (CLI, proof report, scenes, trade-off, plots) lives in the
+//! `zcheck` crate, which depends on this one.
 
 pub mod classify;
 pub mod load;
 pub mod numeric;
-pub mod overview;
-pub mod paper;
-pub mod plot;
-pub mod scene;
 pub mod sweep;
-pub mod tradeoff;
 pub mod witness;

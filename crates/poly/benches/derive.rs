@@ -5,8 +5,9 @@
 //! Run with `cargo bench -p poly --bench derive`; the figures are recorded in
 //! BENCHMARKS.md, "Derivation (poly)".
 
-use criterion::{black_box, criterion_group, criterion_main, Criterion};
+use criterion::{criterion_group, criterion_main, Criterion};
 use poly::{Method, Poly, PolyMatrix, Sym};
+use std::hint::black_box;
 
 /// RK4 on a chain of six unit masses joined by springs to each other and to
 /// two walls, written as a `.zm` step program with the four stages as

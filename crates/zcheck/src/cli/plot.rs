@@ -6,7 +6,7 @@ use std::process::ExitCode;
 
 use anyhow::{bail, Context};
 use check::numeric::Params;
-use check::plot::{yt_figure, yt_grid, zplane_figure};
+use zcheck::plot::{yt_figure, yt_grid, zplane_figure};
 
 /// Arguments of `zcheck plot`.
 #[derive(clap::Args)]

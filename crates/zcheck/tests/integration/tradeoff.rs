@@ -1,4 +1,4 @@
-//! The speed/accuracy trade (`check::tradeoff`): the accuracy model against
+//! The speed/accuracy trade (`zcheck::tradeoff`): the accuracy model against
 //! the paper's closed forms and B's numeric witnesses, the hand kernels
 //! against the exact transition matrix, the admissible-Φ search against the
 //! exact stability limit, the ranking against its own definition, and the
@@ -8,11 +8,11 @@ use std::collections::HashMap;
 use std::f64::consts::PI;
 
 use check::numeric::{f64_to_q, q_to_f64, Params, Step};
-use check::tradeoff::{
-    self, advise, family, kernels, Candidate, Scene, SecondOrder, Spring, Target, TradeRow,
-};
 use check::witness;
 use poly::{Sym, Q};
+use zcheck::tradeoff::{
+    self, advise, family, kernels, Candidate, Scene, SecondOrder, Spring, Target, TradeRow,
+};
 
 const EPS: f64 = f64::EPSILON;
 

@@ -25,15 +25,15 @@ pub struct Args {
 pub fn run(args: Args) -> anyhow::Result<ExitCode> {
     anyhow::ensure!(args.order <= 64, "--order {} is too large: expected at most 64", args.order);
     let rows = if args.methods.is_empty() {
-        check::overview::paper_overview(args.order)?
+        zcheck::overview::paper_overview(args.order)?
     } else {
         args.methods
             .iter()
-            .map(|m| Ok(check::overview::summarize(&check::load::load_method(m)?, args.order)?))
+            .map(|m| Ok(zcheck::overview::summarize(&check::load::load_method(m)?, args.order)?))
             .collect::<anyhow::Result<Vec<_>>>()?
     };
     match args.format {
-        Format::Markdown => print!("{}", check::overview::to_markdown(&rows)),
+        Format::Markdown => print!("{}", zcheck::overview::to_markdown(&rows)),
         Format::Json => println!("{}", serde_json::to_string_pretty(&rows)?),
     }
     Ok(ExitCode::SUCCESS)

@@ -8,9 +8,9 @@
 use std::path::PathBuf;
 use std::process::Command;
 
-use check::tradeoff::family::DAMPED_SOURCES;
 use poly::RootClass;
 use serde_json::Value;
+use zcheck::tradeoff::family::DAMPED_SOURCES;
 
 fn zcheck(args: &[&str]) -> (i32, String, String) {
     let out = Command::new(env!("CARGO_BIN_EXE_zcheck")).args(args).output().expect("zcheck runs");

@@ -5,7 +5,7 @@ use std::process::ExitCode;
 use std::time::Duration;
 
 use check::numeric::f64_to_q;
-use check::tradeoff::{self, family, kernels, Advice, Candidate, Scene};
+use zcheck::tradeoff::{self, family, kernels, Advice, Candidate, Scene};
 
 /// Output format of `zcheck advise`.
 #[derive(Clone, Copy, clap::ValueEnum)]

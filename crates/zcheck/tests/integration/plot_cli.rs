@@ -4,7 +4,7 @@
 use std::process::Command;
 
 use check::numeric::Params;
-use check::plot::samples;
+use zcheck::plot::samples;
 
 /// Every figure is written, is SVG, and carries its Φ in the title.
 #[test]

@@ -13,8 +13,8 @@ use std::hint::black_box;
 use std::time::Duration;
 
 use check::numeric::{Batch, Params, Step};
-use check::tradeoff::kernels::{run_hand_kernel, run_hand_kernel_batch, TIMING_PHI};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use zcheck::tradeoff::kernels::{run_hand_kernel, run_hand_kernel_batch, TIMING_PHI};
 
 const SINGLE_STEPS: u64 = 1000;
 const LANES: usize = 4096;

@@ -1,10 +1,11 @@
 //! Cost of the appendix scenes: one step of each, a full run of Appendix D,
 //! the reference integrations, and the appendix claims `zcheck paper` builds.
 
-use criterion::{black_box, criterion_group, criterion_main, Criterion};
+use criterion::{criterion_group, criterion_main, Criterion};
+use std::hint::black_box;
 
-use check::scene::aircraft::{self, AircraftConfig, AircraftState};
-use check::scene::three_body::{self, ThreeBodyConfig};
+use zcheck::scene::aircraft::{self, AircraftConfig, AircraftState};
+use zcheck::scene::three_body::{self, ThreeBodyConfig};
 
 fn scenes(c: &mut Criterion) {
     let config = ThreeBodyConfig::appendix_c();
@@ -34,7 +35,7 @@ fn scenes(c: &mut Criterion) {
     group.bench_function("aircraft 300 steps with RK4 reference", |b| {
         b.iter(|| aircraft::simulate(black_box(&air), 300, &mut |_| {}))
     });
-    group.bench_function("appendix claims (C, D, E)", |b| b.iter(check::paper::appendix::claims));
+    group.bench_function("appendix claims (C, D, E)", |b| b.iter(zcheck::paper::appendix::claims));
     group.finish();
 }
 

@@ -12,8 +12,8 @@ use std::path::Path;
 use plotters::prelude::*;
 use poly::Method;
 
-use crate::numeric::{initial_slots, NumericError, Params, Step};
-use crate::witness::ExactCharpoly;
+use check::numeric::{initial_slots, NumericError, Params, Step};
+use check::witness::ExactCharpoly;
 
 /// Why a figure could not be drawn.
 #[derive(Debug)]

@@ -16,7 +16,7 @@ use poly::cost::StepCost;
 use poly::{Algebraic, Method, Sym, Q};
 
 use super::{SecondOrder, TradeoffError};
-use crate::numeric::{f64_to_q, q_to_f64};
+use check::numeric::{f64_to_q, q_to_f64};
 
 /// The damped-spring variants, as `.zm` sources (name, source).
 pub const DAMPED_SOURCES: [(&str, &str); 6] = [

@@ -5,7 +5,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Duration;
 
-use check::tradeoff::{self, family, figure, kernels, Spring, Target, TradeRow};
+use zcheck::tradeoff::{self, family, figure, kernels, Spring, Target, TradeRow};
 
 /// Output format of `zcheck tradeoff`.
 #[derive(Clone, Copy, clap::ValueEnum)]

@@ -8,13 +8,13 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use anyhow::Context;
-use check::scene::aircraft::{self, AircraftRun};
-use check::scene::three_body::{
-    self, EnergyControl, EnergyDefinition, FirstStep, ForceLaw, InitialVelocities, ThreeBodyRun,
-};
-use check::scene::{figure, Scene};
 use indicatif::{ProgressBar, ProgressStyle};
 use serde_json::json;
+use zcheck::scene::aircraft::{self, AircraftRun};
+use zcheck::scene::three_body::{
+    self, EnergyControl, EnergyDefinition, FirstStep, ForceLaw, InitialVelocities, ThreeBodyRun,
+};
+use zcheck::scene::{figure, Scene};
 
 /// Output format.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -185,7 +185,7 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
 fn three_body_json(
     name: &str,
     run: &ThreeBodyRun,
-    accuracy: &Result<three_body::Accuracy, check::scene::reference::ReferenceError>,
+    accuracy: &Result<three_body::Accuracy, zcheck::scene::reference::ReferenceError>,
 ) -> serde_json::Value {
     json!({
         "scene": name,
@@ -277,7 +277,7 @@ fn render_text(value: &serde_json::Value, indent: &str, out: &mut String) {
 mod tests {
     #[test]
     fn every_scene_name_resolves() {
-        for name in check::scene::SCENES {
+        for name in zcheck::scene::SCENES {
             assert!(super::Scene::by_name(name).is_ok(), "{name}");
         }
     }

@@ -1,0 +1,17 @@
+//! The zcheck application: everything only the command-line tool needs.
+//!
+//! - [`paper`]: the proof of Hoffmann's paper as data (claims, verdicts,
+//!   evidence) and its Markdown/JSON report;
+//! - [`overview`]: every method side by side (exact limit, series, cost);
+//! - [`tradeoff`]: the speed/accuracy trade and the spring advisor;
+//! - [`scene`]: the appendix scenes (three bodies, aircraft);
+//! - [`plot`]: SVG figures.
+//!
+//! The exact algebra lives in `poly`, the numeric witnesses in `check`; this
+//! crate depends on both and neither depends on it.
+
+pub mod overview;
+pub mod paper;
+pub mod plot;
+pub mod scene;
+pub mod tradeoff;

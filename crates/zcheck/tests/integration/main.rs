@@ -1,0 +1,10 @@
+//! Integration tests of the `zcheck` application, built as one test binary:
+//! each module runs one subcommand end to end (or its library half).
+
+mod advise_cli;
+mod cli_derive;
+mod plot_cli;
+mod scene_cli;
+mod stability_cli;
+mod tradeoff;
+mod verify_cli;
