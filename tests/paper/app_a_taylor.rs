@@ -118,7 +118,5 @@ fn extension_series_match_the_true_psi_for_every_method() {
 fn extension_table_snapshot() {
     let rows = zcheck::overview::paper_overview(5).unwrap();
     let table = zcheck::overview::to_markdown(&rows);
-    insta::with_settings!({snapshot_path => concat!(env!("CARGO_MANIFEST_DIR"), "/snapshots/paper"), prepend_module_to_snapshot => false}, {
-        insta::assert_snapshot!("overview_table", table);
-    });
+    crate::snapshot::in_dir("paper").bind(|| insta::assert_snapshot!("overview_table", table));
 }

@@ -37,7 +37,6 @@ fn summary_counts_the_claims() {
 fn markdown_report_snapshot() {
     let claims = zcheck::paper::sections::claims();
     let text = report::to_markdown(&claims);
-    insta::with_settings!({snapshot_path => concat!(env!("CARGO_MANIFEST_DIR"), "/snapshots/paper"), prepend_module_to_snapshot => false}, {
-        insta::assert_snapshot!("paper_report_sections", text);
-    });
+    crate::snapshot::in_dir("paper")
+        .bind(|| insta::assert_snapshot!("paper_report_sections", text));
 }

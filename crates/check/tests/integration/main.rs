@@ -7,5 +7,7 @@
 
 mod extremes;
 mod numeric;
+#[path = "../../../../tests/support/snapshot.rs"]
+mod snapshot;
 mod snapshots;
 mod witness;

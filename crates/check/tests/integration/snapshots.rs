@@ -24,9 +24,8 @@ fn sweep_boundaries_of_every_builtin() {
         }
         writeln!(s).unwrap();
     }
-    insta::with_settings!({snapshot_path => concat!(env!("CARGO_MANIFEST_DIR"), "/../../snapshots/check")}, {
-        insta::assert_snapshot!(s);
-    });
+    crate::snapshot::in_dir("check")
+        .bind(|| insta::assert_snapshot!("sweep_boundaries_of_every_builtin", s));
 }
 
 /// The verify table at the default Φ list: class, ρ and Ψ to 6 digits, and
@@ -50,7 +49,6 @@ fn verify_summary_of_every_builtin() {
             .unwrap();
         }
     }
-    insta::with_settings!({snapshot_path => concat!(env!("CARGO_MANIFEST_DIR"), "/../../snapshots/check")}, {
-        insta::assert_snapshot!(s);
-    });
+    crate::snapshot::in_dir("check")
+        .bind(|| insta::assert_snapshot!("verify_summary_of_every_builtin", s));
 }

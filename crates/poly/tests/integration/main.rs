@@ -7,12 +7,21 @@
 //! - `errors`: every kind of bad `.zm` input gives a located error, and the
 //!   parser never panics;
 //! - `parser`: details of the expression language;
-//! - `snapshots`: each built-in's derivation, reviewed against the paper.
+//! - `snapshots`: each built-in's derivation, reviewed against the paper;
+//! - `cost`: operation counts; `series`: exact Ψ and |z|² series;
+//! - `stability`: the exact stability analysis; `sturm`: Sturm sequences and
+//!   real algebraic numbers against brute-force oracles.
 
 mod algebra;
 mod common;
+mod cost;
 mod det;
 mod errors;
 mod parser;
 mod routes;
+mod series;
+#[path = "../../../../tests/support/snapshot.rs"]
+mod snapshot;
 mod snapshots;
+mod stability;
+mod sturm;

@@ -40,12 +40,8 @@ fn record(name: &str) -> String {
 #[test]
 fn builtin_derivations() {
     for name in poly::builtin_names() {
-        insta::with_settings!({
-            snapshot_path => concat!(env!("CARGO_MANIFEST_DIR"), "/../../snapshots/poly"),
-            prepend_module_to_snapshot => false,
-            omit_expression => true,
-        }, {
-            insta::assert_snapshot!(name, record(name));
-        });
+        let mut settings = crate::snapshot::in_dir("poly");
+        settings.set_omit_expression(true);
+        settings.bind(|| insta::assert_snapshot!(name, record(name)));
     }
 }

@@ -5,6 +5,8 @@ mod advise_cli;
 mod cli_derive;
 mod plot_cli;
 mod scene_cli;
+#[path = "../../../../tests/support/snapshot.rs"]
+mod snapshot;
 mod stability_cli;
 mod tradeoff;
 mod verify_cli;

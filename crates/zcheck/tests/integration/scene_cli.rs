@@ -120,7 +120,7 @@ fn rounded_summaries() {
         .collect();
         all.insert(name.to_string(), serde_json::Value::Object(keep));
     }
-    insta::with_settings!({snapshot_path => concat!(env!("CARGO_MANIFEST_DIR"), "/../../snapshots/check")}, {
-        insta::assert_snapshot!("scene_rounded_summaries", serde_json::to_string_pretty(&all).expect("json"));
-    });
+    let json = serde_json::to_string_pretty(&all).expect("json");
+    crate::snapshot::in_dir("zcheck")
+        .bind(|| insta::assert_snapshot!("scene_rounded_summaries", json));
 }

@@ -276,9 +276,8 @@ fn trade_summary_snapshot() {
         })
         .collect();
     lines.sort();
-    insta::with_settings!({snapshot_path => concat!(env!("CARGO_MANIFEST_DIR"), "/../../snapshots/check")}, {
-        insta::assert_snapshot!("tradeoff_default_target", lines.join("\n"));
-    });
+    crate::snapshot::in_dir("zcheck")
+        .bind(|| insta::assert_snapshot!("tradeoff_default_target", lines.join("\n")));
 }
 
 fn scene(freq: f64, tick: f64, damping: Option<f64>) -> Scene {
