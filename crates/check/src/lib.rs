@@ -1,3 +1,4 @@
+#![deny(missing_docs)]
 //! Numeric witnesses for zcheck's exact derivations.
 //!
 //! `check` is the numeric half of zcheck. It reads the same lowered `.zm`
@@ -13,3 +14,8 @@ pub mod load;
 pub mod numeric;
 pub mod sweep;
 pub mod witness;
+
+/// The README's examples, run as doctests so the front page never lies.
+#[cfg(doctest)]
+#[doc = include_str!("../../../README.md")]
+pub struct ReadmeDoctests;

@@ -1,3 +1,4 @@
+#![deny(missing_docs)]
 //! Exact characteristic polynomials of linear time integrators.
 //!
 //! `poly` is the exact half of zcheck. It reads a method written in the

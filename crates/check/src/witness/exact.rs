@@ -1,0 +1,299 @@
+//! The reference: the exact χ(z) from `poly`, evaluated exactly at the
+//! rational value of the `f64` parameters and rounded once.
+
+use std::collections::HashMap;
+
+use nalgebra::DMatrix;
+use num_traits::{Signed, Zero};
+use poly::{Method, Poly, RootClass, Sym, Q};
+
+use super::{eigenvalues_nalgebra, poly_tolerances, C64};
+use crate::classify::{classify_pq, classify_roots, psi_of, PqSigns};
+use crate::numeric::{f64_to_q, q_to_f64, NumericError, Params};
+
+/// The shifted polynomials of a second-order χ = z² − 2p·z + q, exact in
+/// the parameters (see [`crate::classify`]).
+#[derive(Clone, Debug)]
+pub struct PqPolys {
+    /// p.
+    pub p: Poly,
+    /// q.
+    pub q: Poly,
+    /// p² − q.
+    pub disc: Poly,
+    /// p − 1.
+    pub p_minus_1: Poly,
+    /// p + 1.
+    pub p_plus_1: Poly,
+    /// q − 1.
+    pub q_minus_1: Poly,
+    /// q + 1.
+    pub q_plus_1: Poly,
+    /// χ(1) = 1 − 2p + q.
+    pub chi_1: Poly,
+    /// χ(−1) = 1 + 2p + q.
+    pub chi_minus_1: Poly,
+}
+
+impl PqPolys {
+    /// The shifted polynomials of z² − 2p·z + q.
+    pub fn new(p: Poly, q: Poly) -> PqPolys {
+        let one = Poly::one();
+        let two_p = &p + &p;
+        PqPolys {
+            disc: &(&p * &p) - &q,
+            p_minus_1: &p - &one,
+            p_plus_1: &p + &one,
+            q_minus_1: &q - &one,
+            q_plus_1: &q + &one,
+            chi_1: &(&one - &two_p) + &q,
+            chi_minus_1: &(&one + &two_p) + &q,
+            p,
+            q,
+        }
+    }
+
+    /// The polynomials in [`PqSigns`] order after `p` and `q`: disc, p, p − 1,
+    /// p + 1, q − 1, q + 1, χ(1), χ(−1).
+    pub fn sign_polys(&self) -> [&Poly; 8] {
+        [
+            &self.disc,
+            &self.p,
+            &self.p_minus_1,
+            &self.p_plus_1,
+            &self.q_minus_1,
+            &self.q_plus_1,
+            &self.chi_1,
+            &self.chi_minus_1,
+        ]
+    }
+}
+
+/// Signs from eight values in [`PqPolys::sign_polys`] order.
+pub fn pq_signs(v: [std::cmp::Ordering; 8]) -> PqSigns {
+    PqSigns {
+        disc: v[0],
+        p: v[1],
+        p_minus_1: v[2],
+        p_plus_1: v[3],
+        q_minus_1: v[4],
+        q_plus_1: v[5],
+        chi_1: v[6],
+        chi_minus_1: v[7],
+    }
+}
+
+/// The exact χ(z) of a method, ready to be evaluated at numeric parameters.
+#[derive(Clone, Debug)]
+pub struct ExactCharpoly {
+    method: String,
+    params: Vec<Sym>,
+    charpoly: Poly,
+    coeffs: Vec<Poly>,
+    pq: Option<PqPolys>,
+}
+
+/// What the exact χ says at one point.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ExactForm {
+    /// χ's coefficients, highest power first, each exact-then-rounded.
+    pub coeffs: Vec<f64>,
+    /// The roots, largest modulus first (Im ≥ 0 first among a pair).
+    pub roots: Vec<C64>,
+    /// ρ = max |z|.
+    pub spectral_radius: f64,
+    /// ln ρ, without cancellation for degree 2 (see the module docs).
+    pub growth_per_step: f64,
+    /// Ψ of the dominant root, in [0, π].
+    pub psi: f64,
+    /// The section-4 class (exact for degree 2, tolerance-based beyond).
+    pub class: RootClass,
+}
+
+impl ExactCharpoly {
+    /// Derives `method` (both exact routes) and prepares χ.
+    pub fn new(method: &Method) -> Result<ExactCharpoly, NumericError> {
+        let d = poly::derive(method)?;
+        Ok(ExactCharpoly::from_derivation(&d))
+    }
+
+    /// Prepares χ from a derivation.
+    pub fn from_derivation(d: &poly::Derivation) -> ExactCharpoly {
+        ExactCharpoly {
+            method: d.method.name().to_owned(),
+            params: d.method.params().to_vec(),
+            charpoly: d.charpoly.clone(),
+            coeffs: d.coeffs(),
+            pq: d.p_q().map(|(p, q)| PqPolys::new(p, q)),
+        }
+    }
+
+    /// χ as a polynomial in z and the parameters.
+    pub fn charpoly(&self) -> &Poly {
+        &self.charpoly
+    }
+
+    /// The degree N.
+    pub fn degree(&self) -> usize {
+        self.coeffs.len() - 1
+    }
+
+    /// The shifted polynomials, for a second-order method.
+    pub fn pq(&self) -> Option<&PqPolys> {
+        self.pq.as_ref()
+    }
+
+    /// The parameters as exact rationals.
+    pub fn exact_params(&self, params: &Params) -> Result<HashMap<Sym, Q>, NumericError> {
+        let mut map = HashMap::new();
+        for &s in &self.params {
+            let x = params.get(s.name()).ok_or_else(|| NumericError::MissingParam {
+                method: self.method.clone(),
+                param: s.name().to_owned(),
+            })?;
+            let xq = f64_to_q(x).ok_or_else(|| NumericError::NotFinite {
+                what: format!("parameter `{}`", s.name()),
+            })?;
+            map.insert(s, xq);
+        }
+        Ok(map)
+    }
+
+    /// The coefficients at `params`, highest power first, each evaluated
+    /// exactly and rounded once.
+    pub fn coeffs_at(&self, params: &Params) -> Result<Vec<f64>, NumericError> {
+        let map = self.exact_params(params)?;
+        Ok(self.coeffs.iter().map(|c| q_to_f64(&exact_eval(c, &map))).collect())
+    }
+
+    /// Roots, growth, Ψ and class at `params`.
+    pub fn at(&self, params: &Params) -> Result<ExactForm, NumericError> {
+        let map = self.exact_params(params)?;
+        let coeffs: Vec<f64> = self.coeffs.iter().map(|c| q_to_f64(&exact_eval(c, &map))).collect();
+        match &self.pq {
+            Some(pq) => Ok(second_order_form(pq, &map, coeffs)),
+            None => {
+                let mut roots = polynomial_roots(&coeffs)?;
+                sort_roots(&mut roots);
+                let tol = poly_tolerances(&coeffs, &roots);
+                let class = classify_roots(&roots, &tol);
+                let rho = roots.iter().map(|z| z.norm()).fold(0.0, f64::max);
+                let dom = roots.first().copied().unwrap_or_default();
+                Ok(ExactForm {
+                    coeffs,
+                    psi: psi_of(dom),
+                    spectral_radius: rho,
+                    growth_per_step: rho.ln(),
+                    class,
+                    roots,
+                })
+            }
+        }
+    }
+}
+
+fn exact_eval(p: &Poly, map: &HashMap<Sym, Q>) -> Q {
+    p.eval(map).expect("every parameter has a value")
+}
+
+fn sign(x: &Q) -> std::cmp::Ordering {
+    if x.is_zero() {
+        std::cmp::Ordering::Equal
+    } else if x.is_positive() {
+        std::cmp::Ordering::Greater
+    } else {
+        std::cmp::Ordering::Less
+    }
+}
+
+/// The class of a second-order χ exactly at the rational values `map`.
+pub fn exact_pq_class(pq: &PqPolys, map: &HashMap<Sym, Q>) -> RootClass {
+    let s = pq.sign_polys().map(|p| sign(&exact_eval(p, map)));
+    classify_pq(&pq_signs(s))
+}
+
+fn second_order_form(pq: &PqPolys, map: &HashMap<Sym, Q>, coeffs: Vec<f64>) -> ExactForm {
+    let e = |p: &Poly| q_to_f64(&exact_eval(p, map));
+    let (p, q, disc) = (e(&pq.p), e(&pq.q), e(&pq.disc));
+    let class = exact_pq_class(pq, map);
+    let (roots, radius, growth, psi);
+    if disc < 0.0 {
+        // Complex pair p ± j√(q − p²); |z|² = q.
+        let s = (-disc).sqrt();
+        roots = vec![C64::new(p, s), C64::new(p, -s)];
+        radius = q.sqrt();
+        growth = 0.5 * e(&pq.q_minus_1).ln_1p();
+        psi = s.atan2(p);
+    } else if disc == 0.0 {
+        roots = vec![C64::new(p, 0.0); 2];
+        radius = p.abs();
+        growth = if p > 0.0 { e(&pq.p_minus_1).ln_1p() } else { (-e(&pq.p_plus_1)).ln_1p() };
+        psi = if p < 0.0 { std::f64::consts::PI } else { 0.0 };
+    } else {
+        let s = disc.sqrt();
+        // The root with the sign of p is the larger one; the other follows
+        // from the product q, never from a cancelling difference.
+        let big = if p >= 0.0 { p + s } else { p - s };
+        let small = if big != 0.0 { q / big } else { -s };
+        roots = vec![C64::new(big, 0.0), C64::new(small, 0.0)];
+        radius = big.abs();
+        growth = if p == 0.0 {
+            s.ln()
+        } else if p > 0.0 {
+            // |z| − 1 = (p − 1) + s, or −χ(1)/(1 − z_other) when that cancels.
+            let (pm1, direct) = (e(&pq.p_minus_1), e(&pq.p_minus_1) + s);
+            let t = if direct.abs() >= 0.5 * pm1.abs().max(s) {
+                direct
+            } else {
+                -e(&pq.chi_1) / (1.0 - small)
+            };
+            t.ln_1p()
+        } else {
+            let (pp1, direct) = (e(&pq.p_plus_1), s - e(&pq.p_plus_1));
+            let t = if direct.abs() >= 0.5 * pp1.abs().max(s) {
+                direct
+            } else {
+                -e(&pq.chi_minus_1) / (1.0 + small)
+            };
+            t.ln_1p()
+        };
+        psi = if big < 0.0 { std::f64::consts::PI } else { 0.0 };
+    }
+    let mut roots = roots;
+    sort_roots(&mut roots);
+    ExactForm { coeffs, roots, spectral_radius: radius, growth_per_step: growth, psi, class }
+}
+
+
+/// Sorts roots by decreasing modulus, Im ≥ 0 first within a pair, then by
+/// decreasing real part.
+pub fn sort_roots(roots: &mut [C64]) {
+    roots.sort_by(|a, b| {
+        b.norm()
+            .partial_cmp(&a.norm())
+            .unwrap_or(std::cmp::Ordering::Equal)
+            .then((a.im < 0.0).cmp(&(b.im < 0.0)))
+            .then(b.re.partial_cmp(&a.re).unwrap_or(std::cmp::Ordering::Equal))
+    });
+}
+
+/// Roots of a monic polynomial (coefficients highest first, the first 1):
+/// directly for degree 1, as companion-matrix eigenvalues beyond.
+pub fn polynomial_roots(coeffs: &[f64]) -> Result<Vec<C64>, NumericError> {
+    let n = coeffs.len().saturating_sub(1);
+    match n {
+        0 => Ok(Vec::new()),
+        1 => Ok(vec![C64::new(-coeffs[1] / coeffs[0], 0.0)]),
+        _ => {
+            let mut c = DMatrix::<f64>::zeros(n, n);
+            for j in 0..n {
+                c[(0, j)] = -coeffs[j + 1] / coeffs[0];
+            }
+            for i in 1..n {
+                c[(i, i - 1)] = 1.0;
+            }
+            eigenvalues_nalgebra(&c)
+        }
+    }
+}
+
