@@ -10,10 +10,13 @@
 //! `zcheck` crate, which depends on this one.
 
 pub mod classify;
+mod error;
 pub mod load;
 pub mod numeric;
 pub mod sweep;
 pub mod witness;
+
+pub use crate::error::{Error, ErrorKind};
 
 /// The README's examples, run as doctests so the front page never lies.
 #[cfg(doctest)]

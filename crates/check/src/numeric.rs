@@ -36,66 +36,18 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use std::collections::BTreeMap;
-use std::fmt;
+use std::collections::{BTreeMap, HashMap};
 
 use nalgebra::DMatrix;
 use num_traits::ToPrimitive;
-use poly::{Method, Operand, Poly};
+use poly::{Method, Operand, Poly, Sym, Q};
+
+use crate::error::Error;
 
 /// Lanes per block in [`Step::advance_batch`]: small enough that the
 /// registers of a block stay in L1 cache, wide enough to amortise the
 /// dispatch of each instruction.
 pub const BLOCK: usize = 256;
-
-/// Why numeric work on a method failed.
-#[derive(Debug)]
-pub enum NumericError {
-    /// A parameter the method declares has no value.
-    MissingParam {
-        /// The method's name.
-        method: String,
-        /// The parameter without a value.
-        param: String,
-    },
-    /// The exact derivation failed (the two routes disagreed).
-    Derive(poly::Error),
-    /// An eigenvalue solver did not converge within its iteration bound.
-    NoConvergence {
-        /// Which solver.
-        solver: &'static str,
-    },
-    /// A value that must be finite was not.
-    NotFinite {
-        /// What was not finite.
-        what: String,
-    },
-}
-
-impl fmt::Display for NumericError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            NumericError::MissingParam { method, param } => {
-                write!(f, "method `{method}` needs a value for parameter `{param}`: expected it among the given parameters")
-            }
-            NumericError::Derive(e) => write!(f, "{e}"),
-            NumericError::NoConvergence { solver } => {
-                write!(f, "{solver}: eigenvalues did not converge within the iteration bound")
-            }
-            NumericError::NotFinite { what } => {
-                write!(f, "{what} is not finite: expected a finite number")
-            }
-        }
-    }
-}
-
-impl std::error::Error for NumericError {}
-
-impl From<poly::Error> for NumericError {
-    fn from(e: poly::Error) -> Self {
-        NumericError::Derive(e)
-    }
-}
 
 /// Numeric values of a method's parameters, by name (`Phi`, `D`, ...).
 ///
@@ -138,16 +90,29 @@ impl Params {
         self.values.iter().map(|(k, v)| (k.as_str(), *v))
     }
 
+    /// The exact rational values of the parameters `syms` of the method
+    /// named `method`: each `f64` is read exactly, never rounded.
+    ///
+    /// This is the one parameter lookup of the crate: the compiled step, the
+    /// exact reference and the classifier all bind parameters through it.
+    pub fn exact_values(&self, method: &str, syms: &[Sym]) -> Result<HashMap<Sym, Q>, Error> {
+        let mut map = HashMap::with_capacity(syms.len());
+        for &s in syms {
+            let x = self.get(s.name()).ok_or_else(|| Error::missing_param(method, s.name()))?;
+            let xq = f64_to_q(x)
+                .ok_or_else(|| Error::not_finite(&format!("parameter `{}`", s.name())))?;
+            map.insert(s, xq);
+        }
+        Ok(map)
+    }
+
     /// The values of `method`'s parameters in [`Method::params`] order.
-    pub fn values_for(&self, method: &Method) -> Result<Vec<f64>, NumericError> {
+    pub fn values_for(&self, method: &Method) -> Result<Vec<f64>, Error> {
         method
             .params()
             .iter()
             .map(|s| {
-                self.get(s.name()).ok_or_else(|| NumericError::MissingParam {
-                    method: method.name().to_owned(),
-                    param: s.name().to_owned(),
-                })
+                self.get(s.name()).ok_or_else(|| Error::missing_param(method.name(), s.name()))
             })
             .collect()
     }
@@ -158,15 +123,14 @@ impl Params {
 /// powers of the parameter values, and the terms are summed in order.
 ///
 /// Errors when a symbol of `p` has no value in `params`.
-pub fn eval_poly(p: &Poly, params: &Params) -> Result<f64, NumericError> {
+pub fn eval_poly(p: &Poly, params: &Params) -> Result<f64, Error> {
     let mut sum = 0.0;
     for (mono, c) in p.terms() {
         let mut term = q_to_f64(c);
         for &(sym, exp) in mono.factors() {
-            let x = params.get(sym.name()).ok_or_else(|| NumericError::MissingParam {
-                method: String::from("(polynomial)"),
-                param: sym.name().to_owned(),
-            })?;
+            let x = params
+                .get(sym.name())
+                .ok_or_else(|| Error::missing_param("(polynomial)", sym.name()))?;
             term *= x.powi(exp as i32);
         }
         sum += term;
@@ -226,7 +190,7 @@ impl Step {
     /// Compiles `method` at the parameter values `params`.
     ///
     /// Errors when a parameter of the method has no value.
-    pub fn compile(method: &Method, params: &Params) -> Result<Step, NumericError> {
+    pub fn compile(method: &Method, params: &Params) -> Result<Step, Error> {
         let values = params.values_for(method)?;
         let named: Params = method
             .params()
@@ -247,12 +211,7 @@ impl Step {
                     Operand::Start { var, lag } => slot_reg(var, lag),
                     Operand::Stmt(t) => n_slots + t,
                 };
-                let coef = eval_poly(c, &named).map_err(|e| match e {
-                    NumericError::MissingParam { param, .. } => {
-                        NumericError::MissingParam { method: method.name().to_owned(), param }
-                    }
-                    other => other,
-                })?;
+                let coef = eval_poly(c, &named)?;
                 terms.push((src, coef));
             }
             // A unit coefficient first saves a multiplication; the sum is

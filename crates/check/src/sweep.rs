@@ -35,7 +35,8 @@ use std::collections::HashMap;
 use poly::{Method, Poly, RootClass, Sym, Q};
 
 use crate::classify::classify_pq;
-use crate::numeric::{f64_to_q, q_to_f64, NumericError, Params};
+use crate::error::Error;
+use crate::numeric::{f64_to_q, q_to_f64, Params};
 use crate::witness::{exact_pq_class, pq_signs, ExactCharpoly, PqPolys};
 
 /// A univariate polynomial in Φ with `f64` coefficients, evaluated with an
@@ -88,20 +89,11 @@ pub struct Classifier {
 impl Classifier {
     /// Prepares `method` with `params` for its parameters other than Φ (a
     /// value for Φ in `params` is ignored).
-    pub fn new(method: &Method, params: &Params) -> Result<Classifier, NumericError> {
+    pub fn new(method: &Method, params: &Params) -> Result<Classifier, Error> {
         let charpoly = ExactCharpoly::new(method)?;
         let phi = Sym::phi();
-        let mut others: HashMap<Sym, Q> = HashMap::new();
-        for &s in method.params().iter().filter(|&&s| s != phi) {
-            let x = params.get(s.name()).ok_or_else(|| NumericError::MissingParam {
-                method: method.name().to_owned(),
-                param: s.name().to_owned(),
-            })?;
-            let xq = f64_to_q(x).ok_or_else(|| NumericError::NotFinite {
-                what: format!("parameter `{}`", s.name()),
-            })?;
-            others.insert(s, xq);
-        }
+        let syms: Vec<Sym> = method.params().iter().copied().filter(|&s| s != phi).collect();
+        let others = params.exact_values(method.name(), &syms)?;
         let kind = match charpoly.pq() {
             Some(pq) => {
                 let sub = |p: &Poly| p.eval_partial(&others);
@@ -280,7 +272,7 @@ pub fn find_boundaries(c: &Classifier, grid: &[f64]) -> Vec<Boundary> {
 }
 
 /// Sweeps `method` (other parameters from `params`) along `grid`.
-pub fn sweep(method: &Method, params: &Params, grid: &[f64]) -> Result<Sweep, NumericError> {
+pub fn sweep(method: &Method, params: &Params, grid: &[f64]) -> Result<Sweep, Error> {
     let c = Classifier::new(method, params)?;
     let first = grid.first().copied().unwrap_or(0.0);
     let last = grid.last().copied().unwrap_or(0.0);

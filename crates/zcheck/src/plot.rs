@@ -12,14 +12,14 @@ use std::path::Path;
 use plotters::prelude::*;
 use poly::Method;
 
-use check::numeric::{initial_slots, NumericError, Params, Step};
+use check::numeric::{initial_slots, Params, Step};
 use check::witness::ExactCharpoly;
 
 /// Why a figure could not be drawn.
 #[derive(Debug)]
 pub enum PlotError {
     /// Numeric work on the method failed.
-    Numeric(NumericError),
+    Numeric(check::Error),
     /// plotters could not draw or write the file.
     Draw {
         /// The file.
@@ -40,8 +40,8 @@ impl fmt::Display for PlotError {
 
 impl std::error::Error for PlotError {}
 
-impl From<NumericError> for PlotError {
-    fn from(e: NumericError) -> Self {
+impl From<check::Error> for PlotError {
+    fn from(e: check::Error) -> Self {
         PlotError::Numeric(e)
     }
 }
@@ -57,7 +57,7 @@ pub fn samples(
     method: &Method,
     params: &Params,
     n_steps: usize,
-) -> Result<Vec<(f64, f64)>, NumericError> {
+) -> Result<Vec<(f64, f64)>, check::Error> {
     let step = Step::compile(method, params)?;
     let y_name = if method.state().iter().any(|s| s == "y") {
         "y".to_owned()

@@ -5,28 +5,28 @@ use nalgebra::DMatrix;
 use num_traits::Zero;
 
 use super::C64;
-use crate::numeric::NumericError;
+use crate::error::Error;
 
 /// Witness 1: eigenvalues of P by nalgebra's real Schur decomposition,
 /// stopped after 100·N iterations.
-pub fn eigenvalues_nalgebra(p: &DMatrix<f64>) -> Result<Vec<C64>, NumericError> {
+pub fn eigenvalues_nalgebra(p: &DMatrix<f64>) -> Result<Vec<C64>, Error> {
     let n = p.nrows();
     let schur = nalgebra::linalg::Schur::try_new(p.clone(), f64::EPSILON, 100 * n.max(1))
-        .ok_or(NumericError::NoConvergence { solver: "nalgebra" })?;
+        .ok_or(Error::no_convergence("nalgebra"))?;
     Ok(schur.complex_eigenvalues().iter().copied().collect())
 }
 
 /// Witness 2: eigenvalues of P by faer.
-pub fn eigenvalues_faer(p: &DMatrix<f64>) -> Result<Vec<C64>, NumericError> {
+pub fn eigenvalues_faer(p: &DMatrix<f64>) -> Result<Vec<C64>, Error> {
     let m = faer::Mat::<f64>::from_fn(p.nrows(), p.ncols(), |i, j| p[(i, j)]);
     m.eigenvalues().map_err(|_| NoConvergenceFaer.into())
 }
 
 struct NoConvergenceFaer;
 
-impl From<NoConvergenceFaer> for NumericError {
+impl From<NoConvergenceFaer> for Error {
     fn from(_: NoConvergenceFaer) -> Self {
-        NumericError::NoConvergence { solver: "faer" }
+        Error::no_convergence("faer")
     }
 }
 

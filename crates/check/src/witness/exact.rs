@@ -9,7 +9,8 @@ use poly::{Method, Poly, RootClass, Sym, Q};
 
 use super::{eigenvalues_nalgebra, poly_tolerances, C64};
 use crate::classify::{classify_pq, classify_roots, psi_of, PqSigns};
-use crate::numeric::{f64_to_q, q_to_f64, NumericError, Params};
+use crate::error::Error;
+use crate::numeric::{q_to_f64, Params};
 
 /// The shifted polynomials of a second-order χ = z² − 2p·z + q, exact in
 /// the parameters (see [`crate::classify`]).
@@ -112,7 +113,7 @@ pub struct ExactForm {
 
 impl ExactCharpoly {
     /// Derives `method` (both exact routes) and prepares χ.
-    pub fn new(method: &Method) -> Result<ExactCharpoly, NumericError> {
+    pub fn new(method: &Method) -> Result<ExactCharpoly, Error> {
         let d = poly::derive(method)?;
         Ok(ExactCharpoly::from_derivation(&d))
     }
@@ -144,30 +145,19 @@ impl ExactCharpoly {
     }
 
     /// The parameters as exact rationals.
-    pub fn exact_params(&self, params: &Params) -> Result<HashMap<Sym, Q>, NumericError> {
-        let mut map = HashMap::new();
-        for &s in &self.params {
-            let x = params.get(s.name()).ok_or_else(|| NumericError::MissingParam {
-                method: self.method.clone(),
-                param: s.name().to_owned(),
-            })?;
-            let xq = f64_to_q(x).ok_or_else(|| NumericError::NotFinite {
-                what: format!("parameter `{}`", s.name()),
-            })?;
-            map.insert(s, xq);
-        }
-        Ok(map)
+    pub fn exact_params(&self, params: &Params) -> Result<HashMap<Sym, Q>, Error> {
+        params.exact_values(&self.method, &self.params)
     }
 
     /// The coefficients at `params`, highest power first, each evaluated
     /// exactly and rounded once.
-    pub fn coeffs_at(&self, params: &Params) -> Result<Vec<f64>, NumericError> {
+    pub fn coeffs_at(&self, params: &Params) -> Result<Vec<f64>, Error> {
         let map = self.exact_params(params)?;
         Ok(self.coeffs.iter().map(|c| q_to_f64(&exact_eval(c, &map))).collect())
     }
 
     /// Roots, growth, Ψ and class at `params`.
-    pub fn at(&self, params: &Params) -> Result<ExactForm, NumericError> {
+    pub fn at(&self, params: &Params) -> Result<ExactForm, Error> {
         let map = self.exact_params(params)?;
         let coeffs: Vec<f64> = self.coeffs.iter().map(|c| q_to_f64(&exact_eval(c, &map))).collect();
         match &self.pq {
@@ -264,7 +254,6 @@ fn second_order_form(pq: &PqPolys, map: &HashMap<Sym, Q>, coeffs: Vec<f64>) -> E
     ExactForm { coeffs, roots, spectral_radius: radius, growth_per_step: growth, psi, class }
 }
 
-
 /// Sorts roots by decreasing modulus, Im ≥ 0 first within a pair, then by
 /// decreasing real part.
 pub fn sort_roots(roots: &mut [C64]) {
@@ -279,7 +268,7 @@ pub fn sort_roots(roots: &mut [C64]) {
 
 /// Roots of a monic polynomial (coefficients highest first, the first 1):
 /// directly for degree 1, as companion-matrix eigenvalues beyond.
-pub fn polynomial_roots(coeffs: &[f64]) -> Result<Vec<C64>, NumericError> {
+pub fn polynomial_roots(coeffs: &[f64]) -> Result<Vec<C64>, Error> {
     let n = coeffs.len().saturating_sub(1);
     match n {
         0 => Ok(Vec::new()),
@@ -296,4 +285,3 @@ pub fn polynomial_roots(coeffs: &[f64]) -> Result<Vec<C64>, NumericError> {
         }
     }
 }
-

@@ -61,7 +61,8 @@ use nalgebra::DMatrix;
 use num_complex::Complex;
 use poly::Method;
 
-use crate::numeric::{NumericError, Params, Step};
+use crate::error::Error;
+use crate::numeric::{Params, Step};
 
 mod eigen;
 mod exact;
@@ -141,7 +142,7 @@ pub struct Witnesses {
 
 impl Witnesses {
     /// Derives `method` exactly and prepares its witnesses.
-    pub fn new(method: &Method) -> Result<Witnesses, NumericError> {
+    pub fn new(method: &Method) -> Result<Witnesses, Error> {
         Ok(Witnesses::from_derivation(&poly::derive(method)?))
     }
 
@@ -165,7 +166,7 @@ impl Witnesses {
 
     /// All four witnesses at `params`, with a simulation of `steps` steps
     /// (none when 0).
-    pub fn at(&self, params: &Params, steps: u64) -> Result<PointReport, NumericError> {
+    pub fn at(&self, params: &Params, steps: u64) -> Result<PointReport, Error> {
         self.at_with_progress(params, steps, &mut |_| {})
     }
 
@@ -175,11 +176,11 @@ impl Witnesses {
         params: &Params,
         steps: u64,
         progress: &mut dyn FnMut(u64),
-    ) -> Result<PointReport, NumericError> {
+    ) -> Result<PointReport, Error> {
         let step = Step::compile(&self.method, params)?;
         let p = step.transition_matrix();
         if p.iter().any(|x| !x.is_finite()) {
-            return Err(NumericError::NotFinite { what: "the transition matrix".into() });
+            return Err(Error::not_finite("the transition matrix"));
         }
         let exact = self.charpoly.at(params)?;
         let (tolerance, condition, cluster) = tolerances(&p, &exact.coeffs, &exact.roots);
@@ -251,4 +252,3 @@ impl Witnesses {
         })
     }
 }
-

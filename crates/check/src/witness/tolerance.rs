@@ -5,7 +5,6 @@ use num_traits::Zero;
 
 use super::{eigen_condition, C64, C_CLUSTER, C_ISOLATED};
 
-
 pub(super) fn scale_of(p: &DMatrix<f64>) -> f64 {
     p.norm().max(1.0)
 }
@@ -84,4 +83,3 @@ pub fn tolerances(
     }
     (tol, kappa, sizes)
 }
-
