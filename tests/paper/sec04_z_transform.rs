@@ -4,6 +4,7 @@
 //! rather than arctan, the samples per period of the harmonic cases, and
 //! the p, q form of second-order χ.
 
+use check::numeric::ParamsF64;
 use poly::{Poly, PolyMatrix};
 use zcheck::paper::Verdict::{self, *};
 

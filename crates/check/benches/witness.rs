@@ -2,6 +2,7 @@
 //! (spectral radius + class), and the compiled step against hand-written
 //! loops for one state and for a batch of 4096 states.
 
+use check::numeric::ParamsF64;
 use std::hint::black_box;
 
 use check::numeric::{Batch, Params, Step};

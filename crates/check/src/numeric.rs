@@ -27,7 +27,7 @@
 //! of P is the state after one step from `e_j`.
 //!
 //! ```
-//! use check::numeric::{Params, Step};
+//! use check::numeric::{Params, ParamsF64, Step};
 //! let method = poly::builtin("false_euler")?;
 //! let step = Step::compile(&method, &Params::phi(0.5))?;
 //! let mut state = step.state(&[0.0, 1.0]); // v0 = 0, y0 = 1
@@ -36,7 +36,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use std::collections::{BTreeMap, HashMap};
+use std::collections::HashMap;
 
 use nalgebra::DMatrix;
 use num_traits::ToPrimitive;
@@ -49,72 +49,103 @@ use crate::error::Error;
 /// dispatch of each instruction.
 pub const BLOCK: usize = 256;
 
-/// Numeric values of a method's parameters, by name (`Phi`, `D`, ...).
-///
-/// Values for parameters a method does not declare are ignored, so one
-/// `Params` can serve several methods.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct Params {
-    values: BTreeMap<String, f64>,
-}
+pub use poly::Params;
 
-impl Params {
+/// The `f64` view of the one exact parameter type, [`poly::Params`].
+///
+/// Values set from an `f64` are stored exactly (every finite `f64` is a
+/// rational); values read as `f64` are the nearest double to the exact
+/// value. A decimal a user typed (parsed exactly by `poly`) therefore stays
+/// the decimal on the exact side, and the numeric side sees its nearest
+/// double.
+pub trait ParamsF64: Sized {
     /// Only `Phi` set.
-    pub fn phi(phi: f64) -> Params {
-        Params::default().with("Phi", phi)
-    }
+    ///
+    /// # Panics
+    /// When `phi` is not finite: validate user input at the boundary.
+    fn phi(phi: f64) -> Self;
 
     /// This set with `name = value` added or replaced.
-    pub fn with(mut self, name: &str, value: f64) -> Params {
-        self.set(name, value);
-        self
-    }
+    ///
+    /// # Panics
+    /// When `value` is not finite: validate user input at the boundary
+    /// (or use [`ParamsF64::try_with`]).
+    fn with(self, name: &str, value: f64) -> Self;
 
-    /// Sets `name = value`.
-    pub fn set(&mut self, name: &str, value: f64) {
-        self.values.insert(name.to_owned(), value);
-    }
+    /// [`ParamsF64::with`], refusing a value that is not finite.
+    fn try_with(self, name: &str, value: f64) -> Result<Self, Error>;
 
-    /// The value of `name`, if set.
-    pub fn get(&self, name: &str) -> Option<f64> {
-        self.values.get(name).copied()
-    }
+    /// Sets `name = value` (see [`ParamsF64::with`]).
+    fn set(&mut self, name: &str, value: f64);
 
-    /// The value of `Phi` (NaN when unset).
-    pub fn phi_value(&self) -> f64 {
-        self.get("Phi").unwrap_or(f64::NAN)
-    }
+    /// The value of `name` as the nearest `f64`, if set.
+    fn get(&self, name: &str) -> Option<f64>;
 
-    /// Every `(name, value)` pair, sorted by name.
-    pub fn iter(&self) -> impl Iterator<Item = (&str, f64)> {
-        self.values.iter().map(|(k, v)| (k.as_str(), *v))
-    }
+    /// The value of `Phi` as the nearest `f64` (NaN when unset).
+    fn phi_value(&self) -> f64;
 
-    /// The exact rational values of the parameters `syms` of the method
-    /// named `method`: each `f64` is read exactly, never rounded.
+    /// Every `(name, value)` pair as `f64`, sorted by name.
+    fn iter_f64(&self) -> Vec<(&'static str, f64)>;
+
+    /// The values of `method`'s parameters in [`Method::params`] order.
+    fn values_for(&self, method: &Method) -> Result<Vec<f64>, Error>;
+
+    /// The exact values of the parameters `syms` of the method named
+    /// `method`.
     ///
     /// This is the one parameter lookup of the crate: the compiled step, the
     /// exact reference and the classifier all bind parameters through it.
-    pub fn exact_values(&self, method: &str, syms: &[Sym]) -> Result<HashMap<Sym, Q>, Error> {
-        let mut map = HashMap::with_capacity(syms.len());
-        for &s in syms {
-            let x = self.get(s.name()).ok_or_else(|| Error::missing_param(method, s.name()))?;
-            let xq = f64_to_q(x)
-                .ok_or_else(|| Error::not_finite(&format!("parameter `{}`", s.name())))?;
-            map.insert(s, xq);
-        }
-        Ok(map)
+    fn exact_values(&self, method: &str, syms: &[Sym]) -> Result<HashMap<Sym, Q>, Error>;
+}
+
+impl ParamsF64 for Params {
+    fn phi(phi: f64) -> Params {
+        Params::new().with("Phi", phi)
     }
 
-    /// The values of `method`'s parameters in [`Method::params`] order.
-    pub fn values_for(&self, method: &Method) -> Result<Vec<f64>, Error> {
+    fn with(mut self, name: &str, value: f64) -> Params {
+        ParamsF64::set(&mut self, name, value);
+        self
+    }
+
+    fn try_with(self, name: &str, value: f64) -> Result<Params, Error> {
+        match f64_to_q(value) {
+            Some(x) => Ok(self.bind(name, x)),
+            None => Err(Error::not_finite(&format!("parameter `{name}`"))),
+        }
+    }
+
+    fn set(&mut self, name: &str, value: f64) {
+        let x =
+            f64_to_q(value).unwrap_or_else(|| panic!("parameter `{name}` = {value} is not finite"));
+        self.insert(name, x);
+    }
+
+    fn get(&self, name: &str) -> Option<f64> {
+        self.value(name).map(q_to_f64)
+    }
+
+    fn phi_value(&self) -> f64 {
+        ParamsF64::get(self, "Phi").unwrap_or(f64::NAN)
+    }
+
+    fn iter_f64(&self) -> Vec<(&'static str, f64)> {
+        self.iter().map(|(k, v)| (k, q_to_f64(v))).collect()
+    }
+
+    fn values_for(&self, method: &Method) -> Result<Vec<f64>, Error> {
         method
             .params()
             .iter()
             .map(|s| {
-                self.get(s.name()).ok_or_else(|| Error::missing_param(method.name(), s.name()))
+                ParamsF64::get(self, s.name())
+                    .ok_or_else(|| Error::missing_param(method.name(), s.name()))
             })
             .collect()
+    }
+
+    fn exact_values(&self, method: &str, syms: &[Sym]) -> Result<HashMap<Sym, Q>, Error> {
+        self.values_of(syms).map_err(|name| Error::missing_param(method, name))
     }
 }
 

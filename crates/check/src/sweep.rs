@@ -29,6 +29,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+use crate::numeric::ParamsF64;
 use std::cmp::Ordering;
 use std::collections::HashMap;
 

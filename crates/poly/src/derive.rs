@@ -273,6 +273,22 @@ pub fn charpoly_state_route(p: &PolyMatrix) -> Poly {
     Poly::from_coeffs_in(Sym::z(), &c)
 }
 
+/// Parses `src` (named `file` in error messages) and derives it by both
+/// routes: the common case in one call.
+///
+/// ```
+/// let src = "method mine\nstate v y\nv = v - Phi*y\ny = y + Phi*v\n";
+/// let d = poly::derive_source("mine.zm", src)?;
+/// assert_eq!(d.charpoly.to_string(), "z^2 - 2*z + Phi^2*z + 1");
+/// let bad = poly::derive_source("bad.zm", "method m\nstate v\nv = v*v\n").unwrap_err();
+/// assert_eq!(bad.kind(), poly::ErrorKind::Nonlinear);
+/// assert!(bad.to_string().starts_with("bad.zm:3:5:"));
+/// # Ok::<(), poly::Error>(())
+/// ```
+pub fn derive_source(file: &str, src: &str) -> Result<Derivation, Error> {
+    derive(&Method::parse(file, src)?)
+}
+
 /// Derives a method by both routes and checks that they agree exactly.
 ///
 /// ```

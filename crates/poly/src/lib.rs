@@ -26,6 +26,27 @@
 //! assert_eq!(q.to_string(), "1 + 1/4*Phi^4");
 //! # Ok::<(), poly::Error>(())
 //! ```
+//!
+//! # Input safety
+//!
+//! `.zm` text is untrusted input. The parser is a recursive-descent parser
+//! with limits on tokens per line (which bounds expression nesting),
+//! exponents and history depth, so no input makes it recurse or allocate
+//! without bound, and none makes it panic (property-tested). Every
+//! analysis is exact: no tolerance decides anything, and fast paths (dense
+//! integer determinants) fall back to the exact path on overflow.
+//!
+//! # Error reporting
+//!
+//! [`Error`] is the crate's one error type: [`Error::kind`] to branch on, and
+//! a message that starts with `file:line:column:` and says what was
+//! expected, followed by the offending line and a caret:
+//!
+//! ```
+//! let e = poly::Method::parse("bad.zm", "method m\nstate v y\nv = v*y\n").unwrap_err();
+//! assert_eq!(e.kind(), poly::ErrorKind::Nonlinear);
+//! assert!(e.to_string().starts_with("bad.zm:3:5: nonlinear term"));
+//! ```
 
 mod algebraic;
 mod builtins;
@@ -35,6 +56,7 @@ mod derive;
 mod error;
 mod matrix;
 mod method;
+mod params;
 mod poly;
 pub mod series;
 pub mod stability;
@@ -50,12 +72,13 @@ pub use crate::builtins::{
 pub use crate::class::RootClass;
 pub use crate::cost::{step_cost, OpCount, StepCost};
 pub use crate::derive::{
-    charpoly, charpoly_state_route, charpoly_z_route, derive, transition_matrix, w, z_matrix,
-    Derivation,
+    charpoly, charpoly_state_route, charpoly_z_route, derive, derive_source, transition_matrix, w,
+    z_matrix, Derivation,
 };
 pub use crate::error::{Error, ErrorKind, Span};
 pub use crate::matrix::PolyMatrix;
 pub use crate::method::{Assign, Method, Operand, Target};
+pub use crate::params::Params;
 pub use crate::poly::{Monomial, Poly};
 pub use crate::sym::Sym;
 pub use crate::upoly::UPoly;

@@ -9,6 +9,7 @@
 //!
 //! `cargo bench -p check --bench tradeoff`
 
+use check::numeric::ParamsF64;
 use std::hint::black_box;
 use std::time::Duration;
 

@@ -6,6 +6,7 @@
 //! is T = Φ, the samples are y_k at t = kΦ from v₀ = 0, y₀ = 1 (Verlet's
 //! `y@1 = y₀`, the paper's `y2:=1`), and the exact solution is cos t.
 
+use check::numeric::ParamsF64;
 use std::fmt;
 use std::path::Path;
 
@@ -127,8 +128,12 @@ where
     let n = (t_max / phi).ceil() as usize;
     let pts = samples(m, params, n)?;
     let y_lim = pts.iter().map(|p| p.1.abs()).fold(1.2f64, f64::max).min(3.0);
-    let extra: Vec<String> =
-        params.iter().filter(|(k, _)| *k != "Phi").map(|(k, v)| format!(", {k} = {v}")).collect();
+    let extra: Vec<String> = params
+        .iter_f64()
+        .into_iter()
+        .filter(|(k, _)| *k != "Phi")
+        .map(|(k, v)| format!(", {k} = {v}"))
+        .collect();
     let mut chart = ChartBuilder::on(area)
         .caption(
             format!("{}: y(t), Phi = {phi}{}, v0 = 0, y0 = 1", m.name(), extra.concat()),

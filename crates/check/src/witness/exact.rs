@@ -1,6 +1,7 @@
 //! The reference: the exact χ(z) from `poly`, evaluated exactly at the
 //! rational value of the `f64` parameters and rounded once.
 
+use crate::numeric::ParamsF64;
 use std::collections::HashMap;
 
 use nalgebra::DMatrix;

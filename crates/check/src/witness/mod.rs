@@ -57,6 +57,7 @@
 //! loose (a perturbed reference fails) nor tight (every built-in at every
 //! class boundary passes).
 
+use crate::numeric::ParamsF64;
 use nalgebra::DMatrix;
 use num_complex::Complex;
 use poly::Method;

@@ -2,6 +2,7 @@
 //! and a stability limit (False Euler at Φ = 2: a double root at −1, a Jordan
 //! block, linear growth).
 
+use check::numeric::ParamsF64;
 use std::collections::HashMap;
 
 use check::classify::classify_roots;

@@ -1,6 +1,7 @@
 //! The numeric interpreter against hand-written recursions and the exact
 //! transition matrix.
 
+use check::numeric::ParamsF64;
 use check::numeric::{eval_poly, initial_slots, Batch, Params, Step};
 
 fn compile(name: &str, params: &Params) -> Step {

@@ -1,6 +1,7 @@
 //! Rounded summaries of sweeps and witness tables, snapshotted so a change
 //! in any class boundary or verdict shows up in review.
 
+use check::numeric::ParamsF64;
 use std::fmt::Write;
 
 use check::numeric::Params;

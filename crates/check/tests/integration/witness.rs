@@ -3,6 +3,7 @@
 //! notice a small error; sweeps find the boundaries known in closed form.
 
 use check::classify::{classify_pq, classify_roots, PqSigns};
+use check::numeric::ParamsF64;
 use check::numeric::{Params, Step};
 use check::sweep::{default_grid, sweep, Classifier};
 use check::witness::{

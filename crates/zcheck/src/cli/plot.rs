@@ -1,6 +1,7 @@
 //! `zcheck plot`: the paper's figures as SVG files (y(t) against the exact
 //! cosine for the methods of sections 5–11, and the z-plane loci).
 
+use check::numeric::ParamsF64;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -55,7 +56,7 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
         names.iter().map(|n| check::load::load_method(n)).collect::<Result<Vec<_>, _>>()?;
     std::fs::create_dir_all(&args.out)
         .with_context(|| format!("{}: cannot create", args.out.display()))?;
-    let params = Params::phi(args.phi);
+    let params = Params::new().try_with("Phi", args.phi)?;
     let mut written = Vec::new();
     if matches!(args.what, What::Yt | What::All) {
         for m in &methods {

@@ -2,6 +2,7 @@
 //! Φ (and, with `--boundaries`, at both sides of every class change a sweep
 //! finds), as a table or JSON. Exits non-zero when any point disagrees.
 
+use check::numeric::ParamsF64;
 use std::io::IsTerminal;
 use std::process::ExitCode;
 

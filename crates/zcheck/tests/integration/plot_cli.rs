@@ -1,6 +1,7 @@
 //! `zcheck plot` writes SVG files that state Φ, and the samples it draws are
 //! the compiled recursion from v0 = 0, y0 = 1.
 
+use check::numeric::ParamsF64;
 use std::process::Command;
 
 use check::numeric::Params;

@@ -4,6 +4,7 @@
 //! exact stability limit, the ranking against its own definition, and the
 //! advisor against `poly::stability` and the numeric classification.
 
+use check::numeric::ParamsF64;
 use std::collections::HashMap;
 use std::f64::consts::PI;
 
