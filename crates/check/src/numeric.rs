@@ -460,13 +460,13 @@ fn run_block<const B: usize>(instrs: &[Instr], regs: &mut [Vec<f64>]) {
                     }
                 }
                 (1, true, _) => d.copy_from_slice(r(0)),
-                (1, false, _) => lin1(d, c[0], r(0)),
-                (2, true, _) => lin2u(d, r(0), c[1], r(1)),
-                (2, false, _) => lin2(d, c[0], r(0), c[1], r(1)),
-                (3, true, _) => lin3u(d, r(0), c[1], r(1), c[2], r(2)),
-                (3, false, _) => lin3(d, c[0], r(0), c[1], r(1), c[2], r(2)),
-                (_, true, _) => lin4u(d, r(0), c[1], r(1), c[2], r(2), c[3], r(3)),
-                (_, false, _) => lin4(d, c[0], r(0), c[1], r(1), c[2], r(2), c[3], r(3)),
+                (1, false, _) => lin::<B, 1, false>(d, &c, [r(0)]),
+                (2, true, _) => lin::<B, 2, true>(d, &c, [r(0), r(1)]),
+                (2, false, _) => lin::<B, 2, false>(d, &c, [r(0), r(1)]),
+                (3, true, _) => lin::<B, 3, true>(d, &c, [r(0), r(1), r(2)]),
+                (3, false, _) => lin::<B, 3, false>(d, &c, [r(0), r(1), r(2)]),
+                (_, true, _) => lin::<B, 4, true>(d, &c, [r(0), r(1), r(2), r(3)]),
+                (_, false, _) => lin::<B, 4, false>(d, &c, [r(0), r(1), r(2), r(3)]),
             }
         }
         regs[ins.dst] = dst;
@@ -480,89 +480,21 @@ fn add_scaled<const B: usize>(d: &mut [f64; B], c: f64, a: &[f64; B]) {
     }
 }
 
+/// `d = Σ c[i]·src[i]` over the `N` sources, summed left to right (the
+/// order of the single-state runner); with `UNIT` the first coefficient is
+/// exactly 1 and its product is skipped.
 #[inline(always)]
-fn lin1<const B: usize>(d: &mut [f64; B], c0: f64, a: &[f64; B]) {
-    for l in 0..B {
-        d[l] = c0 * a[l];
-    }
-}
-
-#[inline(always)]
-fn lin2u<const B: usize>(d: &mut [f64; B], a: &[f64; B], c1: f64, b: &[f64; B]) {
-    for l in 0..B {
-        d[l] = a[l] + c1 * b[l];
-    }
-}
-
-#[inline(always)]
-fn lin2<const B: usize>(d: &mut [f64; B], c0: f64, a: &[f64; B], c1: f64, b: &[f64; B]) {
-    for l in 0..B {
-        d[l] = c0 * a[l] + c1 * b[l];
-    }
-}
-
-#[inline(always)]
-fn lin3u<const B: usize>(
+fn lin<const B: usize, const N: usize, const UNIT: bool>(
     d: &mut [f64; B],
-    a: &[f64; B],
-    c1: f64,
-    b: &[f64; B],
-    c2: f64,
-    e: &[f64; B],
+    c: &[f64; 4],
+    src: [&[f64; B]; N],
 ) {
     for l in 0..B {
-        d[l] = a[l] + c1 * b[l] + c2 * e[l];
-    }
-}
-
-#[inline(always)]
-#[allow(clippy::too_many_arguments)]
-fn lin3<const B: usize>(
-    d: &mut [f64; B],
-    c0: f64,
-    a: &[f64; B],
-    c1: f64,
-    b: &[f64; B],
-    c2: f64,
-    e: &[f64; B],
-) {
-    for l in 0..B {
-        d[l] = c0 * a[l] + c1 * b[l] + c2 * e[l];
-    }
-}
-
-#[inline(always)]
-#[allow(clippy::too_many_arguments)]
-fn lin4u<const B: usize>(
-    d: &mut [f64; B],
-    a: &[f64; B],
-    c1: f64,
-    b: &[f64; B],
-    c2: f64,
-    e: &[f64; B],
-    c3: f64,
-    g: &[f64; B],
-) {
-    for l in 0..B {
-        d[l] = a[l] + c1 * b[l] + c2 * e[l] + c3 * g[l];
-    }
-}
-
-#[inline(always)]
-#[allow(clippy::too_many_arguments)]
-fn lin4<const B: usize>(
-    d: &mut [f64; B],
-    c0: f64,
-    a: &[f64; B],
-    c1: f64,
-    b: &[f64; B],
-    c2: f64,
-    e: &[f64; B],
-    c3: f64,
-    g: &[f64; B],
-) {
-    for l in 0..B {
-        d[l] = c0 * a[l] + c1 * b[l] + c2 * e[l] + c3 * g[l];
+        let mut v = if UNIT { src[0][l] } else { c[0] * src[0][l] };
+        for i in 1..N {
+            v += c[i] * src[i][l];
+        }
+        d[l] = v;
     }
 }
 
