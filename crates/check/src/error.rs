@@ -21,8 +21,12 @@ pub enum ErrorKind {
     NoConvergence,
     /// A value that must be finite was not.
     NotFinite,
-    /// A file could not be read (see [`Error::path`]).
+    /// A file could not be read (see [`Error::path`]), or is no `.zm`
+    /// file (a directory, empty, too large).
     Io,
+    /// A value is finite but beyond what the `f64` witnesses can work with
+    /// (they square magnitudes): `f64` cannot represent the question.
+    OutOfRange,
 }
 
 /// Why numeric work on a method, or loading it, failed.
@@ -68,8 +72,26 @@ impl Error {
         Error::new(ErrorKind::NotFinite, format!("{what} is not finite: expected a finite number"))
     }
 
+    pub(crate) fn out_of_range(what: &str) -> Error {
+        Error::new(
+            ErrorKind::OutOfRange,
+            format!("{what}: f64 cannot represent this question (expected magnitudes below 1e100)"),
+        )
+    }
+
+    /// A path that is no readable `.zm` file: `what` says why.
+    pub(crate) fn not_a_method_file(path: &Path, what: &str) -> Error {
+        let mut e = Error::new(
+            ErrorKind::Io,
+            format!("{}: {what}", poly::show_invisible(&path.display().to_string())),
+        );
+        e.inner.path = Some(path.to_owned());
+        e
+    }
+
     pub(crate) fn io(path: &Path, source: std::io::Error) -> Error {
-        let mut e = Error::new(ErrorKind::Io, format!("{}: cannot read", path.display()));
+        let shown = poly::show_invisible(&path.display().to_string()).into_owned();
+        let mut e = Error::new(ErrorKind::Io, format!("{shown}: cannot read"));
         e.inner.path = Some(path.to_owned());
         e.inner.source = Some(Source::Io(source));
         e

@@ -75,12 +75,13 @@ pub use crate::derive::{
     charpoly, charpoly_state_route, charpoly_z_route, derive, derive_source, transition_matrix, w,
     z_matrix, Derivation,
 };
-pub use crate::error::{Error, ErrorKind, Span};
+pub use crate::error::{show_invisible, Error, ErrorKind, Span};
 pub use crate::matrix::PolyMatrix;
 pub use crate::method::{Assign, Method, Operand, Target};
 pub use crate::params::Params;
 pub use crate::poly::{Monomial, Poly};
 pub use crate::sym::Sym;
+pub use crate::syntax::parse_number;
 pub use crate::upoly::UPoly;
 
 /// The one exact scalar type: arbitrary-precision rationals.

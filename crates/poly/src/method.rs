@@ -266,7 +266,19 @@ impl Method {
     /// # Ok::<(), poly::Error>(())
     /// ```
     pub fn parse(file: &str, src: &str) -> Result<Method, Error> {
+        // A byte-order mark some editors put first is not part of the text.
+        let src = src.strip_prefix('\u{FEFF}').unwrap_or(src);
         Method::parse_inner(src).map_err(|e| e.located(file, src))
+    }
+
+    /// [`Method::parse`] on raw bytes: bytes that are not UTF-8 are an
+    /// [`ErrorKind::Encoding`](crate::ErrorKind::Encoding) error located at
+    /// the first bad byte's line and column.
+    pub fn parse_bytes(file: &str, bytes: &[u8]) -> Result<Method, Error> {
+        match std::str::from_utf8(bytes) {
+            Ok(src) => Method::parse(file, src),
+            Err(e) => Err(Error::not_utf8(file, bytes, e)),
+        }
     }
 
     fn parse_inner(src: &str) -> Result<Method, Error> {

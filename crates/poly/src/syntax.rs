@@ -32,6 +32,12 @@ pub(crate) const MAX_HISTORY: u32 = 32;
 /// stack on a pathological line.
 pub(crate) const MAX_TOKENS_PER_LINE: usize = 1000;
 
+/// The most digits a number literal may have, and the largest power of ten
+/// its `e` exponent may give: far beyond any coefficient a method needs, and
+/// small enough that exact arithmetic on them stays fast.
+const MAX_DIGITS: usize = 1000;
+const MAX_DECIMAL_EXPONENT: i64 = 1000;
+
 #[derive(Clone, Debug, PartialEq)]
 enum Tok {
     Name(String),
@@ -104,7 +110,14 @@ fn lex(src: &str) -> Result<Vec<Token>, Error> {
             if c == '#' {
                 break;
             }
-            if c.is_whitespace() {
+            if c == '\r' {
+                return Err(Error::new(
+                    ErrorKind::Syntax,
+                    span(1),
+                    "carriage return U+000D inside a line (old Mac line endings?): expected line feed (LF) or CRLF line endings",
+                ));
+            }
+            if c == '\t' || (c.is_whitespace() && !c.is_control()) {
                 i += 1;
                 continue;
             }
@@ -136,7 +149,7 @@ fn lex(src: &str) -> Result<Vec<Token>, Error> {
             return Err(Error::new(
                 ErrorKind::Syntax,
                 span(1),
-                format!("unexpected character `{c}`: expected a name, a number, an operator (+ - * / ^), `=`, `@` or parentheses"),
+                format!("unexpected character {}: expected a name, a number, an operator (+ - * / ^), `=`, `@` or parentheses", describe_char(c)),
             ));
         }
         out.push(Token {
@@ -147,6 +160,26 @@ fn lex(src: &str) -> Result<Vec<Token>, Error> {
     let last = src.lines().count() as u32;
     out.push(Token { tok: Tok::Eof, span: Span { line: last.max(1), col: 1, len: 1 } });
     Ok(out)
+}
+
+/// A character for a message: printable ASCII in backquotes; anything else
+/// by its code point, with a hint for the look-alikes people paste.
+fn describe_char(c: char) -> String {
+    let hint = match c {
+        '\u{2212}' | '\u{2013}' | '\u{2014}' => " (a dash: write the ASCII minus `-`)",
+        '\u{00D7}' | '\u{22C5}' | '\u{00B7}' => " (a multiplication sign: write `*`)",
+        '\u{00F7}' | '\u{2215}' => " (a division sign: write `/`)",
+        '\u{FEFF}' => " (a byte-order mark)",
+        '\u{200B}' => " (a zero-width space)",
+        _ => "",
+    };
+    if c.is_ascii_graphic() {
+        format!("`{c}`")
+    } else if crate::error::is_invisible(c) {
+        format!("U+{:04X}{hint}", c as u32)
+    } else {
+        format!("`{c}` U+{:04X}{hint}", c as u32)
+    }
 }
 
 /// Lexes an exact decimal number; plain integers become `Tok::Int` so they can
@@ -168,6 +201,19 @@ fn lex_number(chars: &[char]) -> Result<(Tok, usize), String> {
             i += 1;
         }
     }
+    if i < chars.len() && chars[i] == '.' {
+        let mut j = i;
+        while j < chars.len() && (chars[j].is_ascii_digit() || chars[j] == '.') {
+            j += 1;
+        }
+        return Err(format!(
+            "malformed number `{}`: expected at most one decimal point",
+            chars[..j].iter().collect::<String>()
+        ));
+    }
+    if digits.len() + frac.len() > MAX_DIGITS {
+        return Err(format!("number too long: expected at most {MAX_DIGITS} digits"));
+    }
     let mut exp: i64 = 0;
     if i < chars.len() && (chars[i] == 'e' || chars[i] == 'E') {
         let mut j = i + 1;
@@ -186,10 +232,14 @@ fn lex_number(chars: &[char]) -> Result<(Tok, usize), String> {
             return Err("malformed number: expected digits after the exponent `e`".into());
         }
         let e: String = chars[start..j].iter().collect();
-        exp = sign * e.parse::<i64>().map_err(|_| "exponent too large".to_string())?;
-        if exp.abs() > 1000 {
-            return Err("exponent too large: expected at most 1000 in magnitude".into());
-        }
+        exp = match e.parse::<i64>() {
+            Ok(e) if e <= MAX_DECIMAL_EXPONENT => sign * e,
+            _ => {
+                return Err(format!(
+                    "exponent too large: expected at most {MAX_DECIMAL_EXPONENT} in magnitude"
+                ))
+            }
+        };
         is_int = false;
         i = j;
     }
@@ -215,6 +265,69 @@ fn lex_number(chars: &[char]) -> Result<(Tok, usize), String> {
         }
     }
     Ok((Tok::Num(q), i))
+}
+
+/// Parses an exact number as a user types it outside a `.zm` file (a
+/// command-line value): an optional sign, then a number literal of the `.zm`
+/// language (`3`, `0.1`, `2.5e-3`, read by the same lexer, so `0.1` is
+/// exactly 1/10), optionally followed by `/` and a second literal (`1/2`).
+///
+/// Errors carry the 1-based column in `text` (line 1, no file name).
+///
+/// ```
+/// assert_eq!(poly::parse_number("0.1")?, poly::q(1, 10));
+/// assert_eq!(poly::parse_number("-1/2")?, poly::q(-1, 2));
+/// assert_eq!(poly::parse_number("2.5e-3")?, poly::q(1, 400));
+/// assert!(poly::parse_number("1.2.3").is_err());
+/// # Ok::<(), poly::Error>(())
+/// ```
+pub fn parse_number(text: &str) -> Result<Q, Error> {
+    let chars: Vec<char> = text.chars().collect();
+    let err = |at: usize, msg: String| {
+        Error::new(ErrorKind::Syntax, Span { line: 1, col: at as u32 + 1, len: 1 }, msg)
+            .located("", text)
+    };
+    let literal = |at: usize| -> Result<(Q, usize), Error> {
+        let starts = chars.get(at).is_some_and(|c| {
+            c.is_ascii_digit()
+                || (*c == '.' && chars.get(at + 1).is_some_and(char::is_ascii_digit))
+        });
+        if !starts {
+            let found = chars.get(at).map_or("the end".to_owned(), |&c| describe_char(c));
+            return Err(err(
+                at,
+                format!("expected a number such as 3, 0.25, 1e-6 or 1/2, found {found}"),
+            ));
+        }
+        let (tok, len) = lex_number(&chars[at..]).map_err(|msg| err(at, msg))?;
+        let q = match tok {
+            Tok::Num(q) => q,
+            Tok::Int(n) => Q::from_integer(n.into()),
+            _ => return Err(err(at, "expected a number".into())),
+        };
+        Ok((q, at + len))
+    };
+    let (negative, start) = match chars.first() {
+        Some('-') => (true, 1),
+        Some('+') => (false, 1),
+        _ => (false, 0),
+    };
+    let (mut q, mut at) = literal(start)?;
+    if chars.get(at) == Some(&'/') {
+        let (den, end) = literal(at + 1)?;
+        if den.is_zero() {
+            return Err(err(at + 1, "division by zero: expected a nonzero denominator".into()));
+        }
+        q /= den;
+        at = end;
+    }
+    if let Some(&c) = chars.get(at) {
+        return Err(err(
+            at,
+            format!("unexpected {} after the number: expected nothing more", describe_char(c)),
+        ));
+    }
+    Ok(if negative { -q } else { q })
 }
 
 struct Parser {
@@ -387,27 +500,39 @@ impl Parser {
             self.bump();
         }
         let t = self.peek().clone();
-        let Tok::Int(n) = t.tok else {
-            return Err(Error::new(
-                ErrorKind::BadPower,
-                if matches!(t.tok, Tok::Newline | Tok::Eof) { caret } else { t.span },
-                format!(
-                    "expected a non-negative integer exponent after `^`, found {}",
-                    describe(&t.tok)
-                ),
-            ));
+        let n = match &t.tok {
+            Tok::Int(n) => *n,
+            // An integer literal too large for `Tok::Int`.
+            Tok::Num(q) if q.is_integer() => u32::MAX,
+            _ => {
+                return Err(Error::new(
+                    ErrorKind::BadPower,
+                    if matches!(t.tok, Tok::Newline | Tok::Eof) { caret } else { t.span },
+                    format!(
+                        "expected a non-negative integer exponent after `^` (exponents are integer literals such as `^2`), found {}",
+                        describe(&t.tok)
+                    ),
+                ))
+            }
         };
         if n > MAX_EXPONENT {
+            let shown = match &t.tok {
+                Tok::Num(q) => q.to_string(),
+                _ => n.to_string(),
+            };
             return Err(Error::new(
                 ErrorKind::BadPower,
                 t.span,
-                format!("exponent {n} is too large: expected at most {MAX_EXPONENT}"),
+                format!("exponent {shown} is too large: expected at most {MAX_EXPONENT}"),
             ));
         }
         self.bump();
         let mut end = t.span;
         if paren {
-            end = self.expect_sym(')', "`)` after the exponent")?;
+            end = self.expect_sym(
+                ')',
+                "`)` after the exponent (exponents are integer literals: `Phi^(1/2)` is not allowed)",
+            )?;
         }
         let span = join(base.span, end);
         Ok(Expr { kind: ExprKind::Pow(Box::new(base), n), span })

@@ -3,6 +3,7 @@
 //! Each subcommand lives in its own module under `cli/` with its clap
 //! arguments and a `run` function; this file only dispatches.
 
+use std::io::Write as _;
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
@@ -42,8 +43,15 @@ enum Command {
     Scene(cli::scene::Args),
 }
 
+/// The most bytes of an error message printed: enough for any real error,
+/// and a bound on what a hostile input can put on the terminal.
+const MAX_ERROR_BYTES: usize = 4000;
+
 fn main() -> ExitCode {
-    let cli = Cli::parse();
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => return clap_exit(&e),
+    };
     let result = match cli.command {
         Command::Methods(a) => cli::methods::run(a),
         Command::Derive(a) => cli::derive::run(a),
@@ -58,9 +66,56 @@ fn main() -> ExitCode {
     };
     match result {
         Ok(code) => code,
+        // The reader closed stdout early: nothing is wrong.
+        Err(e) if is_broken_pipe(&e) => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("error: {e:#}");
+            print_error(&format!("error: {e:#}"));
             ExitCode::from(2)
         }
     }
+}
+
+/// Help and version go to stdout with exit 0; usage errors to stderr, made
+/// safe to print (the user's argument is echoed), with exit 2.
+fn clap_exit(e: &clap::Error) -> ExitCode {
+    use clap::error::ErrorKind;
+    let text = e.render().to_string();
+    match e.kind() {
+        ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => {
+            match cli::output::emit(&text) {
+                Ok(()) => ExitCode::SUCCESS,
+                Err(_) => ExitCode::from(2),
+            }
+        }
+        _ => {
+            print_error(&text);
+            ExitCode::from(2)
+        }
+    }
+}
+
+fn is_broken_pipe(e: &anyhow::Error) -> bool {
+    e.chain().any(|c| {
+        c.downcast_ref::<std::io::Error>()
+            .is_some_and(|io| io.kind() == std::io::ErrorKind::BrokenPipe)
+    })
+}
+
+/// Prints an error on stderr: control and invisible characters (other than
+/// line feeds) as `U+XXXX`, and at most [`MAX_ERROR_BYTES`]. A failure to
+/// write stderr is ignored: there is nowhere left to report it.
+fn print_error(text: &str) {
+    let lines: Vec<String> =
+        text.trim_end().split('\n').map(|l| poly::show_invisible(l).into_owned()).collect();
+    let mut shown = lines.join("\n");
+    if shown.len() > MAX_ERROR_BYTES {
+        let mut cut = MAX_ERROR_BYTES;
+        while !shown.is_char_boundary(cut) {
+            cut -= 1;
+        }
+        let more = shown.len() - cut;
+        shown.truncate(cut);
+        shown.push_str(&format!("… ({more} more bytes)"));
+    }
+    let _ = writeln!(std::io::stderr().lock(), "{shown}");
 }

@@ -81,6 +81,10 @@ pub type C64 = Complex<f64>;
 /// The simulation length when none is given.
 pub const DEFAULT_STEPS: u64 = 1_000_000;
 
+/// The largest norm of P, and magnitude of an eigenvalue, the witnesses take:
+/// their squares stay far inside the `f64` range.
+pub const MAX_WITNESS_MAGNITUDE: f64 = 1e100;
+
 /// Multiplier of N·ε for an isolated root.
 pub const C_ISOLATED: f64 = 16.0;
 /// Multiplier of N·ε^(1/m) for a cluster of m roots.
@@ -180,10 +184,24 @@ impl Witnesses {
     ) -> Result<PointReport, Error> {
         let step = Step::compile(&self.method, params)?;
         let p = step.transition_matrix();
+        // The witnesses square magnitudes (norms, SVD): beyond 1e100 that
+        // overflows, and nalgebra's SVD panics on the NaN that follows.
         if p.iter().any(|x| !x.is_finite()) {
-            return Err(Error::not_finite("the transition matrix"));
+            return Err(Error::out_of_range("the transition matrix overflows f64"));
+        }
+        if !(p.amax() * p.nrows() as f64 <= MAX_WITNESS_MAGNITUDE) {
+            return Err(Error::out_of_range(&format!(
+                "the transition matrix has an entry of magnitude {:.1e}",
+                p.amax()
+            )));
         }
         let exact = self.charpoly.at(params)?;
+        if let Some(big) = exact.roots.iter().find(|z| !(z.norm() <= MAX_WITNESS_MAGNITUDE)) {
+            return Err(Error::out_of_range(&format!(
+                "an eigenvalue has magnitude {:.1e}",
+                big.norm()
+            )));
+        }
         let (tolerance, condition, cluster) = tolerances(&p, &exact.coeffs, &exact.roots);
         let nalgebra = pair_up(&exact.roots, &eigenvalues_nalgebra(&p)?);
         let faer = pair_up(&exact.roots, &eigenvalues_faer(&p)?);

@@ -4,8 +4,10 @@
 use std::process::ExitCode;
 use std::time::Duration;
 
-use check::numeric::f64_to_q;
+use poly::Q;
 use zcheck::tradeoff::{self, family, kernels, Advice, Candidate, Scene};
+
+use super::values::Exact;
 
 /// Output format of `zcheck advise`.
 #[derive(Clone, Copy, clap::ValueEnum)]
@@ -32,22 +34,19 @@ pub struct Args {
     /// Largest relative amplitude error over the duration (0.01 = 1 %).
     #[arg(long, default_value_t = Scene::DEFAULT_AMP_TOL)]
     pub amp_tol: f64,
-    /// Physical damping ratio D (0 <= D < 1); without it the spring is undamped.
-    #[arg(long)]
-    pub damping: Option<f64>,
+    /// Physical damping ratio D (0 <= D < 1), an exact decimal (`0.1` is
+    /// 1/10); without it the spring is undamped.
+    #[arg(long, allow_negative_numbers = true)]
+    pub damping: Option<Exact>,
     #[arg(long, value_enum, default_value = "text")]
     pub format: Format,
 }
 
-/// The candidates for a scene: the seven direct methods, on the damped
-/// spring when the scene has damping.
-pub fn candidates(scene: &Scene) -> anyhow::Result<Vec<Candidate>> {
-    Ok(match scene.damping {
-        Some(d) => {
-            let q = f64_to_q(d)
-                .ok_or_else(|| anyhow::anyhow!("--damping {d}: expected a finite number"))?;
-            family::damped_family(&q)?
-        }
+/// The candidates for a scene: the seven direct methods, on the spring with
+/// the exact damping ratio `damping` when there is one.
+pub fn candidates(damping: Option<&Q>) -> anyhow::Result<Vec<Candidate>> {
+    Ok(match damping {
+        Some(q) => family::damped_family(q)?,
         None => family::undamped_family()?
             .into_iter()
             .filter(|c| family::direct_names().contains(&c.name.as_str()))
@@ -62,17 +61,17 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
         duration_s: args.duration,
         phase_tol: args.phase_tol,
         amp_tol: args.amp_tol,
-        damping: args.damping,
+        damping: args.damping.as_ref().map(|d| d.to_f64("--damping")).transpose()?,
     };
     scene.validate()?;
-    let cands = candidates(&scene)?;
+    let cands = candidates(args.damping.as_ref().map(|d| &d.value))?;
     let d = scene.damping.unwrap_or(0.0);
     let advice = tradeoff::advise(&scene, &cands, |c| {
         kernels::time_hand_kernel(c.kernel_name(), d, Duration::from_millis(3)).unwrap_or(f64::NAN)
     })?;
     match args.format {
-        Format::Json => println!("{}", serde_json::to_string_pretty(&advice)?),
-        Format::Text => print!("{}", text(&advice)),
+        Format::Json => super::output::emitln(&serde_json::to_string_pretty(&advice)?)?,
+        Format::Text => super::output::emit(&text(&advice))?,
     }
     Ok(ExitCode::SUCCESS)
 }
@@ -80,18 +79,22 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
 /// The advice as a table and a sentence.
 pub fn text(a: &Advice) -> String {
     let s = &a.scene;
+    let f = |x: f64| super::values::show_f64(x);
     let mut out = format!(
-        "scene: {} Hz spring on a {} Hz tick: Phi = 2*pi*{}/{} = {:.4} rad per tick ({:.2} ticks per period)\n",
-        s.freq_hz,
-        s.tick_hz,
-        s.freq_hz,
-        s.tick_hz,
-        a.phi,
-        2.0 * std::f64::consts::PI / a.phi
+        "scene: {} Hz spring on a {} Hz tick: Phi = 2*pi*{}/{} = {} rad per tick ({} ticks per period)\n",
+        f(s.freq_hz),
+        f(s.tick_hz),
+        f(s.freq_hz),
+        f(s.tick_hz),
+        super::values::show_f64_digits(a.phi, 4),
+        super::values::show_f64_digits(2.0 * std::f64::consts::PI / a.phi, 2)
     );
     out += &format!(
         "target over {} s ({} periods): phase drift <= {} rad, amplitude drift <= {}\n",
-        s.duration_s, a.periods, s.phase_tol, s.amp_tol
+        f(s.duration_s),
+        f(a.periods),
+        f(s.phase_tol),
+        f(s.amp_tol)
     );
     out += &match s.damping {
         Some(d) => {

@@ -30,7 +30,7 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
         Format::Json => serde_json::to_string_pretty(&to_json(&d))? + "\n",
         Format::Latex => latex(&d),
     };
-    print!("{out}");
+    super::output::emit(&out)?;
     Ok(ExitCode::SUCCESS)
 }
 

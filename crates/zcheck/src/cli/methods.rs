@@ -7,13 +7,15 @@ use std::process::ExitCode;
 pub struct Args {}
 
 pub fn run(_: Args) -> anyhow::Result<ExitCode> {
-    println!("{:<24} {:>5}  {:<8} first comment line", "method", "order", "params");
+    use std::fmt::Write as _;
+    let mut out = format!("{:<24} {:>5}  {:<8} first comment line\n", "method", "order", "params");
     for name in poly::builtin_names() {
         let m = poly::builtin(name)?;
         let src = poly::builtin_source(name).unwrap_or_default();
         let about = src.lines().next().unwrap_or("").trim_start_matches('#').trim();
         let params: Vec<&str> = m.params().iter().map(|p| p.name()).collect();
-        println!("{:<24} {:>5}  {:<8} {}", name, m.order(), params.join(","), about);
+        let _ = writeln!(out, "{:<24} {:>5}  {:<8} {}", name, m.order(), params.join(","), about);
     }
+    super::output::emit(&out)?;
     Ok(ExitCode::SUCCESS)
 }

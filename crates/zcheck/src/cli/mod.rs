@@ -3,10 +3,12 @@
 pub mod advise;
 pub mod derive;
 pub mod methods;
+pub mod output;
 pub mod overview;
 pub mod paper;
 pub mod plot;
 pub mod scene;
 pub mod stability;
 pub mod tradeoff;
+pub mod values;
 pub mod verify;

@@ -33,8 +33,8 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
             .collect::<anyhow::Result<Vec<_>>>()?
     };
     match args.format {
-        Format::Markdown => print!("{}", zcheck::overview::to_markdown(&rows)),
-        Format::Json => println!("{}", serde_json::to_string_pretty(&rows)?),
+        Format::Markdown => super::output::emit(&zcheck::overview::to_markdown(&rows))?,
+        Format::Json => super::output::emitln(&serde_json::to_string_pretty(&rows)?)?,
     }
     Ok(ExitCode::SUCCESS)
 }

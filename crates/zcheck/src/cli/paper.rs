@@ -2,7 +2,6 @@
 //! every claim of sections 4–12 and Appendices A–E with what zcheck derived,
 //! the verdict and the evidence, as Markdown or JSON.
 
-use std::io::Write as _;
 use std::process::ExitCode;
 
 use zcheck::paper::{all_claims, report};
@@ -41,6 +40,6 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
             serde_json::to_string_pretty(&doc)? + "\n"
         }
     };
-    std::io::stdout().lock().write_all(out.as_bytes())?;
+    super::output::emit(&out)?;
     Ok(ExitCode::SUCCESS)
 }

@@ -73,8 +73,7 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
         zplane_figure(&methods, &Params::default(), args.phi_max, 150, &path)?;
         written.push(path);
     }
-    for p in written {
-        println!("{}", p.display());
-    }
+    let list: String = written.iter().map(|p| format!("{}\n", p.display())).collect();
+    super::output::emit(&list)?;
     Ok(ExitCode::SUCCESS)
 }

@@ -16,6 +16,8 @@ use zcheck::scene::three_body::{
 };
 use zcheck::scene::{figure, Scene};
 
+use super::values::{Exact, DEFAULT_BUDGET};
+
 /// Output format.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum Format {
@@ -81,6 +83,9 @@ pub struct Args {
     /// Three bodies: the asymmetry eps (default: C 0, D 0.01).
     #[arg(long)]
     pub eps: Option<f64>,
+    /// The most steps the run may take; longer runs are refused.
+    #[arg(long, default_value_t = Exact::count(DEFAULT_BUDGET))]
+    pub budget: Exact,
     /// Aircraft: commanded roll angle Phic in degrees (default 30).
     #[arg(long)]
     pub phic: Option<f64>,
@@ -108,6 +113,11 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
     let scene = Scene::by_name(&args.name)?;
     let n = args.steps.unwrap_or_else(|| scene.default_steps());
     anyhow::ensure!(n > 0, "--steps: expected a positive number of steps, got 0");
+    let budget = args.budget.to_count("--budget")?;
+    anyhow::ensure!(
+        n <= budget,
+        "--steps {n} is beyond the budget of {budget} steps: pass --budget {n} to run it anyway"
+    );
     if let Some(dir) = &args.plot {
         std::fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
     }
@@ -150,7 +160,7 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
             print(&args, &report)?;
             if let Some(dir) = &args.plot {
                 for file in figure::three_body(dir, &args.name, &run)? {
-                    eprintln!("wrote {}", file.display());
+                    let _ = writeln!(std::io::stderr(), "wrote {}", file.display());
                 }
             }
         }
@@ -174,7 +184,7 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
             print(&args, &aircraft_json(&run))?;
             if let Some(dir) = &args.plot {
                 for file in figure::aircraft(dir, &run)? {
-                    eprintln!("wrote {}", file.display());
+                    let _ = writeln!(std::io::stderr(), "wrote {}", file.display());
                 }
             }
         }
@@ -235,13 +245,12 @@ fn aircraft_json(run: &AircraftRun) -> serde_json::Value {
 fn print(args: &Args, report: &serde_json::Value) -> anyhow::Result<()> {
     match args.format {
         Format::Json => {
-            let mut out = std::io::stdout().lock();
-            writeln!(out, "{}", serde_json::to_string_pretty(report)?)?;
+            super::output::emitln(&serde_json::to_string_pretty(report)?)?;
         }
         Format::Text => {
             let mut text = String::new();
             render_text(report, "", &mut text);
-            std::io::stdout().lock().write_all(text.as_bytes())?;
+            super::output::emit(&text)?;
         }
     }
     Ok(())

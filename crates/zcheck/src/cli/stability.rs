@@ -11,10 +11,13 @@ use std::collections::HashMap;
 use std::fmt::Write as _;
 use std::process::ExitCode;
 
-use anyhow::{bail, Context};
+use anyhow::Context;
 use poly::stability::{analyze, StabilityReport};
 use poly::{Algebraic, Sym, Q};
 use serde_json::{json, Value};
+
+use super::output;
+use super::values::{self, ParamArg};
 
 /// Output format of `zcheck stability`.
 #[derive(Clone, Copy, clap::ValueEnum)]
@@ -29,9 +32,9 @@ pub struct Args {
     /// A built-in method name or a path to a `.zm` file.
     pub method: String,
     /// A parameter value, `NAME=VALUE`, with VALUE an integer, a fraction
-    /// (`1/2`) or a decimal (`0.5`, read exactly); repeatable.
-    #[arg(long = "param", value_name = "NAME=VALUE")]
-    pub params: Vec<String>,
+    /// (`1/2`) or a decimal (`0.5`, `1e-12`, read exactly); repeatable.
+    #[arg(long = "param", value_name = "NAME=VALUE", allow_hyphen_values = true)]
+    pub params: Vec<ParamArg>,
     #[arg(long, value_enum, default_value = "text")]
     pub format: Format,
 }
@@ -39,24 +42,12 @@ pub struct Args {
 pub fn run(args: Args) -> anyhow::Result<ExitCode> {
     let method = check::load::load_method(&args.method)?;
     let chi = poly::charpoly(&method)?;
+    values::check_declared(&args.params, &[&method])?;
     let mut values = HashMap::new();
     let mut shown = Vec::new();
     for p in &args.params {
-        let (name, value) = parse_param(p)?;
-        if !method.params().iter().any(|s| s.name() == name) {
-            let known: Vec<&str> =
-                method.params().iter().map(|s| s.name()).filter(|n| *n != "Phi").collect();
-            bail!(
-                "--param {p}: method {} has no parameter {name} (its parameters: {})",
-                method.name(),
-                if known.is_empty() { "none".to_owned() } else { known.join(", ") }
-            );
-        }
-        if name == "Phi" {
-            bail!("--param {p}: Phi is the step size the analysis sweeps; it cannot be fixed");
-        }
-        values.insert(Sym::new(&name), value.clone());
-        shown.push((name, value));
+        values.insert(Sym::new(&p.name), p.value.value.clone());
+        shown.push((p.name.clone(), p.value.value.clone()));
     }
     let chi = chi.eval_partial(&values);
     let report = analyze(&chi).with_context(|| format!("method {}", method.name()))?;
@@ -66,44 +57,8 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
             serde_json::to_string_pretty(&to_json(method.name(), &shown, &chi, &report))? + "\n"
         }
     };
-    print!("{out}");
+    output::emit(&out)?;
     Ok(ExitCode::SUCCESS)
-}
-
-/// Parses `NAME=VALUE` with an exact rational VALUE.
-pub fn parse_param(s: &str) -> anyhow::Result<(String, Q)> {
-    let Some((name, value)) = s.split_once('=') else {
-        bail!("--param {s}: expected NAME=VALUE, e.g. D=1/2");
-    };
-    let name = name.trim();
-    if name.is_empty() {
-        bail!("--param {s}: expected a parameter name before '='");
-    }
-    let value = parse_rational(value.trim())
-        .with_context(|| format!("--param {s}: expected VALUE as 3, 1/2 or 0.25"))?;
-    Ok((name.to_owned(), value))
-}
-
-/// An exact rational from `3`, `-1/2` or `0.125` (decimals are exact).
-pub fn parse_rational(s: &str) -> anyhow::Result<Q> {
-    if s.contains('/') {
-        let q: Q = s.parse().map_err(|_| anyhow::anyhow!("not a fraction: {s:?}"))?;
-        return Ok(q);
-    }
-    let (negative, body) = match s.strip_prefix('-') {
-        Some(rest) => (true, rest),
-        None => (false, s.strip_prefix('+').unwrap_or(s)),
-    };
-    let (int, frac) = body.split_once('.').unwrap_or((body, ""));
-    if (int.is_empty() && frac.is_empty())
-        || !int.chars().all(|c| c.is_ascii_digit())
-        || !frac.chars().all(|c| c.is_ascii_digit())
-    {
-        bail!("not a number: {s:?}");
-    }
-    let digits: Q = format!("{int}{frac}").parse().map_err(|_| anyhow::anyhow!("digits"))?;
-    let q = digits / num_traits::pow(Q::from_integer(10.into()), frac.len());
-    Ok(if negative { -q } else { q })
 }
 
 /// 1e-15, the width the issue asks isolating intervals to be narrowed to.

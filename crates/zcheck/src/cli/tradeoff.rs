@@ -67,14 +67,13 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
     }
     match args.format {
         Format::Json => {
-            println!(
-                "{}",
-                serde_json::to_string_pretty(&serde_json::json!({ "target": {
+            super::output::emitln(
+                &serde_json::to_string_pretty(&serde_json::json!({ "target": {
                 "phase_tol": target.phase_tol, "amp_tol": target.amp_tol, "periods": target.periods },
                 "methods": rows }))?
-            )
+            )?
         }
-        Format::Text => print!("{}", text(&rows, &target)),
+        Format::Text => super::output::emit(&text(&rows, &target))?,
     }
     Ok(ExitCode::SUCCESS)
 }

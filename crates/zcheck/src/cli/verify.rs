@@ -2,17 +2,21 @@
 //! Φ (and, with `--boundaries`, at both sides of every class change a sweep
 //! finds), as a table or JSON. Exits non-zero when any point disagrees.
 
-use check::numeric::ParamsF64;
 use std::io::IsTerminal;
 use std::process::ExitCode;
+use std::time::Instant;
 
 use anyhow::{bail, Context};
 use check::classify::psi_of;
-use check::numeric::Params;
+use check::numeric::{Params, ParamsF64};
+use poly::Q;
 use check::sweep;
 use check::witness::{PointReport, Witnesses, DEFAULT_STEPS};
 use indicatif::{ProgressBar, ProgressStyle};
 use serde_json::{json, Value};
+
+use super::output;
+use super::values::{self, show_f64, Exact, ParamArg};
 
 /// Arguments of `zcheck verify`.
 #[derive(clap::Args)]
@@ -20,19 +24,25 @@ pub struct Args {
     /// Methods: built-in names or `.zm` files.
     #[arg(required = true)]
     methods: Vec<String>,
-    /// Comma-separated Φ values.
-    #[arg(long, value_delimiter = ',', default_values_t = [1e-6, 0.1, 0.5, 1.0, 1.5, 1.9])]
-    phi: Vec<f64>,
+    /// Comma-separated Φ values (exact decimals, e.g. `0.1`, `1e-300`, `-1`).
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true,
+          default_values = ["1e-6", "0.1", "0.5", "1", "1.5", "1.9"])]
+    phi: Vec<Exact>,
     /// Simulation steps per point (0 skips the simulation).
-    #[arg(long, default_value_t = DEFAULT_STEPS)]
-    steps: u64,
-    /// Another parameter, as NAME=VALUE (repeatable), e.g. `--param D=0.3`.
-    #[arg(long = "param", value_name = "NAME=VALUE")]
-    params: Vec<String>,
+    #[arg(long, default_value_t = Exact::count(DEFAULT_STEPS), allow_hyphen_values = true)]
+    steps: Exact,
+    /// Another parameter, as NAME=VALUE (repeatable), e.g. `--param D=0.3`
+    /// or `--param D=1/2`.
+    #[arg(long = "param", value_name = "NAME=VALUE", allow_hyphen_values = true)]
+    params: Vec<ParamArg>,
     /// Also verify both sides of every class boundary found by a sweep of
     /// Φ from 1e-8 to 4.
     #[arg(long)]
     boundaries: bool,
+    /// The most state-steps (points × steps) the run may take; longer runs
+    /// are refused with an estimate of their time.
+    #[arg(long, default_value_t = Exact::count(values::DEFAULT_BUDGET), allow_hyphen_values = true)]
+    budget: Exact,
     /// Output format.
     #[arg(long, value_enum, default_value_t = Format::Text)]
     format: Format,
@@ -44,53 +54,59 @@ enum Format {
     Json,
 }
 
-fn parse_param(s: &str) -> anyhow::Result<(String, f64)> {
-    let Some((name, value)) = s.split_once('=') else {
-        bail!("--param `{s}`: expected NAME=VALUE, e.g. D=0.3");
-    };
-    let v: f64 = value
-        .trim()
-        .parse()
-        .with_context(|| format!("--param `{s}`: expected a number after `=`"))?;
-    if !v.is_finite() {
-        bail!("--param `{s}`: expected a finite number");
-    }
-    Ok((name.trim().to_owned(), v))
-}
-
 pub fn run(args: Args) -> anyhow::Result<ExitCode> {
-    let mut base = Params::default();
-    for s in &args.params {
-        let (n, v) = parse_param(s)?;
-        if n == "Phi" {
-            bail!("--param `{s}`: Phi is given by --phi");
-        }
-        base.set(&n, v);
+    let steps = args.steps.to_count("--steps")?;
+    let budget = args.budget.to_count("--budget")?;
+    // The Φ typed are exact (the exact class is taken there); the numeric
+    // witnesses run at the nearest f64, which must exist.
+    let mut phis: Vec<(f64, Option<Q>)> = Vec::new();
+    for phi in &args.phi {
+        phis.push((phi.to_f64("--phi")?, Some(phi.value.clone())));
     }
-    if let Some(bad) = args.phi.iter().find(|x| !x.is_finite()) {
-        bail!("--phi {bad}: expected finite numbers");
+    let methods = args
+        .methods
+        .iter()
+        .map(|name| check::load::load_method(name))
+        .collect::<Result<Vec<_>, _>>()?;
+    values::check_declared(&args.params, &methods.iter().collect::<Vec<_>>())?;
+    let mut base = Params::default();
+    for p in &args.params {
+        p.value.to_f64(&format!("--param {}", p.name))?;
+        base.insert(&p.name, p.value.value.clone());
     }
     let mut jobs = Vec::new();
-    for name in &args.methods {
-        let method = check::load::load_method(name)?;
-        let w = Witnesses::new(&method)?;
-        let mut phis = args.phi.clone();
+    for method in &methods {
+        let w = Witnesses::new(method)?;
+        let mut phis = phis.clone();
         if args.boundaries {
-            let s = sweep::sweep(&method, &base, &sweep::default_grid())?;
+            let s = sweep::sweep(method, &base, &sweep::default_grid())?;
             for b in &s.boundaries {
-                phis.push(b.below);
-                phis.push(b.above);
+                phis.push((b.below, None));
+                phis.push((b.above, None));
             }
         }
         jobs.push((w, phis));
     }
-    let total: u64 = jobs.iter().map(|(_, p)| p.len() as u64 * args.steps.max(1)).sum();
-    let bar = if std::io::stderr().is_terminal() && args.steps >= 100_000 {
-        let b = ProgressBar::new(total);
-        b.set_style(
-            ProgressStyle::with_template("{msg:24} [{bar:40}] {percent:>3}% {eta}")
-                .expect("valid template"),
+    let n_points: u64 = jobs.iter().map(|(_, p)| p.len() as u64).sum();
+    let total = n_points.saturating_mul(steps);
+    if total > budget {
+        bail!(
+            "this run is {} state-steps ({n_points} points × {} steps), {}; the budget is {}: \
+             pass --budget {} to run it anyway, or ask for fewer --steps",
+            show_count(total),
+            show_count(steps),
+            estimate(&jobs, &base, total),
+            show_count(budget),
+            total
         );
+    }
+    let bar = if std::io::stderr().is_terminal() && total >= 10_000_000 {
+        let b = ProgressBar::new(total);
+        if let Ok(style) = ProgressStyle::with_template(
+            "{msg:24} [{bar:40}] {percent:>3}%  {elapsed} elapsed, about {eta} left",
+        ) {
+            b.set_style(style);
+        }
         b
     } else {
         ProgressBar::hidden()
@@ -103,14 +119,21 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
         let name = w.method().name().to_owned();
         bar.set_message(name.clone());
         let mut points = Vec::new();
-        for &phi in phis {
-            let params = base.clone().with("Phi", phi);
+        for (phi, exact) in phis {
+            let phi = *phi;
+            let params = match exact {
+                Some(q) => base.clone().bind("Phi", q.clone()),
+                None => base.clone().with("Phi", phi),
+            };
             let r = w
-                .at_with_progress(&params, args.steps, &mut |k| bar.set_position(done_before + k))
+                .at_with_progress(&params, steps, &mut |k| bar.set_position(done_before + k))
                 .with_context(|| {
-                    format!("{name} at Phi = {phi} (other parameters: --param NAME=VALUE)")
+                    format!(
+                        "{name} at Phi = {} (other parameters: --param NAME=VALUE)",
+                        show_f64(phi)
+                    )
                 })?;
-            done_before += args.steps.max(1);
+            done_before += steps;
             bar.set_position(done_before);
             points.push(r);
         }
@@ -130,9 +153,43 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
         Format::Json => serde_json::to_string_pretty(&Value::Array(out_json))? + "\n",
         Format::Text => out_text,
     };
-    // A closed pipe (`| head`) is not an error worth a panic.
-    let _ = std::io::Write::write_all(&mut std::io::stdout().lock(), text.as_bytes());
+    output::emit(&text)?;
     Ok(if all_agree { ExitCode::SUCCESS } else { ExitCode::FAILURE })
+}
+
+/// A count for a message: exact below a million, else like `6.0e12`.
+fn show_count(n: u64) -> String {
+    if n < 1_000_000 {
+        n.to_string()
+    } else {
+        format!("{:.1e}", n as f64)
+    }
+}
+
+/// How long `total` state-steps would take, from a short run of the first
+/// point measured now.
+fn estimate(jobs: &[(Witnesses, Vec<(f64, Option<Q>)>)], base: &Params, total: u64) -> String {
+    const PROBE: u64 = 200_000;
+    let Some((w, phi)) = jobs.iter().find_map(|(w, p)| p.first().map(|&(phi, _)| (w, phi))) else {
+        return "time unknown".to_owned();
+    };
+    let params = base.clone().with("Phi", phi);
+    let start = Instant::now();
+    if w.at(&params, PROBE).is_err() {
+        return "time unknown".to_owned();
+    }
+    let per_step = start.elapsed().as_secs_f64() / PROBE as f64;
+    let secs = per_step * total as f64;
+    let shown = if secs < 120.0 {
+        format!("{secs:.0} s")
+    } else if secs < 7200.0 {
+        format!("{:.0} min", secs / 60.0)
+    } else if secs < 172_800.0 {
+        format!("{:.1} h", secs / 3600.0)
+    } else {
+        format!("{:.0} days", secs / 86400.0)
+    };
+    format!("about {shown} at {:.1e} steps/s measured now", 1.0 / per_step)
 }
 
 fn pair(z: &num_complex::Complex<f64>) -> Value {
@@ -190,7 +247,7 @@ pub fn text_table(name: &str, points: &[PointReport], agree: bool) -> String {
         let failing: Vec<&str> = r.checks.iter().filter(|c| !c.agree).map(|c| c.witness).collect();
         s.push_str(&format!(
             "  {:>22}  {:<22} {:>12.9} {:>10.7} {:>13.6e} {:>13.6e} {:>10.7} {:>5}{}\n",
-            format!("{}", r.phi()),
+            show_f64(r.phi()),
             r.exact.class.name(),
             r.exact.spectral_radius,
             psi_of(r.exact.roots.first().copied().unwrap_or_default()),

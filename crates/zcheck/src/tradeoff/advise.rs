@@ -157,13 +157,20 @@ pub fn advise(
             .limit
             .search_cap()
             .and_then(|cap| c.model.largest_admissible_phi(spring, &target, cap));
-        let substeps_tol = admissible.map(|a| {
-            let mut k = ((phi / a).ceil() as u64).max(1);
+        let substeps_tol = admissible.and_then(|a| {
+            let guess = (phi / a).ceil();
+            if !(guess < super::family::MAX_SUBSTEPS as f64) {
+                return None;
+            }
+            let mut k = (guess as u64).max(1);
             // Float rounding in Φ/k: step up until the substep is admissible.
             while !(phi / k as f64 <= a && c.limit.is_below(phi / k as f64)) {
                 k += 1;
+                if k > super::family::MAX_SUBSTEPS {
+                    return None;
+                }
             }
-            k
+            Some(k)
         });
         let at = substeps_tol.map(|k| c.model.accuracy(phi / k as f64, spring));
         let per_step = c.cost.program;

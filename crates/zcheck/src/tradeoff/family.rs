@@ -147,15 +147,23 @@ impl Limit {
     }
 
     /// The smallest number of substeps k with Φ/k strictly below Φ_max
-    /// (exact comparison); `None` when no Φ > 0 is stable.
+    /// (exact comparison); `None` when no Φ > 0 is stable, or when more than
+    /// [`MAX_SUBSTEPS`] would be needed.
     pub fn substeps_for(&self, phi: f64) -> Option<u64> {
         if self.bounded_for_all {
             return Some(1);
         }
         let max = self.phi_max_f64()?;
-        let mut k = ((phi / max).floor() as u64).max(1);
+        let guess = (phi / max).floor();
+        if !(guess < MAX_SUBSTEPS as f64) {
+            return None;
+        }
+        let mut k = (guess as u64).max(1);
         while !self.is_below(phi / k as f64) {
             k += 1;
+            if k > MAX_SUBSTEPS {
+                return None;
+            }
         }
         // The float guess may overshoot by one; step back while still stable.
         while k > 1 && self.is_below(phi / (k - 1) as f64) {
@@ -164,6 +172,10 @@ impl Limit {
         Some(k)
     }
 }
+
+/// The most substeps per tick ever counted: beyond it a step is "never"
+/// practical, and the count would leave the exact range of `f64`.
+pub const MAX_SUBSTEPS: u64 = 1_000_000_000_000_000;
 
 /// One method ready to trade: its definition, exact cost, accuracy model
 /// and stability limit, at fixed values of its parameters other than Φ.

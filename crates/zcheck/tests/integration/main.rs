@@ -3,6 +3,8 @@
 
 mod advise_cli;
 mod cli_derive;
+mod extremes;
+mod hostile;
 mod plot_cli;
 mod scene_cli;
 #[path = "../../../../tests/support/snapshot.rs"]
