@@ -599,7 +599,8 @@ fn critical_conditions(chi: &Charpoly) -> Vec<(&'static str, UPoly)> {
     let half = Q::new(1.into(), 2.into());
     let pair_sums: Vec<UPoly> =
         (0..=pairs).map(|k| (&(&p[k] * &p[k]) - &p[2 * k]).scale(&half)).collect();
-    let square_sums: Vec<UPoly> = (0..=2 * (n - 1)).map(|k| p[2 * k].clone()).collect();
+    // At least n + 1 sums: the squares polynomial of a first-order χ needs p_2.
+    let square_sums: Vec<UPoly> = (0..=(2 * (n - 1)).max(n)).map(|k| p[2 * k].clone()).collect();
     let an_sq = an * an;
     let products = poly_from_scaled_sums(&pair_sums, pairs, &an_sq);
     let squares = poly_from_scaled_sums(&square_sums, n, &an_sq);

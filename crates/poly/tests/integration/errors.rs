@@ -27,7 +27,8 @@ fn check(src: &str, kind: ErrorKind, line: u32, col: u32, says: &str) {
     assert!(shown.starts_with(&format!("bad.zm:{line}:{col}: ")), "{shown}");
     let lines: Vec<&str> = shown.lines().collect();
     let source_line = src.lines().nth(line as usize - 1).expect("error line exists");
-    if !source_line.trim().is_empty() {
+    // Lines longer than the snippet are cut (`long_lines_and_names_are_cut`).
+    if !source_line.trim().is_empty() && source_line.chars().count() <= 100 {
         // `N | text` then `  | ^^^` with the caret under column `col`.
         let text_row = lines.iter().position(|l| l.ends_with(source_line)).expect("source echoed");
         let caret_row = lines[text_row + 1];
@@ -260,4 +261,133 @@ mod fuzz {
             no_panic(&src);
         }
     }
+}
+
+/// Hostile text gets a located error that says what was meant (issue 14).
+#[test]
+fn hostile_text() {
+    use ErrorKind::{BadPower, Syntax};
+    check(&format!("{HEAD}v = v - 1.2.3*Phi*y\n"), Syntax, 4, 9, "malformed number `1.2.3`");
+    check(&format!("{HEAD}v = v - Phi^99999999999999999999*y\n"), BadPower, 4, 13, "exponent 99999999999999999999 is too large");
+    check(&format!("{HEAD}v = v - Phi^(1/2)*y\n"), Syntax, 4, 15, "exponents are integer literals");
+    check(&format!("{HEAD}v = v - Phi^0.5*y\n"), BadPower, 4, 13, "exponents are integer literals");
+    check(&format!("{HEAD}v = v \u{2212} Phi*y\n"), Syntax, 4, 7, "U+2212 (a dash");
+    check(&format!("{HEAD}v = v - {}*y\n", "1".repeat(1001)), Syntax, 4, 9, "number too long");
+    check(&format!("{HEAD}v = v - 1e99999999999999999999*y\n"), Syntax, 4, 9, "exponent too large");
+    check(&format!("{HEAD}v = v - 1e1001*y\n"), Syntax, 4, 9, "exponent too large");
+}
+
+/// Invisible and control characters: located, named by code point, and
+/// shown as `U+XXXX` in the echoed line too, with the caret under them.
+#[track_caller]
+fn check_invisible(src: &str, line: u32, col: u32, says: &str, echoed: &str) {
+    let err = Method::parse("bad.zm", src).expect_err("an error");
+    let shown = err.to_string();
+    assert_eq!((err.span().line, err.span().col), (line, col), "{shown}");
+    assert!(err.message().contains(says), "{shown}");
+    assert!(!shown.chars().any(|c| c.is_control() && c != '\n'), "{shown:?}");
+    let lines: Vec<&str> = shown.lines().collect();
+    let text_row = lines.iter().position(|l| l.ends_with(echoed)).expect("line echoed");
+    let caret = lines[text_row + 1].find('^').expect("caret");
+    let bar = lines[text_row].find(" | ").expect("gutter") + 3;
+    let upto = &lines[text_row][bar..];
+    let target = upto.find("U+").map_or(col as usize - 1, |k| upto[..k].chars().count());
+    assert_eq!(caret - bar, target, "caret:\n{shown}");
+}
+
+#[test]
+fn invisible_characters() {
+    check_invisible(&format!("{HEAD}v = v - Phi*y\0\n"), 4, 14, "U+0000", "v = v - Phi*yU+0000");
+    check_invisible(&format!("{HEAD}v = v\u{1b}[2J\n"), 4, 6, "U+001B", "v = vU+001B[2J");
+    check_invisible(&format!("{HEAD}v = v -\u{200b} Phi*y\n"), 4, 8, "U+200B (a zero-width space)", "v = v -U+200B Phi*y");
+    check_invisible(&format!("{HEAD}v = \u{feff}v\n"), 4, 5, "U+FEFF (a byte-order mark)", "v = U+FEFFv");
+    check_invisible(&format!("{HEAD}v = v\u{202e} - y\n"), 4, 6, "U+202E", "v = vU+202E - y");
+    check_invisible("method m\rstate v y\rv = v\r", 1, 9, "carriage return U+000D", "method mU+000Dstate v yU+000Dv = vU+000D");
+}
+
+/// A byte-order mark first in the file and CRLF line endings are accepted.
+#[test]
+fn bom_and_crlf_are_accepted() {
+    let src = poly::builtin_source("false_euler").unwrap();
+    let with_bom = format!("\u{feff}{src}");
+    let crlf = src.replace('\n', "\r\n");
+    for text in [with_bom, crlf] {
+        let m = Method::parse("ok.zm", &text).expect("parses");
+        assert_eq!(poly::charpoly(&m).unwrap(), poly::charpoly(&poly::builtin("false_euler").unwrap()).unwrap());
+    }
+}
+
+/// Bytes that are not UTF-8 are located at the first bad byte.
+#[test]
+fn invalid_utf8_is_located() {
+    for (bytes, line, col) in [
+        (b"method m\nstate v y\nv = v - Phi*\xff y\n".as_slice(), 3, 13),
+        (b"\xc3".as_slice(), 1, 1),
+        (b"method \xe2\x82\n".as_slice(), 1, 8),
+        (b"method m\n\n\nstate v\xf0\x9f\x98 y\n".as_slice(), 4, 8),
+    ] {
+        let e = Method::parse_bytes("bad.zm", bytes).expect_err("not UTF-8");
+        assert_eq!(e.kind(), ErrorKind::Encoding);
+        assert_eq!((e.span().line, e.span().col), (line, col), "{e}");
+        assert!(e.to_string().starts_with(&format!("bad.zm:{line}:{col}: invalid UTF-8")), "{e}");
+    }
+}
+
+/// A very long line is cut to about 100 characters around the column, and
+/// a very long message (a 1 MB name) to 1000 characters: the whole error
+/// stays under 4 KB.
+#[test]
+fn long_lines_and_names_are_cut() {
+    let long = format!("{HEAD}v = v{} $ {}\n", " + v".repeat(200), "+ v".repeat(300_000));
+    let e = Method::parse("bad.zm", &long).expect_err("bad character");
+    assert_eq!((e.span().line, e.span().col), (4, 807));
+    let shown = e.to_string();
+    assert!(shown.len() < 600, "{} bytes", shown.len());
+    assert!(shown.contains("… $ +") || shown.contains(" $ +"), "{shown}");
+    let name = format!("{HEAD}v = v - Phi*{}\n", "q".repeat(1_000_000));
+    let e = Method::parse("bad.zm", &name).expect_err("unknown name");
+    assert!(e.to_string().len() < 4000, "{} bytes", e.to_string().len());
+}
+
+/// An unknown built-in says so, without a `:0:0:` location.
+#[test]
+fn unknown_builtin_has_no_fake_location() {
+    let e = poly::builtin("no_such").expect_err("unknown");
+    assert_eq!(e.kind(), ErrorKind::UnknownBuiltin);
+    let shown = e.to_string();
+    assert!(shown.starts_with("no built-in method named `no_such`: expected one of"), "{shown}");
+    assert!(shown.contains("false_euler") && shown.ends_with("or a path to a .zm file"), "{shown}");
+}
+
+/// The command-line number reader is the `.zm` lexer's: exact decimals,
+/// fractions and signs; everything else a located error.
+#[test]
+fn numbers_typed_on_the_command_line() {
+    let ok = |s: &str, n: i64, d: i64| assert_eq!(poly::parse_number(s).unwrap(), poly::q(n, d), "{s}");
+    ok("0.1", 1, 10);
+    ok(".5", 1, 2);
+    ok("-1/2", -1, 2);
+    ok("+3", 3, 1);
+    ok("2.5e-3", 1, 400);
+    ok("1e6", 1_000_000, 1);
+    ok("1.5/0.5", 3, 1);
+    assert_eq!(poly::parse_number("1e-300").unwrap(), poly::Q::new(1.into(), num_traits::pow(num_bigint::BigInt::from(10), 300)));
+    let bad = |s: &str, col: u32, says: &str| {
+        let e = poly::parse_number(s).expect_err(s);
+        assert_eq!(e.span().col, col, "{s}: {e}");
+        assert!(e.message().contains(says), "{s}: {e}");
+    };
+    bad("1.2.3", 1, "malformed number `1.2.3`");
+    bad("", 1, "expected a number");
+    bad("-", 2, "expected a number");
+    bad("abc", 1, "expected a number");
+    bad("1/0", 3, "division by zero");
+    bad("1/", 3, "expected a number");
+    bad("1x", 1, "runs into a name");
+    bad("1 2", 2, "expected nothing more");
+    bad("1e", 1, "digits after the exponent");
+    bad("0x10", 1, "runs into a name");
+    bad("\u{2212}1", 1, "U+2212");
+    bad("inf", 1, "expected a number");
+    bad("NaN", 1, "expected a number");
 }

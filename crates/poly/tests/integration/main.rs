@@ -6,6 +6,7 @@
 //!   transition matrix matches an independent exact interpreter;
 //! - `errors`: every kind of bad `.zm` input gives a located error, and the
 //!   parser never panics;
+//! - `fuzz_corpus`: the fuzz targets' corpora and crash regressions, replayed;
 //! - `parser`: details of the expression language;
 //! - `snapshots`: each built-in's derivation, reviewed against the paper;
 //! - `cost`: operation counts; `series`: exact Ψ and |z|² series;
@@ -17,6 +18,7 @@ mod common;
 mod cost;
 mod det;
 mod errors;
+mod fuzz_corpus;
 mod parser;
 mod routes;
 mod series;
