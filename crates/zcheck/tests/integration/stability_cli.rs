@@ -146,7 +146,7 @@ fn bad_input_is_an_error() {
     check_rejected(&["stability", "damped_euler_d"], "still contains the parameter D");
     check_rejected(&["stability", "damped_euler_d", "--param", "X=1"], "has no parameter X");
     check_rejected(&["stability", "damped_euler_d", "--param", "D"], "expected NAME=VALUE");
-    check_rejected(&["stability", "damped_euler_d", "--param", "D=abc"], "expected VALUE");
-    check_rejected(&["stability", "false_euler", "--param", "Phi=1"], "cannot be fixed");
+    check_rejected(&["stability", "damped_euler_d", "--param", "D=abc"], "expected a number");
+    check_rejected(&["stability", "false_euler", "--param", "Phi=1"], "Phi is the step size");
     check_rejected(&["stability", "no_such_method"], "no_such_method");
 }
