@@ -58,13 +58,10 @@ pub fn stability(data: &[u8]) {
     let Ok(chi) = poly::charpoly(&method) else { return };
     // Parameter values 0, 1/4, 1/2, ..., 15/4 and their negatives, picked
     // by the first byte, so that special values (0, 1) are reached.
-    let value = poly::q(i64::from(values & 0x0f), 4) * poly::q(if values & 0x10 == 0 { 1 } else { -1 }, 1);
-    let at: std::collections::HashMap<poly::Sym, poly::Q> = method
-        .params()
-        .iter()
-        .filter(|s| s.name() != "Phi")
-        .map(|s| (*s, value.clone()))
-        .collect();
+    let value =
+        poly::q(i64::from(values & 0x0f), 4) * poly::q(if values & 0x10 == 0 { 1 } else { -1 }, 1);
+    let at: std::collections::HashMap<poly::Sym, poly::Q> =
+        method.params().iter().filter(|s| s.name() != "Phi").map(|s| (*s, value.clone())).collect();
     let chi = chi.eval_partial(&at);
     let _ = poly::stability::analyze(&chi);
 }

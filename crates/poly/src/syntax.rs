@@ -289,8 +289,7 @@ pub fn parse_number(text: &str) -> Result<Q, Error> {
     };
     let literal = |at: usize| -> Result<(Q, usize), Error> {
         let starts = chars.get(at).is_some_and(|c| {
-            c.is_ascii_digit()
-                || (*c == '.' && chars.get(at + 1).is_some_and(char::is_ascii_digit))
+            c.is_ascii_digit() || (*c == '.' && chars.get(at + 1).is_some_and(char::is_ascii_digit))
         });
         if !starts {
             let found = chars.get(at).map_or("the end".to_owned(), |&c| describe_char(c));

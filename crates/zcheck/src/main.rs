@@ -81,12 +81,10 @@ fn clap_exit(e: &clap::Error) -> ExitCode {
     use clap::error::ErrorKind;
     let text = e.render().to_string();
     match e.kind() {
-        ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => {
-            match cli::output::emit(&text) {
-                Ok(()) => ExitCode::SUCCESS,
-                Err(_) => ExitCode::from(2),
-            }
-        }
+        ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => match cli::output::emit(&text) {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(_) => ExitCode::from(2),
+        },
         _ => {
             print_error(&text);
             ExitCode::from(2)

@@ -189,14 +189,16 @@ impl Witnesses {
         if p.iter().any(|x| !x.is_finite()) {
             return Err(Error::out_of_range("the transition matrix overflows f64"));
         }
-        if !(p.amax() * p.nrows() as f64 <= MAX_WITNESS_MAGNITUDE) {
+        if p.amax() * p.nrows() as f64 > MAX_WITNESS_MAGNITUDE {
             return Err(Error::out_of_range(&format!(
                 "the transition matrix has an entry of magnitude {:.1e}",
                 p.amax()
             )));
         }
         let exact = self.charpoly.at(params)?;
-        if let Some(big) = exact.roots.iter().find(|z| !(z.norm() <= MAX_WITNESS_MAGNITUDE)) {
+        if let Some(big) =
+            exact.roots.iter().find(|z| z.norm().is_nan() || z.norm() > MAX_WITNESS_MAGNITUDE)
+        {
             return Err(Error::out_of_range(&format!(
                 "an eigenvalue has magnitude {:.1e}",
                 big.norm()

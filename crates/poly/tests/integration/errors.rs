@@ -268,7 +268,13 @@ mod fuzz {
 fn hostile_text() {
     use ErrorKind::{BadPower, Syntax};
     check(&format!("{HEAD}v = v - 1.2.3*Phi*y\n"), Syntax, 4, 9, "malformed number `1.2.3`");
-    check(&format!("{HEAD}v = v - Phi^99999999999999999999*y\n"), BadPower, 4, 13, "exponent 99999999999999999999 is too large");
+    check(
+        &format!("{HEAD}v = v - Phi^99999999999999999999*y\n"),
+        BadPower,
+        4,
+        13,
+        "exponent 99999999999999999999 is too large",
+    );
     check(&format!("{HEAD}v = v - Phi^(1/2)*y\n"), Syntax, 4, 15, "exponents are integer literals");
     check(&format!("{HEAD}v = v - Phi^0.5*y\n"), BadPower, 4, 13, "exponents are integer literals");
     check(&format!("{HEAD}v = v \u{2212} Phi*y\n"), Syntax, 4, 7, "U+2212 (a dash");
@@ -299,10 +305,28 @@ fn check_invisible(src: &str, line: u32, col: u32, says: &str, echoed: &str) {
 fn invisible_characters() {
     check_invisible(&format!("{HEAD}v = v - Phi*y\0\n"), 4, 14, "U+0000", "v = v - Phi*yU+0000");
     check_invisible(&format!("{HEAD}v = v\u{1b}[2J\n"), 4, 6, "U+001B", "v = vU+001B[2J");
-    check_invisible(&format!("{HEAD}v = v -\u{200b} Phi*y\n"), 4, 8, "U+200B (a zero-width space)", "v = v -U+200B Phi*y");
-    check_invisible(&format!("{HEAD}v = \u{feff}v\n"), 4, 5, "U+FEFF (a byte-order mark)", "v = U+FEFFv");
+    check_invisible(
+        &format!("{HEAD}v = v -\u{200b} Phi*y\n"),
+        4,
+        8,
+        "U+200B (a zero-width space)",
+        "v = v -U+200B Phi*y",
+    );
+    check_invisible(
+        &format!("{HEAD}v = \u{feff}v\n"),
+        4,
+        5,
+        "U+FEFF (a byte-order mark)",
+        "v = U+FEFFv",
+    );
     check_invisible(&format!("{HEAD}v = v\u{202e} - y\n"), 4, 6, "U+202E", "v = vU+202E - y");
-    check_invisible("method m\rstate v y\rv = v\r", 1, 9, "carriage return U+000D", "method mU+000Dstate v yU+000Dv = vU+000D");
+    check_invisible(
+        "method m\rstate v y\rv = v\r",
+        1,
+        9,
+        "carriage return U+000D",
+        "method mU+000Dstate v yU+000Dv = vU+000D",
+    );
 }
 
 /// A byte-order mark first in the file and CRLF line endings are accepted.
@@ -313,7 +337,10 @@ fn bom_and_crlf_are_accepted() {
     let crlf = src.replace('\n', "\r\n");
     for text in [with_bom, crlf] {
         let m = Method::parse("ok.zm", &text).expect("parses");
-        assert_eq!(poly::charpoly(&m).unwrap(), poly::charpoly(&poly::builtin("false_euler").unwrap()).unwrap());
+        assert_eq!(
+            poly::charpoly(&m).unwrap(),
+            poly::charpoly(&poly::builtin("false_euler").unwrap()).unwrap()
+        );
     }
 }
 
@@ -363,7 +390,8 @@ fn unknown_builtin_has_no_fake_location() {
 /// fractions and signs; everything else a located error.
 #[test]
 fn numbers_typed_on_the_command_line() {
-    let ok = |s: &str, n: i64, d: i64| assert_eq!(poly::parse_number(s).unwrap(), poly::q(n, d), "{s}");
+    let ok =
+        |s: &str, n: i64, d: i64| assert_eq!(poly::parse_number(s).unwrap(), poly::q(n, d), "{s}");
     ok("0.1", 1, 10);
     ok(".5", 1, 2);
     ok("-1/2", -1, 2);
@@ -371,7 +399,10 @@ fn numbers_typed_on_the_command_line() {
     ok("2.5e-3", 1, 400);
     ok("1e6", 1_000_000, 1);
     ok("1.5/0.5", 3, 1);
-    assert_eq!(poly::parse_number("1e-300").unwrap(), poly::Q::new(1.into(), num_traits::pow(num_bigint::BigInt::from(10), 300)));
+    assert_eq!(
+        poly::parse_number("1e-300").unwrap(),
+        poly::Q::new(1.into(), num_traits::pow(num_bigint::BigInt::from(10), 300))
+    );
     let bad = |s: &str, col: u32, says: &str| {
         let e = poly::parse_number(s).expect_err(s);
         assert_eq!(e.span().col, col, "{s}: {e}");

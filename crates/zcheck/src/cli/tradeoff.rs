@@ -67,11 +67,9 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
     }
     match args.format {
         Format::Json => {
-            super::output::emitln(
-                &serde_json::to_string_pretty(&serde_json::json!({ "target": {
+            super::output::emitln(&serde_json::to_string_pretty(&serde_json::json!({ "target": {
                 "phase_tol": target.phase_tol, "amp_tol": target.amp_tol, "periods": target.periods },
-                "methods": rows }))?
-            )?
+                "methods": rows }))?)?
         }
         Format::Text => super::output::emit(&text(&rows, &target))?,
     }

@@ -9,10 +9,10 @@ use std::time::Instant;
 use anyhow::{bail, Context};
 use check::classify::psi_of;
 use check::numeric::{Params, ParamsF64};
-use poly::Q;
 use check::sweep;
 use check::witness::{PointReport, Witnesses, DEFAULT_STEPS};
 use indicatif::{ProgressBar, ProgressStyle};
+use poly::Q;
 use serde_json::{json, Value};
 
 use super::output;
@@ -48,6 +48,9 @@ pub struct Args {
     format: Format,
 }
 
+/// A Φ to verify at: its `f64`, and its exact value when the user typed it.
+type Point = (f64, Option<Q>);
+
 #[derive(Clone, Copy, clap::ValueEnum)]
 enum Format {
     Text,
@@ -59,7 +62,7 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
     let budget = args.budget.to_count("--budget")?;
     // The Φ typed are exact (the exact class is taken there); the numeric
     // witnesses run at the nearest f64, which must exist.
-    let mut phis: Vec<(f64, Option<Q>)> = Vec::new();
+    let mut phis: Vec<Point> = Vec::new();
     for phi in &args.phi {
         phis.push((phi.to_f64("--phi")?, Some(phi.value.clone())));
     }
@@ -168,7 +171,7 @@ fn show_count(n: u64) -> String {
 
 /// How long `total` state-steps would take, from a short run of the first
 /// point measured now.
-fn estimate(jobs: &[(Witnesses, Vec<(f64, Option<Q>)>)], base: &Params, total: u64) -> String {
+fn estimate(jobs: &[(Witnesses, Vec<Point>)], base: &Params, total: u64) -> String {
     const PROBE: u64 = 200_000;
     let Some((w, phi)) = jobs.iter().find_map(|(w, p)| p.first().map(|&(phi, _)| (w, phi))) else {
         return "time unknown".to_owned();

@@ -159,7 +159,7 @@ pub fn advise(
             .and_then(|cap| c.model.largest_admissible_phi(spring, &target, cap));
         let substeps_tol = admissible.and_then(|a| {
             let guess = (phi / a).ceil();
-            if !(guess < super::family::MAX_SUBSTEPS as f64) {
+            if guess.is_nan() || guess >= super::family::MAX_SUBSTEPS as f64 {
                 return None;
             }
             let mut k = (guess as u64).max(1);

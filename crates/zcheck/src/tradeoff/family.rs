@@ -155,7 +155,7 @@ impl Limit {
         }
         let max = self.phi_max_f64()?;
         let guess = (phi / max).floor();
-        if !(guess < MAX_SUBSTEPS as f64) {
+        if guess.is_nan() || guess >= MAX_SUBSTEPS as f64 {
             return None;
         }
         let mut k = (guess as u64).max(1);

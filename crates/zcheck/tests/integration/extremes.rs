@@ -6,7 +6,7 @@
 use std::process::Command;
 
 use num_traits::Signed;
-use poly::{Q, RootClass};
+use poly::{RootClass, Q};
 use serde_json::Value;
 
 #[track_caller]
@@ -24,8 +24,16 @@ fn zcheck(args: &[&str]) -> (i32, String, String) {
 fn verify_tiny_phi_gives_the_exact_class() {
     let phis = ["1e-300", "2.2250738585072014e-308", "5e-324", "1e-12"];
     for name in ["false_euler", "standard_euler", "standard_heun", "false_heun", "verlet"] {
-        let (code, out, err) =
-            zcheck(&["verify", name, "--phi", &phis.join(","), "--steps", "100", "--format", "json"]);
+        let (code, out, err) = zcheck(&[
+            "verify",
+            name,
+            "--phi",
+            &phis.join(","),
+            "--steps",
+            "100",
+            "--format",
+            "json",
+        ]);
         assert_eq!(code, 0, "{name}: {err}");
         let v: Value = serde_json::from_str(&out).expect("json");
         let chi = poly::charpoly(&poly::builtin(name).unwrap()).unwrap();
@@ -86,8 +94,14 @@ fn plot_and_advise_at_both_ends() {
 #[test]
 fn stability_at_tiny_and_huge_damping() {
     let json = |d: &str| -> Value {
-        let (code, out, err) =
-            zcheck(&["stability", "damped_euler_d", "--param", &format!("D={d}"), "--format", "json"]);
+        let (code, out, err) = zcheck(&[
+            "stability",
+            "damped_euler_d",
+            "--param",
+            &format!("D={d}"),
+            "--format",
+            "json",
+        ]);
         assert_eq!(code, 0, "{err}");
         serde_json::from_str(&out).expect("json")
     };
