@@ -6,7 +6,7 @@
 use std::io::Write as _;
 use std::process::ExitCode;
 
-use clap::{Parser, Subcommand};
+use clap::{CommandFactory, FromArgMatches, Parser, Subcommand};
 
 mod cli;
 
@@ -48,7 +48,9 @@ enum Command {
 const MAX_ERROR_BYTES: usize = 4000;
 
 fn main() -> ExitCode {
-    let cli = match Cli::try_parse() {
+    // `--phi -1`, `--eps -0.5`: a negative number is a value, never a flag.
+    let command = Cli::command().mut_subcommands(|s| s.allow_negative_numbers(true));
+    let cli = match command.try_get_matches().and_then(|m| Cli::from_arg_matches(&m)) {
         Ok(cli) => cli,
         Err(e) => return clap_exit(&e),
     };

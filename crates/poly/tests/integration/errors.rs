@@ -265,16 +265,11 @@ mod fuzz {
 
 /// Hostile text gets a located error that says what was meant (issue 14).
 #[test]
+#[rustfmt::skip]
 fn hostile_text() {
     use ErrorKind::{BadPower, Syntax};
     check(&format!("{HEAD}v = v - 1.2.3*Phi*y\n"), Syntax, 4, 9, "malformed number `1.2.3`");
-    check(
-        &format!("{HEAD}v = v - Phi^99999999999999999999*y\n"),
-        BadPower,
-        4,
-        13,
-        "exponent 99999999999999999999 is too large",
-    );
+    check(&format!("{HEAD}v = v - Phi^99999999999999999999*y\n"), BadPower, 4, 13, "exponent 99999999999999999999 is too large");
     check(&format!("{HEAD}v = v - Phi^(1/2)*y\n"), Syntax, 4, 15, "exponents are integer literals");
     check(&format!("{HEAD}v = v - Phi^0.5*y\n"), BadPower, 4, 13, "exponents are integer literals");
     check(&format!("{HEAD}v = v \u{2212} Phi*y\n"), Syntax, 4, 7, "U+2212 (a dash");
@@ -302,31 +297,14 @@ fn check_invisible(src: &str, line: u32, col: u32, says: &str, echoed: &str) {
 }
 
 #[test]
+#[rustfmt::skip]
 fn invisible_characters() {
     check_invisible(&format!("{HEAD}v = v - Phi*y\0\n"), 4, 14, "U+0000", "v = v - Phi*yU+0000");
     check_invisible(&format!("{HEAD}v = v\u{1b}[2J\n"), 4, 6, "U+001B", "v = vU+001B[2J");
-    check_invisible(
-        &format!("{HEAD}v = v -\u{200b} Phi*y\n"),
-        4,
-        8,
-        "U+200B (a zero-width space)",
-        "v = v -U+200B Phi*y",
-    );
-    check_invisible(
-        &format!("{HEAD}v = \u{feff}v\n"),
-        4,
-        5,
-        "U+FEFF (a byte-order mark)",
-        "v = U+FEFFv",
-    );
+    check_invisible(&format!("{HEAD}v = v -\u{200b} Phi*y\n"), 4, 8, "U+200B (a zero-width space)", "v = v -U+200B Phi*y");
+    check_invisible(&format!("{HEAD}v = \u{feff}v\n"), 4, 5, "U+FEFF (a byte-order mark)", "v = U+FEFFv");
     check_invisible(&format!("{HEAD}v = v\u{202e} - y\n"), 4, 6, "U+202E", "v = vU+202E - y");
-    check_invisible(
-        "method m\rstate v y\rv = v\r",
-        1,
-        9,
-        "carriage return U+000D",
-        "method mU+000Dstate v yU+000Dv = vU+000D",
-    );
+    check_invisible("method m\rstate v y\rv = v\r", 1, 9, "carriage return U+000D", "method mU+000Dstate v yU+000Dv = vU+000D");
 }
 
 /// A byte-order mark first in the file and CRLF line endings are accepted.

@@ -98,38 +98,15 @@ fn zm(body: &str) -> Vec<u8> {
 /// Runs that would take too long are refused up front, with the estimate
 /// and the flag that allows them; `--steps 0` and `--steps 1` work.
 #[test]
+#[rustfmt::skip]
 fn bounded_work() {
     check(&[
-        case(
-            &["verify", "false_euler", "--steps", "1000000000000"],
-            b"",
-            2,
-            "pass --budget 6000000000000",
-            "",
-        ),
+        case(&["verify", "false_euler", "--steps", "1000000000000"], b"", 2, "pass --budget 6000000000000", ""),
         case(&["verify", "false_euler", "--steps", "1000000000000"], b"", 2, "days", ""),
-        case(
-            &["verify", "false_euler", "--steps", "1000", "--budget", "5999"],
-            b"",
-            2,
-            "budget is 5999",
-            "",
-        ),
-        case(
-            &["verify", "false_euler", "--steps", "1000", "--budget", "6000"],
-            b"",
-            0,
-            "witnesses agree",
-            "",
-        ),
+        case(&["verify", "false_euler", "--steps", "1000", "--budget", "5999"], b"", 2, "budget is 5999", ""),
+        case(&["verify", "false_euler", "--steps", "1000", "--budget", "6000"], b"", 0, "witnesses agree", ""),
         case(&["verify", "false_euler", "--steps", "0"], b"", 0, "witnesses agree", ""),
-        case(
-            &["verify", "false_euler", "standard_euler", "--steps", "1"],
-            b"",
-            0,
-            "witnesses agree",
-            "",
-        ),
+        case(&["verify", "false_euler", "standard_euler", "--steps", "1"], b"", 0, "witnesses agree", ""),
         case(&["verify", "false_euler", "--steps", "-1"], b"", 2, "non-negative whole number", ""),
         case(&["verify", "false_euler", "--steps", "2.5"], b"", 2, "non-negative whole number", ""),
         case(&["verify", "false_euler", "--steps", "1e30"], b"", 2, "too large", ""),
@@ -140,106 +117,40 @@ fn bounded_work() {
 /// Undeclared parameters are refused by every subcommand that takes
 /// `--param`, and every one accepts fractions and exact decimals.
 #[test]
+#[rustfmt::skip]
 fn parameters() {
     check(&[
-        case(
-            &["verify", "false_euler", "--param", "X=1", "--steps", "10"],
-            b"",
-            2,
-            "method false_euler has no parameter X (declared: none)",
-            "",
-        ),
-        case(
-            &["verify", "false_euler", "damped_euler_d", "--param", "X=1"],
-            b"",
-            2,
-            "none of the methods declares a parameter X (declared: D)",
-            "",
-        ),
-        case(
-            &["stability", "damped_euler_d", "--param", "X=1"],
-            b"",
-            2,
-            "has no parameter X (declared: D)",
-            "",
-        ),
-        case(
-            &["verify", "damped_euler_d", "--param", "D=1/2", "--steps", "10"],
-            b"",
-            0,
-            "witnesses agree",
-            "",
-        ),
-        case(
-            &["verify", "damped_euler_d", "--param", "D=0.1", "--steps", "10"],
-            b"",
-            0,
-            "witnesses agree",
-            "",
-        ),
+        case(&["verify", "false_euler", "--param", "X=1", "--steps", "10"], b"", 2, "method false_euler has no parameter X (declared: none)", ""),
+        case(&["verify", "false_euler", "damped_euler_d", "--param", "X=1"], b"", 2, "none of the methods declares a parameter X (declared: D)", ""),
+        case(&["stability", "damped_euler_d", "--param", "X=1"], b"", 2, "has no parameter X (declared: D)", ""),
+        case(&["verify", "damped_euler_d", "--param", "D=1/2", "--steps", "10"], b"", 0, "witnesses agree", ""),
+        case(&["verify", "damped_euler_d", "--param", "D=0.1", "--steps", "10"], b"", 0, "witnesses agree", ""),
         case(&["stability", "damped_euler_d", "--param", "D=1/2"], b"", 0, "(D = 1/2)", ""),
         case(&["stability", "damped_euler_d", "--param", "D=0.1"], b"", 0, "(D = 1/10)", ""),
-        case(
-            &["stability", "damped_euler_d", "--param", "D=0.1.2"],
-            b"",
-            2,
-            "malformed number `0.1.2`",
-            "",
-        ),
+        case(&["stability", "damped_euler_d", "--param", "D=0.1.2"], b"", 2, "malformed number `0.1.2`", ""),
         case(&["verify", "damped_euler_d", "--param", "D=1/0"], b"", 2, "division by zero", ""),
-        case(
-            &["verify", "damped_euler_d", "--param", "D=1", "--param", "D=2"],
-            b"",
-            2,
-            "given twice",
-            "",
-        ),
+        case(&["verify", "damped_euler_d", "--param", "D=1", "--param", "D=2"], b"", 2, "given twice", ""),
         case(&["verify", "damped_euler_d", "--param", "Phi=1"], b"", 2, "Phi is the step size", ""),
         case(&["stability", "damped_euler_d", "--param", "D=-1"], b"", 0, "(D = -1)", ""),
-        case(
-            &["verify", "false_euler", "--phi", "-1", "--steps", "10"],
-            b"",
-            0,
-            "witnesses agree",
-            "",
-        ),
-        case(
-            &["verify", "false_euler", "--phi", "-1,0.5", "--steps", "10"],
-            b"",
-            0,
-            "witnesses agree",
-            "",
-        ),
-        case(
-            &["advise", "--freq", "2", "--tick", "60", "--damping", "-1"],
-            b"",
-            2,
-            "0 <= D < 1",
-            "",
-        ),
+        case(&["verify", "false_euler", "--phi", "-1", "--steps", "10"], b"", 0, "witnesses agree", ""),
+        case(&["verify", "false_euler", "--phi", "-1,0.5", "--steps", "10"], b"", 0, "witnesses agree", ""),
+        case(&["advise", "--freq", "2", "--tick", "60", "--damping", "-1"], b"", 2, "0 <= D < 1", ""),
+        case(&["advise", "--freq", "-2", "--tick", "60"], b"", 2, "--freq -2: expected a finite number > 0", ""),
+        case(&["plot", "yt", "--out", "{dir}", "--phi", "-1"], b"", 2, "--phi -1: expected a positive number", ""),
+        case(&["scene", "three_body_euler", "--eps", "-0.01", "--steps", "10"], b"", 0, "radius", ""),
+        case(&["tradeoff", "--periods", "-1"], b"", 2, "--periods -1: expected a finite number > 0", ""),
     ]);
 }
 
 /// Errors name the file and the place, or say clearly what the argument
 /// is: no `:0:0:`, and a path is never looked up as a built-in.
 #[test]
+#[rustfmt::skip]
 fn locations() {
     check(&[
-        case(
-            &["derive", "{file}"],
-            b"method m\nstate v y\nv = v - Phi*\xff y\n",
-            2,
-            "invalid UTF-8",
-            ":3:13:",
-        ),
+        case(&["derive", "{file}"], b"method m\nstate v y\nv = v - Phi*\xff y\n", 2, "invalid UTF-8", ":3:13:"),
         case(&["derive", "{file}"], b"\xfe", 2, "invalid UTF-8", ":1:1:"),
-        case(
-            &["derive", "no_such_method"],
-            b"",
-            2,
-            "no built-in method named `no_such_method`",
-            "",
-        ),
+        case(&["derive", "no_such_method"], b"", 2, "no built-in method named `no_such_method`", ""),
         case(&["verify", "no_such_method"], b"", 2, "or a path to a .zm file", ""),
         case(&["derive", "/dev/null"], b"", 2, "/dev/null: the file is empty", ""),
         case(&["derive", "{dir}"], b"", 2, "is a directory: expected a .zm file", ""),
@@ -251,6 +162,7 @@ fn locations() {
 
 /// A hostile line neither floods the terminal nor drives it.
 #[test]
+#[rustfmt::skip]
 fn flooding_and_control_characters() {
     let long = zm(&format!("v = v - Phi*y{} $ {}", " + 0*v".repeat(200), "+ v".repeat(300_000)));
     let name = zm(&format!("v = v - Phi*{}", "q".repeat(1_000_000)));
@@ -261,13 +173,7 @@ fn flooding_and_control_characters() {
         case(&["derive", "{file}"], &name, 2, "more characters", ":3:13:"),
         case(&["derive", "{file}"], &nul, 2, "unexpected character U+0000", ":3:14:"),
         case(&["derive", "{file}"], &nul, 2, "U+001B[2J", ""),
-        case(
-            &["derive", "{file}"],
-            b"method m\nstate v y\nv = v\x1b]0;pwned\x07\n",
-            2,
-            "U+001B",
-            ":3:6:",
-        ),
+        case(&["derive", "{file}"], b"method m\nstate v y\nv = v\x1b]0;pwned\x07\n", 2, "U+001B", ":3:6:"),
     ]);
     let huge_arg = format!("D{}=1", "\u{1b}".repeat(100_000));
     let (_, err) = run(&["verify".into(), "false_euler".into(), "--param".into(), huge_arg], 2);
@@ -276,82 +182,21 @@ fn flooding_and_control_characters() {
 
 /// The messages of issue 14 say what was meant.
 #[test]
+#[rustfmt::skip]
 fn clear_messages() {
-    let bom_first =
-        [b"\xef\xbb\xbf".as_slice(), poly::builtin_source("false_euler").unwrap().as_bytes()]
-            .concat();
+    let bom_first = [b"\xef\xbb\xbf".as_slice(), poly::builtin_source("false_euler").unwrap().as_bytes()].concat();
     check(&[
-        case(
-            &["derive", "{file}"],
-            &zm("v = v - 1.2.3*Phi*y"),
-            2,
-            "malformed number `1.2.3`: expected at most one decimal point",
-            ":3:9:",
-        ),
-        case(
-            &["derive", "{file}"],
-            &zm("v = v - Phi^99999999999999999999*y"),
-            2,
-            "exponent 99999999999999999999 is too large: expected at most 64",
-            ":3:13:",
-        ),
-        case(
-            &["derive", "{file}"],
-            &zm("v = v - Phi^(1/2)*y"),
-            2,
-            "exponents are integer literals",
-            ":3:15:",
-        ),
-        case(
-            &["derive", "{file}"],
-            &zm("v = v - Phi^0.5*y"),
-            2,
-            "exponents are integer literals",
-            ":3:13:",
-        ),
-        case(
-            &["derive", "{file}"],
-            &zm("v = v \u{2212} Phi*y"),
-            2,
-            "U+2212 (a dash: write the ASCII minus `-`)",
-            ":3:7:",
-        ),
-        case(
-            &["derive", "{file}"],
-            &zm("v = v -\u{200b} Phi*y"),
-            2,
-            "U+200B (a zero-width space)",
-            ":3:8:",
-        ),
-        case(
-            &["derive", "{file}"],
-            &zm("v = v - \u{feff}Phi*y"),
-            2,
-            "U+FEFF (a byte-order mark)",
-            ":3:9:",
-        ),
+        case(&["derive", "{file}"], &zm("v = v - 1.2.3*Phi*y"), 2, "malformed number `1.2.3`: expected at most one decimal point", ":3:9:"),
+        case(&["derive", "{file}"], &zm("v = v - Phi^99999999999999999999*y"), 2, "exponent 99999999999999999999 is too large: expected at most 64", ":3:13:"),
+        case(&["derive", "{file}"], &zm("v = v - Phi^(1/2)*y"), 2, "exponents are integer literals", ":3:15:"),
+        case(&["derive", "{file}"], &zm("v = v - Phi^0.5*y"), 2, "exponents are integer literals", ":3:13:"),
+        case(&["derive", "{file}"], &zm("v = v \u{2212} Phi*y"), 2, "U+2212 (a dash: write the ASCII minus `-`)", ":3:7:"),
+        case(&["derive", "{file}"], &zm("v = v -\u{200b} Phi*y"), 2, "U+200B (a zero-width space)", ":3:8:"),
+        case(&["derive", "{file}"], &zm("v = v - \u{feff}Phi*y"), 2, "U+FEFF (a byte-order mark)", ":3:9:"),
         case(&["derive", "{file}"], &bom_first, 0, "routes agree", ""),
-        case(
-            &["derive", "{file}"],
-            b"method m\rstate v y\rv = v - Phi*y\r",
-            2,
-            "carriage return U+000D",
-            ":1:9:",
-        ),
-        case(
-            &["derive", "{file}"],
-            b"method m\r\nstate v y\r\nv = v - Phi*y\r\ny = y + Phi*v\r\n",
-            0,
-            "routes agree",
-            "",
-        ),
-        case(
-            &["verify", "false_euler", "--phi", "1e308", "--steps", "10"],
-            b"",
-            2,
-            "Phi = 1e308",
-            "",
-        ),
+        case(&["derive", "{file}"], b"method m\rstate v y\rv = v - Phi*y\r", 2, "carriage return U+000D", ":1:9:"),
+        case(&["derive", "{file}"], b"method m\r\nstate v y\r\nv = v - Phi*y\r\ny = y + Phi*v\r\n", 0, "routes agree", ""),
+        case(&["verify", "false_euler", "--phi", "1e308", "--steps", "10"], b"", 2, "Phi = 1e308", ""),
     ]);
 }
 
