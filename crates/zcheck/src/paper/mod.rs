@@ -5,48 +5,10 @@
 //! them. A claim's `statement` transcribes the paper exactly as printed; its
 //! `derived` field says what zcheck found; its `evidence` says how.
 
-use serde::Serialize;
+pub mod claim;
+pub mod policy;
 
-/// How a claim of the paper fares against the derivation.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Verdict {
-    /// The claim holds as printed.
-    Confirmed,
-    /// The claim is a misprint or false.
-    Errata,
-    /// The claim is true but incomplete: it holds on a smaller range than
-    /// stated, or needs a condition the paper omits.
-    Refined,
-}
-
-impl Verdict {
-    /// The lower-case name used in reports.
-    pub fn name(self) -> &'static str {
-        match self {
-            Verdict::Confirmed => "confirmed",
-            Verdict::Errata => "errata",
-            Verdict::Refined => "refined",
-        }
-    }
-}
-
-/// One claim of the paper and zcheck's verdict on it.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct Claim {
-    /// A stable identifier, `sec07.stability_limit` style.
-    pub id: String,
-    /// The paper's numbering: "4" to "12", or "A" to "E".
-    pub section: String,
-    /// What the paper says, transcribed as printed.
-    pub statement: String,
-    /// What zcheck derived.
-    pub derived: String,
-    /// The verdict.
-    pub verdict: Verdict,
-    /// How the verdict was reached (exact derivation, numbers, runs).
-    pub evidence: String,
-}
+pub use claim::{Case, Claim, Finding, Scope, Verdict};
 
 pub mod appendix;
 pub mod report;

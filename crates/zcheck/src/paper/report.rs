@@ -38,8 +38,10 @@ pub struct Counts {
     pub confirmed: usize,
     /// Claims true only on a smaller range or with a missing condition.
     pub refined: usize,
-    /// Misprints and false claims.
+    /// Misprints that change the mathematics, and false claims.
     pub errata: usize,
+    /// Slips that change nothing (counted apart from the errata).
+    pub typo: usize,
 }
 
 impl Counts {
@@ -49,6 +51,7 @@ impl Counts {
             Verdict::Confirmed => self.confirmed += 1,
             Verdict::Refined => self.refined += 1,
             Verdict::Errata => self.errata += 1,
+            Verdict::Typo => self.typo += 1,
         }
     }
 
@@ -57,6 +60,7 @@ impl Counts {
             Verdict::Confirmed => self.confirmed,
             Verdict::Refined => self.refined,
             Verdict::Errata => self.errata,
+            Verdict::Typo => self.typo,
         }
     }
 }
@@ -67,8 +71,8 @@ pub fn summary(claims: &[Claim]) -> (Counts, Vec<(&'static str, Counts)>) {
     let mut total = Counts::default();
     let mut per: BTreeMap<&str, Counts> = BTreeMap::new();
     for c in claims {
-        total.add(c.verdict);
-        per.entry(c.section.as_str()).or_default().add(c.verdict);
+        total.add(c.verdict());
+        per.entry(c.section.as_str()).or_default().add(c.verdict());
     }
     let sections =
         SECTIONS.iter().map(|(s, _)| (*s, per.get(s).cloned().unwrap_or_default())).collect();
@@ -89,6 +93,7 @@ pub fn to_json(claims: &[Claim]) -> serde_json::Value {
             "confirmed": total.confirmed,
             "refined": total.refined,
             "errata": total.errata,
+            "typo": total.typo,
             "by_section": by_section,
         },
     })
@@ -115,35 +120,37 @@ pub fn to_markdown(claims: &[Claim]) -> String {
         writeln!(out, "# The executable proof of Hoffmann, \"Simple Integration Algorithms\"\n");
     let _ = writeln!(
         out,
-        "{} claims: {} confirmed, {} refined (true on a smaller range or with a missing condition), {} errata \
-         (misprint or false).\n",
-        total.claims, total.confirmed, total.refined, total.errata
+        "{} claims: {} confirmed, {} refined (true on the range the paper states or under a condition it \
+         leaves implicit), {} errata (false within what the paper asserts, or a misprint that changes the \
+         mathematics), {} typo (a slip that changes nothing).\n",
+        total.claims, total.confirmed, total.refined, total.errata, total.typo
     );
     let _ = writeln!(out, "## Summary\n");
-    let _ = writeln!(out, "| section | title | claims | confirmed | refined | errata |");
-    let _ = writeln!(out, "|---|---|---:|---:|---:|---:|");
+    let _ = writeln!(out, "| section | title | claims | confirmed | refined | errata | typo |");
+    let _ = writeln!(out, "|---|---|---:|---:|---:|---:|---:|");
     for (s, c) in &sections {
         let _ = writeln!(
             out,
-            "| {s} | {} | {} | {} | {} | {} |",
+            "| {s} | {} | {} | {} | {} | {} | {} |",
             title(s),
             c.claims,
             c.confirmed,
             c.refined,
-            c.errata
+            c.errata,
+            c.typo
         );
     }
     let _ = writeln!(
         out,
-        "| all | | {} | {} | {} | {} |\n",
-        total.claims, total.confirmed, total.refined, total.errata
+        "| all | | {} | {} | {} | {} | {} |\n",
+        total.claims, total.confirmed, total.refined, total.errata, total.typo
     );
     let _ = writeln!(out, "## Differences from the paper\n");
-    for v in [Verdict::Errata, Verdict::Refined] {
+    for v in [Verdict::Errata, Verdict::Refined, Verdict::Typo] {
         if total.get(v) == 0 {
             continue;
         }
-        for c in claims.iter().filter(|c| c.verdict == v) {
+        for c in claims.iter().filter(|c| c.verdict() == v) {
             let _ = writeln!(
                 out,
                 "- **{}** `{}` ({}): {}",
@@ -162,7 +169,7 @@ pub fn to_markdown(claims: &[Claim]) -> String {
         }
         let _ = writeln!(out, "## {}\n", heading(s));
         for c in here {
-            let _ = writeln!(out, "### `{}`: {}\n", c.id, c.verdict.name());
+            let _ = writeln!(out, "### `{}`: {}\n", c.id, c.verdict().name());
             let _ = writeln!(out, "- **Paper:** {}", c.statement);
             let _ = writeln!(out, "- **Derived:** {}", c.derived);
             let _ = writeln!(out, "- **Evidence:** {}\n", c.evidence);

@@ -3,10 +3,12 @@
 //! derives (exact polynomials, exact stability limits, exact series) and,
 //! where only numbers can say it, with rounded floating-point values.
 
+mod advice;
 mod app_a;
 mod app_b;
 mod common;
 mod frequency;
+pub(crate) mod pascal;
 mod ranges;
 mod sec04;
 mod sec05;

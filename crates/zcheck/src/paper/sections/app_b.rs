@@ -7,7 +7,8 @@ use poly::{Operand, Sym};
 
 use super::common::*;
 use super::sec08;
-use crate::paper::{Claim, Verdict};
+use super::pascal;
+use crate::paper::{Claim, Finding};
 
 pub fn claims() -> Vec<Claim> {
     let mut s = Section::new("B", "appB");
@@ -49,21 +50,12 @@ fn twins(s: &mut Section, matrix: &str) {
             title(direct)
         ),
         format!("P = {}", matrix_text(&a.transition_matrix)),
-        exact_verdict(same),
+        Finding::same(matrix_text(&b.transition_matrix), matrix_text(&a.transition_matrix)),
         evidence,
     );
 }
 
-fn title(name: &str) -> String {
-    name.split('_')
-        .map(|w| {
-            let mut c = w.chars();
-            c.next().map(|f| f.to_uppercase().collect::<String>() + c.as_str()).unwrap_or_default()
-        })
-        .collect::<Vec<_>>()
-        .join(" ")
-        .replace("Semi False", "Semi-False")
-}
+use super::ranges::title;
 
 /// Temporaries written and never read.
 fn dead_assignments(m: &poly::Method) -> Vec<String> {
@@ -92,7 +84,7 @@ fn verlet_start(s: &mut Section) {
         "verlet_start",
         "Verlet: t0:=0; y0:=1; y2:=1; { v0=0 }",
         "Verlet from y0 = y2 = 1 produces exactly False Euler's y samples from v0 = 0, y0 = 1",
-        exact_verdict(ok),
+        Finding::all([("the y samples coincide at every Φ tried", ok)]),
         format!(
             "exact rational runs of {n} steps at Φ = 1/10, 1/2, 1, 3/2, 2, 9/4; False Euler's y obeys \
              y_i = (2 − Φ²) y_(i−1) − y_(i−2) with y_(−1) = y_0 − Φ·v_0 = y_0 when v0 = 0"
@@ -104,23 +96,70 @@ fn damping(s: &mut Section) {
     let d = derivation("damped_euler_d");
     let half = paper("Phi/2");
     let p = d.transition_matrix.map(|e| e.subs(Sym::new("D"), &half));
-    let ok = p == derivation("damped_euler").transition_matrix;
+    let builtin = derivation("damped_euler").transition_matrix;
     s.push(
         "damped_euler_d",
         "Damped Euler: D:=0.5*woT;  v1:= v0-woT*(y0+2*D*v0)",
         format!("P = {}", matrix_text(&p)),
-        exact_verdict(ok),
+        Finding::same(matrix_text(&p), matrix_text(&builtin)),
         "section 6's damped scheme with D a parameter, after D := Φ/2, has exactly the transition matrix of \
          the Appendix B program (and of its (1-woT2)*v0 matrix branch)",
     );
 }
 
 fn slips(s: &mut Section) {
+    // The "Transition matrix" comments: the one that differs from the others
+    // is the slip; it matters only if removing it changes the tokens.
+    let comments: Vec<String> =
+        pascal::comments(pascal::APPENDIX_B).into_iter().filter(|c| c.starts_with("Transition")).collect();
+    let intended = comments
+        .iter()
+        .max_by_key(|c| comments.iter().filter(|d| d == c).count())
+        .cloned()
+        .unwrap_or_default();
+    let odd: Vec<&String> = comments.iter().filter(|c| **c != intended).collect();
+    let printed = odd.first().map_or_else(|| intended.clone(), |c| (*c).clone());
+    let mended = pascal::APPENDIX_B.replace(&printed, &intended);
+    let changes_math = pascal::tokens(pascal::APPENDIX_B) != pascal::tokens(&mended);
     s.push(
         "typo_matrixix",
         "Standard Heun: { Transition matrixix }",
-        "a typo in a comment (\"matrix\"); the code is unaffected",
-        Verdict::Errata,
-        "the listing of case 5; Pascal ignores comments",
+        format!(
+            "{} of the {} \"Transition\" comments read {{ {printed} }} where the others read {{ {intended} }}; \
+             the listing's tokens without comments are {} after mending it",
+            odd.len(),
+            comments.len(),
+            if changes_math { "different" } else { "the same" }
+        ),
+        Finding::Slip { printed, intended, changes_math },
+        "the Appendix B listing, transcribed verbatim, scanned (paper/sections/pascal.rs): comments compared \
+         with each other, tokens compared with and without the slip",
+    );
+    undeclared(s);
+}
+
+/// Names the listing assigns but never declares.
+fn undeclared(s: &mut Section) {
+    let names = pascal::undeclared(pascal::APPENDIX_B);
+    let early = pascal::read_before_written(pascal::APPENDIX_B);
+    let undefined: Vec<&String> = names.iter().filter(|n| early.contains(n)).collect();
+    let list = if names.is_empty() { "none".to_owned() } else { names.join(", ") };
+    s.push(
+        "undeclared_names",
+        "Var t0,y0,v0,t1,y1,v1,y2: Double; dv1,dy1,dv2,dy2,y11,v11,v12: Double; woT,woT2,woT4: Double; i,k: \
+         Integer;  ...  D:=0.5*woT; ...  x0:=0; ... x1 := x0+dT;",
+        format!(
+            "assigned but not declared in Func: {list}; {} of them is read before it is written",
+            if undefined.is_empty() { "none".to_owned() } else { format!("{undefined:?}") }
+        ),
+        Finding::Slip {
+            printed: format!("undeclared: {list}"),
+            intended: "undeclared: none".to_owned(),
+            changes_math: !undefined.is_empty(),
+        },
+        "the listing scanned: the Var list and parameters against every name on the left of :=. d is case 2's \
+         damping (section 6's D); x0, x1 are case 7's time, where the other cases write t0, t1; p0, q0, p1, q1 \
+         are the screen coordinates MapP returns, which every listing of the paper uses without declaring. Each \
+         is written before it is read, so declaring it changes nothing the program computes",
     );
 }

@@ -12,7 +12,7 @@ use std::sync::{Mutex, OnceLock};
 
 use poly::{Derivation, Method, Operand, Poly, PolyMatrix, Sym, Q};
 
-use crate::paper::{Claim, Verdict};
+use crate::paper::{Claim, Finding};
 
 /// The claims of one section, in the paper's order.
 pub struct Section {
@@ -34,17 +34,17 @@ impl Section {
         key: &str,
         statement: impl Into<String>,
         derived: impl Into<String>,
-        verdict: Verdict,
+        finding: Finding,
         evidence: impl Into<String>,
     ) {
-        self.claims.push(Claim {
-            id: format!("{}.{key}", self.prefix),
-            section: self.section.to_owned(),
-            statement: statement.into(),
-            derived: derived.into(),
-            verdict,
-            evidence: evidence.into(),
-        });
+        self.claims.push(Claim::new(
+            format!("{}.{key}", self.prefix),
+            self.section.to_owned(),
+            statement.into(),
+            roots_once(&derived.into()),
+            finding,
+            roots_once(&evidence.into()),
+        ));
     }
 
     /// Adds to the evidence of the claim recorded last.
@@ -58,6 +58,42 @@ impl Section {
     pub fn finish(self) -> Vec<Claim> {
         self.claims
     }
+}
+
+/// A text with each "(the root of ...)" explanation kept at its first
+/// occurrence only: an irrational boundary is named once, then by its value.
+pub fn roots_once(text: &str) -> String {
+    const OPEN: &str = " (the root of ";
+    let mut out = String::new();
+    let mut seen: Vec<String> = Vec::new();
+    let mut rest = text;
+    while let Some(k) = rest.find(OPEN) {
+        out.push_str(&rest[..k]);
+        let after = &rest[k + OPEN.len()..];
+        // The explanation ends at the parenthesis that closes OPEN.
+        let mut depth = 1;
+        let end = after
+            .char_indices()
+            .find_map(|(i, ch)| {
+                match ch {
+                    '(' => depth += 1,
+                    ')' => depth -= 1,
+                    _ => {}
+                }
+                (depth == 0).then_some(i)
+            })
+            .unwrap_or(after.len().saturating_sub(1));
+        let inner = &after[..end];
+        if !seen.iter().any(|x| x == inner) {
+            seen.push(inner.to_owned());
+            out.push_str(OPEN);
+            out.push_str(inner);
+            out.push(')');
+        }
+        rest = &after[(end + 1).min(after.len())..];
+    }
+    out.push_str(rest);
+    out
 }
 
 /// A built-in method's derivation, derived once per process (the report
@@ -81,15 +117,6 @@ pub fn derivation(name: &str) -> Derivation {
 #[track_caller]
 pub fn paper(text: &str) -> Poly {
     Poly::parse(text).unwrap_or_else(|e| panic!("transcription {text:?}: {e}"))
-}
-
-/// `Confirmed` when `same`, else `Errata`.
-pub fn exact_verdict(same: bool) -> Verdict {
-    if same {
-        Verdict::Confirmed
-    } else {
-        Verdict::Errata
-    }
 }
 
 /// The symbol of a state variable (or its history) in symbolic execution:
@@ -144,13 +171,15 @@ pub struct Printed {
 /// Compares printed right-hand sides with the step values of `method`
 /// (the value assigned to `name`): returns (all equal, derived listing,
 /// differences).
-pub fn compare_stages(method: &Method, lines: &[(&str, Printed)]) -> (bool, String, String) {
+pub fn compare_stages(method: &Method, lines: &[(&str, Printed)]) -> (Finding, String, String) {
     let mut derived = String::new();
+    let mut printed = String::new();
     let mut diffs = String::new();
     for (name, line) in lines {
         let want = stage_value(method, name);
         let got = paper(line.parse);
         let _ = write!(derived, "{}{name} = {want}", if derived.is_empty() { "" } else { "; " });
+        let _ = write!(printed, "{}{name} = {got}", if printed.is_empty() { "" } else { "; " });
         if want != got {
             let _ = write!(
                 diffs,
@@ -161,7 +190,7 @@ pub fn compare_stages(method: &Method, lines: &[(&str, Printed)]) -> (bool, Stri
             );
         }
     }
-    (diffs.is_empty(), derived, diffs)
+    (Finding::same(printed, &derived), derived, diffs)
 }
 
 /// A z-domain row of the paper, `x = a v z⁻¹ + b y z⁻¹`, as the printed
@@ -178,15 +207,17 @@ pub struct ZRow {
 /// Compares printed z-domain rows with the rows of the derived transition
 /// matrix P (state order v, y): row i of the z-domain equations is
 /// `x_i = Σ_j P_ij x_j z⁻¹`.
-pub fn compare_z_rows(d: &Derivation, rows: &[ZRow]) -> (bool, String, String) {
+pub fn compare_z_rows(d: &Derivation, rows: &[ZRow]) -> (Finding, String, String) {
     let p = &d.transition_matrix;
     let names = d.method.state();
     let mut derived = Vec::new();
+    let mut printed = Vec::new();
     let mut diffs = Vec::new();
     for (i, row) in rows.iter().enumerate() {
         let want = [p[(i, 0)].clone(), p[(i, 1)].clone()];
         let got = [paper(row.v), paper(row.y)];
         derived.push(format!("{} = ({}) v z^-1 + ({}) y z^-1", names[i], want[0], want[1]));
+        printed.push(format!("{} = ({}) v z^-1 + ({}) y z^-1", names[i], got[0], got[1]));
         for (k, var) in ["v", "y"].iter().enumerate() {
             if want[k] != got[k] {
                 diffs.push(format!(
@@ -196,7 +227,8 @@ pub fn compare_z_rows(d: &Derivation, rows: &[ZRow]) -> (bool, String, String) {
             }
         }
     }
-    (diffs.is_empty(), derived.join("; "), diffs.join("; "))
+    let derived = derived.join("; ");
+    (Finding::same(printed.join("; "), &derived), derived, diffs.join("; "))
 }
 
 /// The paper's second-order form: `chi = z^2 - 2 p z + q`.
@@ -373,6 +405,7 @@ pub fn ode_claim(s: &mut Section, method: &str, printed: &str, a: [[&str; 2]; 2]
     let printed_a = ode_matrix(a);
     let defect = scheme_defect(&d, &printed_a, scheme);
     let ok = is_zero_matrix(&defect);
+    let zero = PolyMatrix::zeros(defect.rows(), defect.cols());
     let canonical = scheme_defect(&d, &ode_matrix(OSCILLATOR), scheme);
     let rule = match scheme {
         Scheme::Euler => "P = I + ΦA exactly",
@@ -399,7 +432,9 @@ pub fn ode_claim(s: &mut Section, method: &str, printed: &str, a: [[&str; 2]; 2]
             }
         )
     };
-    s.push("ode", printed, derived, exact_verdict(ok), evidence);
+    // The scheme's P for the printed A, less the derived P: zero when the
+    // printed ODE is the one the method integrates.
+    s.push("ode", printed, derived, Finding::same(matrix_text(&defect), matrix_text(&zero)), evidence);
 }
 
 /// Records a printed characteristic equation against the derived χ.
@@ -407,6 +442,7 @@ pub fn charpoly_claim(s: &mut Section, key: &str, method: &str, printed: &str, p
     let d = derivation(method);
     let got = paper(parse);
     let ok = got == d.charpoly;
+    let finding = Finding::same(&got, &d.charpoly);
     let evidence = if ok {
         format!(
             "poly::derive({method}) gives χ by the z-domain determinant and by det(zI − P), \
@@ -419,7 +455,7 @@ pub fn charpoly_claim(s: &mut Section, key: &str, method: &str, printed: &str, p
             &got - &d.charpoly
         )
     };
-    s.push(key, printed, format!("χ(z) = {}", chi_text(&d)), exact_verdict(ok), evidence);
+    s.push(key, printed, format!("χ(z) = {}", chi_text(&d)), finding, evidence);
 }
 
 /// Records printed intermediate values of one step against symbolic
@@ -432,25 +468,25 @@ pub fn stages_claim(
     lines: &[(&str, Printed)],
 ) {
     let m = derivation(method).method;
-    let (ok, derived, diffs) = compare_stages(&m, lines);
-    let evidence = if ok {
+    let (finding, derived, diffs) = compare_stages(&m, lines);
+    let evidence = if diffs.is_empty() {
         format!("symbolic execution of the {method} program (Appendix B) gives every printed value exactly")
     } else {
         format!("symbolic execution of the {method} program: {diffs}")
     };
-    s.push(key, printed, derived, exact_verdict(ok), evidence);
+    s.push(key, printed, derived, finding, evidence);
 }
 
 /// Records printed z-domain rows against the derived transition matrix.
 pub fn z_rows_claim(s: &mut Section, method: &str, printed: &str, rows: &[ZRow]) {
     let d = derivation(method);
-    let (ok, derived, diffs) = compare_z_rows(&d, rows);
-    let evidence = if ok {
+    let (finding, derived, diffs) = compare_z_rows(&d, rows);
+    let evidence = if diffs.is_empty() {
         format!("the rows of P from poly::derive({method}) equal the printed coefficients exactly")
     } else {
         format!("poly::derive({method}): {diffs}")
     };
-    s.push("z_rows", printed, derived, exact_verdict(ok), evidence);
+    s.push("z_rows", printed, derived, finding, evidence);
 }
 
 /// Records a printed r² against q (section 4: r1² = q for a conjugate pair).
@@ -467,7 +503,7 @@ pub fn r_squared_claim(s: &mut Section, method: &str, printed: &str, parse: &str
         "r_squared",
         printed,
         format!("r² = q = {q} while {range}"),
-        exact_verdict(ok),
+        Finding::same(paper(parse), &q),
         format!(
             "for a conjugate pair z1·z2 = r² = q (section 4); q from poly::derive({method}) {} the printed r²",
             if ok { "equals" } else { "differs from" }
@@ -507,7 +543,10 @@ pub fn eigen_claim(
         key,
         printed,
         format!("p = {p}, q − p² = {disc}; {range}"),
-        exact_verdict(ok_p && ok_im),
+        Finding::same(
+            format!("p = {}, q − p² = {}", paper(p_text), paper(im_sq)),
+            format!("p = {p}, q − p² = {disc}"),
+        ),
         evidence,
     );
 }
@@ -527,8 +566,11 @@ pub fn tan_claim(s: &mut Section, key: &str, method: &str, printed: &str, num_sq
     s.push(
         key,
         printed,
-        format!("tan Ψ = sqrt({disc}) / ({p}); {p_sign}"),
-        exact_verdict(ok),
+        format!("tan Ψ = {} / ({p}); {p_sign}", sqrt_text(&disc)),
+        Finding::same(
+            format!("numerator² = {}, denominator = {}", paper(num_sq), paper(den)),
+            format!("numerator² = {disc}, denominator = {p}"),
+        ),
         if ok {
             "Ψ is the argument of z1 = p + j·sqrt(q − p²): the printed numerator squared equals q − p² \
              and the printed denominator equals p exactly"
@@ -537,6 +579,26 @@ pub fn tan_claim(s: &mut Section, key: &str, method: &str, printed: &str, num_sq
             format!("the printed form does not match p = {p}, q − p² = {disc}")
         },
     );
+}
+
+/// sqrt(p) for a polynomial in Φ, with the largest even power of Φ taken
+/// out of the root: `Phi` for Φ², `Phi*sqrt(1 - 1/4*Phi^2)` for
+/// Φ² − Φ⁴/4.
+pub fn sqrt_text(p: &Poly) -> String {
+    let c = p.coeffs_in(Sym::phi());
+    let Some(low) = c.iter().position(|x| !x.is_zero()) else { return "0".to_owned() };
+    let k = low / 2;
+    let rest = Poly::from_coeffs_in(Sym::phi(), &c[2 * k..]);
+    let outside = match k {
+        0 => String::new(),
+        1 => "Phi".to_owned(),
+        k => format!("Phi^{k}"),
+    };
+    match (outside.is_empty(), rest.is_one()) {
+        (true, _) => format!("sqrt({rest})"),
+        (false, true) => outside,
+        (false, false) => format!("{outside}*sqrt({rest})"),
+    }
 }
 
 /// A transition matrix at one rational Φ (other parameters substituted by

@@ -162,7 +162,7 @@ pub fn class_map(method: &str) -> Vec<(Piece, Option<RootClass>)> {
 /// A class map in words: "damped_oscillation for 0 < Φ < ...; ...".
 pub fn class_map_text(map: &[(Piece, Option<RootClass>)]) -> String {
     map.iter()
-        .filter_map(|(piece, class)| class.map(|c| format!("{c} for {}", piece.text())))
+        .filter_map(|(piece, class)| class.map(|c| format!("{} for {}", class_words(c), piece.text())))
         .collect::<Vec<_>>()
         .join("; ")
 }
@@ -188,7 +188,7 @@ pub fn classes_outside(known: &[RootClass]) -> String {
         for (piece, class) in class_map(method) {
             if let Some(c) = class {
                 if !known.contains(&c) {
-                    out.push(format!("{method}: {c} for {}", piece.text()));
+                    out.push(format!("{}: {} for {}", title(method), class_words(c), piece.text()));
                 }
             }
         }
@@ -217,31 +217,79 @@ pub fn negative_real_part_text() -> String {
             let x = piece.sample().expect("open piece");
             let zero = poly::q(0, 1);
             if super::common::at_phi(&p, &x) < zero && super::common::at_phi(&disc, &x) > zero {
-                out.push(format!("{method} for {}", piece.text()));
+                out.push(format!("{} for {}", title(method), piece.text()));
             }
         }
     }
     out.join("; ")
 }
 
-/// The verdict of an "always" claim: `Confirmed` when every class on Φ > 0
-/// satisfies `ok`, else `Refined`; with the class map in words and the
-/// pieces where `ok` fails.
+/// The finding of an "always" claim: every piece of Φ > 0 is a case, which
+/// holds when its class satisfies `ok`. `stated` is the range the paper
+/// states for the claim, as a polynomial in `Poly::parse` syntax whose
+/// smallest positive root bounds it (`"Phi^2 - 4"` for section 7's Φ² = 4);
+/// `None` when the paper states no narrower range, so that the wording's
+/// "always" is the assertion. Returns the finding, the class map in words
+/// and the pieces where `ok` fails.
 pub fn always(
     method: &str,
     ok: impl Fn(RootClass) -> bool,
-) -> (crate::paper::Verdict, String, String) {
+    stated: Option<&str>,
+) -> (crate::paper::Finding, String, String) {
+    use crate::paper::{Finding, Scope};
     let map = class_map(method);
+    let bound = stated.map(|text| {
+        positive_roots(&super::common::paper(text))
+            .into_iter()
+            .next()
+            .unwrap_or_else(|| panic!("stated range {text:?} has no positive root"))
+    });
+    let inside = |piece: &Piece| match (&bound, piece) {
+        (None, _) => true,
+        (Some(b), Piece::Open(_, Some(h))) => h <= b,
+        (Some(_), Piece::Open(_, None)) => false,
+        (Some(b), Piece::Point(a)) => a < b,
+    };
     let failing: Vec<String> = map
         .iter()
         .filter_map(|(piece, class)| {
-            class.filter(|c| !ok(*c)).map(|c| format!("{c} for {}", piece.text()))
+            class.filter(|c| !ok(*c)).map(|c| format!("{} for {}", class_words(c), piece.text()))
         })
         .collect();
-    let verdict = if failing.is_empty() {
-        crate::paper::Verdict::Confirmed
-    } else {
-        crate::paper::Verdict::Refined
-    };
-    (verdict, class_map_text(&map), failing.join("; "))
+    let finding = Finding::scoped(map.iter().filter_map(|(piece, class)| {
+        class.map(|c| {
+            let scope = if inside(piece) { Scope::Stated } else { Scope::Wording };
+            (format!("{}: {}", piece.text(), class_words(c)), ok(c), scope)
+        })
+    }));
+    (finding, class_map_text(&map), failing.join("; "))
+}
+
+/// A root class in words for running prose: "damped oscillation", not
+/// `damped_oscillation`.
+pub fn class_words(c: RootClass) -> String {
+    c.to_string().replace('_', " ")
+}
+
+/// A method's name in words: "False Euler", "Semi-False Heun".
+pub fn title(name: &str) -> String {
+    name.split('_')
+        .map(|w| {
+            let mut c = w.chars();
+            c.next().map(|f| f.to_uppercase().collect::<String>() + c.as_str()).unwrap_or_default()
+        })
+        .collect::<Vec<_>>()
+        .join(" ")
+        .replace("Semi False", "Semi-False")
+}
+
+/// Φ_max of a stability report: the largest Φ₀ with every 0 < Φ < Φ₀
+/// bounded (`None` when there is none, or when every Φ is bounded).
+pub fn limit_of(report: &StabilityReport) -> Option<Algebraic> {
+    report.phi_max.clone()
+}
+
+/// Φ_max of a built-in, in words ("2", "sqrt(2) ≈ 1.4142", "none").
+pub fn limit_text(method: &str) -> String {
+    limit_of(&report(method)).as_ref().map(show).unwrap_or_else(|| "none".to_owned())
 }

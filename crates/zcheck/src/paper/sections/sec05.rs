@@ -44,17 +44,22 @@ pub fn claims() -> Vec<Claim> {
     );
     eigen_claim(&mut s, "eigenvalues", "standard_euler", "z1/2 = 1 ± jΦ", "1", "Phi^2");
     r_squared_claim(&mut s, "standard_euler", "r1² = 1 + Φ²", "1 + Phi^2");
-    let (verdict, map, failing) =
-        ranges::always("standard_euler", |c| c == RootClass::UnstableOscillation);
+    let (finding, map, failing) =
+        ranges::always("standard_euler", |c| c == RootClass::UnstableOscillation, None);
+    let (p, q) = p_q(&derivation("standard_euler"));
+    let disc = &q - &(&p * &p);
     s.push(
         "always_unstable",
         "The solution is always an unstable oscillation.",
         map,
-        verdict,
+        finding,
         if failing.is_empty() {
-            "exact class map over all Φ > 0 (Sturm sequences on the discriminant and on χ(±1)): \
-             q − p² = Φ² > 0 and r² = 1 + Φ² > 1 for every Φ > 0"
-                .to_owned()
+            format!(
+                "exact class map over all Φ > 0 (Sturm sequences on the discriminant and on χ(±1)): \
+                 q − p² = {disc} and r² = q = {q}: {}; {}",
+                ranges::sign_text(&disc, "a complex pair", "real roots"),
+                ranges::sign_text(&(&q - &poly::Poly::one()), "r > 1", "r < 1"),
+            )
         } else {
             format!("exact class map: fails for {failing}")
         },

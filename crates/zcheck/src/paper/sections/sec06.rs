@@ -6,7 +6,7 @@ use poly::{Poly, RootClass, Sym};
 
 use super::common::*;
 use super::{frequency, ranges};
-use crate::paper::{Claim, Verdict};
+use crate::paper::{Claim, Finding};
 
 pub fn claims() -> Vec<Claim> {
     let mut s = Section::new("6", "sec06");
@@ -100,14 +100,18 @@ fn eigenvalues(s: &mut Section) {
     let d = derivation("damped_euler_d");
     let (p, q) = p_q(&d);
     let disc = &q - &(&p * &p);
-    let ok = paper("1 - D*Phi") == p && paper("Phi^2*(1 - D^2)") == disc;
     s.push(
         "eigenvalues",
         "z1/2 = (1 − DΦ) ± jΦ(1 − D²)^0.5",
         format!("p = {p}, q − p² = {disc}: a conjugate pair iff D² < 1 (Φ > 0); for D ≥ 1 the same formula gives real roots"),
-        exact_verdict(ok),
-        "the printed real part equals p and the printed imaginary part squared equals q − p² exactly \
-         (poly::derive(damped_euler_d)); q − p² = Φ²(1 − D²) changes sign at D = 1",
+        Finding::same(
+            format!("p = {}, q − p² = {}", paper("1 - D*Phi"), paper("Phi^2*(1 - D^2)")),
+            format!("p = {p}, q − p² = {disc}"),
+        ),
+        format!(
+            "the printed real part is compared with p and the printed imaginary part squared with q − p² \
+             (poly::derive(damped_euler_d)); q − p² = {disc} changes sign at D = 1"
+        ),
     );
 }
 
@@ -118,7 +122,7 @@ fn r_squared(s: &mut Section) {
         "r_squared",
         "r1² = 1 − 2DΦ + Φ²",
         format!("r² = q = {q} while D² < 1"),
-        exact_verdict(paper("1 - 2*D*Phi + Phi^2") == q),
+        Finding::same(paper("1 - 2*D*Phi + Phi^2"), &q),
         "for a conjugate pair r² = z1·z2 = q (section 4); q from poly::derive(damped_euler_d)",
     );
 }
@@ -129,27 +133,33 @@ fn damping_choice(s: &mut Section) {
     let factored = paper("Phi*(Phi - 2*D)");
     let at_half = q.subs(Sym::new("D"), &paper("Phi/2"));
     let builtin_q = p_q(&derivation("damped_euler")).1;
-    let ok = &q - &Poly::one() == factored && at_half.is_one() && builtin_q.is_one();
     s.push(
         "damping_choice",
         "... stabilizing the solution of an undamped oscillator numerically, by r1² = 1: D = 0.5Φ",
         format!("r1² − 1 = {} = Φ(Φ − 2D): zero for Φ > 0 iff D = Φ/2", &q - &Poly::one()),
-        exact_verdict(ok),
+        Finding::all([
+            ("q − 1 = Φ(Φ − 2D)", &q - &Poly::one() == factored),
+            ("q = 1 at D = Φ/2", at_half.is_one()),
+            ("the built-in damped_euler (D:=0.5*woT) has q = 1", builtin_q.is_one()),
+        ]),
         "exact: q − 1 factors as Φ(Φ − 2D); substituting D = Φ/2 gives q = 1, and the built-in \
          damped_euler (Appendix B: D:=0.5*woT) has q = 1",
     );
 }
 
 fn now_harmonic(s: &mut Section) {
-    let (verdict, map, failing) = ranges::always("damped_euler", |c| c == RootClass::Harmonic);
-    let verdict = if failing.is_empty() { Verdict::Confirmed } else { verdict };
+    // The printed eigenvalues (1 − DΦ) ± jΦ(1 − D²)^0.5 are a conjugate pair
+    // only while 1 − D² > 0: with D = Φ/2, the range the section implies.
+    let (finding, map, failing) =
+        ranges::always("damped_euler", |c| c == RootClass::Harmonic, Some("1 - Phi^2/4"));
     s.push(
         "now_harmonic",
         "Because the sample sequence is now harmonic we can calculate the true frequency Ω0 by using Ψ = Ω0 T.",
         map,
-        verdict,
+        finding,
         format!(
-            "exact class map of damped_euler (D = Φ/2) over Φ > 0: harmonic only while D < 1; it fails for {failing}"
+            "exact class map of damped_euler (D = Φ/2) over Φ > 0: harmonic only while D < 1, the range the \
+             printed eigenvalues (1 − D²)^0.5 imply; it fails for {failing}"
         ),
     );
 }

@@ -6,11 +6,12 @@ use poly::RootClass;
 
 use super::common::*;
 use super::{frequency, ranges};
-use crate::paper::{Claim, Verdict};
+use crate::paper::{Claim, Finding, Scope};
 
 pub fn claims() -> Vec<Claim> {
     let mut s = Section::new("9", "sec09");
     scheme(&mut s);
+    scheme_with_input(&mut s);
     ode_claim(
         &mut s,
         "standard_heun",
@@ -61,15 +62,21 @@ pub fn claims() -> Vec<Claim> {
         "Phi^2",
     );
     r_squared_claim(&mut s, "standard_heun", "r1² = 1 + Φ⁴/4", "1 + Phi^4/4");
-    let (verdict, map, failing) =
-        ranges::always("standard_heun", |c| c == RootClass::UnstableOscillation);
+    let (finding, map, failing) =
+        ranges::always("standard_heun", |c| c == RootClass::UnstableOscillation, None);
+    let (p, q) = p_q(&derivation("standard_heun"));
+    let disc = &q - &(&p * &p);
     s.push(
         "always_unstable",
         "The solution is always an unstable oscillation.",
         map,
-        verdict,
+        finding,
         if failing.is_empty() {
-            "exact class map over all Φ > 0: q − p² = Φ² > 0 and q = 1 + Φ⁴/4 > 1".to_owned()
+            format!(
+                "exact class map over all Φ > 0: q − p² = {disc} and r² = q = {q}: {}; {}",
+                ranges::sign_text(&disc, "a complex pair", "real roots"),
+                ranges::sign_text(&(&q - &poly::Poly::one()), "r > 1", "r < 1"),
+            )
         } else {
             format!("exact class map: fails for {failing}")
         },
@@ -87,7 +94,7 @@ fn scheme(s: &mut Section) {
         "scheme",
         "dy(1) = τ(Ay + Bx); y(1) = y + dy(1); dy(2) = τ(Ay(1) + Bx); dy = 0.5(dy(1) + dy(2)); y = y + dy",
         format!("standard_heun: P = {}", matrix_text(&derivation("standard_heun").transition_matrix)),
-        exact_verdict(is_zero_matrix(&defect)),
+        Finding::same(matrix_text(&defect), matrix_text(&poly::PolyMatrix::zeros(2, 2))),
         "for x = 0 the scheme is y ← (I + τA + (τA)²/2) y; the built-in program (Appendix B case 5) gives \
          exactly that P with A = [[0, −1], [1, 0]] and τ·ω0 = Φ",
     );
@@ -100,18 +107,89 @@ pub fn growth_per_period(r_squared: f64, phi: f64) -> f64 {
 
 fn weak_instability(s: &mut Section) {
     let (_, q) = p_q(&derivation("standard_heun"));
-    let rows: Vec<String> = [10.0, 20.0, 50.0, 100.0]
+    let steps = [10.0, 20.0, 50.0, 100.0];
+    let growth: Vec<f64> = steps
         .iter()
         .map(|&n: &f64| {
             let phi = 2.0 * std::f64::consts::PI / n;
-            format!("{n} steps/period: ×{}", fixed(growth_per_period(eval_f64(&q, phi), phi), 5))
+            growth_per_period(eval_f64(&q, phi), phi)
         })
         .collect();
+    let rows: Vec<String> =
+        steps.iter().zip(&growth).map(|(n, g)| format!("{n} steps/period: ×{}", fixed(*g, 5))).collect();
+    // ln(growth per period) = (π/Φ)·ln q ~ π·c·Φ^(k−1) for q − 1 = c·Φ^k + ...
+    let excess = &q - &poly::Poly::one();
+    let lowest = excess.coeffs_in(poly::Sym::phi()).iter().position(|c| !c.is_zero());
     s.push(
         "weak_instability",
         "For sufficiently small timesteps τ the instability is weak.",
-        format!("r² − 1 = {}; amplitude growth per true period (1 + Φ⁴/4)^(π/Φ) ≈ 1 + πΦ³/4: {}", &q - &poly::Poly::one(), rows.join(", ")),
-        Verdict::Confirmed,
-        "r² = q exactly; the growth per period tends to 1 as Φ → 0, but never reaches it: unstable for every Φ > 0",
+        format!(
+            "r² − 1 = {excess}; amplitude growth per true period (r²)^(π/Φ): {}",
+            rows.join(", ")
+        ),
+        Finding::all([
+            ("the growth per period shrinks as the step shrinks (10 → 100 steps per period)".to_owned(), growth.windows(2).all(|w| w[1] < w[0])),
+            (
+                format!("the growth per period tends to 1 as Φ → 0 (r² − 1 starts at Φ^{})", lowest.unwrap_or(0)),
+                lowest.is_some_and(|k| k >= 2),
+            ),
+            ("the growth never reaches 1 (unstable at every step)".to_owned(), growth.iter().all(|g| *g > 1.0)),
+        ]),
+        format!(
+            "r² = q exactly; ln(growth per period) = (π/Φ)·ln q ~ Φ^{} → 0, but never 0: unstable for every Φ > 0",
+            lowest.map_or(0, |k| k.saturating_sub(1))
+        ),
+    );
+}
+
+/// Section 9's general formulation with an input x: the corrector
+/// dy(2) = τ(Ay(1) + Bx) reuses x at the start of the step. For a scalar
+/// ẏ = a·y + x(t), x(t) = x0 + x1·t, one step is compared exactly with the
+/// Taylor expansion of the true solution through τ².
+fn scheme_with_input(s: &mut Section) {
+    use poly::{Poly, Sym};
+    let tau_sym = Sym::new("tau");
+    let (a, y, x0, x1, tau) =
+        (Poly::var("a"), Poly::var("y"), Poly::var("x0"), Poly::var("x1"), Poly::sym(tau_sym));
+    let half = poly::q(1, 2);
+    let through = |p: &Poly, k: usize| {
+        let mut c = p.coeffs_in(tau_sym);
+        c.truncate(k + 1);
+        Poly::from_coeffs_in(tau_sym, &c)
+    };
+    let f = |y: &Poly, x: &Poly| &(&a * y) + x;
+    // The printed scheme, and Heun with x(t + τ) in the corrector.
+    let dy1 = &tau * &f(&y, &x0);
+    let y1 = &y + &dy1;
+    let printed = &y + &(&dy1 + &(&tau * &f(&y1, &x0))).scale(&half);
+    let x_end = &x0 + &(&x1 * &tau);
+    let heun = &y + &(&dy1 + &(&tau * &f(&y1, &x_end))).scale(&half);
+    // y(τ) = y + τ·ẏ + τ²/2·ÿ with ẏ = a y + x0, ÿ = a ẏ + x1.
+    let yd = f(&y, &x0);
+    let ydd = &(&a * &yd) + &x1;
+    let exact = &(&y + &(&tau * &yd)) + &(&(&tau * &tau) * &ydd).scale(&half);
+    let err_printed = through(&(&printed - &exact), 2);
+    let err_heun = through(&(&heun - &exact), 2);
+    let err_constant = err_printed.subs(Sym::new("x1"), &Poly::zero());
+    s.push(
+        "scheme_with_input",
+        "dy(1) = τ(Ay + Bx); y(1) = y + dy(1); dy(2) = τ(Ay(1) + Bx); dy = 0.5(dy(1) + dy(2))   (general \
+         formulation with an input x)",
+        format!(
+            "for ẏ = a·y + x(t), x = x0 + x1·t, the printed step (x at the start in both stages) differs from \
+             the true solution by {err_printed} + O(τ³): first order in the input unless x is held over the \
+             step; with x(t + τ) in the corrector the difference is {} + O(τ³)",
+            if err_heun.is_zero() { "0".to_owned() } else { err_heun.to_string() }
+        ),
+        Finding::scoped([
+            (
+                "input held constant over the step (x1 = 0, the sampled x_(i−1) of section 4): second order"
+                    .to_owned(),
+                err_constant.is_zero(),
+                Scope::Stated,
+            ),
+            (format!("time-varying input (x1 ≠ 0): second order, local error {err_printed}"), err_printed.is_zero(), Scope::Wording),
+        ]),
+        "exact symbolic step (poly) against the Taylor expansion of the true solution, truncated after τ²",
     );
 }

@@ -5,8 +5,8 @@
 use poly::{PolyMatrix, RootClass};
 
 use super::common::*;
-use super::ranges;
-use crate::paper::{Claim, Verdict};
+use super::{advice, ranges};
+use crate::paper::{Claim, Finding};
 
 pub fn claims() -> Vec<Claim> {
     let mut s = Section::new("10", "sec10");
@@ -81,14 +81,17 @@ pub fn claims() -> Vec<Claim> {
     z_rows(&mut s);
     charpoly(&mut s);
     r_squared_claim(&mut s, "false_heun", "r1² = 1 − Φ²/2", "1 - Phi^2/2");
-    let (verdict, map, failing) = ranges::always("false_heun", |c| {
-        matches!(c, RootClass::MonotonicUnstable | RootClass::DampedOscillation)
-    });
+    // No range is stated: the section gives no limit for False Heun.
+    let (finding, map, failing) = ranges::always(
+        "false_heun",
+        |c| matches!(c, RootClass::MonotonicUnstable | RootClass::DampedOscillation),
+        None,
+    );
     s.push(
         "either_or",
         "The solution is either monotonic unstable or a damped oscillation.",
         map,
-        verdict,
+        finding,
         format!(
             "exact class map over Φ > 0 (discriminant q − p² and χ(±1) by Sturm sequences): the two named \
              classes leave out {failing}"
@@ -156,12 +159,37 @@ fn not_recommended(s: &mut Section) {
             )
         })
         .collect();
+    let own = advice::criteria("false_heun");
+    let dominating = advice::dominated_by(&own, &PAPER_METHODS);
+    let by: Vec<String> = dominating
+        .iter()
+        .map(|(c, better)| format!("{} (better on {})", advice::text(c), better.join(", ")))
+        .collect();
     s.push(
         "not_recommended",
         "False Heun is not recommended.",
-        format!("|z|² − 1 = {} (first order in Φ²): amplitude per true period {}", &q - &poly::Poly::one(), rows.join(", ")),
-        Verdict::Confirmed,
-        "r² = q exactly on the oscillating range; the damping per period ≈ exp(−πΦ/2) is far stronger than \
-         the Φ³–Φ⁴ errors of the other second-order methods, and it is unstable beyond Φ = √2",
+        format!(
+            "{}; amplitude per true period {}; dominated on the paper's criteria by: {}",
+            advice::text(&own),
+            rows.join(", "),
+            if by.is_empty() { "none".to_owned() } else { by.join("; ") }
+        ),
+        Finding::all([(
+            "another method of the paper is at least as good on every criterion of section 1 and better on one",
+            !dominating.is_empty(),
+        )]),
+        "exact Φ_max (poly::stability), leading terms of Ψ − Φ and |z|² − 1 (poly::series), operations per \
+         step (poly::step_cost), for every method of sections 5–11",
     );
 }
+
+/// The methods of sections 5–11.
+pub const PAPER_METHODS: [&str; 7] = [
+    "standard_euler",
+    "damped_euler",
+    "false_euler",
+    "verlet",
+    "standard_heun",
+    "false_heun",
+    "semi_false_heun",
+];

@@ -4,8 +4,8 @@
 use poly::RootClass;
 
 use super::common::*;
-use super::{frequency, ranges};
-use crate::paper::{Claim, Verdict};
+use super::{advice, frequency, ranges};
+use crate::paper::{Claim, Finding};
 
 pub fn claims() -> Vec<Claim> {
     let mut s = Section::new("11", "sec11");
@@ -72,22 +72,27 @@ pub fn claims() -> Vec<Claim> {
     always_stable(&mut s);
     damped_small(&mut s);
     as_accurate(&mut s);
+    academic(&mut s);
     s.finish()
 }
 
 fn always_stable(s: &mut Section) {
-    let (verdict, map, failing) = ranges::always("semi_false_heun", RootClass::is_bounded);
+    // The section states no limit: "always" is the assertion.
+    let (finding, map, failing) = ranges::always("semi_false_heun", RootClass::is_bounded, None);
     let r = ranges::report("semi_false_heun");
-    let limit = r.phi_max.as_ref().map(ranges::show).unwrap_or_else(|| "none".to_owned());
-    let boundary = r.boundary.as_ref().map(|b| b.to_string()).unwrap_or_else(|| "none".to_owned());
+    let limit = ranges::limit_text("semi_false_heun");
+    let boundary = r.boundary.as_ref().map(|b| b.to_string().replace('_', " ")).unwrap_or_else(|| "none".to_owned());
+    let chi_minus_one = derivation("semi_false_heun").charpoly.subs(poly::Sym::z(), &poly::Poly::int(-1));
+    let crossings: Vec<String> = ranges::positive_roots(&chi_minus_one).iter().map(ranges::show).collect();
     s.push(
         "always_stable",
         "The solution is always stable ...",
         format!("stable only for 0 < Φ < {limit} (boundary: {boundary}); classes: {map}"),
-        verdict,
+        finding,
         format!(
-            "poly::stability::analyze: χ(−1) = 4 − Φ² − Φ⁴/4 vanishes at Φ² = 2√5 − 2, where a real root \
-             leaves the unit disc through −1; unbounded for {failing}"
+            "poly::stability::analyze: χ(−1) = {chi_minus_one} vanishes at Φ = {}, where a real root leaves the \
+             unit disc through −1; the section gives no limit, and the method is unbounded for {failing}",
+            crossings.join(", ")
         ),
     );
 }
@@ -95,13 +100,21 @@ fn always_stable(s: &mut Section) {
 fn damped_small(s: &mut Section) {
     let map = ranges::class_map("semi_false_heun");
     let first = map.first().and_then(|(_, c)| *c);
+    let (p, q) = p_q(&derivation("semi_false_heun"));
+    let disc = &q - &(&p * &p);
     s.push(
         "damped_small_steps",
         "... and for sufficiently small timesteps T a damped oscillation",
         ranges::class_map_text(&map[..1]),
-        exact_verdict(first == Some(RootClass::DampedOscillation)),
-        "exact class map: the first piece of Φ > 0 is a damped oscillation (q − p² = Φ²(1 − Φ²/2) > 0, \
-         q = 1 − Φ⁴/4 < 1)",
+        Finding::all([(
+            "the first piece of Φ > 0 is a damped oscillation",
+            first == Some(RootClass::DampedOscillation),
+        )]),
+        format!(
+            "exact class map: q − p² = {disc} ({}) and q = {q} ({})",
+            ranges::sign_text(&disc, "a complex pair", "real roots"),
+            ranges::sign_text(&(&q - &poly::Poly::one()), "r > 1", "r < 1"),
+        ),
     );
 }
 
@@ -118,7 +131,7 @@ fn as_accurate(s: &mut Section) {
     let diss = |d: &poly::Derivation| {
         poly::series::dissipation_order(&d.charpoly).expect("series").map(|t| t.order)
     };
-    let same = disp(&d_sf) == disp(&d_sh) && diss(&d_sf) == diss(&d_sh);
+    let (sf, sh) = (advice::criteria("semi_false_heun"), advice::criteria("standard_heun"));
     s.push(
         "as_accurate",
         "... as accurate as Standard Heun (which is unstable).",
@@ -134,13 +147,53 @@ fn as_accurate(s: &mut Section) {
             show_order(diss(&d_sf)),
             show_order(diss(&d_sh))
         ),
-        if same { Verdict::Confirmed } else { Verdict::Refined },
-        "poly::series on both χ: the phase error Ψ − Φ and the amplitude error |z|² − 1 have the same \
-         orders; the phase error of Semi-False Heun is half as large (−Φ³/12 against +Φ³/6), the amplitude \
-         error equal and opposite (−Φ⁴/4 against +Φ⁴/4)",
+        Finding::all([
+            ("the same dispersion order", disp(&d_sf) == disp(&d_sh)),
+            ("the same dissipation order", diss(&d_sf) == diss(&d_sh)),
+        ]),
+        format!(
+            "poly::series on both χ: leading phase errors {} against {}, leading amplitude errors {} against {}",
+            term(&sf.phase),
+            term(&sh.phase),
+            term(&sf.amplitude),
+            term(&sh.amplitude)
+        ),
     );
+}
+
+fn term(t: &Option<(usize, poly::Q)>) -> String {
+    t.as_ref().map_or_else(|| "0".to_owned(), |(k, c)| format!("{c}·Φ^{k}"))
 }
 
 fn show_order(k: Option<usize>) -> String {
     k.map_or_else(|| "none".to_owned(), |k| format!("Φ^{k}"))
+}
+
+/// "Because of the odd programming structure and the limited scope of
+/// applications, Semi-False Heun cannot be recommended. It's merely an
+/// academic example."
+fn academic(s: &mut Section) {
+    let own = advice::criteria("semi_false_heun");
+    let dominating = advice::dominated_by(&own, &super::sec10::PAPER_METHODS);
+    let by: Vec<String> = dominating
+        .iter()
+        .map(|(c, better)| format!("{} (better on {})", advice::text(c), better.join(", ")))
+        .collect();
+    s.push(
+        "academic_example",
+        "Because of the odd programming structure and the limited scope of applications, Semi-False Heun cannot \
+         be recommended. It's merely an academic example.",
+        format!(
+            "{}; dominated on the paper's criteria by: {}",
+            advice::text(&own),
+            if by.is_empty() { "none".to_owned() } else { by.join("; ") }
+        ),
+        Finding::all([(
+            "another method of the paper is at least as good on every criterion of section 1 and better on one",
+            !dominating.is_empty(),
+        )]),
+        "exact Φ_max (poly::stability), leading terms of Ψ − Φ and |z|² − 1 (poly::series), operations per \
+         step (poly::step_cost), for every method of sections 5–11; \"odd structure\" and \"limited scope\" \
+         are judgements zcheck does not check",
+    );
 }
