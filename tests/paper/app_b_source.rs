@@ -16,7 +16,8 @@ pub const COVERED: &[(&str, Verdict)] = &[
     ("appB.semi_false_heun_branches", Confirmed),
     ("appB.verlet_start", Confirmed),
     ("appB.damped_euler_d", Confirmed),
-    ("appB.typo_matrixix", Errata),
+    ("appB.typo_matrixix", Typo),
+    ("appB.undeclared_names", Typo),
 ];
 
 #[test]

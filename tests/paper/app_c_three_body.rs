@@ -20,7 +20,7 @@ pub fn check_verdicts(expected: &[(&str, Verdict)], section: &str) {
     let claims = appendix_claims();
     for (id, verdict) in expected {
         let c = claims.iter().find(|c| c.id == *id).unwrap_or_else(|| panic!("no claim {id}"));
-        assert_eq!(c.verdict, *verdict, "{id}: {}", c.derived);
+        assert_eq!(c.verdict(), *verdict, "{id}: {}", c.derived);
         assert_eq!(c.section, section, "{id}");
         assert!(!c.statement.is_empty() && !c.derived.is_empty() && !c.evidence.is_empty(), "{id}");
     }

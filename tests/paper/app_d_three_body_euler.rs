@@ -18,7 +18,7 @@ pub const COVERED: &[(&str, Verdict)] = &[
     ("appD.energy_not_invariant", Errata),
     ("appD.symmetric_circle", Errata),
     ("appD.control_by_partial_derivatives", Confirmed),
-    ("appD.sec12_chaotic_but_bounded", Refined),
+    ("appD.sec12_chaotic_but_bounded", Confirmed),
     ("appD.velocity_reads_new_positions", Errata),
 ];
 

@@ -12,6 +12,7 @@ use crate::app_c_three_body::check_verdicts;
 pub const COVERED: &[(&str, Verdict)] = &[
     ("appE.commanded_attitude", Refined),
     ("appE.false_euler_rigid_body", Confirmed),
+    ("appE.rigid_body_equations", Confirmed),
     ("appE.rotation_matrix", Confirmed),
     ("appE.gimbal_lock_guard", Confirmed),
 ];

@@ -23,3 +23,4 @@ mod sec11_semi_false_heun;
 mod sec12_conclusions;
 #[path = "../support/snapshot.rs"]
 mod snapshot;
+mod verdict_policy;

@@ -16,8 +16,9 @@ fn summary_counts_the_claims() {
         (Verdict::Confirmed, "confirmed"),
         (Verdict::Refined, "refined"),
         (Verdict::Errata, "errata"),
+        (Verdict::Typo, "typo"),
     ] {
-        assert_eq!(summary[key], claims.iter().filter(|c| c.verdict == v).count(), "{key}");
+        assert_eq!(summary[key], claims.iter().filter(|c| c.verdict() == v).count(), "{key}");
     }
     for s in ["4", "5", "6", "7", "8", "9", "10", "11", "12", "A", "B", "C", "D", "E"] {
         let n = claims.iter().filter(|c| c.section == s).count();

@@ -45,7 +45,7 @@ fn always_an_unstable_oscillation() {
     assert!(late_amplitude("standard_euler", 0.3, 400) > 10.0);
     let c = claim("sec05.always_unstable");
     assert!(
-        c.derived.contains("unstable_oscillation") && !c.derived.contains(';'),
+        c.derived.contains("unstable oscillation") && !c.derived.contains(';'),
         "{}",
         c.derived
     );

@@ -13,6 +13,7 @@ pub const COVERED: &[(&str, Verdict)] = &[
     ("sec08.same_as_false_euler", Confirmed),
     ("sec08.initial_velocity", Refined),
     ("sec08.operations", Refined),
+    ("sec08.bad_formulation", Refined),
 ];
 
 #[test]

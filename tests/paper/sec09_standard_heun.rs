@@ -10,6 +10,7 @@ use crate::common::*;
 
 pub const COVERED: &[(&str, Verdict)] = &[
     ("sec09.scheme", Confirmed),
+    ("sec09.scheme_with_input", Refined),
     ("sec09.ode", Errata),
     ("sec09.stages", Confirmed),
     ("sec09.z_rows", Confirmed),

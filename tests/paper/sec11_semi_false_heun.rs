@@ -15,9 +15,10 @@ pub const COVERED: &[(&str, Verdict)] = &[
     ("sec11.charpoly", Confirmed),
     ("sec11.eigenvalues", Confirmed),
     ("sec11.r_squared", Confirmed),
-    ("sec11.always_stable", Refined),
+    ("sec11.always_stable", Errata),
     ("sec11.damped_small_steps", Confirmed),
     ("sec11.as_accurate", Confirmed),
+    ("sec11.academic_example", Confirmed),
 ];
 
 #[test]
