@@ -24,6 +24,7 @@ pub const COVERED: &[(&str, Verdict)] = &[
     ("sec04.approach_minus_one", Confirmed),
     ("sec04.p_q_roots", Confirmed),
     ("sec04.r_squared_q", Confirmed),
+    ("sec04.method_identities", Confirmed),
 ];
 
 #[test]

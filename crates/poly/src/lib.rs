@@ -53,6 +53,7 @@ mod builtins;
 mod class;
 pub mod cost;
 mod derive;
+pub mod equiv;
 mod error;
 mod matrix;
 mod method;

@@ -2,6 +2,7 @@
 
 pub mod advise;
 pub mod derive;
+pub mod equiv;
 pub mod methods;
 pub mod output;
 pub mod overview;

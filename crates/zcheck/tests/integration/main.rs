@@ -3,6 +3,7 @@
 
 mod advise_cli;
 mod cli_derive;
+mod equiv_cli;
 mod extremes;
 mod hostile;
 mod plot_cli;

@@ -20,6 +20,7 @@ pub fn claims() -> Vec<Claim> {
     double_roots(&mut s);
     approach_minus_one(&mut s);
     p_q_form(&mut s);
+    method_identities(&mut s);
     s.finish()
 }
 
@@ -407,5 +408,91 @@ fn delay_operator(s: &mut Section) {
         ]),
         "exact power series of the matrix exponential (poly, rationals) against the cosine series; a sampled \
          e^(st) shifted by one sample is e^(st)·e^(−sT), and the eigenvalues z of a step relate to s by z = e^(sT)",
+    );
+}
+
+/// The identities between methods the paper states or implies, decided
+/// exactly over every pair of built-ins (`poly::equiv`), and those it does
+/// not state.
+fn method_identities(s: &mut Section) {
+    use poly::equiv::{self, Relation};
+    let names: Vec<&str> = poly::builtin_names().collect();
+    let mut found: Vec<(&str, &str, Relation)> = Vec::new();
+    for (i, a) in names.iter().enumerate() {
+        for b in &names[i + 1..] {
+            let r = equiv::relate(&derivation(a), &derivation(b));
+            if r.shares_charpoly() {
+                found.push((a, b, r));
+            }
+        }
+    }
+    let relation = |a: &str, b: &str| {
+        found
+            .iter()
+            .find(|(x, y, _)| (*x == a && *y == b) || (*x == b && *y == a))
+            .map(|(_, _, r)| r.clone())
+            .unwrap_or(Relation::Different)
+    };
+    // What the paper states: §8 Verlet has False Euler's χ; Appendix A
+    // gives Damped Euler and False Euler one tan Ψ (one χ); Appendix B's two
+    // branches of every method compute the same step.
+    let mut stated: Vec<(String, bool)> = vec![
+        ("§8: Verlet has False Euler's χ".to_owned(), relation("false_euler", "verlet").shares_charpoly()),
+        (
+            "Appendix A: Damped Euler and False Euler have one χ".to_owned(),
+            relation("damped_euler", "false_euler").shares_charpoly(),
+        ),
+    ];
+    for matrix in names.iter().filter(|n| poly::direct_twin(n).is_some()) {
+        let direct = poly::direct_twin(matrix).expect("filtered");
+        stated.push((
+            format!("Appendix B: {direct} and {matrix} have equal P"),
+            relation(direct, matrix) == Relation::Equal,
+        ));
+    }
+    let is_stated = |a: &str, b: &str| {
+        let pair = |x: &str, y: &str| (a == x && b == y) || (a == y && b == x);
+        pair("false_euler", "verlet")
+            || pair("damped_euler", "false_euler")
+            || poly::direct_twin(a) == Some(b)
+            || poly::direct_twin(b) == Some(a)
+    };
+    let describe = |r: &Relation| match r {
+        Relation::Equal => "equal P".to_owned(),
+        Relation::Permutation { perm } => format!("similar by the permutation {perm:?}"),
+        Relation::Scaling { scale } => format!("similar by the scaling {}", scale.iter().map(ToString::to_string).collect::<Vec<_>>().join(", ")),
+        Relation::PermutationAndScaling { perm, scale } => format!(
+            "similar by the permutation {perm:?} and the scaling ({})",
+            scale.iter().map(ToString::to_string).collect::<Vec<_>>().join(", ")
+        ),
+        Relation::SameCharpoly => "the same χ only".to_owned(),
+        Relation::Different => "nothing".to_owned(),
+    };
+    let twin = |n: &str| n.ends_with("_matrix");
+    let stronger: Vec<String> = found
+        .iter()
+        .filter(|(a, b, r)| !twin(a) && !twin(b) && is_stated(a, b) && !matches!(r, Relation::SameCharpoly | Relation::Equal))
+        .map(|(a, b, r)| format!("{a} and {b}: {} (the paper says only that they share χ)", describe(r)))
+        .collect();
+    let unstated: Vec<String> = found
+        .iter()
+        .filter(|(a, b, _)| !twin(a) && !twin(b) && !is_stated(a, b))
+        .map(|(a, b, r)| format!("{a} and {b}: {}", describe(r)))
+        .collect();
+    s.push(
+        "method_identities",
+        "This is the characteristic equation of False Euler - Verlet is the same (§8); Accurate solution for \
+         Damped Euler and False Euler (Appendix A); { Direct Integration } and { Transition matrix } (Appendix B)",
+        format!(
+            "{} of {} pairs of built-ins share χ; stronger than the paper says: {}; not stated by the paper: {}",
+            found.len(),
+            names.len() * (names.len() - 1) / 2,
+            if stronger.is_empty() { "none".to_owned() } else { stronger.join("; ") },
+            if unstated.is_empty() { "none".to_owned() } else { unstated.join("; ") },
+        ),
+        Finding::all(stated),
+        "poly::equiv::relate on every pair of built-ins: equal P, similar by a permutation and/or a constant \
+         diagonal scaling (exact, every permutation tried), or only the same χ; the _matrix twins are \
+         left out of the lists (Appendix B makes them equal to their direct branches)",
     );
 }

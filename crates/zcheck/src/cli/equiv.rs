@@ -1,0 +1,93 @@
+//! `zcheck equiv A B`: the strongest identity between two methods (built-in
+//! names or `.zm` paths), decided exactly by `poly::equiv`.
+
+use std::process::ExitCode;
+
+use poly::equiv::{self, Relation};
+use serde_json::json;
+
+/// Output format of `zcheck equiv`.
+#[derive(Clone, Copy, clap::ValueEnum)]
+pub enum Format {
+    Text,
+    Json,
+}
+
+/// Arguments of `zcheck equiv`.
+#[derive(clap::Args)]
+pub struct Args {
+    /// The first method: a built-in name or a `.zm` path.
+    pub a: String,
+    /// The second method: a built-in name or a `.zm` path.
+    pub b: String,
+    #[arg(long, value_enum, default_value = "text")]
+    pub format: Format,
+}
+
+/// The relation in words, with the permutation and scaling when there are.
+pub fn describe(r: &Relation, a: &poly::Method, b: &poly::Method) -> String {
+    let slot = |m: &poly::Method, k: usize| {
+        m.slots()
+            .get(k)
+            .map(|&(v, l)| m.operand_name(poly::Operand::Start { var: v, lag: l }))
+            .unwrap_or_else(|| format!("slot {k}"))
+    };
+    let mapping = |perm: &[usize]| {
+        perm.iter()
+            .enumerate()
+            .map(|(i, p)| format!("{} ↔ {}", slot(b, i), slot(a, *p)))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let scales = |scale: &[poly::Q]| {
+        scale.iter().enumerate().map(|(i, s)| format!("{} × {s}", slot(b, i))).collect::<Vec<_>>().join(", ")
+    };
+    match r {
+        Relation::Equal => "equal transition matrices".to_owned(),
+        Relation::Permutation { perm } => format!("similar by a permutation of the state ({})", mapping(perm)),
+        Relation::Scaling { scale } => format!("similar by a diagonal scaling of the state ({})", scales(scale)),
+        Relation::PermutationAndScaling { perm, scale } => format!(
+            "similar by a permutation and a diagonal scaling of the state ({}; {})",
+            mapping(perm),
+            scales(scale)
+        ),
+        Relation::SameCharpoly => "the same characteristic polynomial, not similar by a permutation or scaling".to_owned(),
+        Relation::Different => "different characteristic polynomials".to_owned(),
+    }
+}
+
+pub fn run(args: Args) -> anyhow::Result<ExitCode> {
+    let ma = check::load::load_method(&args.a)?;
+    let mb = check::load::load_method(&args.b)?;
+    let (da, db) = (poly::derive(&ma)?, poly::derive(&mb)?);
+    let relation = equiv::relate(&da, &db);
+    let reordered = equiv::reordered_updates(&ma, &mb);
+    let words = describe(&relation, &ma, &mb);
+    let out = match args.format {
+        Format::Text => {
+            let mut out = format!("{} and {}: {words}\n", ma.name(), mb.name());
+            if reordered {
+                out.push_str("the second program is the first with its updates reordered\n");
+            }
+            out.push_str(&format!("chi({}) = {}\n", ma.name(), da.charpoly));
+            out.push_str(&format!("chi({}) = {}\n", mb.name(), db.charpoly));
+            out
+        }
+        Format::Json => {
+            let doc = json!({
+                "a": ma.name(),
+                "b": mb.name(),
+                "relation": relation.name(),
+                "description": words,
+                "shares_charpoly": relation.shares_charpoly(),
+                "reordered_updates": reordered,
+                "charpoly_a": da.charpoly.to_string(),
+                "charpoly_b": db.charpoly.to_string(),
+            });
+            serde_json::to_string_pretty(&doc)? + "\n"
+        }
+    };
+    // A closed pipe (`| head`) is not an error of ours.
+    let _ = std::io::Write::write_all(&mut std::io::stdout().lock(), out.as_bytes());
+    Ok(ExitCode::SUCCESS)
+}
