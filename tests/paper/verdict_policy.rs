@@ -97,7 +97,9 @@ fn no_verdict_is_a_literal_in_the_proof_sources() {
     for file in files {
         let name = file.file_name().and_then(|n| n.to_str()).unwrap_or_default().to_owned();
         let text = std::fs::read_to_string(&file).expect("readable");
-        for (k, line) in text.lines().enumerate() {
+        // Test modules may name verdicts: they assert them.
+        let code_part = text.split("#[cfg(test)]").next().unwrap_or_default();
+        for (k, line) in code_part.lines().enumerate() {
             let code = line.split("//").next().unwrap_or_default();
             let compact: String = code.split_whitespace().collect();
             for literal in ["holds:true", "holds:false", "changes_math:true", "changes_math:false"] {

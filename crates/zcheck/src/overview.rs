@@ -95,6 +95,12 @@ pub fn summarize(method: &poly::Method, order: usize) -> Result<MethodSummary, O
         Err(e) => (format!("n/a ({e})"), "n/a".to_owned()),
     };
     let (modulus_sq_series, amplitude_error) = match series::modulus_sq_series(chi, order) {
+        // For a conjugate pair of a second-order χ, |z|² = z1·z2 = q exactly:
+        // a polynomial, not a truncated series.
+        Ok(_) if d.p_q().is_some_and(|(_, q)| (q.degree_in(poly::Sym::phi()) as usize) < order) => {
+            let q = d.p_q().map(|(_, q)| q.to_string()).unwrap_or_default();
+            (q, leading(series::dissipation_order(chi).map_err(err)?))
+        }
         Ok(c) => (series_text(&c, ""), leading(series::dissipation_order(chi).map_err(err)?)),
         Err(e) => (format!("n/a ({e})"), "n/a".to_owned()),
     };

@@ -620,3 +620,48 @@ pub fn iterate_exact(p: &[Vec<Q>], x0: &[Q], n: usize) -> Vec<Vec<Q>> {
     }
     out
 }
+
+#[cfg(test)]
+mod tests {
+    //! The claim builders fed perturbed statements: the verdict follows the
+    //! statement, not the code path.
+    use super::*;
+    use crate::paper::Verdict;
+    use poly::RootClass;
+
+    fn verdict_of(build: impl FnOnce(&mut Section)) -> Verdict {
+        let mut s = Section::new("0", "test");
+        build(&mut s);
+        s.finish().pop().expect("one claim").verdict()
+    }
+
+    #[test]
+    fn printed_objects_decide() {
+        let chi = |text: &'static str| {
+            verdict_of(|s| charpoly_claim(s, "chi", "false_euler", text, text))
+        };
+        assert_eq!(chi("z^2 - 2*(1 - Phi^2/2)*z + 1"), Verdict::Confirmed);
+        assert_eq!(chi("z^2 - 2*(1 - Phi^2/2)*z + 1 + Phi^4/4"), Verdict::Errata);
+        let r2 = |text: &'static str| verdict_of(|s| r_squared_claim(s, "standard_heun", text, text));
+        assert_eq!(r2("1 + Phi^4/4"), Verdict::Confirmed);
+        assert_eq!(r2("1 + Phi^2/4"), Verdict::Errata);
+        let eig = |im: &'static str| verdict_of(|s| eigen_claim(s, "e", "false_euler", im, "1 - Phi^2/2", im));
+        assert_eq!(eig("Phi^2*(1 - Phi^2/4)"), Verdict::Confirmed);
+        assert_eq!(eig("Phi^2"), Verdict::Errata);
+    }
+
+    #[test]
+    fn ranges_decide() {
+        let always = |ok: fn(RootClass) -> bool, stated: Option<&str>| {
+            verdict_of(|s| {
+                let (finding, map, _) = super::super::ranges::always("false_euler", ok, stated);
+                s.push("always", "always", map, finding, "");
+            })
+        };
+        let harmonic = |c: RootClass| c == RootClass::Harmonic;
+        assert_eq!(always(harmonic, Some("Phi^2 - 4")), Verdict::Refined);
+        assert_eq!(always(harmonic, None), Verdict::Errata);
+        assert_eq!(always(harmonic, Some("Phi^2 - 9")), Verdict::Errata);
+        assert_eq!(always(|_| true, None), Verdict::Confirmed);
+    }
+}

@@ -114,7 +114,7 @@ fn initial_velocity(s: &mut Section) {
         "Verlet Integration doesn't use the state variable v explicitly. This causes big problems for the \
          introduction of the initial condition v(0) = v0 and also for ... forces which depend on the velocity",
         format!(
-            "Verlet carries no v ({}); v0 enters it exactly through y_(−1) = y_0 − Φ·v_0 (Appendix B's y2:=1 is \
+            "Verlet carries no v (its state is {}); v0 enters it exactly through y_(−1) = y_0 − Φ·v_0 (Appendix B's y2:=1 is \
              the case v0 = 0), and a velocity force through the secant (y − y@1)/T: {}",
             verlet_state.join(", "),
             damped.text
