@@ -30,7 +30,13 @@ pub fn claim(id: &str) -> &'static Claim {
 pub fn check_verdicts(expected: &[(&str, Verdict)]) {
     for (id, verdict) in expected {
         let c = claim(id);
-        assert_eq!(c.verdict(), *verdict, "{id}: derived {:?}, evidence {:?}", c.derived, c.evidence);
+        assert_eq!(
+            c.verdict(),
+            *verdict,
+            "{id}: derived {:?}, evidence {:?}",
+            c.derived,
+            c.evidence
+        );
         assert!(
             !c.statement.is_empty() && !c.derived.is_empty() && !c.evidence.is_empty(),
             "{id} is incomplete"

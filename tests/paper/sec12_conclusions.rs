@@ -7,13 +7,12 @@ use zcheck::paper::Verdict::{self, *};
 
 use crate::common::*;
 
-pub const COVERED: &[(&str, Verdict)] =
-    &[
-        ("sec12.use_false_euler", Refined),
-        ("sec12.use_standard_heun", Refined),
-        ("sec12.professional_methods", Confirmed),
-        ("sec12.satellite_drift", Refined),
-    ];
+pub const COVERED: &[(&str, Verdict)] = &[
+    ("sec12.use_false_euler", Refined),
+    ("sec12.use_standard_heun", Refined),
+    ("sec12.professional_methods", Confirmed),
+    ("sec12.satellite_drift", Refined),
+];
 
 #[test]
 fn verdicts() {

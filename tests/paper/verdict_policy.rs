@@ -40,7 +40,10 @@ fn every_verdict_moves_with_its_inputs() {
         match c.finding().clone() {
             Finding::Same { printed, derived } => {
                 if printed == derived {
-                    moved(Finding::Same { printed: format!("{printed} + 1"), derived }, Verdict::Errata);
+                    moved(
+                        Finding::Same { printed: format!("{printed} + 1"), derived },
+                        Verdict::Errata,
+                    );
                 } else {
                     moved(Finding::Same { printed: derived.clone(), derived }, Verdict::Confirmed);
                 }
@@ -54,7 +57,8 @@ fn every_verdict_moves_with_its_inputs() {
                         .collect(),
                 };
                 moved(with(&|_, _| true), Verdict::Confirmed);
-                let stated = cases.iter().position(|x| x.scope == Scope::Stated).expect("a stated case");
+                let stated =
+                    cases.iter().position(|x| x.scope == Scope::Stated).expect("a stated case");
                 moved(with(&|_, k| k != stated), Verdict::Errata);
                 if let Some(wording) = cases.iter().position(|x| x.scope == Scope::Wording) {
                     moved(with(&|_, k| k != wording), Verdict::Refined);
@@ -62,12 +66,19 @@ fn every_verdict_moves_with_its_inputs() {
             }
             Finding::Slip { printed, intended, changes_math } => {
                 moved(
-                    Finding::Slip { printed: intended.clone(), intended: intended.clone(), changes_math },
+                    Finding::Slip {
+                        printed: intended.clone(),
+                        intended: intended.clone(),
+                        changes_math,
+                    },
                     Verdict::Confirmed,
                 );
                 if printed != intended {
                     let flipped = if changes_math { Verdict::Typo } else { Verdict::Errata };
-                    moved(Finding::Slip { printed, intended, changes_math: !changes_math }, flipped);
+                    moved(
+                        Finding::Slip { printed, intended, changes_math: !changes_math },
+                        flipped,
+                    );
                 }
             }
         }
@@ -102,11 +113,16 @@ fn no_verdict_is_a_literal_in_the_proof_sources() {
         for (k, line) in code_part.lines().enumerate() {
             let code = line.split("//").next().unwrap_or_default();
             let compact: String = code.split_whitespace().collect();
-            for literal in ["holds:true", "holds:false", "changes_math:true", "changes_math:false"] {
+            for literal in ["holds:true", "holds:false", "changes_math:true", "changes_math:false"]
+            {
                 assert!(!compact.contains(literal), "{name}:{}: literal {literal}", k + 1);
             }
             if !allowed.contains(&name.as_str()) {
-                assert!(!code.contains("Verdict::"), "{name}:{}: a verdict named outside the policy", k + 1);
+                assert!(
+                    !code.contains("Verdict::"),
+                    "{name}:{}: a verdict named outside the policy",
+                    k + 1
+                );
             }
         }
     }

@@ -103,8 +103,10 @@ fn scaling(q: &PolyMatrix, b: &PolyMatrix) -> Option<Vec<Q>> {
                 }
                 // b_ij = s_i/s_j q_ij and b_ji = s_j/s_i q_ji.
                 let links = [
-                    (!q[(i, j)].is_zero()).then(|| constant_ratio(&b[(i, j)], &q[(i, j)]).map(|r| &si / &r)),
-                    (!q[(j, i)].is_zero()).then(|| constant_ratio(&b[(j, i)], &q[(j, i)]).map(|r| &si * &r)),
+                    (!q[(i, j)].is_zero())
+                        .then(|| constant_ratio(&b[(i, j)], &q[(i, j)]).map(|r| &si / &r)),
+                    (!q[(j, i)].is_zero())
+                        .then(|| constant_ratio(&b[(j, i)], &q[(j, i)]).map(|r| &si * &r)),
                 ];
                 for link in links.into_iter().flatten() {
                     let sj = link?;
@@ -238,12 +240,16 @@ mod tests {
         let fe = derive("method a\nstate v y\nv = v - Phi*y\ny = y + Phi*v\n");
         let swapped = derive("method b\nstate y v\nv = v - Phi*y\ny = y + Phi*v\n");
         let scaled = derive("method c\nstate v y\nv = v - 2*Phi*y\ny = y + 1/2*Phi*v\n");
-        let damped = derive("method d\nstate v y\nv1 = v - Phi*(y + Phi*v)\ny = y + Phi*v\nv = v1\n");
+        let damped =
+            derive("method d\nstate v y\nv1 = v - Phi*(y + Phi*v)\ny = y + Phi*v\nv = v1\n");
         let euler = derive("method e\nstate v y\nv1 = v - Phi*y\ny = y + Phi*v\nv = v1\n");
         let verlet = derive("method f\nstate y\ny = 2*y - y@1 - Phi^2*y\n");
         assert_eq!(relate(&fe, &fe), Relation::Equal);
         assert_eq!(relate(&fe, &swapped), Relation::Permutation { perm: vec![1, 0] });
-        assert_eq!(relate(&fe, &scaled), Relation::Scaling { scale: vec![crate::q(1, 1), crate::q(1, 2)] });
+        assert_eq!(
+            relate(&fe, &scaled),
+            Relation::Scaling { scale: vec![crate::q(1, 1), crate::q(1, 2)] }
+        );
         assert!(matches!(relate(&fe, &damped), Relation::PermutationAndScaling { .. }));
         assert_eq!(relate(&fe, &verlet), Relation::SameCharpoly);
         assert_eq!(relate(&fe, &euler), Relation::Different);
@@ -252,7 +258,8 @@ mod tests {
         let ba = Method::parse("b", "method b\nstate v y\ny = y + Phi*v\nv = v - Phi*y\n").unwrap();
         assert!(reordered_updates(&ab, &ba));
         assert!(!reordered_updates(&ab, &ab));
-        let other = Method::parse("c", "method c\nstate v y\ny = y + Phi*v\nv = v - 2*Phi*y\n").unwrap();
+        let other =
+            Method::parse("c", "method c\nstate v y\ny = y + Phi*v\nv = v - 2*Phi*y\n").unwrap();
         assert!(!reordered_updates(&ab, &other));
     }
 
@@ -261,7 +268,8 @@ mod tests {
     #[test]
     fn relation_reconstructs() {
         let fe = derive("method a\nstate v y\nv = v - Phi*y\ny = y + Phi*v\n");
-        let damped = derive("method d\nstate v y\nv1 = v - Phi*(y + Phi*v)\ny = y + Phi*v\nv = v1\n");
+        let damped =
+            derive("method d\nstate v y\nv1 = v - Phi*(y + Phi*v)\ny = y + Phi*v\nv = v1\n");
         let Relation::PermutationAndScaling { perm, scale } = relate(&fe, &damped) else {
             panic!("expected a signed permutation")
         };

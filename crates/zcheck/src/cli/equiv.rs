@@ -40,18 +40,29 @@ pub fn describe(r: &Relation, a: &poly::Method, b: &poly::Method) -> String {
             .join(", ")
     };
     let scales = |scale: &[poly::Q]| {
-        scale.iter().enumerate().map(|(i, s)| format!("{} × {s}", slot(b, i))).collect::<Vec<_>>().join(", ")
+        scale
+            .iter()
+            .enumerate()
+            .map(|(i, s)| format!("{} × {s}", slot(b, i)))
+            .collect::<Vec<_>>()
+            .join(", ")
     };
     match r {
         Relation::Equal => "equal transition matrices".to_owned(),
-        Relation::Permutation { perm } => format!("similar by a permutation of the state ({})", mapping(perm)),
-        Relation::Scaling { scale } => format!("similar by a diagonal scaling of the state ({})", scales(scale)),
+        Relation::Permutation { perm } => {
+            format!("similar by a permutation of the state ({})", mapping(perm))
+        }
+        Relation::Scaling { scale } => {
+            format!("similar by a diagonal scaling of the state ({})", scales(scale))
+        }
         Relation::PermutationAndScaling { perm, scale } => format!(
             "similar by a permutation and a diagonal scaling of the state ({}; {})",
             mapping(perm),
             scales(scale)
         ),
-        Relation::SameCharpoly => "the same characteristic polynomial, not similar by a permutation or scaling".to_owned(),
+        Relation::SameCharpoly => {
+            "the same characteristic polynomial, not similar by a permutation or scaling".to_owned()
+        }
         Relation::Different => "different characteristic polynomials".to_owned(),
     }
 }

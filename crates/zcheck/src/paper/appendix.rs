@@ -133,8 +133,14 @@ fn sensitivity(config: &ThreeBodyConfig, n: u64) -> Vec<(String, f64, State)> {
         s
     };
     let starts: [(&str, State); 3] = [
-        ("eps one ulp up", ThreeBodyConfig { eps: config.eps.next_up(), ..*config }.initial_state()),
-        ("eps one ulp down", ThreeBodyConfig { eps: config.eps.next_down(), ..*config }.initial_state()),
+        (
+            "eps one ulp up",
+            ThreeBodyConfig { eps: config.eps.next_up(), ..*config }.initial_state(),
+        ),
+        (
+            "eps one ulp down",
+            ThreeBodyConfig { eps: config.eps.next_down(), ..*config }.initial_state(),
+        ),
         ("y of body 3 one ulp up", nudged(&|s| s.position[2][1] = s.position[2][1].next_up())),
     ];
     for (label, start) in starts {
@@ -157,12 +163,16 @@ fn sensitivity(config: &ThreeBodyConfig, n: u64) -> Vec<(String, f64, State)> {
     });
     rows.push(row("si, co in Single precision", r_max_from(config, single, n)));
     let literal = ThreeBodyConfig { first_step: FirstStep::ZeroedNewPositions, ..*config };
-    rows.push(row("no force on step 1 (zeroed memory, an assumption)", r_max_from(&literal, base, n)));
+    rows.push(row(
+        "no force on step 1 (zeroed memory, an assumption)",
+        r_max_from(&literal, base, n),
+    ));
     rows
 }
 
 fn sensitivity_text(rows: &[(String, f64, State)]) -> String {
-    let (lo, hi) = rows.iter().fold((f64::INFINITY, 0.0f64), |(a, b), (_, r, _)| (a.min(*r), b.max(*r)));
+    let (lo, hi) =
+        rows.iter().fold((f64::INFINITY, 0.0f64), |(a, b), (_, r, _)| (a.min(*r), b.max(*r)));
     let each: Vec<String> = rows
         .iter()
         .map(|(l, r, s)| {
@@ -180,7 +190,10 @@ fn sensitivity_text(rows: &[(String, f64, State)]) -> String {
 fn reads_before_writes(listing: &str) -> (Vec<String>, Finding) {
     let names = pascal::read_before_written(listing);
     let finding = Finding::Slip {
-        printed: format!("reads before writing: {}", if names.is_empty() { "none".to_owned() } else { names.join(", ") }),
+        printed: format!(
+            "reads before writing: {}",
+            if names.is_empty() { "none".to_owned() } else { names.join(", ") }
+        ),
         intended: "reads before writing: none".to_owned(),
         // An undefined value on the first pass changes what the program computes.
         changes_math: !names.is_empty(),
@@ -226,7 +239,8 @@ fn appendix_c(claims: &mut Claims) {
             .flat_map(|s| s.radii())
             .fold([f64::INFINITY, 0.0f64], |m, x| [m[0].min(x), m[1].max(x)])
     });
-    let circle = reference_radius.is_some_and(|m| (m[0] - 1.0).abs() < 1e-6 && (m[1] - 1.0).abs() < 1e-6);
+    let circle =
+        reference_radius.is_some_and(|m| (m[0] - 1.0).abs() < 1e-6 && (m[1] - 1.0).abs() < 1e-6);
     claims.push(
         "C",
         "averaged_clover_leaf",
@@ -453,7 +467,9 @@ fn appendix_d(claims: &mut Claims) {
     );
     let horizon = 2000;
     let acc = three_body::accuracy(&plain, horizon).ok();
-    let width = acc.map_or(f64::INFINITY, |a| a.reference_energy_paper_range[1] - a.reference_energy_paper_range[0]);
+    let width = acc.map_or(f64::INFINITY, |a| {
+        a.reference_energy_paper_range[1] - a.reference_energy_paper_range[0]
+    });
     claims.push(
         "D",
         "energy_not_invariant",
@@ -537,7 +553,11 @@ fn appendix_d(claims: &mut Claims) {
 /// -Cf*dEn*∂E/∂v1 when ∂E/∂v1 = v1; checked by central differences of the
 /// energy at the start, and by the decay law it implies,
 /// d(dEn)/dt = -2·Cf·Ekin·dEn, on a short run from the circle.
-fn control_by_partial_derivatives(claims: &mut Claims, rc: &three_body::ThreeBodyRun, rp: &three_body::ThreeBodyRun) {
+fn control_by_partial_derivatives(
+    claims: &mut Claims,
+    rc: &three_body::ThreeBodyRun,
+    rp: &three_body::ThreeBodyRun,
+) {
     let config = ThreeBodyConfig::appendix_d_energy();
     let law = config.force_law;
     let start = config.initial_state();
@@ -553,7 +573,8 @@ fn control_by_partial_derivatives(claims: &mut Claims, rc: &three_body::ThreeBod
         }
     }
     // Decay from the circle (an exact solution, Ekin = 1.5) with dEn = 0.01.
-    let fine = ThreeBodyConfig { dt: 1e-5, velocities: InitialVelocities::Tangential, eps: 0.0, ..config };
+    let fine =
+        ThreeBodyConfig { dt: 1e-5, velocities: InitialVelocities::Tangential, eps: 0.0, ..config };
     let mut state = fine.initial_state();
     let e0 = state.energy_consistent(law) - 0.01;
     let kinetic = state.kinetic_energy();
@@ -663,7 +684,11 @@ fn appendix_e(claims: &mut Claims) {
             sig(r.reference_final_state.angles[1]),
         ),
     );
-    let fine = aircraft::simulate(&AircraftConfig { dt: config.dt / 2.0, ..config }, 2 * E_STEPS, &mut |_| {});
+    let fine = aircraft::simulate(
+        &AircraftConfig { dt: config.dt / 2.0, ..config },
+        2 * E_STEPS,
+        &mut |_| {},
+    );
     let ratios: Vec<f64> = (0..2).map(|i| r.max_angle_error[i] / fine.max_angle_error[i]).collect();
     claims.push(
         "E",

@@ -22,10 +22,16 @@ fn text(bytes: &[u8]) -> String {
 fn text_and_json_name_the_relation() {
     let out = zcheck(&["equiv", "false_euler", "damped_euler"]);
     assert!(out.status.success(), "{}", text(&out.stderr));
-    assert!(text(&out.stdout).contains("similar by a permutation and a diagonal scaling"), "{}", text(&out.stdout));
-    for (b, relation, shares) in
-        [("verlet", "same_charpoly", true), ("standard_euler", "different", false), ("false_euler_matrix", "equal", true)]
-    {
+    assert!(
+        text(&out.stdout).contains("similar by a permutation and a diagonal scaling"),
+        "{}",
+        text(&out.stdout)
+    );
+    for (b, relation, shares) in [
+        ("verlet", "same_charpoly", true),
+        ("standard_euler", "different", false),
+        ("false_euler_matrix", "equal", true),
+    ] {
         let out = zcheck(&["equiv", "false_euler", b, "--format", "json"]);
         assert!(out.status.success(), "{b}: {}", text(&out.stderr));
         let v: Value = serde_json::from_str(&text(&out.stdout)).expect("json");
@@ -43,8 +49,10 @@ fn zm_files_and_reordered_updates() {
     let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("equiv_cli");
     std::fs::create_dir_all(&dir).expect("dir");
     let path = dir.join("swapped.zm");
-    std::fs::write(&path, "method swapped\nstate v y\ny = y + Phi*v\nv = v - Phi*y\n").expect("write");
-    let out = zcheck(&["equiv", "false_euler", path.to_str().expect("utf-8 path"), "--format", "json"]);
+    std::fs::write(&path, "method swapped\nstate v y\ny = y + Phi*v\nv = v - Phi*y\n")
+        .expect("write");
+    let out =
+        zcheck(&["equiv", "false_euler", path.to_str().expect("utf-8 path"), "--format", "json"]);
     assert!(out.status.success(), "{}", text(&out.stderr));
     let v: Value = serde_json::from_str(&text(&out.stdout)).expect("json");
     assert_eq!(v["reordered_updates"], true);

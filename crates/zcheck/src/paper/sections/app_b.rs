@@ -6,8 +6,8 @@
 use poly::{Operand, Sym};
 
 use super::common::*;
-use super::sec08;
 use super::pascal;
+use super::sec08;
 use crate::paper::{Claim, Finding};
 
 pub fn claims() -> Vec<Claim> {
@@ -110,8 +110,10 @@ fn damping(s: &mut Section) {
 fn slips(s: &mut Section) {
     // The "Transition matrix" comments: the one that differs from the others
     // is the slip; it matters only if removing it changes the tokens.
-    let comments: Vec<String> =
-        pascal::comments(pascal::APPENDIX_B).into_iter().filter(|c| c.starts_with("Transition")).collect();
+    let comments: Vec<String> = pascal::comments(pascal::APPENDIX_B)
+        .into_iter()
+        .filter(|c| c.starts_with("Transition"))
+        .collect();
     let intended = comments
         .iter()
         .max_by_key(|c| comments.iter().filter(|d| d == c).count())

@@ -434,7 +434,13 @@ pub fn ode_claim(s: &mut Section, method: &str, printed: &str, a: [[&str; 2]; 2]
     };
     // The scheme's P for the printed A, less the derived P: zero when the
     // printed ODE is the one the method integrates.
-    s.push("ode", printed, derived, Finding::same(matrix_text(&defect), matrix_text(&zero)), evidence);
+    s.push(
+        "ode",
+        printed,
+        derived,
+        Finding::same(matrix_text(&defect), matrix_text(&zero)),
+        evidence,
+    );
 }
 
 /// Records a printed characteristic equation against the derived χ.
@@ -642,10 +648,13 @@ mod tests {
         };
         assert_eq!(chi("z^2 - 2*(1 - Phi^2/2)*z + 1"), Verdict::Confirmed);
         assert_eq!(chi("z^2 - 2*(1 - Phi^2/2)*z + 1 + Phi^4/4"), Verdict::Errata);
-        let r2 = |text: &'static str| verdict_of(|s| r_squared_claim(s, "standard_heun", text, text));
+        let r2 =
+            |text: &'static str| verdict_of(|s| r_squared_claim(s, "standard_heun", text, text));
         assert_eq!(r2("1 + Phi^4/4"), Verdict::Confirmed);
         assert_eq!(r2("1 + Phi^2/4"), Verdict::Errata);
-        let eig = |im: &'static str| verdict_of(|s| eigen_claim(s, "e", "false_euler", im, "1 - Phi^2/2", im));
+        let eig = |im: &'static str| {
+            verdict_of(|s| eigen_claim(s, "e", "false_euler", im, "1 - Phi^2/2", im))
+        };
         assert_eq!(eig("Phi^2*(1 - Phi^2/4)"), Verdict::Confirmed);
         assert_eq!(eig("Phi^2"), Verdict::Errata);
     }

@@ -87,7 +87,11 @@ pub fn too_high(s: &mut Section, method: &str, statement: &str) {
             crossing.is_none_or(|x| x >= 1.0),
             Scope::Stated,
         ),
-        (format!("1 ≤ Φ < {}, the rest of the oscillating range", fixed(hi, 3)), crossing.is_none(), Scope::Wording),
+        (
+            format!("1 ≤ Φ < {}, the rest of the oscillating range", fixed(hi, 3)),
+            crossing.is_none(),
+            Scope::Wording,
+        ),
     ]);
     let (derived, evidence) = match crossing {
         None => (

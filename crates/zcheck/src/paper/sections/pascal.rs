@@ -182,7 +182,10 @@ pub fn read_before_written(src: &str) -> Vec<String> {
                 let stop = |x: &Token| {
                     is(x, ";")
                         || is(x, ":=")
-                        || matches!(ident(x), Some("end" | "to" | "downto" | "do" | "then" | "else" | "begin" | "of"))
+                        || matches!(
+                            ident(x),
+                            Some("end" | "to" | "downto" | "do" | "then" | "else" | "begin" | "of")
+                        )
                 };
                 while j < t.len() && !stop(&t[j]) && !is(t.get(j + 1).unwrap_or(&t[j]), ":=") {
                     if let Some(r) = ident(&t[j]) {

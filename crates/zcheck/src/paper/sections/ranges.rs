@@ -162,7 +162,9 @@ pub fn class_map(method: &str) -> Vec<(Piece, Option<RootClass>)> {
 /// A class map in words: "damped_oscillation for 0 < Φ < ...; ...".
 pub fn class_map_text(map: &[(Piece, Option<RootClass>)]) -> String {
     map.iter()
-        .filter_map(|(piece, class)| class.map(|c| format!("{} for {}", class_words(c), piece.text())))
+        .filter_map(|(piece, class)| {
+            class.map(|c| format!("{} for {}", class_words(c), piece.text()))
+        })
         .collect::<Vec<_>>()
         .join("; ")
 }

@@ -376,10 +376,8 @@ fn delay_operator(s: &mut Section) {
         }
     }
     let trace = truncate(&(&flow[(0, 0)] + &flow[(1, 1)]), ORDER + 1);
-    let det = truncate(
-        &(&(&flow[(0, 0)] * &flow[(1, 1)]) - &(&flow[(0, 1)] * &flow[(1, 0)])),
-        ORDER + 1,
-    );
+    let det =
+        truncate(&(&(&flow[(0, 0)] * &flow[(1, 1)]) - &(&flow[(0, 1)] * &flow[(1, 0)])), ORDER + 1);
     // 2 cos Φ = Σ 2 (−1)^k Φ^(2k) / (2k)!.
     let mut cos2 = Poly::zero();
     let mut factorial = poly::q(1, 1);
@@ -437,7 +435,10 @@ fn method_identities(s: &mut Section) {
     // gives Damped Euler and False Euler one tan Ψ (one χ); Appendix B's two
     // branches of every method compute the same step.
     let mut stated: Vec<(String, bool)> = vec![
-        ("§8: Verlet has False Euler's χ".to_owned(), relation("false_euler", "verlet").shares_charpoly()),
+        (
+            "§8: Verlet has False Euler's χ".to_owned(),
+            relation("false_euler", "verlet").shares_charpoly(),
+        ),
         (
             "Appendix A: Damped Euler and False Euler have one χ".to_owned(),
             relation("damped_euler", "false_euler").shares_charpoly(),
@@ -460,7 +461,10 @@ fn method_identities(s: &mut Section) {
     let describe = |r: &Relation| match r {
         Relation::Equal => "equal P".to_owned(),
         Relation::Permutation { perm } => format!("similar by the permutation {perm:?}"),
-        Relation::Scaling { scale } => format!("similar by the scaling {}", scale.iter().map(ToString::to_string).collect::<Vec<_>>().join(", ")),
+        Relation::Scaling { scale } => format!(
+            "similar by the scaling {}",
+            scale.iter().map(ToString::to_string).collect::<Vec<_>>().join(", ")
+        ),
         Relation::PermutationAndScaling { perm, scale } => format!(
             "similar by the permutation {perm:?} and the scaling ({})",
             scale.iter().map(ToString::to_string).collect::<Vec<_>>().join(", ")
@@ -471,8 +475,15 @@ fn method_identities(s: &mut Section) {
     let twin = |n: &str| n.ends_with("_matrix");
     let stronger: Vec<String> = found
         .iter()
-        .filter(|(a, b, r)| !twin(a) && !twin(b) && is_stated(a, b) && !matches!(r, Relation::SameCharpoly | Relation::Equal))
-        .map(|(a, b, r)| format!("{a} and {b}: {} (the paper says only that they share χ)", describe(r)))
+        .filter(|(a, b, r)| {
+            !twin(a)
+                && !twin(b)
+                && is_stated(a, b)
+                && !matches!(r, Relation::SameCharpoly | Relation::Equal)
+        })
+        .map(|(a, b, r)| {
+            format!("{a} and {b}: {} (the paper says only that they share χ)", describe(r))
+        })
         .collect();
     let unstated: Vec<String> = found
         .iter()

@@ -111,7 +111,8 @@ fn stability_limit(s: &mut Section) {
     // What the paper prints, as numbers: Φ² = 4; T/T0 = 1/π, i.e.
     // Φ = 2π·T/T0 = 2; more than π steps per period, i.e. Φ < 2π/π = 2.
     let printed = ranges::positive_roots(&paper("Phi^2 - 4"));
-    let show_all = |v: &[poly::Algebraic]| v.iter().map(ranges::show).collect::<Vec<_>>().join(", ");
+    let show_all =
+        |v: &[poly::Algebraic]| v.iter().map(ranges::show).collect::<Vec<_>>().join(", ");
     let limit = phi_max.as_ref().map(ranges::show).unwrap_or_else(|| "none".to_owned());
     let boundary = r.boundary.as_ref().map(|b| b.to_string()).unwrap_or_else(|| "none".to_owned());
     // T/T0 = 1/π as a step: Φ = 2π·T/T0 = 2π/π.
@@ -166,7 +167,8 @@ fn nyquist(s: &mut Section, phi_max: Option<&poly::Algebraic>) {
     // Roots on the unit circle for every Φ > 0: product c/a = 1 and a
     // negative discriminant (b/2)² − ac.
     let disc = &(&b_half * &b_half) - &(&a * &c);
-    let disc_negative = ranges::positive_roots(&disc).is_empty() && at_phi(&disc, &poly::q(1, 1)) < poly::q(0, 1);
+    let disc_negative =
+        ranges::positive_roots(&disc).is_empty() && at_phi(&disc, &poly::q(1, 1)) < poly::q(0, 1);
     let trapezoid_harmonic = a == c && disc_negative;
     // Samples per period of the exact oscillation at T/T0 = 1/2: Ψ = Φ = π.
     let nyquist_samples = poly::q(360, 180);

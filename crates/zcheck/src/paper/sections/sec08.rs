@@ -193,8 +193,7 @@ pub fn damped_spring() -> DampedComparison {
     };
     let measure = |chi_d: &Poly| {
         let chi = chi_d.subs(Sym::new("D"), &Poly::constant(damping.clone()));
-        let limit =
-            poly::stability::analyze(&chi).ok().and_then(|r| super::ranges::limit_of(&r));
+        let limit = poly::stability::analyze(&chi).ok().and_then(|r| super::ranges::limit_of(&r));
         // The upper root of c2 z² + c1 z + c0 at Φ against e^(sΦ),
         // s = −D + j√(1 − D²).
         let c: Vec<f64> = chi.coeffs_in(Sym::z()).iter().map(|p| eval_f64(p, phi)).collect();

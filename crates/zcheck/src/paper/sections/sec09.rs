@@ -115,8 +115,11 @@ fn weak_instability(s: &mut Section) {
             growth_per_period(eval_f64(&q, phi), phi)
         })
         .collect();
-    let rows: Vec<String> =
-        steps.iter().zip(&growth).map(|(n, g)| format!("{n} steps/period: ×{}", fixed(*g, 5))).collect();
+    let rows: Vec<String> = steps
+        .iter()
+        .zip(&growth)
+        .map(|(n, g)| format!("{n} steps/period: ×{}", fixed(*g, 5)))
+        .collect();
     // ln(growth per period) = (π/Φ)·ln q ~ π·c·Φ^(k−1) for q − 1 = c·Φ^k + ...
     let excess = &q - &poly::Poly::one();
     let lowest = excess.coeffs_in(poly::Sym::phi()).iter().position(|c| !c.is_zero());
