@@ -104,7 +104,7 @@ fn unit_circle(s: &mut Section) {
 
 fn stability_limit(s: &mut Section) {
     let r = ranges::report("false_euler");
-    let phi_max = r.phi_max.clone();
+    let phi_max = ranges::limit_of(&r);
     let (p, q) = p_q(&derivation("false_euler"));
     let im_sq = &q - &(&p * &p);
     let im_zero = ranges::positive_roots(&im_sq);
