@@ -443,6 +443,32 @@ pub fn ode_claim(s: &mut Section, method: &str, printed: &str, a: [[&str; 2]; 2]
     );
 }
 
+/// Records "the solution is always an unstable oscillation" (sections 5
+/// and 9): the exact class map over every Φ > 0, no narrower range stated.
+pub fn always_unstable_claim(s: &mut Section, method: &str) {
+    use super::ranges;
+    let (finding, map, failing) =
+        ranges::always(method, |c| c == poly::RootClass::UnstableOscillation, None);
+    let (p, q) = p_q(&derivation(method));
+    let disc = &q - &(&p * &p);
+    s.push(
+        "always_unstable",
+        "The solution is always an unstable oscillation.",
+        map,
+        finding,
+        if failing.is_empty() {
+            format!(
+                "exact class map over all Φ > 0 (Sturm sequences on the discriminant and on χ(±1)): \
+                 q − p² = {disc} and r² = q = {q}: {}; {}",
+                ranges::sign_text(&disc, "a complex pair", "real roots"),
+                ranges::sign_text(&(&q - &Poly::one()), "r > 1", "r < 1"),
+            )
+        } else {
+            format!("exact class map: fails for {failing}")
+        },
+    );
+}
+
 /// Records a printed characteristic equation against the derived χ.
 pub fn charpoly_claim(s: &mut Section, key: &str, method: &str, printed: &str, parse: &str) {
     let d = derivation(method);

@@ -1,10 +1,7 @@
 //! Section 5, Standard Euler: update, z-domain rows, characteristic
 //! equation, eigenvalues, r² and "always an unstable oscillation".
 
-use poly::RootClass;
-
 use super::common::*;
-use super::ranges;
 use crate::paper::Claim;
 
 pub fn claims() -> Vec<Claim> {
@@ -44,25 +41,6 @@ pub fn claims() -> Vec<Claim> {
     );
     eigen_claim(&mut s, "eigenvalues", "standard_euler", "z1/2 = 1 ± jΦ", "1", "Phi^2");
     r_squared_claim(&mut s, "standard_euler", "r1² = 1 + Φ²", "1 + Phi^2");
-    let (finding, map, failing) =
-        ranges::always("standard_euler", |c| c == RootClass::UnstableOscillation, None);
-    let (p, q) = p_q(&derivation("standard_euler"));
-    let disc = &q - &(&p * &p);
-    s.push(
-        "always_unstable",
-        "The solution is always an unstable oscillation.",
-        map,
-        finding,
-        if failing.is_empty() {
-            format!(
-                "exact class map over all Φ > 0 (Sturm sequences on the discriminant and on χ(±1)): \
-                 q − p² = {disc} and r² = q = {q}: {}; {}",
-                ranges::sign_text(&disc, "a complex pair", "real roots"),
-                ranges::sign_text(&(&q - &poly::Poly::one()), "r > 1", "r < 1"),
-            )
-        } else {
-            format!("exact class map: fails for {failing}")
-        },
-    );
+    always_unstable_claim(&mut s, "standard_euler");
     s.finish()
 }

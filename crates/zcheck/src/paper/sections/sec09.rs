@@ -2,10 +2,8 @@
 //! the test ODE as printed (a misprint), the stages, χ, eigenvalues, r²,
 //! "always an unstable oscillation", tan Ψ and the frequency.
 
-use poly::RootClass;
-
 use super::common::*;
-use super::{frequency, ranges};
+use super::frequency;
 use crate::paper::{Claim, Finding, Scope};
 
 pub fn claims() -> Vec<Claim> {
@@ -62,25 +60,7 @@ pub fn claims() -> Vec<Claim> {
         "Phi^2",
     );
     r_squared_claim(&mut s, "standard_heun", "r1² = 1 + Φ⁴/4", "1 + Phi^4/4");
-    let (finding, map, failing) =
-        ranges::always("standard_heun", |c| c == RootClass::UnstableOscillation, None);
-    let (p, q) = p_q(&derivation("standard_heun"));
-    let disc = &q - &(&p * &p);
-    s.push(
-        "always_unstable",
-        "The solution is always an unstable oscillation.",
-        map,
-        finding,
-        if failing.is_empty() {
-            format!(
-                "exact class map over all Φ > 0: q − p² = {disc} and r² = q = {q}: {}; {}",
-                ranges::sign_text(&disc, "a complex pair", "real roots"),
-                ranges::sign_text(&(&q - &poly::Poly::one()), "r > 1", "r < 1"),
-            )
-        } else {
-            format!("exact class map: fails for {failing}")
-        },
-    );
+    always_unstable_claim(&mut s, "standard_heun");
     weak_instability(&mut s);
     tan_claim(&mut s, "tan_psi", "standard_heun", "tan Ψ = Φ / (1 − Φ²/2)", "Phi^2", "1 - Phi^2/2");
     frequency::approximation(&mut s, "standard_heun", "Ψ ≅ Φ·(1 + Φ²/6)", "Phi*(1 + Phi^2/6)");

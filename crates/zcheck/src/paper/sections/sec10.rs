@@ -160,7 +160,7 @@ fn not_recommended(s: &mut Section) {
         })
         .collect();
     let own = advice::criteria("false_heun");
-    let dominating = advice::dominated_by(&own, &PAPER_METHODS);
+    let dominating = advice::dominated_by(&own, &poly::PAPER_METHODS);
     let by: Vec<String> = dominating
         .iter()
         .map(|(c, better)| format!("{} (better on {})", advice::text(c), better.join(", ")))
@@ -182,14 +182,3 @@ fn not_recommended(s: &mut Section) {
          step (poly::step_cost), for every method of sections 5–11",
     );
 }
-
-/// The methods of sections 5–11.
-pub const PAPER_METHODS: [&str; 7] = [
-    "standard_euler",
-    "damped_euler",
-    "false_euler",
-    "verlet",
-    "standard_heun",
-    "false_heun",
-    "semi_false_heun",
-];

@@ -180,7 +180,7 @@ fn show_order(k: Option<usize>) -> String {
 /// academic example."
 fn academic(s: &mut Section) {
     let own = advice::criteria("semi_false_heun");
-    let dominating = advice::dominated_by(&own, &super::sec10::PAPER_METHODS);
+    let dominating = advice::dominated_by(&own, &poly::PAPER_METHODS);
     let by: Vec<String> = dominating
         .iter()
         .map(|(c, better)| format!("{} (better on {})", advice::text(c), better.join(", ")))
