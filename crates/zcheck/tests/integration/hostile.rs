@@ -157,6 +157,8 @@ fn locations() {
         case(&["derive", "./false_euler"], b"", 2, "./false_euler: cannot read: No such file", ""),
         case(&["stability", "sub/false_euler"], b"", 2, "sub/false_euler: cannot read", ""),
         case(&["derive", "{file}"], b"", 2, "the file is empty", ""),
+        case(&["equiv", "false_euler", "{file}"], b"\xfe", 2, "invalid UTF-8", ":1:1:"),
+        case(&["equiv", "no_such_method", "false_euler"], b"", 2, "no built-in method named `no_such_method`", ""),
     ]);
 }
 
