@@ -41,6 +41,8 @@ enum Command {
     Advise(cli::advise::Args),
     /// Run an appendix scene (three bodies, aircraft).
     Scene(cli::scene::Args),
+    /// Exact stability region in (Phi, D), drawn over a grid of root classes.
+    Map(cli::map::Args),
 }
 
 /// The most bytes of an error message printed: enough for any real error,
@@ -65,6 +67,7 @@ fn main() -> ExitCode {
         Command::Tradeoff(a) => cli::tradeoff::run(a),
         Command::Advise(a) => cli::advise::run(a),
         Command::Scene(a) => cli::scene::run(a),
+        Command::Map(a) => cli::map::run(a),
     };
     match result {
         Ok(code) => code,

@@ -2,6 +2,7 @@
 
 pub mod advise;
 pub mod derive;
+pub mod map;
 pub mod methods;
 pub mod output;
 pub mod overview;
