@@ -34,6 +34,7 @@ use std::time::Duration;
 
 use check::numeric::{f64_to_q, Params, Step};
 use nalgebra::DMatrix;
+use num_complex::Complex64 as C64;
 use poly::region::{region, PhiLimit, Region};
 use poly::{Method, Poly, Sym};
 use serde::Serialize;
@@ -53,10 +54,6 @@ const MAX_SUBSTEPS: u64 = 1 << 24;
 
 /// Largest system for the dense full-step analysis (2n × 2n eigenvalues).
 pub const MAX_FULL_DOF: usize = 400;
-
-/// Steps simulated for the check (at most; fewer when the duration is
-/// shorter).
-const SIM_STEPS: u64 = 4000;
 
 /// A candidate method.
 #[derive(Clone, Debug)]
@@ -607,10 +604,33 @@ fn advise_one(
     let d_timing = modes.iter().map(|m| m.ratio).fold(0.0, f64::max).min(1.0);
     let ns = ns_per_step(&a.spec, d_timing);
     let dof = scene.dof() as f64;
-    let predicted = substeps_accurate.map(|n| predicted_errors(a, modes, tick, n, target, None));
-    let simulated = match (simulate, substeps_accurate) {
-        (true, Some(n)) => simulate_check(a, scene, modal, system, shapes, n, target),
+    let full = match a.spec.kernel {
+        Some(k) if modal.damping == DampingKind::NonProportional && system.n() <= MAX_FULL_DOF => Some(k),
         _ => None,
+    };
+    let (predicted, simulated) = if let Some(kernel) = full {
+        // The modes are coupled: judge the full step's eigenvalues against
+        // the continuous system's e^{λT}.
+        let lambdas = continuous_eigenvalues(system);
+        let duration = scene.duration_s;
+        let meets = |n: u64| {
+            full_errors(kernel, system, &lambdas, tick, n, duration)
+                .is_some_and(|e| e.phase_rad <= target.phase_tol && e.amplitude <= target.amp_tol)
+        };
+        substeps_accurate = substeps_stable.and_then(|ns| smallest_meeting(meets, ns));
+        let predicted = substeps_accurate.and_then(|n| full_errors(kernel, system, &lambdas, tick, n, duration));
+        let simulated = match (simulate, substeps_accurate) {
+            (true, Some(n)) => simulate_full(kernel, system, &lambdas, tick, n, duration, target),
+            _ => None,
+        };
+        (predicted, simulated)
+    } else {
+        let predicted = substeps_accurate.map(|n| predicted_errors(a, modes, tick, n, target, None));
+        let simulated = match (simulate, substeps_accurate) {
+            (true, Some(n)) => simulate_check(a, scene, modal, system, shapes, n, target),
+            _ => None,
+        };
+        (predicted, simulated)
     };
     Ok(CandidateAdvice {
         method: a.spec.display.clone(),
@@ -687,8 +707,17 @@ fn checked_modes(a: &Analysed, modes: &[Mode], tick: f64, n: u64, target: &Targe
     out
 }
 
+/// Samples per mode for the fit.
+const FIT_SAMPLES: usize = 200;
+
+/// Largest simulated work, steps × degrees of freedom.
+const SIM_WORK: f64 = 2e8;
+
 /// Simulates the whole scene at `n` substeps and fits each checked mode's
-/// per-step root from its projected sequence.
+/// per-step root from its projected sequence. Each mode is sampled every
+/// m-th step with m·Φ ≈ 1/2, so that the fitted recurrence is well
+/// conditioned however small the substep (the root of the sampled sequence
+/// is z^m).
 fn simulate_check(
     a: &Analysed,
     scene: &SceneFile,
@@ -706,70 +735,82 @@ fn simulate_check(
     }
     let t = 1.0 / (tick * n as f64);
     let total_steps = (scene.duration_s * tick).round().max(1.0) as u64 * n;
-    let steps = total_steps.min(SIM_STEPS);
     let dim = system.n();
-    // Start: each checked mode with unit modal amplitude, at rest.
-    let mut y = vec![0.0; dim];
-    for &i in &checked {
-        for (yk, s) in y.iter_mut().zip(&shapes[i]) {
-            *yk += s;
-        }
-    }
-    let mut seqs: Vec<Vec<f64>> = vec![Vec::with_capacity(steps as usize + 1); checked.len()];
-    let project = |y: &[f64], seqs: &mut Vec<Vec<f64>>| {
-        for (s, &i) in seqs.iter_mut().zip(&checked) {
-            s.push(shapes[i].iter().zip(y).zip(&system.mass).map(|((p, y), m)| p * m * y).sum());
-        }
-    };
+    let stride: Vec<u64> =
+        checked.iter().map(|&i| ((0.5 / (modes[i].omega * t)).round() as u64).max(1)).collect();
+    let wanted = stride.iter().map(|m| m * FIT_SAMPLES as u64).max().unwrap_or(1);
+    let steps = total_steps.min(wanted).min((SIM_WORK / dim as f64) as u64).max(1);
+    let mut seqs: Vec<Vec<f64>> = vec![Vec::with_capacity(FIT_SAMPLES); checked.len()];
     let how;
     match a.spec.kernel {
         Some(kernel) => {
             how = "whole scene, system kernel".to_owned();
+            // Start: each checked mode with unit modal amplitude, at rest.
+            let mut y = vec![0.0; dim];
+            for &i in &checked {
+                for (yk, s) in y.iter_mut().zip(&shapes[i]) {
+                    *yk += s;
+                }
+            }
             let w = if kernel.keeps_previous() { y.clone() } else { vec![0.0; dim] };
             let mut state = VState { y, w };
-            project(&state.y, &mut seqs);
-            for _ in 0..steps {
-                vector::step(kernel, Sweep::Vector, system, t, &mut state);
-                project(&state.y, &mut seqs);
+            for k in 0..=steps {
+                if k > 0 {
+                    vector::step(kernel, Sweep::Vector, system, t, &mut state);
+                }
+                for (j, &i) in checked.iter().enumerate() {
+                    if k % stride[j] == 0 && seqs[j].len() < FIT_SAMPLES {
+                        let q = shapes[i].iter().zip(&state.y).zip(&system.mass).map(|((p, y), m)| p * m * y).sum();
+                        seqs[j].push(q);
+                    }
+                }
             }
         }
         None => {
             // A .zm file has no system form: each checked mode runs the
             // compiled scalar step at its own (Phi, D).
             how = "per mode, compiled .zm step".to_owned();
-            for (s, &i) in seqs.iter_mut().zip(&checked) {
-                let m = &modes[i];
-                let params = Params::phi(m.omega * t).with("D", m.ratio);
-                let step = Step::compile(&a.spec.method, &params).ok()?;
-                let y_slot = a.spec.method.slots().iter().position(|&(var, lag)| a.spec.method.state()[var] == "y" && lag == 0).unwrap_or(0);
-                let start = check::numeric::initial_slots(&a.spec.method, |v| if v == "y" { 1.0 } else { 0.0 });
+            let m = &a.spec.method;
+            let y_slot =
+                m.slots().iter().position(|&(var, lag)| m.state()[var] == "y" && lag == 0).unwrap_or(0);
+            let start = check::numeric::initial_slots(m, |v| if v == "y" { 1.0 } else { 0.0 });
+            for (j, &i) in checked.iter().enumerate() {
+                let params = Params::phi(modes[i].omega * t).with("D", modes[i].ratio);
+                let step = Step::compile(m, &params).ok()?;
                 let mut st = step.state(&start);
-                s.push(st.slots()[y_slot]);
-                for _ in 0..steps {
-                    step.advance(&mut st, 1);
-                    s.push(st.slots()[y_slot]);
+                seqs[j].push(st.slots()[y_slot]);
+                while seqs[j].len() < FIT_SAMPLES && (seqs[j].len() as u64) * stride[j] <= steps {
+                    step.advance(&mut st, stride[j]);
+                    seqs[j].push(st.slots()[y_slot]);
                 }
             }
         }
     }
     let mut sim = Errors { phase_rad: 0.0, amplitude: 0.0 };
     let mut agree = true;
-    for (s, &i) in seqs.iter().zip(&checked) {
+    let mut fitted = 0;
+    for ((s, &i), &m_stride) in seqs.iter().zip(&checked).zip(&stride) {
         let m = &modes[i];
         let phi = m.omega * t;
-        // Fit where the mode is still well above rounding noise.
-        let window = if m.ratio > 0.0 { ((18.0 / (m.ratio * phi)).ceil() as usize).max(16) } else { s.len() };
         let pred = predicted_errors(a, modes, tick, n, target, Some(&[i]));
-        let Some(fit) = fit_root(&s[..s.len().min(window)]) else {
+        // Fit where the mode is still well above rounding noise.
+        let psi_eff = phi * m_stride as f64;
+        let window = if m.ratio > 0.0 { ((18.0 / (m.ratio * psi_eff)).ceil() as usize).max(16) } else { s.len() };
+        let s = &s[..s.len().min(window)];
+        if s.len() < 16 {
+            continue;
+        }
+        let Some((psi_fit, ln_r_fit)) = fit_root(s) else {
             // Real roots: no oscillation to fit; only a prediction of no
             // oscillation agrees.
             agree &= pred.phase_rad.is_infinite();
             continue;
         };
+        fitted += 1;
+        let (psi, ln_r) = (psi_fit / m_stride as f64, ln_r_fit / m_stride as f64);
         let spring = Spring { damping: m.ratio };
-        let phase = total_steps as f64 * (fit.0 - spring.psi_exact(phi)).abs();
-        let amp = (total_steps as f64 * (fit.1 - spring.ln_r_exact(phi))).exp_m1().abs();
-        let close = |x: f64, y: f64, tol: f64| (x - y).abs() <= AGREE_FRACTION * tol + 1e-9 || (x.is_infinite() && y.is_infinite());
+        let phase = total_steps as f64 * (psi - spring.psi_exact(phi)).abs();
+        let amp = (total_steps as f64 * (ln_r - spring.ln_r_exact(phi))).exp_m1().abs();
         agree &= close(phase, pred.phase_rad, target.phase_tol) && close(amp, pred.amplitude, target.amp_tol);
         sim.phase_rad = sim.phase_rad.max(phase);
         sim.amplitude = sim.amplitude.max(amp);
@@ -777,11 +818,16 @@ fn simulate_check(
     Some(Simulated {
         phase_rad: sim.phase_rad,
         amplitude: sim.amplitude,
-        agree,
+        agree: agree && fitted > 0,
         how,
-        modes_checked: checked.len(),
+        modes_checked: fitted,
         steps,
     })
+}
+
+/// Whether a simulated error agrees with its prediction.
+fn close(sim: f64, pred: f64, tol: f64) -> bool {
+    (sim - pred).abs() <= AGREE_FRACTION * tol + 1e-9 || (sim.is_infinite() && pred.is_infinite())
 }
 
 /// (Ψ, ln r) of the sequence's two-term recurrence q_{k+1} = a q_k + b q_{k−1},
@@ -812,6 +858,131 @@ fn fit_root(q: &[f64]) -> Option<(f64, f64)> {
     }
     let r = (-b).sqrt();
     Some(((a / (2.0 * r)).clamp(-1.0, 1.0).acos(), r.ln()))
+}
+
+/// The eigenvalues λ of the continuous system ẏ = v, v̇ = −M⁻¹(K y + C v)
+/// with Im λ ≥ 0.
+pub fn continuous_eigenvalues(sys: &System) -> Vec<C64> {
+    let n = sys.n();
+    let mut a = DMatrix::zeros(2 * n, 2 * n);
+    for i in 0..n {
+        a[(i, n + i)] = 1.0;
+        for &(j, k) in sys.k.row(i) {
+            a[(n + i, j)] = -k / sys.mass[i];
+        }
+        for &(j, c) in sys.c.row(i) {
+            a[(n + i, n + j)] = -c / sys.mass[i];
+        }
+    }
+    let mut l: Vec<C64> = check::witness::eigenvalues_nalgebra(&a)
+        .unwrap_or_default()
+        .into_iter()
+        .filter(|z| z.im >= 0.0)
+        .collect();
+    l.sort_by(|x, y| x.norm().total_cmp(&y.norm()));
+    l
+}
+
+/// For each λ, the eigenvalue μ of the full step nearest e^{λT}.
+fn matched(p: &DMatrix<f64>, lambdas: &[C64], t: f64) -> Option<Vec<C64>> {
+    let mu = check::witness::eigenvalues_faer(p).ok()?;
+    Some(
+        lambdas
+            .iter()
+            .map(|l| {
+                let e = (l * t).exp();
+                *mu.iter().min_by(|x, y| (*x - e).norm().total_cmp(&(*y - e).norm())).expect("eigenvalues")
+            })
+            .collect(),
+    )
+}
+
+/// Phase and amplitude errors over `duration` of the full step at `n`
+/// substeps: per λ, N·|arg μ − Im λ·T| and |e^{N(ln|μ| − Re λ·T)} − 1|.
+fn full_errors(kernel: Kernel, sys: &System, lambdas: &[C64], tick: f64, n: u64, duration: f64) -> Option<Errors> {
+    let t = 1.0 / (tick * n as f64);
+    let steps = (duration * tick).round().max(1.0) * n as f64;
+    let mu = matched(&vector::step_matrix(kernel, Sweep::Vector, sys, t), lambdas, t)?;
+    Some(drifts(lambdas, &mu, t, steps))
+}
+
+fn drifts(lambdas: &[C64], mu: &[C64], t: f64, steps: f64) -> Errors {
+    let mut e = Errors { phase_rad: 0.0, amplitude: 0.0 };
+    for (l, m) in lambdas.iter().zip(mu) {
+        if l.im > 0.0 {
+            e.phase_rad = e.phase_rad.max(steps * (m.arg() - l.im * t).abs());
+        }
+        e.amplitude = e.amplitude.max((steps * (m.norm().ln() - l.re * t)).exp_m1().abs());
+    }
+    e
+}
+
+/// The full-step check: simulate the whole scene with the kernel, project
+/// the state on the full step's left eigenvectors (faer, of Pᵀ), and fit
+/// each projected sequence's ratio w_{k+m}/w_k.
+fn simulate_full(
+    kernel: Kernel,
+    sys: &System,
+    lambdas: &[C64],
+    tick: f64,
+    n: u64,
+    duration: f64,
+    target: &Target,
+) -> Option<Simulated> {
+    let t = 1.0 / (tick * n as f64);
+    let dim = sys.n();
+    let p = vector::step_matrix(kernel, Sweep::Vector, sys, t);
+    let pt = faer::Mat::<f64>::from_fn(2 * dim, 2 * dim, |i, j| p[(j, i)]);
+    let evd = pt.eigen().ok()?;
+    let (u, s) = (evd.U(), evd.S());
+    let total_steps = (duration * tick).round().max(1.0) * n as f64;
+    let mut mu_sim = Vec::new();
+    let mut state = VState { y: vec![1.0; dim], w: if kernel.keeps_previous() { vec![1.0; dim] } else { vec![0.0; dim] } };
+    // Per λ: the left eigenvector's column and the sampling stride.
+    let mut plan = Vec::new();
+    for l in lambdas {
+        let e = (l * t).exp();
+        let col = (0..2 * dim).min_by(|&x, &y| (s[x] - e).norm().total_cmp(&(s[y] - e).norm()))?;
+        plan.push((col, ((0.5 / (l.norm() * t)).round() as u64).max(1)));
+    }
+    let max_stride = plan.iter().map(|p| p.1).max().unwrap_or(1);
+    let steps = (total_steps as u64).min(max_stride * FIT_SAMPLES as u64).min((SIM_WORK / dim as f64) as u64);
+    let mut seqs: Vec<Vec<C64>> = vec![Vec::with_capacity(FIT_SAMPLES); lambdas.len()];
+    for k in 0..=steps {
+        if k > 0 {
+            vector::step(kernel, Sweep::Vector, sys, t, &mut state);
+        }
+        for (seq, &(col, stride)) in seqs.iter_mut().zip(&plan) {
+            if k % stride == 0 && seq.len() < FIT_SAMPLES {
+                let w: C64 = (0..dim).map(|i| u[(i, col)] * state.y[i] + u[(dim + i, col)] * state.w[i]).sum();
+                seq.push(w);
+            }
+        }
+    }
+    for ((l, w), &(_, stride)) in lambdas.iter().zip(&seqs).zip(&plan) {
+        let (mut num, mut den) = (C64::new(0.0, 0.0), 0.0);
+        let window = if l.re < 0.0 { ((18.0 / (-l.re * t * stride as f64)).ceil() as usize).max(16) } else { w.len() };
+        for k in 0..w.len().min(window).saturating_sub(1) {
+            num += w[k + 1] * w[k].conj();
+            den += w[k].norm_sqr();
+        }
+        if den == 0.0 || w.len() < 16 {
+            return None;
+        }
+        let ratio = num / den;
+        mu_sim.push(C64::from_polar(ratio.norm().powf(1.0 / stride as f64), ratio.arg() / stride as f64));
+    }
+    let predicted = drifts(lambdas, &matched(&p, lambdas, t)?, t, total_steps);
+    let sim = drifts(lambdas, &mu_sim, t, total_steps);
+    Some(Simulated {
+        phase_rad: sim.phase_rad,
+        amplitude: sim.amplitude,
+        agree: close(sim.phase_rad, predicted.phase_rad, target.phase_tol)
+            && close(sim.amplitude, predicted.amplitude, target.amp_tol),
+        how: "whole scene, system kernel, projected on the full step's left eigenvectors".to_owned(),
+        modes_checked: lambdas.len(),
+        steps,
+    })
 }
 
 /// ρ of a full-step matrix by nalgebra and by faer.

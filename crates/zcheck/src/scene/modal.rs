@@ -286,6 +286,17 @@ pub fn reduce_system(system: System) -> Result<Modal, ModalError> {
         let shape: Vec<f64> = col.iter().zip(&inv_sqrt).map(|(x, d)| x * d).collect();
         modes.push(Mode { omega, ratio, shape: Some(shape) });
     }
+    if damping == DampingKind::NonProportional {
+        // Coupled by the damping: the modes are the continuous system's
+        // complex eigenvalues λ = −ζω ± jω√(1−ζ²), ω = |λ|, ζ = −Re λ/|λ|
+        // (real λ, overdamped, count as ζ = 1).
+        let lambdas = super::advisor::continuous_eigenvalues(&system);
+        modes = lambdas
+            .iter()
+            .filter(|l| l.norm() > 0.0)
+            .map(|l| Mode { omega: l.norm(), ratio: if l.im > 0.0 { -l.re / l.norm() } else { 1.0 }, shape: None })
+            .collect();
+    }
     Ok(Modal { system: Some(system), modes, rigid, damping })
 }
 
