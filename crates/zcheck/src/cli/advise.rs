@@ -208,7 +208,12 @@ fn run_scene(path: &std::path::Path, args: &Args) -> anyhow::Result<ExitCode> {
     {
         anyhow::bail!("--duration, --phase-tol and --amp-tol belong in the scene file with --scene (duration_s, [accuracy])");
     }
-    let modal = zcheck::scene::modal::reduce(&scene)?;
+    let shapes = if args.no_simulate {
+        zcheck::scene::modal::Shapes::WhenNeeded
+    } else {
+        zcheck::scene::modal::Shapes::Compute
+    };
+    let modal = zcheck::scene::modal::reduce_with(&scene, shapes)?;
     let specs = if args.methods.is_empty() {
         MethodSpec::builtins()?
     } else {
@@ -299,9 +304,10 @@ pub fn scene_text(name: &str, a: &zcheck::scene::advisor::SceneAdvice) -> String
         out += "\nGauss-Seidel (bodies in sequence) against all bodies at once:\n";
         for s in sweep {
             out += &format!(
-                "  {}: substeps {} -> {}, rho at {} substeps = {} (nalgebra) / {} (faer){}, largest stable step x{}\n",
+                "  {}: substeps {} (exact, modal) / {} (full step) -> {} (Gauss-Seidel), rho at {} substeps = {} (nalgebra) / {} (faer){}, largest stable step x{}\n",
                 s.method,
                 s.substeps_modal.map_or("never".into(), |n| n.to_string()),
+                s.substeps_vector.map_or("never".into(), |n| n.to_string()),
                 s.substeps_gauss_seidel.map_or("never".into(), |n| n.to_string()),
                 s.substeps_modal.map_or("-".into(), |n| n.to_string()),
                 s.rho_nalgebra.map_or("-".into(), |r| format!("{r:.9}")),

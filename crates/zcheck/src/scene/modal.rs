@@ -222,8 +222,24 @@ impl std::error::Error for ModalError {}
 /// rigid modes): a few hundred ulps of the largest entry.
 const STRUCTURE_TOL: f64 = 1e-10;
 
-/// Reduces a scene to its modes.
+/// Reduces a scene to its modes, with mode shapes.
 pub fn reduce(scene: &SceneFile) -> Result<Modal, ModalError> {
+    reduce_with(scene, Shapes::Compute)
+}
+
+/// Whether [`reduce_with`] computes mode shapes (eigenvectors): the check
+/// by simulation needs them, and so do ratios under proportional but not
+/// Rayleigh damping; frequencies alone need eigenvalues only.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Shapes {
+    /// Eigenvectors too.
+    Compute,
+    /// Only when the ratios need them.
+    WhenNeeded,
+}
+
+/// Reduces a scene to its modes.
+pub fn reduce_with(scene: &SceneFile, shapes: Shapes) -> Result<Modal, ModalError> {
     match &scene.body {
         Body::Modes(list) => {
             let mut modes: Vec<Mode> = list
@@ -240,13 +256,18 @@ pub fn reduce(scene: &SceneFile) -> Result<Modal, ModalError> {
         }
         Body::Springs { masses, springs } => {
             let m: Vec<f64> = masses.iter().map(|m| m.kg).collect();
-            reduce_system(System::assemble(&m, springs))
+            reduce_system_with(System::assemble(&m, springs), shapes)
         }
     }
 }
 
-/// Reduces an assembled system to its modes.
+/// Reduces an assembled system to its modes, with shapes.
 pub fn reduce_system(system: System) -> Result<Modal, ModalError> {
+    reduce_system_with(system, Shapes::Compute)
+}
+
+/// Reduces an assembled system to its modes.
+pub fn reduce_system_with(system: System, shapes: Shapes) -> Result<Modal, ModalError> {
     let n = system.n();
     let inv_sqrt: Vec<f64> = system.mass.iter().map(|m| 1.0 / m.sqrt()).collect();
     let kt = system.k.scaled(&inv_sqrt);
@@ -260,11 +281,18 @@ pub fn reduce_system(system: System) -> Result<Modal, ModalError> {
             dense[(i, j)] = x;
         }
     }
-    let evd = dense
-        .self_adjoint_eigen(Side::Lower)
-        .map_err(|e| ModalError(format!("the eigenproblem K phi = w^2 M phi did not converge: {e:?}")))?;
-    let (u, s) = (evd.U(), evd.S());
-    let lambda_max = (0..n).map(|i| s[i]).fold(0.0f64, f64::max);
+    let vectors = shapes == Shapes::Compute || damping == DampingKind::Proportional;
+    let fail = |e: faer::linalg::evd::EvdError| {
+        ModalError(format!("the eigenproblem K phi = w^2 M phi did not converge: {e:?}"))
+    };
+    let (s, u) = if vectors {
+        let evd = dense.self_adjoint_eigen(Side::Lower).map_err(fail)?;
+        let s: Vec<f64> = (0..n).map(|i| evd.S()[i]).collect();
+        (s, Some(evd.U().to_owned()))
+    } else {
+        (dense.self_adjoint_eigenvalues(Side::Lower).map_err(fail)?, None)
+    };
+    let lambda_max = s.iter().copied().fold(0.0f64, f64::max);
     let mut modes = Vec::with_capacity(n);
     let mut rigid = 0;
     let mut col = vec![0.0; n];
@@ -275,16 +303,18 @@ pub fn reduce_system(system: System) -> Result<Modal, ModalError> {
             continue;
         }
         let omega = lambda.sqrt();
-        for (r, c) in col.iter_mut().enumerate() {
-            *c = u[(r, i)];
+        if let Some(u) = &u {
+            for (r, c) in col.iter_mut().enumerate() {
+                *c = u[(r, i)];
+            }
         }
         let ratio = match damping {
             DampingKind::Undamped => 0.0,
             DampingKind::Rayleigh { alpha, beta } => alpha / (2.0 * omega) + beta * omega / 2.0,
             _ => ct.quad(&col) / (2.0 * omega),
         };
-        let shape: Vec<f64> = col.iter().zip(&inv_sqrt).map(|(x, d)| x * d).collect();
-        modes.push(Mode { omega, ratio, shape: Some(shape) });
+        let shape = u.is_some().then(|| col.iter().zip(&inv_sqrt).map(|(x, d)| x * d).collect());
+        modes.push(Mode { omega, ratio, shape });
     }
     if damping == DampingKind::NonProportional {
         // Coupled by the damping: the modes are the continuous system's

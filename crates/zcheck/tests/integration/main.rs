@@ -6,6 +6,7 @@ mod cli_derive;
 mod extremes;
 mod hostile;
 mod plot_cli;
+mod scene_advise;
 mod scene_cli;
 #[path = "../../../../tests/support/snapshot.rs"]
 mod snapshot;
