@@ -115,7 +115,7 @@ pub enum Unconditional {
         /// The damping ratio at which some Φ > 0 is unbounded.
         d: Q,
         /// What the one-variable analysis found there.
-        limit: PhiLimit,
+        limit: Box<PhiLimit>,
     },
 }
 
@@ -272,7 +272,7 @@ impl Region {
         for d in samples {
             let limit = self.phi_max(&d)?;
             if limit != PhiLimit::Every {
-                return Ok(Unconditional::Unstable { d, limit });
+                return Ok(Unconditional::Unstable { d, limit: Box::new(limit) });
             }
         }
         Ok(Unconditional::Stable { irrational_lines })
@@ -321,14 +321,18 @@ fn split_monomial(p: &Poly, syms: &[Sym]) -> (Poly, Poly) {
         .iter()
         .map(|&s| (s, p.terms().map(|(m, _)| m.exponent(s)).min().unwrap_or(0)))
         .collect();
-    let power = |f: &[(Sym, u32)]| f.iter().fold(Poly::one(), |acc, &(s, e)| &acc * &Poly::sym(s).pow(e));
+    let power =
+        |f: &[(Sym, u32)]| f.iter().fold(Poly::one(), |acc, &(s, e)| &acc * &Poly::sym(s).pow(e));
     let mut rest = Poly::zero();
     for (m, c) in p.terms() {
-        let f: Vec<(Sym, u32)> =
-            m.factors().iter().map(|&(s, e)| {
+        let f: Vec<(Sym, u32)> = m
+            .factors()
+            .iter()
+            .map(|&(s, e)| {
                 let low = lowest.iter().find(|(t, _)| *t == s).map_or(0, |&(_, l)| l);
                 (s, e - low)
-            }).collect();
+            })
+            .collect();
         rest += &power(&f).scale(c);
     }
     (power(&lowest), rest)
@@ -405,7 +409,6 @@ fn rational_between(lo: &Algebraic, hi: &Algebraic) -> Q {
 #[cfg(test)]
 mod tests {
     use super::*;
-
 
     fn chi_of(name: &str) -> Poly {
         crate::charpoly(&crate::builtin(name).unwrap()).unwrap()

@@ -36,7 +36,8 @@ fn bench(c: &mut Criterion) {
             b.iter(|| {
                 let modal = reduce_with(&scene, Shapes::WhenNeeded).unwrap();
                 let specs = MethodSpec::builtins().unwrap();
-                advise(&scene, &modal, specs, Options { simulate: false, gauss_seidel: false }).unwrap()
+                advise(&scene, &modal, specs, Options { simulate: false, gauss_seidel: false })
+                    .unwrap()
             })
         });
     }

@@ -12,7 +12,7 @@
 
 use std::path::Path;
 
-use check::numeric::{f64_to_q, q_to_f64, Params};
+use check::numeric::{f64_to_q, q_to_f64, Params, ParamsF64};
 use check::witness::Witnesses;
 use plotters::prelude::*;
 use poly::region::{region, CurveKind, PhiLimit, Region, Unconditional};
@@ -150,7 +150,9 @@ pub fn map(method: &Method, w: &MapWindow) -> anyhow::Result<StabilityMap> {
                 .flat_map_iter(|k| {
                     let d = lin(&w.d.0, &w.d.1, k, s);
                     let dv = q_to_f64(&d);
-                    r.curve_phis(c, &d, &w.phi.0, &w.phi.1).into_iter().map(move |a| (approx(&a), dv))
+                    r.curve_phis(c, &d, &w.phi.0, &w.phi.1)
+                        .into_iter()
+                        .map(move |a| (approx(&a), dv))
                 })
                 .collect();
             points.extend(
@@ -159,7 +161,9 @@ pub fn map(method: &Method, w: &MapWindow) -> anyhow::Result<StabilityMap> {
                     .flat_map_iter(|k| {
                         let phi = lin(&w.phi.0, &w.phi.1, k, s);
                         let pv = q_to_f64(&phi);
-                        r.curve_params(c, &phi, &w.d.0, &w.d.1).into_iter().map(move |a| (pv, approx(&a)))
+                        r.curve_params(c, &phi, &w.d.0, &w.d.1)
+                            .into_iter()
+                            .map(move |a| (pv, approx(&a)))
                     })
                     .collect::<Vec<_>>(),
             );
@@ -189,7 +193,7 @@ pub fn map(method: &Method, w: &MapWindow) -> anyhow::Result<StabilityMap> {
         ),
         Unconditional::Unstable { d, limit } => format!(
             "not unconditionally stable: at D = {d}, {}",
-            match limit {
+            match *limit {
                 PhiLimit::Below(m) => format!("unbounded from Phi_max = {}", m.to_decimal(12)),
                 PhiLimit::Never => "unbounded for every small Phi > 0".to_owned(),
                 PhiLimit::Every => "bounded".to_owned(),
@@ -250,14 +254,22 @@ pub fn draw_svg(m: &StabilityMap, path: &Path) -> anyhow::Result<()> {
     let root = SVGBackend::new(path, (900, 680)).into_drawing_area();
     root.fill(&WHITE).map_err(|e| err(&e))?;
     let mut chart = ChartBuilder::on(&root)
-        .caption(format!("{}: root class over (Phi, D), exact critical curves", m.method), ("sans-serif", 18))
+        .caption(
+            format!("{}: root class over (Phi, D), exact critical curves", m.method),
+            ("sans-serif", 18),
+        )
         .margin(10)
         .x_label_area_size(40)
         .y_label_area_size(50)
         .right_y_label_area_size(10)
         .build_cartesian_2d(m.phi.0..m.phi.1, m.d.0..m.d.1)
         .map_err(|e| err(&e))?;
-    chart.configure_mesh().x_desc("Phi = w T").y_desc("D (damping ratio)").draw().map_err(|e| err(&e))?;
+    chart
+        .configure_mesh()
+        .x_desc("Phi = w T")
+        .y_desc("D (damping ratio)")
+        .draw()
+        .map_err(|e| err(&e))?;
     let (n, _) = m.size;
     let (dx, dy) = ((m.phi.1 - m.phi.0) / n as f64, (m.d.1 - m.d.0) / n as f64);
     let mut seen: Vec<RootClass> = Vec::new();
@@ -274,7 +286,12 @@ pub fn draw_svg(m: &StabilityMap, path: &Path) -> anyhow::Result<()> {
         }))
         .map_err(|e| err(&e))?;
     chart
-        .draw_series(m.grid.iter().filter(|g| !g.witnesses_agree).map(|g| Cross::new((g.phi, g.d), 4, RED.stroke_width(2))))
+        .draw_series(
+            m.grid
+                .iter()
+                .filter(|g| !g.witnesses_agree)
+                .map(|g| Cross::new((g.phi, g.d), 4, RED.stroke_width(2))),
+        )
         .map_err(|e| err(&e))?;
     for c in &m.curves {
         let colour = curve_colour(&c.kind);

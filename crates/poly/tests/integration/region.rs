@@ -28,7 +28,8 @@ fn false_euler_membership_is_the_closed_form() {
     for i in 1..=30 {
         for j in 0..=20 {
             let (phi, dd) = (q(i, 10), q(j, 8));
-            let g = &phi * &phi + Q::from_integer(4.into()) * &dd * &phi - Q::from_integer(4.into());
+            let g =
+                &phi * &phi + Q::from_integer(4.into()) * &dd * &phi - Q::from_integer(4.into());
             on_boundary += usize::from(g.is_zero());
             let inside = g < Q::zero() || (g.is_zero() && dd > Q::zero());
             assert_eq!(r.contains(&phi, &dd).unwrap(), inside, "Phi {phi}, D {dd}");
@@ -42,8 +43,14 @@ fn false_euler_membership_is_the_closed_form() {
 #[test]
 fn false_euler_phi_max_is_the_closed_form() {
     let r = region(&chi("false_euler_damped"), d()).unwrap();
-    for (dd, expected) in [(q(0, 1), q(2, 1)), (q(3, 4), q(1, 1)), (q(5, 12), q(4, 3)), (q(8, 15), q(6, 5))] {
-        assert_eq!(r.phi_max(&dd).unwrap(), PhiLimit::Below(Algebraic::from_rational(expected)), "D = {dd}");
+    for (dd, expected) in
+        [(q(0, 1), q(2, 1)), (q(3, 4), q(1, 1)), (q(5, 12), q(4, 3)), (q(8, 15), q(6, 5))]
+    {
+        assert_eq!(
+            r.phi_max(&dd).unwrap(),
+            PhiLimit::Below(Algebraic::from_rational(expected)),
+            "D = {dd}"
+        );
     }
     for (num, den) in [(1, 1), (1, 2), (3, 1), (1, 10)] {
         let dd = q(num, den);
@@ -53,7 +60,11 @@ fn false_euler_phi_max_is_the_closed_form() {
         let approx: f64 = m.to_decimal(16).parse().unwrap();
         assert!((approx - closed).abs() < 1e-12, "D = {dd}: {approx} vs {closed}");
         // The defining polynomial divides Φ² + 4DΦ − 4 at this D.
-        let g = poly::UPoly::new(vec![-Q::from_integer(4.into()), Q::from_integer(4.into()) * &dd, Q::from_integer(1.into())]);
+        let g = poly::UPoly::new(vec![
+            -Q::from_integer(4.into()),
+            Q::from_integer(4.into()) * &dd,
+            Q::from_integer(1.into()),
+        ]);
         assert!(m.is_root_of(&g));
     }
 }
@@ -90,7 +101,7 @@ fn unconditional_stability() {
         match r.unconditional().unwrap() {
             Unconditional::Unstable { d, limit } => {
                 // The counterexample is real: some Φ is unbounded there.
-                assert_ne!(limit, PhiLimit::Every, "{name} at D = {d}");
+                assert_ne!(*limit, PhiLimit::Every, "{name} at D = {d}");
             }
             u => panic!("{name}: {u:?}"),
         }

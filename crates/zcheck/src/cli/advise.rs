@@ -249,14 +249,30 @@ pub fn scene_text(name: &str, a: &zcheck::scene::advisor::SceneAdvice) -> String
         a.tick_hz, a.duration_s, a.phase_rad, a.amplitude
     );
     let show = |i: usize| format!("{:.3} Hz (ratio {:.4})", a.modes[i].hz, a.modes[i].ratio);
-    let stab: Vec<String> = (0..a.modes.len()).filter(|&i| a.modes[i].limits_stability).map(show).collect();
-    let acc: Vec<String> = (0..a.modes.len()).filter(|&i| a.modes[i].limits_accuracy).map(show).collect();
+    let stab: Vec<String> =
+        (0..a.modes.len()).filter(|&i| a.modes[i].limits_stability).map(show).collect();
+    let acc: Vec<String> =
+        (0..a.modes.len()).filter(|&i| a.modes[i].limits_accuracy).map(show).collect();
     let rest = a.modes.iter().filter(|m| !m.limits_stability && !m.limits_accuracy).count();
-    out += &format!("modes limiting stability: {}\n", if stab.is_empty() { "none".into() } else { stab.join(", ") });
-    out += &format!("modes limiting accuracy:  {}\n", if acc.is_empty() { "none".into() } else { acc.join(", ") });
+    out += &format!(
+        "modes limiting stability: {}\n",
+        if stab.is_empty() { "none".into() } else { stab.join(", ") }
+    );
+    out += &format!(
+        "modes limiting accuracy:  {}\n",
+        if acc.is_empty() { "none".into() } else { acc.join(", ") }
+    );
     out += &format!("modes that do not matter: {rest}\n\n");
-    let header = ["method", "substeps stable", "substeps accurate", "ns/tick", "predicted phase/amp", "simulated phase/amp", "agree"]
-        .map(str::to_owned);
+    let header = [
+        "method",
+        "substeps stable",
+        "substeps accurate",
+        "ns/tick",
+        "predicted phase/amp",
+        "simulated phase/amp",
+        "agree",
+    ]
+    .map(str::to_owned);
     let rows: Vec<[String; 7]> = a
         .candidates
         .iter()
@@ -266,21 +282,36 @@ pub fn scene_text(name: &str, a: &zcheck::scene::advisor::SceneAdvice) -> String
                 c.substeps_stable.map_or("never".into(), |n| n.to_string()),
                 c.substeps_accurate.map_or("never".into(), |n| n.to_string()),
                 c.ns_per_tick.map_or("-".into(), |ns| format!("{ns:.1}")),
-                c.predicted.map_or("-".into(), |p| format!("{:.3e}/{:.3e}", p.phase_rad, p.amplitude)),
-                c.simulated.as_ref().map_or("-".into(), |s| format!("{:.3e}/{:.3e}", s.phase_rad, s.amplitude)),
-                c.simulated.as_ref().map_or("-".into(), |s| (if s.agree { "yes" } else { "NO" }).into()),
+                c.predicted
+                    .map_or("-".into(), |p| format!("{:.3e}/{:.3e}", p.phase_rad, p.amplitude)),
+                c.simulated
+                    .as_ref()
+                    .map_or("-".into(), |s| format!("{:.3e}/{:.3e}", s.phase_rad, s.amplitude)),
+                c.simulated
+                    .as_ref()
+                    .map_or("-".into(), |s| (if s.agree { "yes" } else { "NO" }).into()),
             ]
         })
         .collect();
     let widths: Vec<usize> = (0..7)
-        .map(|c| std::iter::once(&header).chain(&rows).map(|r| r[c].chars().count()).max().unwrap_or(0))
+        .map(|c| {
+            std::iter::once(&header).chain(&rows).map(|r| r[c].chars().count()).max().unwrap_or(0)
+        })
         .collect();
     for row in std::iter::once(&header).chain(&rows) {
         let cells: Vec<String> = row
             .iter()
             .zip(&widths)
             .enumerate()
-            .map(|(c, (cell, &w))| if c == 0 { format!("{cell:<w$}") } else { format!("{cell:>w$}") })
+            .map(
+                |(c, (cell, &w))| {
+                    if c == 0 {
+                        format!("{cell:<w$}")
+                    } else {
+                        format!("{cell:>w$}")
+                    }
+                },
+            )
             .collect();
         out += &cells.join("  ");
         out.push('\n');

@@ -64,7 +64,11 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
     };
     let d = parse_range("--param D", range)?;
     if !(2..=400).contains(&args.grid) || !(2..=5000).contains(&args.samples) {
-        bail!("--grid {} --samples {}: expected 2..=400 grid points and 2..=5000 samples", args.grid, args.samples);
+        bail!(
+            "--grid {} --samples {}: expected 2..=400 grid points and 2..=5000 samples",
+            args.grid,
+            args.samples
+        );
     }
     let window = zcheck::map::MapWindow { phi, d, grid: args.grid, samples: args.samples };
     let m = zcheck::map::map(&method, &window)?;
@@ -74,14 +78,28 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
     match args.format {
         Format::Json => println!("{}", serde_json::to_string_pretty(&m)?),
         Format::Text => {
-            println!("method {}: Phi in [{}, {}], D in [{}, {}]", m.method, m.phi.0, m.phi.1, m.d.0, m.d.1);
+            println!(
+                "method {}: Phi in [{}, {}], D in [{}, {}]",
+                m.method, m.phi.0, m.phi.1, m.d.0, m.d.1
+            );
             println!("critical curves (exact; the stable region is bounded by some of them):");
             for c in &m.curves {
-                println!("  {:<12} {} = 0   (factor {} split off; {} points traced)", c.kind, c.poly, c.monomial, c.points.len());
+                println!(
+                    "  {:<12} {} = 0   (factor {} split off; {} points traced)",
+                    c.kind,
+                    c.poly,
+                    c.monomial,
+                    c.points.len()
+                );
             }
             println!("Phi_max(D):");
             for l in &m.limits {
-                println!("  D = {:<10} Phi_max = {}{}", l.d, l.phi_max, l.exact.as_ref().map_or(String::new(), |e| format!("  ({e})")));
+                println!(
+                    "  D = {:<10} Phi_max = {}{}",
+                    l.d,
+                    l.phi_max,
+                    l.exact.as_ref().map_or(String::new(), |e| format!("  ({e})"))
+                );
             }
             let mut counts: std::collections::BTreeMap<&str, usize> = Default::default();
             for g in &m.grid {

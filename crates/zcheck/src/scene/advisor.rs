@@ -32,7 +32,7 @@
 use std::collections::HashMap;
 use std::time::Duration;
 
-use check::numeric::{f64_to_q, Params, Step};
+use check::numeric::{f64_to_q, Params, ParamsF64, Step};
 use nalgebra::DMatrix;
 use num_complex::Complex64 as C64;
 use poly::region::{region, PhiLimit, Region};
@@ -75,7 +75,9 @@ impl MethodSpec {
         let damped = match arg {
             "standard_euler" => Some("damped_euler_d".to_owned()),
             a if poly::DAMPED_METHODS.contains(&a) => Some(a.to_owned()),
-            a if poly::DAMPED_METHODS.contains(&format!("{a}_damped").as_str()) => Some(format!("{a}_damped")),
+            a if poly::DAMPED_METHODS.contains(&format!("{a}_damped").as_str()) => {
+                Some(format!("{a}_damped"))
+            }
             _ => None,
         };
         if let Some(name) = damped {
@@ -84,8 +86,17 @@ impl MethodSpec {
                 "damped_euler_d" => "standard_euler".to_owned(),
                 n => n.trim_end_matches("_damped").to_owned(),
             };
-            let hand = if name == "damped_euler_d" { "standard_euler_damped".to_owned() } else { name.clone() };
-            return Ok(MethodSpec { display, method, kernel: Kernel::for_method(&name), hand_kernel: Some(hand) });
+            let hand = if name == "damped_euler_d" {
+                "standard_euler_damped".to_owned()
+            } else {
+                name.clone()
+            };
+            return Ok(MethodSpec {
+                display,
+                method,
+                kernel: Kernel::for_method(&name),
+                hand_kernel: Some(hand),
+            });
         }
         let method = check::load::load_method(arg)?;
         Ok(MethodSpec { display: arg.to_owned(), method, kernel: None, hand_kernel: None })
@@ -233,7 +244,13 @@ impl BiPoly {
     fn new(p: &Poly, d: Sym) -> BiPoly {
         BiPoly(
             p.terms()
-                .map(|(m, c)| (check::numeric::q_to_f64(c), m.exponent(Sym::phi()) as i32, m.exponent(d) as i32))
+                .map(|(m, c)| {
+                    (
+                        check::numeric::q_to_f64(c),
+                        m.exponent(Sym::phi()) as i32,
+                        m.exponent(d) as i32,
+                    )
+                })
                 .collect(),
         )
     }
@@ -259,14 +276,17 @@ struct Analysed {
 impl Analysed {
     fn new(spec: MethodSpec) -> anyhow::Result<Analysed> {
         let d = Sym::new("D");
-        if let Some(extra) = spec.method.params().iter().find(|s| s.name() != "Phi" && s.name() != "D") {
+        if let Some(extra) =
+            spec.method.params().iter().find(|s| s.name() != "Phi" && s.name() != "D")
+        {
             anyhow::bail!(
                 "method {}: parameter {extra} has no value in a scene: expected only Phi and D",
                 spec.display
             );
         }
         let chi = poly::charpoly(&spec.method)?;
-        let region = region(&chi, d).map_err(|e| anyhow::anyhow!("method {}: {e}", spec.display))?;
+        let region =
+            region(&chi, d).map_err(|e| anyhow::anyhow!("method {}: {e}", spec.display))?;
         let zc = chi.coeffs_in(Sym::z());
         let coeffs = zc.iter().map(|c| BiPoly::new(c, d)).collect();
         let second = (zc.len() == 3 && zc[2].is_one()).then(|| {
@@ -275,7 +295,14 @@ impl Analysed {
             let disc = &q - &(&p * &p);
             [BiPoly::new(&p, d), BiPoly::new(&(&q - &Poly::one()), d), BiPoly::new(&disc, d)]
         });
-        Ok(Analysed { spec, region, coeffs, second, exact_limits: HashMap::new(), at_param: Default::default() })
+        Ok(Analysed {
+            spec,
+            region,
+            coeffs,
+            second,
+            exact_limits: HashMap::new(),
+            at_param: Default::default(),
+        })
     }
 
     /// Spectral radius of χ at (Φ, D) in f64.
@@ -404,7 +431,8 @@ fn ns_per_step(spec: &MethodSpec, d: f64) -> f64 {
     let params = Params::phi(kernels::TIMING_PHI).with("D", d);
     match Step::compile(&spec.method, &params) {
         Ok(step) => {
-            let start: Vec<f64> = (0..step.order()).map(|i| if i == 0 { 1.0 } else { 0.0 }).collect();
+            let start: Vec<f64> =
+                (0..step.order()).map(|i| if i == 0 { 1.0 } else { 0.0 }).collect();
             kernels::time_ns_per_step(
                 |n| {
                     let mut s = step.state(&start);
@@ -458,7 +486,9 @@ pub fn advise(
     let mut candidates = Vec::new();
     let mut analysed_all = Vec::new();
     for spec in specs {
-        if !spec.method.params().iter().any(|s| s.name() == "D") && modal.modes.iter().any(|m| m.ratio != 0.0) {
+        if !spec.method.params().iter().any(|s| s.name() == "D")
+            && modal.modes.iter().any(|m| m.ratio != 0.0)
+        {
             anyhow::bail!(
                 "method {}: the scene is damped but the method has no parameter D: expected `param D` \
                  (the test equation v' = -2*D*v - y, y' = v)",
@@ -487,8 +517,9 @@ pub fn advise(
         .map(|(i, m)| ModeReport {
             hz: m.hz(),
             ratio: m.ratio,
-            limits_stability: reference
-                .is_some_and(|c| c.substeps_stable.is_some() && c.mode_stable[i] == c.substeps_stable),
+            limits_stability: reference.is_some_and(|c| {
+                c.substeps_stable.is_some() && c.mode_stable[i] == c.substeps_stable
+            }),
             limits_accuracy: reference.is_some_and(|c| {
                 c.substeps_accurate.is_some() && c.mode_accurate[i] == c.substeps_accurate
             }),
@@ -499,7 +530,15 @@ pub fn advise(
             analysed_all
                 .iter()
                 .zip(&candidates)
-                .filter_map(|(a, c)| Some(sweep_report(a.spec.kernel?, &a.spec.display, &system, tick, c.substeps_stable)))
+                .filter_map(|(a, c)| {
+                    Some(sweep_report(
+                        a.spec.kernel?,
+                        &a.spec.display,
+                        &system,
+                        tick,
+                        c.substeps_stable,
+                    ))
+                })
                 .collect::<anyhow::Result<Vec<_>>>()?,
         )
     } else {
@@ -533,7 +572,8 @@ fn advise_one(
     let modes = &modal.modes;
     // Float estimates for every mode, then exact answers for the limiting
     // ones (within a factor 0.9 of the largest estimate, or runaways).
-    let estimates: Vec<Option<u64>> = modes.iter().map(|m| a.estimate_stable(m.omega / tick, m.ratio)).collect();
+    let estimates: Vec<Option<u64>> =
+        modes.iter().map(|m| a.estimate_stable(m.omega / tick, m.ratio)).collect();
     let top = estimates.iter().map(|e| e.unwrap_or(u64::MAX)).max().unwrap_or(1);
     let mut mode_stable = vec![None; modes.len()];
     let mut never = false;
@@ -610,7 +650,9 @@ fn advise_one(
     let ns = ns_per_step(&a.spec, d_timing);
     let dof = scene.dof() as f64;
     let full = match a.spec.kernel {
-        Some(k) if modal.damping == DampingKind::NonProportional && system.n() <= MAX_FULL_DOF => Some(k),
+        Some(k) if modal.damping == DampingKind::NonProportional && system.n() <= MAX_FULL_DOF => {
+            Some(k)
+        }
         _ => None,
     };
     let (predicted, simulated) = if let Some(kernel) = full {
@@ -623,14 +665,16 @@ fn advise_one(
                 .is_some_and(|e| e.phase_rad <= target.phase_tol && e.amplitude <= target.amp_tol)
         };
         substeps_accurate = substeps_stable.and_then(|ns| smallest_meeting(meets, ns));
-        let predicted = substeps_accurate.and_then(|n| full_errors(kernel, system, &lambdas, tick, n, duration));
+        let predicted = substeps_accurate
+            .and_then(|n| full_errors(kernel, system, &lambdas, tick, n, duration));
         let simulated = match (simulate, substeps_accurate) {
             (true, Some(n)) => simulate_full(kernel, system, &lambdas, tick, n, duration, target),
             _ => None,
         };
         (predicted, simulated)
     } else {
-        let predicted = substeps_accurate.map(|n| predicted_errors(a, modes, tick, n, target, None));
+        let predicted =
+            substeps_accurate.map(|n| predicted_errors(a, modes, tick, n, target, None));
         let simulated = match (simulate, substeps_accurate) {
             (true, Some(n)) => simulate_check(a, scene, modal, system, shapes, n, target),
             _ => None,
@@ -679,7 +723,14 @@ fn smallest_meeting(ok: impl Fn(u64) -> bool, from: u64) -> Option<u64> {
 }
 
 /// The largest predicted drifts over `modes` (or the listed ones).
-fn predicted_errors(a: &Analysed, modes: &[Mode], tick: f64, n: u64, target: &Target, only: Option<&[usize]>) -> Errors {
+fn predicted_errors(
+    a: &Analysed,
+    modes: &[Mode],
+    tick: f64,
+    n: u64,
+    target: &Target,
+    only: Option<&[usize]>,
+) -> Errors {
     let mut e = Errors { phase_rad: 0.0, amplitude: 0.0 };
     for (i, m) in modes.iter().enumerate() {
         if only.is_some_and(|o| !o.contains(&i)) || m.ratio >= 1.0 {
@@ -706,7 +757,8 @@ fn checked_modes(a: &Analysed, modes: &[Mode], tick: f64, n: u64, target: &Targe
     by_phase.sort_by(|&x, &y| err(y).phase_rad.total_cmp(&err(x).phase_rad));
     let mut by_amp = osc.clone();
     by_amp.sort_by(|&x, &y| err(y).amplitude.total_cmp(&err(x).amplitude));
-    let mut out: Vec<usize> = by_phase[..6].iter().chain(&by_amp[..6]).chain(&osc[..4]).copied().collect();
+    let mut out: Vec<usize> =
+        by_phase[..6].iter().chain(&by_amp[..6]).chain(&osc[..4]).copied().collect();
     out.sort_unstable();
     out.dedup();
     out
@@ -765,7 +817,12 @@ fn simulate_check(
                 }
                 for (j, &i) in checked.iter().enumerate() {
                     if k % stride[j] == 0 && seqs[j].len() < FIT_SAMPLES {
-                        let q = shapes[i].iter().zip(&state.y).zip(&system.mass).map(|((p, y), m)| p * m * y).sum();
+                        let q = shapes[i]
+                            .iter()
+                            .zip(&state.y)
+                            .zip(&system.mass)
+                            .map(|((p, y), m)| p * m * y)
+                            .sum();
                         seqs[j].push(q);
                     }
                 }
@@ -776,8 +833,11 @@ fn simulate_check(
             // compiled scalar step at its own (Phi, D).
             how = "per mode, compiled .zm step".to_owned();
             let m = &a.spec.method;
-            let y_slot =
-                m.slots().iter().position(|&(var, lag)| m.state()[var] == "y" && lag == 0).unwrap_or(0);
+            let y_slot = m
+                .slots()
+                .iter()
+                .position(|&(var, lag)| m.state()[var] == "y" && lag == 0)
+                .unwrap_or(0);
             let start = check::numeric::initial_slots(m, |v| if v == "y" { 1.0 } else { 0.0 });
             for (j, &i) in checked.iter().enumerate() {
                 let params = Params::phi(modes[i].omega * t).with("D", modes[i].ratio);
@@ -800,7 +860,11 @@ fn simulate_check(
         let pred = predicted_errors(a, modes, tick, n, target, Some(&[i]));
         // Fit where the mode is still well above rounding noise.
         let psi_eff = phi * m_stride as f64;
-        let window = if m.ratio > 0.0 { ((18.0 / (m.ratio * psi_eff)).ceil() as usize).max(16) } else { s.len() };
+        let window = if m.ratio > 0.0 {
+            ((18.0 / (m.ratio * psi_eff)).ceil() as usize).max(16)
+        } else {
+            s.len()
+        };
         let s = &s[..s.len().min(window)];
         if s.len() < 16 {
             continue;
@@ -816,7 +880,8 @@ fn simulate_check(
         let spring = Spring { damping: m.ratio };
         let phase = total_steps as f64 * (psi - spring.psi_exact(phi)).abs();
         let amp = (total_steps as f64 * (ln_r - spring.ln_r_exact(phi))).exp_m1().abs();
-        agree &= close(phase, pred.phase_rad, target.phase_tol) && close(amp, pred.amplitude, target.amp_tol);
+        agree &= close(phase, pred.phase_rad, target.phase_tol)
+            && close(amp, pred.amplitude, target.amp_tol);
         sim.phase_rad = sim.phase_rad.max(phase);
         sim.amplitude = sim.amplitude.max(amp);
     }
@@ -896,7 +961,9 @@ fn matched(p: &DMatrix<f64>, lambdas: &[C64], t: f64) -> Option<Vec<C64>> {
             .iter()
             .map(|l| {
                 let e = (l * t).exp();
-                *mu.iter().min_by(|x, y| (*x - e).norm().total_cmp(&(*y - e).norm())).expect("eigenvalues")
+                *mu.iter()
+                    .min_by(|x, y| (*x - e).norm().total_cmp(&(*y - e).norm()))
+                    .expect("eigenvalues")
             })
             .collect(),
     )
@@ -904,7 +971,14 @@ fn matched(p: &DMatrix<f64>, lambdas: &[C64], t: f64) -> Option<Vec<C64>> {
 
 /// Phase and amplitude errors over `duration` of the full step at `n`
 /// substeps: per λ, N·|arg μ − Im λ·T| and |e^{N(ln|μ| − Re λ·T)} − 1|.
-fn full_errors(kernel: Kernel, sys: &System, lambdas: &[C64], tick: f64, n: u64, duration: f64) -> Option<Errors> {
+fn full_errors(
+    kernel: Kernel,
+    sys: &System,
+    lambdas: &[C64],
+    tick: f64,
+    n: u64,
+    duration: f64,
+) -> Option<Errors> {
     let t = 1.0 / (tick * n as f64);
     let steps = (duration * tick).round().max(1.0) * n as f64;
     let mu = matched(&vector::step_matrix(kernel, Sweep::Vector, sys, t), lambdas, t)?;
@@ -942,7 +1016,10 @@ fn simulate_full(
     let (u, s) = (evd.U(), evd.S());
     let total_steps = (duration * tick).round().max(1.0) * n as f64;
     let mut mu_sim = Vec::new();
-    let mut state = VState { y: vec![1.0; dim], w: if kernel.keeps_previous() { vec![1.0; dim] } else { vec![0.0; dim] } };
+    let mut state = VState {
+        y: vec![1.0; dim],
+        w: if kernel.keeps_previous() { vec![1.0; dim] } else { vec![0.0; dim] },
+    };
     // Per λ: the left eigenvector's column and the sampling stride.
     let mut plan = Vec::new();
     for l in lambdas {
@@ -951,7 +1028,9 @@ fn simulate_full(
         plan.push((col, ((0.5 / (l.norm() * t)).round() as u64).max(1)));
     }
     let max_stride = plan.iter().map(|p| p.1).max().unwrap_or(1);
-    let steps = (total_steps as u64).min(max_stride * FIT_SAMPLES as u64).min((SIM_WORK / dim as f64) as u64);
+    let steps = (total_steps as u64)
+        .min(max_stride * FIT_SAMPLES as u64)
+        .min((SIM_WORK / dim as f64) as u64);
     let mut seqs: Vec<Vec<C64>> = vec![Vec::with_capacity(FIT_SAMPLES); lambdas.len()];
     for k in 0..=steps {
         if k > 0 {
@@ -959,14 +1038,20 @@ fn simulate_full(
         }
         for (seq, &(col, stride)) in seqs.iter_mut().zip(&plan) {
             if k % stride == 0 && seq.len() < FIT_SAMPLES {
-                let w: C64 = (0..dim).map(|i| u[(i, col)] * state.y[i] + u[(dim + i, col)] * state.w[i]).sum();
+                let w: C64 = (0..dim)
+                    .map(|i| u[(i, col)] * state.y[i] + u[(dim + i, col)] * state.w[i])
+                    .sum();
                 seq.push(w);
             }
         }
     }
     for ((l, w), &(_, stride)) in lambdas.iter().zip(&seqs).zip(&plan) {
         let (mut num, mut den) = (C64::new(0.0, 0.0), 0.0);
-        let window = if l.re < 0.0 { ((18.0 / (-l.re * t * stride as f64)).ceil() as usize).max(16) } else { w.len() };
+        let window = if l.re < 0.0 {
+            ((18.0 / (-l.re * t * stride as f64)).ceil() as usize).max(16)
+        } else {
+            w.len()
+        };
         for k in 0..w.len().min(window).saturating_sub(1) {
             num += w[k + 1] * w[k].conj();
             den += w[k].norm_sqr();
@@ -975,7 +1060,10 @@ fn simulate_full(
             return None;
         }
         let ratio = num / den;
-        mu_sim.push(C64::from_polar(ratio.norm().powf(1.0 / stride as f64), ratio.arg() / stride as f64));
+        mu_sim.push(C64::from_polar(
+            ratio.norm().powf(1.0 / stride as f64),
+            ratio.arg() / stride as f64,
+        ));
     }
     let predicted = drifts(lambdas, &matched(&p, lambdas, t)?, t, total_steps);
     let sim = drifts(lambdas, &mu_sim, t, total_steps);
@@ -984,7 +1072,8 @@ fn simulate_full(
         amplitude: sim.amplitude,
         agree: close(sim.phase_rad, predicted.phase_rad, target.phase_tol)
             && close(sim.amplitude, predicted.amplitude, target.amp_tol),
-        how: "whole scene, system kernel, projected on the full step's left eigenvectors".to_owned(),
+        how: "whole scene, system kernel, projected on the full step's left eigenvectors"
+            .to_owned(),
         modes_checked: lambdas.len(),
         steps,
     })
@@ -1036,7 +1125,13 @@ fn full_stable(kernel: Kernel, sweep: Sweep, sys: &System, tick: f64, guess: u64
 }
 
 /// The Gauss–Seidel report of one built-in.
-fn sweep_report(kernel: Kernel, name: &str, sys: &System, tick: f64, modal: Option<u64>) -> anyhow::Result<SweepReport> {
+fn sweep_report(
+    kernel: Kernel,
+    name: &str,
+    sys: &System,
+    tick: f64,
+    modal: Option<u64>,
+) -> anyhow::Result<SweepReport> {
     if sys.n() > MAX_FULL_DOF {
         anyhow::bail!(
             "--sweep gauss-seidel: the scene has {} degrees of freedom: the full-step analysis takes at most {MAX_FULL_DOF}",

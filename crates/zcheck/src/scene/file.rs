@@ -215,16 +215,15 @@ impl SceneFile {
                 Err(err(Some(v.span()), format!("{what} = {x}: expected a finite number >= 0")))
             }
         };
-        let tick_hz = match &raw.tick_hz {
-            Some(t) => positive(t, "tick_hz")?,
-            None => {
-                return Err(err(
+        let tick_hz =
+            match &raw.tick_hz {
+                Some(t) => positive(t, "tick_hz")?,
+                None => return Err(err(
                     None,
                     "missing tick rate: expected `tick_hz = ...` (the simulation ticks per second)"
                         .into(),
-                ))
-            }
-        };
+                )),
+            };
         let duration_s = match &raw.duration_s {
             Some(d) => positive(d, "duration_s")?,
             None => DEFAULT_DURATION_S,
@@ -286,7 +285,10 @@ impl SceneFile {
                 if ends.len() != 2 {
                     return Err(err(
                         Some(s.between.span()),
-                        format!("between has {} names: expected two, e.g. [\"a\", \"ground\"]", ends.len()),
+                        format!(
+                            "between has {} names: expected two, e.g. [\"a\", \"ground\"]",
+                            ends.len()
+                        ),
                     ));
                 }
                 let mut idx = [None, None];
@@ -367,7 +369,14 @@ impl SceneFile {
     }
 
     /// A one-mode scene: a spring of `hz` with damping ratio `ratio`.
-    pub fn one_mode(hz: f64, ratio: f64, tick_hz: f64, duration_s: f64, phase_rad: f64, amplitude: f64) -> SceneFile {
+    pub fn one_mode(
+        hz: f64,
+        ratio: f64,
+        tick_hz: f64,
+        duration_s: f64,
+        phase_rad: f64,
+        amplitude: f64,
+    ) -> SceneFile {
         SceneFile {
             tick_hz,
             duration_s,
@@ -410,9 +419,19 @@ mod tests {
     #[test]
     fn bad_scenes_are_located() {
         let head = "tick_hz = 60\n[[mass]]\nname = \"a\"\nkg = 1.0\n";
-        bad(&format!("{head}[[spring]]\nbetween = [\"a\", \"b\"]\nstiffness = 1.0\n"), 6, 17, "unknown mass \"b\"");
+        bad(
+            &format!("{head}[[spring]]\nbetween = [\"a\", \"b\"]\nstiffness = 1.0\n"),
+            6,
+            17,
+            "unknown mass \"b\"",
+        );
         bad("tick_hz = 60\n[[mass]]\nname = \"a\"\nkg = -1.0\n", 4, 6, "kg = -1");
-        bad(&format!("{head}[[spring]]\nbetween = [\"a\", \"ground\"]\nstiffness = 0\n"), 7, 13, "stiffness = 0");
+        bad(
+            &format!("{head}[[spring]]\nbetween = [\"a\", \"ground\"]\nstiffness = 0\n"),
+            7,
+            13,
+            "stiffness = 0",
+        );
         bad("[[mode]]\nhz = 1.0\n", 1, 1, "missing tick rate");
         bad("tick_hz = 60\n", 1, 1, "empty scene");
         bad("tick_hz = 60\n[[mode]]\nhz = 1.0\nfreq = 2\n", 4, 1, "unknown field");

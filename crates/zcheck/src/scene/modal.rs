@@ -96,7 +96,11 @@ impl Sparse {
 
     /// xᵀ A x.
     fn quad(&self, x: &[f64]) -> f64 {
-        self.rows.iter().enumerate().map(|(i, r)| x[i] * r.iter().map(|&(j, a)| a * x[j]).sum::<f64>()).sum()
+        self.rows
+            .iter()
+            .enumerate()
+            .map(|(i, r)| x[i] * r.iter().map(|&(j, a)| a * x[j]).sum::<f64>())
+            .sum()
     }
 
     /// Whether A B is symmetric (A, B symmetric: whether they commute), to
@@ -244,7 +248,11 @@ pub fn reduce_with(scene: &SceneFile, shapes: Shapes) -> Result<Modal, ModalErro
         Body::Modes(list) => {
             let mut modes: Vec<Mode> = list
                 .iter()
-                .map(|m| Mode { omega: 2.0 * std::f64::consts::PI * m.hz, ratio: m.ratio, shape: None })
+                .map(|m| Mode {
+                    omega: 2.0 * std::f64::consts::PI * m.hz,
+                    ratio: m.ratio,
+                    shape: None,
+                })
                 .collect();
             modes.sort_by(|a, b| a.omega.total_cmp(&b.omega));
             let damping = if modes.iter().all(|m| m.ratio == 0.0) {
@@ -324,7 +332,11 @@ pub fn reduce_system_with(system: System, shapes: Shapes) -> Result<Modal, Modal
         modes = lambdas
             .iter()
             .filter(|l| l.norm() > 0.0)
-            .map(|l| Mode { omega: l.norm(), ratio: if l.im > 0.0 { -l.re / l.norm() } else { 1.0 }, shape: None })
+            .map(|l| Mode {
+                omega: l.norm(),
+                ratio: if l.im > 0.0 { -l.re / l.norm() } else { 1.0 },
+                shape: None,
+            })
             .collect();
     }
     Ok(Modal { system: Some(system), modes, rigid, damping })
@@ -394,7 +406,10 @@ mod tests {
         }
         for i in 0..n {
             let prev = if i == 0 { "ground".to_owned() } else { format!("m{}", i - 1) };
-            s += &format!("[[spring]]\nbetween = [\"{prev}\", \"m{i}\"]\nstiffness = {}\n{tail}", 100.0 * (i + 1) as f64);
+            s += &format!(
+                "[[spring]]\nbetween = [\"{prev}\", \"m{i}\"]\nstiffness = {}\n{tail}",
+                100.0 * (i + 1) as f64
+            );
         }
         s
     }

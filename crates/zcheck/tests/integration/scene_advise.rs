@@ -27,7 +27,8 @@ fn json(args: &[&str]) -> Value {
 }
 
 fn write(name: &str, text: &str) -> PathBuf {
-    let path = std::env::temp_dir().join(format!("zcheck-scene-{}-{name}.toml", std::process::id()));
+    let path =
+        std::env::temp_dir().join(format!("zcheck-scene-{}-{name}.toml", std::process::id()));
     std::fs::write(&path, text).unwrap();
     path
 }
@@ -51,7 +52,10 @@ fn undamped_false_euler_substeps_are_omega_max_t_over_two() {
         let mut k = DMatrix::<f64>::zeros(n, n);
         for i in 0..n {
             let prev = if i == 0 { "ground".to_owned() } else { format!("m{}", i - 1) };
-            text += &format!("[[spring]]\nbetween = [\"{prev}\", \"m{i}\"]\nstiffness = {}\n", stiff[i]);
+            text += &format!(
+                "[[spring]]\nbetween = [\"{prev}\", \"m{i}\"]\nstiffness = {}\n",
+                stiff[i]
+            );
             k[(i, i)] += stiff[i];
             if i > 0 {
                 k[(i - 1, i - 1)] += stiff[i];
@@ -65,8 +69,21 @@ fn undamped_false_euler_substeps_are_omega_max_t_over_two() {
         let expected = (phi / 2.0).floor() as u64 + 1;
         assert!((phi / 2.0 - (phi / 2.0).round()).abs() > 1e-6, "tie: choose other numbers");
         let path = write(&format!("chain{n}"), &text);
-        let v = json(&["advise", "--scene", path.to_str().unwrap(), "--methods", "false_euler", "--format", "json", "--no-simulate"]);
-        assert_eq!(candidate(&v, "false_euler")["substeps_stable"], expected, "n = {n}, Phi = {phi}");
+        let v = json(&[
+            "advise",
+            "--scene",
+            path.to_str().unwrap(),
+            "--methods",
+            "false_euler",
+            "--format",
+            "json",
+            "--no-simulate",
+        ]);
+        assert_eq!(
+            candidate(&v, "false_euler")["substeps_stable"],
+            expected,
+            "n = {n}, Phi = {phi}"
+        );
         // The mode that limits is the highest.
         let modes = v["modes"].as_array().unwrap();
         assert_eq!(modes.last().unwrap()["limits_stability"], true);
@@ -81,9 +98,25 @@ fn damped_false_euler_substeps_follow_the_damped_bound() {
         let phi = 2.0 * std::f64::consts::PI * hz / tick;
         let bound = 2.0 * ((1.0 + zeta * zeta).sqrt() - zeta);
         let expected = (phi / bound).floor() as u64 + 1;
-        let path = write(&format!("mode{hz}"), &format!("tick_hz = {tick}\n[[mode]]\nhz = {hz}\nratio = {zeta}\n"));
-        let v = json(&["advise", "--scene", path.to_str().unwrap(), "--methods", "false_euler", "--format", "json", "--no-simulate"]);
-        assert_eq!(candidate(&v, "false_euler")["substeps_stable"], expected, "{hz} Hz, zeta {zeta}");
+        let path = write(
+            &format!("mode{hz}"),
+            &format!("tick_hz = {tick}\n[[mode]]\nhz = {hz}\nratio = {zeta}\n"),
+        );
+        let v = json(&[
+            "advise",
+            "--scene",
+            path.to_str().unwrap(),
+            "--methods",
+            "false_euler",
+            "--format",
+            "json",
+            "--no-simulate",
+        ]);
+        assert_eq!(
+            candidate(&v, "false_euler")["substeps_stable"],
+            expected,
+            "{hz} Hz, zeta {zeta}"
+        );
     }
 }
 
@@ -105,7 +138,14 @@ fn prediction_agrees_with_simulation_on_every_example() {
             }
         }
         for c in v["candidates"].as_array().unwrap() {
-            for f in ["method", "substeps_stable", "substeps_accurate", "ns_per_tick", "predicted", "simulated"] {
+            for f in [
+                "method",
+                "substeps_stable",
+                "substeps_accurate",
+                "ns_per_tick",
+                "predicted",
+                "simulated",
+            ] {
                 assert!(c.get(f).is_some(), "{name}: candidate without {f}");
             }
             if c["substeps_accurate"].is_u64() {
@@ -123,7 +163,8 @@ fn prediction_agrees_with_simulation_on_every_example() {
 /// stable (4π/n < 2), Standard Euler and Standard Heun never are.
 #[test]
 fn the_papers_stiff_spring() {
-    let v = json(&["advise", "--scene", &example("spring_120hz"), "--format", "json", "--no-simulate"]);
+    let v =
+        json(&["advise", "--scene", &example("spring_120hz"), "--format", "json", "--no-simulate"]);
     assert_eq!(candidate(&v, "false_euler")["substeps_stable"], 7);
     assert!(candidate(&v, "standard_euler")["substeps_stable"].is_null());
     assert!(candidate(&v, "standard_heun")["substeps_stable"].is_null());
@@ -134,9 +175,19 @@ fn the_papers_stiff_spring() {
 fn bad_scene_files_are_located_errors() {
     let head = "tick_hz = 60\n[[mass]]\nname = \"a\"\nkg = 1.0\n";
     for (name, text, at, needle) in [
-        ("unknown", format!("{head}[[spring]]\nbetween = [\"a\", \"b\"]\nstiffness = 1.0\n"), ":6:17:", "unknown mass \"b\""),
+        (
+            "unknown",
+            format!("{head}[[spring]]\nbetween = [\"a\", \"b\"]\nstiffness = 1.0\n"),
+            ":6:17:",
+            "unknown mass \"b\"",
+        ),
         ("mass", "tick_hz = 60\n[[mass]]\nname = \"a\"\nkg = 0\n".to_owned(), ":4:6:", "kg = 0"),
-        ("stiffness", format!("{head}[[spring]]\nbetween = [\"a\", \"ground\"]\nstiffness = -3\n"), ":7:13:", "stiffness = -3"),
+        (
+            "stiffness",
+            format!("{head}[[spring]]\nbetween = [\"a\", \"ground\"]\nstiffness = -3\n"),
+            ":7:13:",
+            "stiffness = -3",
+        ),
         ("tick", "[[mode]]\nhz = 3\n".to_owned(), ":1:1:", "missing tick rate"),
         ("empty", "tick_hz = 60\nduration_s = 1\n".to_owned(), ":1:1:", "empty scene"),
         ("syntax", "tick_hz = 60\n[[mass]\n".to_owned(), ":2:", ""),
@@ -155,12 +206,30 @@ fn bad_scene_files_are_located_errors() {
 /// answer exists the numeric full-step search finds it too.
 #[test]
 fn gauss_seidel_report() {
-    let v = json(&["advise", "--scene", &example("chain10"), "--sweep", "gauss-seidel", "--format", "json", "--no-simulate"]);
+    let v = json(&[
+        "advise",
+        "--scene",
+        &example("chain10"),
+        "--sweep",
+        "gauss-seidel",
+        "--format",
+        "json",
+        "--no-simulate",
+    ]);
     for s in v["sweep"].as_array().unwrap() {
         assert_eq!(s["witnesses_agree"], true, "{s}");
     }
     let one = write("one", "tick_hz = 60\n[[mass]]\nname = \"a\"\nkg = 2.0\n[[spring]]\nbetween = [\"a\", \"ground\"]\nstiffness = 3000.0\n");
-    let v = json(&["advise", "--scene", one.to_str().unwrap(), "--sweep", "gauss-seidel", "--format", "json", "--no-simulate"]);
+    let v = json(&[
+        "advise",
+        "--scene",
+        one.to_str().unwrap(),
+        "--sweep",
+        "gauss-seidel",
+        "--format",
+        "json",
+        "--no-simulate",
+    ]);
     for s in v["sweep"].as_array().unwrap() {
         assert_eq!(s["substeps_vector"], s["substeps_gauss_seidel"], "{s}");
         if s["substeps_modal"].is_u64() {
@@ -174,8 +243,20 @@ fn gauss_seidel_report() {
 fn map_of_false_euler() {
     let svg = std::env::temp_dir().join(format!("zcheck-map-{}.svg", std::process::id()));
     let v = json(&[
-        "map", "false_euler_damped", "--phi", "0..3", "--param", "D=0..2", "--grid", "12", "--samples", "40",
-        "--svg", svg.to_str().unwrap(), "--format", "json",
+        "map",
+        "false_euler_damped",
+        "--phi",
+        "0..3",
+        "--param",
+        "D=0..2",
+        "--grid",
+        "12",
+        "--samples",
+        "40",
+        "--svg",
+        svg.to_str().unwrap(),
+        "--format",
+        "json",
     ]);
     assert_eq!(v["disagreements"], 0);
     assert_eq!(v["grid"].as_array().unwrap().len(), 144);
