@@ -222,8 +222,8 @@ fn run_scene(path: &std::path::Path, args: &Args) -> anyhow::Result<ExitCode> {
     let options = Options { simulate: !args.no_simulate, gauss_seidel: args.sweep.is_some() };
     let advice = advisor::advise(&scene, &modal, specs, options)?;
     match args.format {
-        Format::Json => println!("{}", serde_json::to_string_pretty(&advice)?),
-        Format::Text => print!("{}", scene_text(&path.display().to_string(), &advice)),
+        Format::Json => super::output::emitln(&serde_json::to_string_pretty(&advice)?)?,
+        Format::Text => super::output::emit(&scene_text(&path.display().to_string(), &advice))?,
     }
     Ok(ExitCode::SUCCESS)
 }

@@ -76,15 +76,22 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
         zcheck::map::draw_svg(&m, path)?;
     }
     match args.format {
-        Format::Json => println!("{}", serde_json::to_string_pretty(&m)?),
+        Format::Json => super::output::emitln(&serde_json::to_string_pretty(&m)?)?,
         Format::Text => {
-            println!(
+            use std::fmt::Write as _;
+            let mut out = String::new();
+            let _ = writeln!(
+                out,
                 "method {}: Phi in [{}, {}], D in [{}, {}]",
                 m.method, m.phi.0, m.phi.1, m.d.0, m.d.1
             );
-            println!("critical curves (exact; the stable region is bounded by some of them):");
+            let _ = writeln!(
+                out,
+                "critical curves (exact; the stable region is bounded by some of them):"
+            );
             for c in &m.curves {
-                println!(
+                let _ = writeln!(
+                    out,
                     "  {:<12} {} = 0   (factor {} split off; {} points traced)",
                     c.kind,
                     c.poly,
@@ -92,9 +99,10 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
                     c.points.len()
                 );
             }
-            println!("Phi_max(D):");
+            let _ = writeln!(out, "Phi_max(D):");
             for l in &m.limits {
-                println!(
+                let _ = writeln!(
+                    out,
                     "  D = {:<10} Phi_max = {}{}",
                     l.d,
                     l.phi_max,
@@ -106,16 +114,18 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
                 *counts.entry(g.class.name()).or_default() += 1;
             }
             let list: Vec<String> = counts.iter().map(|(k, v)| format!("{k} {v}")).collect();
-            println!("grid {}x{}: {}", m.size.0, m.size.1, list.join(", "));
-            println!(
+            let _ = writeln!(out, "grid {}x{}: {}", m.size.0, m.size.1, list.join(", "));
+            let _ = writeln!(
+                out,
                 "numeric witnesses (nalgebra, faer eigenvalues) agree with the exact roots at {} of {} grid points",
                 m.grid.len() - m.disagreements,
                 m.grid.len()
             );
-            println!("unconditional: {}", m.unconditional);
+            let _ = writeln!(out, "unconditional: {}", m.unconditional);
             if let Some(p) = &args.svg {
-                println!("wrote {}", p.display());
+                let _ = writeln!(out, "wrote {}", p.display());
             }
+            super::output::emit(&out)?;
         }
     }
     Ok(if m.disagreements == 0 { ExitCode::SUCCESS } else { ExitCode::from(1) })
