@@ -7,7 +7,7 @@ use std::process::ExitCode;
 use anyhow::{bail, Context};
 use poly::Q;
 
-use super::stability::parse_rational;
+use super::values::Exact;
 
 /// Output format of `zcheck map`.
 #[derive(Clone, Copy, clap::ValueEnum)]
@@ -22,10 +22,10 @@ pub struct Args {
     /// A built-in method with `param D` (e.g. false_euler_damped) or a `.zm` file.
     pub method: String,
     /// The Phi window, LO..HI (exact: 0..5/2 or 0..2.5).
-    #[arg(long, value_name = "LO..HI")]
+    #[arg(long, value_name = "LO..HI", allow_hyphen_values = true)]
     pub phi: String,
     /// The D window, D=LO..HI.
-    #[arg(long = "param", value_name = "D=LO..HI")]
+    #[arg(long = "param", value_name = "D=LO..HI", allow_hyphen_values = true)]
     pub param: String,
     /// Write the map as SVG here.
     #[arg(long)]
@@ -45,8 +45,12 @@ pub fn parse_range(flag: &str, s: &str) -> anyhow::Result<(Q, Q)> {
     let Some((lo, hi)) = s.split_once("..") else {
         bail!("{flag} {s}: expected LO..HI, e.g. 0..2.5");
     };
-    let lo = parse_rational(lo.trim()).with_context(|| format!("{flag} {s}: LO"))?;
-    let hi = parse_rational(hi.trim()).with_context(|| format!("{flag} {s}: HI"))?;
+    let read = |part: &str, which: &str| -> anyhow::Result<Q> {
+        part.parse::<Exact>().map(|e| e.value).map_err(|e| anyhow::anyhow!("{e}")).with_context(
+            || format!("{flag} {s}: {which}: expected a number such as 2, 5/2 or 2.5"),
+        )
+    };
+    let (lo, hi) = (read(lo, "LO")?, read(hi, "HI")?);
     if lo >= hi {
         bail!("{flag} {s}: expected LO < HI");
     }
