@@ -4,6 +4,13 @@
 //! the "Direct Integration" branch (`false_euler`) and the "Transition
 //! matrix" branch (`false_euler_matrix`). Verlet has only one program in the
 //! paper; `damped_euler_d` frees the damping ratio D.
+//!
+//! [`DAMPED_BUILTINS`] applies each direct method to the damped spring
+//! v' = −2Dv − y, y' = v (in units of ω₀), with the damping ratio D a free
+//! parameter (`param D`): the test equation of the two-parameter (Φ, D)
+//! analysis. At D = 0 each has its undamped method's χ. They are built-ins
+//! like the others ([`builtin`] finds them) but not among
+//! [`builtin_names`], which stays the paper's own programs.
 
 use crate::{Error, Method};
 
@@ -25,6 +32,29 @@ pub const BUILTINS: &[(&str, &str)] = &[
     ("semi_false_heun_matrix", include_str!("../methods/semi_false_heun_matrix.zm")),
 ];
 
+/// `(name, source)` for every damped-spring built-in (`param D`), in the
+/// paper's order; Standard Euler's is `damped_euler_d` in [`BUILTINS`].
+pub const DAMPED_BUILTINS: &[(&str, &str)] = &[
+    ("damped_euler_damped", include_str!("../methods/damped_euler_damped.zm")),
+    ("false_euler_damped", include_str!("../methods/false_euler_damped.zm")),
+    ("verlet_damped", include_str!("../methods/verlet_damped.zm")),
+    ("standard_heun_damped", include_str!("../methods/standard_heun_damped.zm")),
+    ("false_heun_damped", include_str!("../methods/false_heun_damped.zm")),
+    ("semi_false_heun_damped", include_str!("../methods/semi_false_heun_damped.zm")),
+];
+
+/// The seven direct methods of sections 5–11 on the damped spring, in the
+/// paper's order: `damped_euler_d` (Standard Euler) and [`DAMPED_BUILTINS`].
+pub const DAMPED_METHODS: [&str; 7] = [
+    "damped_euler_d",
+    "damped_euler_damped",
+    "false_euler_damped",
+    "verlet_damped",
+    "standard_heun_damped",
+    "false_heun_damped",
+    "semi_false_heun_damped",
+];
+
 /// The direct-integration built-ins of sections 5–11, one per method the
 /// paper analyses, in the paper's order (no `_matrix` twins, no free `D`).
 pub const PAPER_METHODS: [&str; 7] = [
@@ -42,9 +72,19 @@ pub fn builtin_names() -> impl Iterator<Item = &'static str> {
     BUILTINS.iter().map(|(n, _)| *n)
 }
 
-/// The source text of a built-in method.
+/// The names of the damped-spring built-ins ([`DAMPED_BUILTINS`]).
+pub fn damped_builtin_names() -> impl Iterator<Item = &'static str> {
+    DAMPED_BUILTINS.iter().map(|(n, _)| *n)
+}
+
+/// Every built-in: the paper's programs, then the damped-spring ones.
+pub fn all_builtin_names() -> impl Iterator<Item = &'static str> {
+    builtin_names().chain(damped_builtin_names())
+}
+
+/// The source text of a built-in method (paper or damped-spring).
 pub fn builtin_source(name: &str) -> Option<&'static str> {
-    BUILTINS.iter().find(|(n, _)| *n == name).map(|(_, s)| *s)
+    BUILTINS.iter().chain(DAMPED_BUILTINS).find(|(n, _)| *n == name).map(|(_, s)| *s)
 }
 
 /// Parses a built-in method; `None` when no built-in has that name.

@@ -224,7 +224,7 @@ impl std::error::Error for Error {}
 
 impl Error {
     pub(crate) fn unknown_builtin(name: &str) -> Error {
-        let names: Vec<&str> = crate::builtin_names().collect();
+        let names: Vec<&str> = crate::all_builtin_names().collect();
         Error::new(
             ErrorKind::UnknownBuiltin,
             Span::default(),

@@ -59,6 +59,7 @@ mod matrix;
 mod method;
 mod params;
 mod poly;
+pub mod region;
 pub mod series;
 pub mod stability;
 pub mod sturm;
@@ -68,7 +69,8 @@ mod upoly;
 
 pub use crate::algebraic::Algebraic;
 pub use crate::builtins::{
-    builtin, builtin_names, builtin_source, direct_twin, BUILTINS, PAPER_METHODS,
+    all_builtin_names, builtin, builtin_names, builtin_source, damped_builtin_names, direct_twin,
+    BUILTINS, DAMPED_BUILTINS, DAMPED_METHODS, PAPER_METHODS,
 };
 pub use crate::class::RootClass;
 pub use crate::cost::{step_cost, OpCount, StepCost};

@@ -5,11 +5,13 @@
 //! - [`overview`]: every method side by side (exact limit, series, cost);
 //! - [`tradeoff`]: the speed/accuracy trade and the spring advisor;
 //! - [`scene`]: the appendix scenes (three bodies, aircraft);
-//! - [`plot`]: SVG figures.
+//! - [`plot`]: SVG figures;
+//! - [`map`]: the exact (Φ, D) stability map of a damped method.
 //!
 //! The exact algebra lives in `poly`, the numeric witnesses in `check`; this
 //! crate depends on both and neither depends on it.
 
+pub mod map;
 pub mod overview;
 pub mod paper;
 pub mod plot;

@@ -43,6 +43,8 @@ enum Command {
     Scene(cli::scene::Args),
     /// The strongest identity between two methods (equal, permuted, scaled, same chi).
     Equiv(cli::equiv::Args),
+    /// Exact stability region in (Phi, D), drawn over a grid of root classes.
+    Map(cli::map::Args),
 }
 
 /// The most bytes of an error message printed: enough for any real error,
@@ -68,6 +70,7 @@ fn main() -> ExitCode {
         Command::Advise(a) => cli::advise::run(a),
         Command::Scene(a) => cli::scene::run(a),
         Command::Equiv(a) => cli::equiv::run(a),
+        Command::Map(a) => cli::map::run(a),
     };
     match result {
         Ok(code) => code,

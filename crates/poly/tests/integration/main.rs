@@ -8,6 +8,7 @@
 //!   parser never panics;
 //! - `fuzz_corpus`: the fuzz targets' corpora and crash regressions, replayed;
 //! - `parser`: details of the expression language;
+//! - `region`: the exact (Φ, D) region against closed forms;
 //! - `snapshots`: each built-in's derivation, reviewed against the paper;
 //! - `cost`: operation counts; `series`: exact Ψ and |z|² series;
 //! - `stability`: the exact stability analysis; `sturm`: Sturm sequences and
@@ -20,6 +21,7 @@ mod det;
 mod errors;
 mod fuzz_corpus;
 mod parser;
+mod region;
 mod routes;
 mod series;
 #[path = "../../../../tests/support/snapshot.rs"]

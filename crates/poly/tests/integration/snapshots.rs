@@ -39,7 +39,7 @@ fn record(name: &str) -> String {
 
 #[test]
 fn builtin_derivations() {
-    for name in poly::builtin_names() {
+    for name in poly::all_builtin_names() {
         let mut settings = crate::snapshot::in_dir("poly");
         settings.set_omit_expression(true);
         settings.bind(|| insta::assert_snapshot!(name, record(name)));

@@ -1,5 +1,6 @@
 //! `zcheck advise`: which method and how many substeps for a spring in a
-//! game scene, in game units (Hz).
+//! game scene, in game units (Hz); or, with `--scene FILE`, for a whole
+//! scene of masses and springs (or modes) read from a TOML file.
 
 use std::process::ExitCode;
 use std::time::Duration;
@@ -20,11 +21,24 @@ pub enum Format {
 #[derive(clap::Args)]
 pub struct Args {
     /// The spring's natural frequency, Hz.
-    #[arg(long)]
-    pub freq: f64,
+    #[arg(long, required_unless_present = "scene")]
+    pub freq: Option<f64>,
     /// The simulation tick rate, Hz.
-    #[arg(long)]
-    pub tick: f64,
+    #[arg(long, required_unless_present = "scene")]
+    pub tick: Option<f64>,
+    /// A scene file (TOML: masses and springs, or modes; see the README).
+    #[arg(long, conflicts_with_all = ["freq", "tick", "damping"])]
+    pub scene: Option<std::path::PathBuf>,
+    /// Candidate methods for a scene: built-in names or `.zm` files
+    /// (comma-separated or repeated); default: the seven direct methods.
+    #[arg(long, value_delimiter = ',', requires = "scene")]
+    pub methods: Vec<String>,
+    /// Also analyse body-by-body (Gauss-Seidel) updates of the scene.
+    #[arg(long, value_enum, requires = "scene")]
+    pub sweep: Option<SweepArg>,
+    /// Skip the simulation that checks the prediction.
+    #[arg(long, requires = "scene")]
+    pub no_simulate: bool,
     /// How long the scene must stay within tolerance, seconds.
     #[arg(long, default_value_t = Scene::DEFAULT_DURATION_S)]
     pub duration: f64,
@@ -54,10 +68,23 @@ pub fn candidates(damping: Option<&Q>) -> anyhow::Result<Vec<Candidate>> {
     })
 }
 
+/// Update orders `--sweep` can analyse.
+#[derive(Clone, Copy, clap::ValueEnum)]
+pub enum SweepArg {
+    /// Bodies updated in sequence, each seeing those already updated.
+    GaussSeidel,
+}
+
 pub fn run(args: Args) -> anyhow::Result<ExitCode> {
+    if let Some(path) = &args.scene {
+        return run_scene(path, &args);
+    }
+    let (Some(freq_hz), Some(tick_hz)) = (args.freq, args.tick) else {
+        anyhow::bail!("expected --freq and --tick, or --scene FILE");
+    };
     let scene = Scene {
-        freq_hz: args.freq,
-        tick_hz: args.tick,
+        freq_hz,
+        tick_hz,
         duration_s: args.duration,
         phase_tol: args.phase_tol,
         amp_tol: args.amp_tol,
@@ -167,5 +194,159 @@ pub fn text(a: &Advice) -> String {
         ),
         None => "no method meets the tolerance at a stable step\n".to_owned(),
     };
+    out
+}
+
+/// `zcheck advise --scene FILE`.
+fn run_scene(path: &std::path::Path, args: &Args) -> anyhow::Result<ExitCode> {
+    use zcheck::scene::advisor::{self, MethodSpec, Options};
+    use zcheck::scene::file::SceneFile;
+    let scene = SceneFile::load(path)?;
+    if args.duration != Scene::DEFAULT_DURATION_S
+        || args.phase_tol != Scene::DEFAULT_PHASE_TOL
+        || args.amp_tol != Scene::DEFAULT_AMP_TOL
+    {
+        anyhow::bail!("--duration, --phase-tol and --amp-tol belong in the scene file with --scene (duration_s, [accuracy])");
+    }
+    let shapes = if args.no_simulate {
+        zcheck::scene::modal::Shapes::WhenNeeded
+    } else {
+        zcheck::scene::modal::Shapes::Compute
+    };
+    let modal = zcheck::scene::modal::reduce_with(&scene, shapes)?;
+    let specs = if args.methods.is_empty() {
+        MethodSpec::builtins()?
+    } else {
+        args.methods.iter().map(|m| MethodSpec::load(m)).collect::<anyhow::Result<_>>()?
+    };
+    let options = Options { simulate: !args.no_simulate, gauss_seidel: args.sweep.is_some() };
+    let advice = advisor::advise(&scene, &modal, specs, options)?;
+    match args.format {
+        Format::Json => super::output::emitln(&serde_json::to_string_pretty(&advice)?)?,
+        Format::Text => super::output::emit(&scene_text(&path.display().to_string(), &advice))?,
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+/// The scene advice as text: the modes that matter, a table, a sentence.
+pub fn scene_text(name: &str, a: &zcheck::scene::advisor::SceneAdvice) -> String {
+    let mut out = format!(
+        "scene {name}: {} degrees of freedom, {} modes ({} rigid left out), damping {}\n",
+        a.dof,
+        a.modes.len(),
+        a.rigid_modes,
+        match a.damping {
+            zcheck::scene::modal::DampingKind::Undamped => "none".to_owned(),
+            zcheck::scene::modal::DampingKind::Rayleigh { alpha, beta } =>
+                format!("Rayleigh (alpha = {alpha:.4} 1/s, beta = {beta:.3e} s)"),
+            zcheck::scene::modal::DampingKind::Proportional => "proportional".to_owned(),
+            zcheck::scene::modal::DampingKind::NonProportional =>
+                "non-proportional (stability from the full-step matrix)".to_owned(),
+        }
+    );
+    out += &format!(
+        "tick {} Hz, {} s; target: phase <= {} rad and amplitude <= {} for every mode\n",
+        a.tick_hz, a.duration_s, a.phase_rad, a.amplitude
+    );
+    let show = |i: usize| format!("{:.3} Hz (ratio {:.4})", a.modes[i].hz, a.modes[i].ratio);
+    let stab: Vec<String> =
+        (0..a.modes.len()).filter(|&i| a.modes[i].limits_stability).map(show).collect();
+    let acc: Vec<String> =
+        (0..a.modes.len()).filter(|&i| a.modes[i].limits_accuracy).map(show).collect();
+    let rest = a.modes.iter().filter(|m| !m.limits_stability && !m.limits_accuracy).count();
+    out += &format!(
+        "modes limiting stability: {}\n",
+        if stab.is_empty() { "none".into() } else { stab.join(", ") }
+    );
+    out += &format!(
+        "modes limiting accuracy:  {}\n",
+        if acc.is_empty() { "none".into() } else { acc.join(", ") }
+    );
+    out += &format!("modes that do not matter: {rest}\n\n");
+    let header = [
+        "method",
+        "substeps stable",
+        "substeps accurate",
+        "ns/tick",
+        "predicted phase/amp",
+        "simulated phase/amp",
+        "agree",
+    ]
+    .map(str::to_owned);
+    let rows: Vec<[String; 7]> = a
+        .candidates
+        .iter()
+        .map(|c| {
+            [
+                c.method.clone(),
+                c.substeps_stable.map_or("never".into(), |n| n.to_string()),
+                c.substeps_accurate.map_or("never".into(), |n| n.to_string()),
+                c.ns_per_tick.map_or("-".into(), |ns| format!("{ns:.1}")),
+                c.predicted
+                    .map_or("-".into(), |p| format!("{:.3e}/{:.3e}", p.phase_rad, p.amplitude)),
+                c.simulated
+                    .as_ref()
+                    .map_or("-".into(), |s| format!("{:.3e}/{:.3e}", s.phase_rad, s.amplitude)),
+                c.simulated
+                    .as_ref()
+                    .map_or("-".into(), |s| (if s.agree { "yes" } else { "NO" }).into()),
+            ]
+        })
+        .collect();
+    let widths: Vec<usize> = (0..7)
+        .map(|c| {
+            std::iter::once(&header).chain(&rows).map(|r| r[c].chars().count()).max().unwrap_or(0)
+        })
+        .collect();
+    for row in std::iter::once(&header).chain(&rows) {
+        let cells: Vec<String> = row
+            .iter()
+            .zip(&widths)
+            .enumerate()
+            .map(
+                |(c, (cell, &w))| {
+                    if c == 0 {
+                        format!("{cell:<w$}")
+                    } else {
+                        format!("{cell:>w$}")
+                    }
+                },
+            )
+            .collect();
+        out += &cells.join("  ");
+        out.push('\n');
+    }
+    out += &format!(
+        "\nagreement: simulated within {} of the target (plus 1e-9) of the prediction\n",
+        zcheck::scene::advisor::AGREE_FRACTION
+    );
+    for c in &a.candidates {
+        if let Some(s) = &c.simulated {
+            if !s.agree {
+                out += &format!("WARNING: {}: prediction and simulation disagree\n", c.method);
+            }
+        }
+    }
+    out += &match &a.recommended {
+        Some(r) => format!("recommended: {} with {} substeps per tick\n", r.method, r.substeps),
+        None => "recommended: none meets the target\n".to_owned(),
+    };
+    if let Some(sweep) = &a.sweep {
+        out += "\nGauss-Seidel (bodies in sequence) against all bodies at once:\n";
+        for s in sweep {
+            out += &format!(
+                "  {}: substeps {} (exact, modal) / {} (full step) -> {} (Gauss-Seidel), rho at {} substeps = {} (nalgebra) / {} (faer){}, largest stable step x{}\n",
+                s.method,
+                s.substeps_modal.map_or("never".into(), |n| n.to_string()),
+                s.substeps_vector.map_or("never".into(), |n| n.to_string()),
+                s.substeps_gauss_seidel.map_or("never".into(), |n| n.to_string()),
+                s.substeps_modal.map_or("-".into(), |n| n.to_string()),
+                s.rho_nalgebra.map_or("-".into(), |r| format!("{r:.9}")),
+                s.rho_faer.map_or("-".into(), |r| format!("{r:.9}")),
+                if s.witnesses_agree { "" } else { " DISAGREE" },
+                s.limit_ratio.map_or("-".into(), |r| format!("{r:.4}")),
+            );
+        }
+    }
     out
 }

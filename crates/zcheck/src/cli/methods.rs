@@ -9,7 +9,7 @@ pub struct Args {}
 pub fn run(_: Args) -> anyhow::Result<ExitCode> {
     use std::fmt::Write as _;
     let mut out = format!("{:<24} {:>5}  {:<8} first comment line\n", "method", "order", "params");
-    for name in poly::builtin_names() {
+    for name in poly::all_builtin_names() {
         let m = poly::builtin(name)?;
         let src = poly::builtin_source(name).unwrap_or_default();
         let about = src.lines().next().unwrap_or("").trim_start_matches('#').trim();

@@ -3,6 +3,7 @@
 pub mod advise;
 pub mod derive;
 pub mod equiv;
+pub mod map;
 pub mod methods;
 pub mod output;
 pub mod overview;

@@ -4,8 +4,8 @@
 //! damping ratio is free): the seven methods of sections 5–11 and their
 //! Appendix B "Transition matrix" twins. The damped family, used only when a
 //! scene has physical damping D, is each direct method applied to
-//! v̇ = −ω₀(y + 2Dv), ẏ = ω₀v, written as `.zm` data below (Standard Euler's
-//! is the built-in `damped_euler_d`). At D = 0 each has its undamped
+//! v̇ = −ω₀(y + 2Dv), ẏ = ω₀v: the built-ins [`poly::DAMPED_METHODS`]
+//! (`crates/poly/methods/*_damped.zm`, and `damped_euler_d` for Standard Euler). At D = 0 each has its undamped
 //! method's characteristic polynomial (tested).
 
 use std::cmp::Ordering;
@@ -17,91 +17,6 @@ use poly::{Algebraic, Method, Sym, Q};
 
 use super::{SecondOrder, TradeoffError};
 use check::numeric::{f64_to_q, q_to_f64};
-
-/// The damped-spring variants, as `.zm` sources (name, source).
-pub const DAMPED_SOURCES: [(&str, &str); 6] = [
-    (
-        "damped_euler_damped",
-        "# Damped Euler on a damped spring: the physical D plus the artificial Phi/2.
-method damped_euler_damped
-state v y
-param D
-E = D + 0.5*Phi
-v1 = v - Phi*(y + 2*E*v)
-y = y + Phi*v
-v = v1
-",
-    ),
-    (
-        "false_euler_damped",
-        "# False Euler on a damped spring.
-method false_euler_damped
-state v y
-param D
-v = v - Phi*(y + 2*D*v)
-y = y + Phi*v
-",
-    ),
-    (
-        "verlet_damped",
-        "# Verlet on a damped spring, the velocity taken as (y - y@1)/T.
-method verlet_damped
-state y
-param D
-y = 2*y - y@1 - Phi^2*y - 2*D*Phi*(y - y@1)
-",
-    ),
-    (
-        "standard_heun_damped",
-        "# Standard Heun on a damped spring.
-method standard_heun_damped
-state v y
-param D
-dv1 = -Phi*(y + 2*D*v)
-v11 = v + dv1
-dy1 = Phi*v
-y11 = y + dy1
-dv2 = -Phi*(y11 + 2*D*v11)
-dy2 = Phi*v11
-v = v + 0.5*(dv1 + dv2)
-y = y + 0.5*(dy1 + dy2)
-",
-    ),
-    (
-        "false_heun_damped",
-        "# False Heun on a damped spring.
-method false_heun_damped
-state v y
-param D
-dv1 = -Phi*(y + 2*D*v)
-v11 = v + dv1
-dy1 = Phi*v11
-y11 = y + dy1
-dv2 = -Phi*(y11 + 2*D*v11)
-v12 = v + dv2
-dy2 = Phi*v12
-v = v + 0.5*(dv1 + dv2)
-y = y + 0.5*(dy1 + dy2)
-",
-    ),
-    (
-        "semi_false_heun_damped",
-        "# Semi-False Heun on a damped spring.
-method semi_false_heun_damped
-state v y
-param D
-dv1 = -Phi*(y + 2*D*v)
-v11 = v + dv1
-dy1 = Phi*v
-y11 = y + dy1
-dv2 = -Phi*(y11 + 2*D*v11)
-v12 = v + dv2
-dy2 = Phi*v12
-v = v + 0.5*(dv1 + dv2)
-y = y + 0.5*(dy1 + dy2)
-",
-    ),
-];
 
 /// The exact stability limit of one method (at fixed other parameters).
 #[derive(Clone, Debug)]
@@ -250,11 +165,8 @@ pub fn direct_names() -> [&'static str; 7] {
 /// (an exact rational).
 pub fn damped_family(d: &Q) -> Result<Vec<Candidate>, TradeoffError> {
     let dsym = Sym::new("D");
-    let mut out = vec![Candidate::new(builtin("damped_euler_d")?, vec![(dsym, d.clone())])?];
-    for (name, src) in DAMPED_SOURCES {
-        let m = Method::parse(&format!("{name}.zm"), src)
-            .map_err(|e| TradeoffError::new(format!("{e}")))?;
-        out.push(Candidate::new(m, vec![(dsym, d.clone())])?);
-    }
-    Ok(out)
+    poly::DAMPED_METHODS
+        .iter()
+        .map(|name| Candidate::new(builtin(name)?, vec![(dsym, d.clone())]))
+        .collect()
 }

@@ -5,12 +5,10 @@
 //! for which `verify` finds Φ/k bounded. Also: the text output of the README
 //! example, and bad input as an error with exit status 2.
 
-use std::path::PathBuf;
 use std::process::Command;
 
 use poly::RootClass;
 use serde_json::Value;
-use zcheck::tradeoff::family::DAMPED_SOURCES;
 
 fn zcheck(args: &[&str]) -> (i32, String, String) {
     let out = Command::new(env!("CARGO_BIN_EXE_zcheck")).args(args).output().expect("zcheck runs");
@@ -29,8 +27,7 @@ fn json(args: &[&str]) -> Value {
 }
 
 /// The method argument and `--param` flags that name the method advise
-/// used: the built-in itself, or (damped scene) the damped variant's source
-/// written to a temporary `.zm` file.
+/// used: the built-in itself, or (damped scene) its damped built-in.
 fn method_args(method: &str, damping: Option<&str>) -> Vec<String> {
     let Some(d) = damping else { return vec![method.to_owned()] };
     let name = if method == "standard_euler" {
@@ -38,11 +35,8 @@ fn method_args(method: &str, damping: Option<&str>) -> Vec<String> {
     } else {
         format!("{method}_damped")
     };
-    let src = DAMPED_SOURCES.iter().find(|(n, _)| *n == name).expect("damped variant").1;
-    let path: PathBuf =
-        std::env::temp_dir().join(format!("zcheck-advise-{}-{name}.zm", std::process::id()));
-    std::fs::write(&path, src).unwrap();
-    vec![path.display().to_string(), "--param".into(), format!("D={d}")]
+    assert!(poly::builtin_source(&name).is_some(), "damped built-in {name}");
+    vec![name, "--param".into(), format!("D={d}")]
 }
 
 fn verify_bounded(margs: &[String], phis: &[f64]) -> Vec<bool> {

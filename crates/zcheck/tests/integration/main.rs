@@ -7,6 +7,7 @@ mod equiv_cli;
 mod extremes;
 mod hostile;
 mod plot_cli;
+mod scene_advise;
 mod scene_cli;
 #[path = "../../../../tests/support/snapshot.rs"]
 mod snapshot;

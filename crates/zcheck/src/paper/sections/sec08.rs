@@ -182,13 +182,11 @@ pub struct DampedComparison {
 }
 
 pub fn damped_spring() -> DampedComparison {
-    use crate::tradeoff::family::DAMPED_SOURCES;
     let damping = poly::q(1, 10);
     let phi = 0.1f64;
     let d = 0.1f64;
     let chi_of = |name: &str| {
-        let src = DAMPED_SOURCES.iter().find(|(n, _)| *n == name).expect("damped variant").1;
-        let m = poly::Method::parse(name, src).expect("built-in damped source");
+        let m = poly::builtin(name).expect("damped built-in");
         poly::derive(&m).expect("derivation").charpoly
     };
     let measure = |chi_d: &Poly| {

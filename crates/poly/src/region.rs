@@ -1,0 +1,441 @@
+//! Exact stability regions in two parameters: the step Φ and one more, the
+//! damping ratio D of the test equation v' = −2Dv − y, y' = v.
+//!
+//! χ(z; Φ, D) = Σ a_k(Φ, D) z^k. The boundedness of the sample sequence can
+//! change only where a root meets the unit circle or comes from infinity,
+//! that is on the zero sets of four polynomials in (Φ, D), the *critical
+//! curves*:
+//!
+//! - the leading coefficient a_n (a root arrives from infinity);
+//! - χ(1) = Σ a_k (a real root through +1);
+//! - χ(−1) = Σ (−1)^k a_k (a real root through −1);
+//! - the unit-circle condition: two roots with z_i z_j = 1, which for a
+//!   complex pair is |z|² = 1. For n = 2 it is a_2 − a_0 (= a_2·(1 − z_1 z_2));
+//!   for higher degree the reciprocal resultant Res_z(χ, z^n χ(1/z)), which
+//!   vanishes on the same set together with χ(±1).
+//!
+//! Each curve is kept primitive, with its monomial factors Φ^i D^j split off
+//! (they only say that Φ = 0 or D = 0 is critical). Between the curves the
+//! stable/unstable split is constant.
+//!
+//! **Membership** of a rational (Φ, D) is the exact class of χ there
+//! ([`crate::stability::class_at`] with D substituted). **Φ_max(D)** at a
+//! rational D is the one-variable analysis of χ(z; Φ, D) in Φ.
+//!
+//! **Unconditional stability** (every Φ > 0 and D ≥ 0 bounded, the analogue
+//! of A-stability) is decided by a cylindrical decomposition along D: the
+//! structure of the curves over the D axis can change only at the positive
+//! real roots of each curve's leading coefficient in Φ, its value at Φ = 0,
+//! its discriminant in Φ (Res_Φ(f, ∂f/∂Φ)), and the pairwise resultants in
+//! Φ. Between consecutive such D the curves' Φ-roots move continuously
+//! without meeting, so the one-variable analysis at one rational D per cell
+//! decides the whole cell; D = 0 and every rational critical D are analysed
+//! too. At an irrational critical D only a non-open failure could hide (a
+//! repeated root on the unit circle, since |z| > 1 is an open condition and
+//! would show in a neighbouring cell): [`Unconditional::Stable`] records how
+//! many such lines there were.
+
+use std::cmp::Ordering;
+use std::collections::HashMap;
+use std::fmt;
+
+use num_traits::{One, Signed, Zero};
+
+use crate::stability::{self, StabilityError};
+use crate::{Algebraic, Poly, PolyMatrix, RootClass, Sym, UPoly, Q};
+
+/// Which condition a critical curve expresses.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum CurveKind {
+    /// The leading coefficient of χ in z vanishes.
+    Leading,
+    /// χ(1) = 0.
+    ChiAtOne,
+    /// χ(−1) = 0.
+    ChiAtMinusOne,
+    /// Two roots with z_i z_j = 1 (a complex pair on the unit circle).
+    UnitCircle,
+}
+
+impl CurveKind {
+    /// The snake_case name used in JSON and reports.
+    pub fn name(self) -> &'static str {
+        match self {
+            CurveKind::Leading => "leading",
+            CurveKind::ChiAtOne => "chi(1)",
+            CurveKind::ChiAtMinusOne => "chi(-1)",
+            CurveKind::UnitCircle => "unit_circle",
+        }
+    }
+}
+
+impl fmt::Display for CurveKind {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// One critical curve: the zero set of a polynomial in Φ and the parameter.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Curve {
+    /// The condition it expresses.
+    pub kind: CurveKind,
+    /// The condition with monomial factors and rational content removed;
+    /// zero only where the condition is identically zero.
+    pub poly: Poly,
+    /// The monomial factor Φ^i D^j that was split off (a polynomial with
+    /// one term).
+    pub monomial: Poly,
+}
+
+/// Φ_max at one value of the parameter.
+#[derive(Clone, Debug, PartialEq)]
+pub enum PhiLimit {
+    /// Every 0 < Φ < Φ_max is bounded, Φ_max exact.
+    Below(Algebraic),
+    /// Every Φ > 0 is bounded.
+    Every,
+    /// Unbounded for every small Φ > 0.
+    Never,
+}
+
+/// The verdict on stability over the whole quadrant Φ > 0, D ≥ 0.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Unconditional {
+    /// Bounded at every Φ > 0 and every D ≥ 0 examined: every cell of the
+    /// decomposition and every rational critical D. `irrational_lines`
+    /// counts the irrational critical D not analysed themselves (see the
+    /// module notes).
+    Stable {
+        /// Irrational critical D (lines not analysed on themselves).
+        irrational_lines: usize,
+    },
+    /// An exact counterexample: a rational D with its Φ limit.
+    Unstable {
+        /// The damping ratio at which some Φ > 0 is unbounded.
+        d: Q,
+        /// What the one-variable analysis found there.
+        limit: Box<PhiLimit>,
+    },
+}
+
+/// The exact (Φ, D) stability region of one characteristic polynomial.
+#[derive(Clone, Debug)]
+pub struct Region {
+    chi: Poly,
+    param: Sym,
+    curves: Vec<Curve>,
+}
+
+/// Builds the region of `chi` (a polynomial in z, Φ and `param`, no other
+/// symbol). Errs when χ, with the parameter given a value, is not a
+/// polynomial in z and Φ with roots.
+pub fn region(chi: &Poly, param: Sym) -> Result<Region, StabilityError> {
+    // The one-variable engine validates the symbols: any symbol other than
+    // z, Φ and `param` is reported by it.
+    stability::class_at(&substitute(chi, param, &Q::one()), &Q::one())?;
+    let (z, phi) = (Sym::z(), Sym::phi());
+    let a = chi.coeffs_in(z);
+    let n = a.len() - 1;
+    let mut at_one = Poly::zero();
+    let mut at_minus_one = Poly::zero();
+    for (k, c) in a.iter().enumerate() {
+        at_one += c;
+        if k % 2 == 0 {
+            at_minus_one += c;
+        } else {
+            at_minus_one -= c;
+        }
+    }
+    let unit = if n == 2 {
+        &a[2] - &a[0]
+    } else {
+        // z^n χ(1/z) has the coefficients of χ reversed.
+        let rev: Vec<Poly> = a.iter().rev().cloned().collect();
+        resultant(&a, &rev)
+    };
+    let mut curves = Vec::new();
+    for (kind, p) in [
+        (CurveKind::Leading, a[n].clone()),
+        (CurveKind::ChiAtOne, at_one),
+        (CurveKind::ChiAtMinusOne, at_minus_one),
+        (CurveKind::UnitCircle, unit),
+    ] {
+        let (monomial, poly) = split_monomial(&p, &[phi, param]);
+        curves.push(Curve { kind, poly: primitive(&poly), monomial });
+    }
+    Ok(Region { chi: chi.clone(), param, curves })
+}
+
+impl Region {
+    /// χ(z; Φ, D).
+    pub fn charpoly(&self) -> &Poly {
+        &self.chi
+    }
+
+    /// The second parameter (D).
+    pub fn param(&self) -> Sym {
+        self.param
+    }
+
+    /// The four critical curves, in the order of [`CurveKind`].
+    pub fn curves(&self) -> &[Curve] {
+        &self.curves
+    }
+
+    /// The curves that can bound the region: those that are neither
+    /// constant nor identically zero.
+    pub fn boundary_curves(&self) -> impl Iterator<Item = &Curve> {
+        self.curves.iter().filter(|c| !c.poly.is_zero() && c.poly.as_constant().is_none())
+    }
+
+    /// χ with the parameter set to `d`: a polynomial in z and Φ.
+    pub fn at_param(&self, d: &Q) -> Poly {
+        substitute(&self.chi, self.param, d)
+    }
+
+    /// The exact root class at a rational (Φ, D).
+    pub fn class_at(&self, phi: &Q, d: &Q) -> Result<RootClass, StabilityError> {
+        stability::class_at(&self.at_param(d), phi)
+    }
+
+    /// Whether the rational (Φ, D) is in the stable region (bounded class).
+    pub fn contains(&self, phi: &Q, d: &Q) -> Result<bool, StabilityError> {
+        Ok(self.class_at(phi, d)?.is_bounded())
+    }
+
+    /// Φ_max at a rational D, exactly.
+    pub fn phi_max(&self, d: &Q) -> Result<PhiLimit, StabilityError> {
+        let r = stability::analyze(&self.at_param(d))?;
+        Ok(match (r.bounded_for_all, r.phi_max) {
+            (true, _) => PhiLimit::Every,
+            (false, Some(m)) => PhiLimit::Below(m),
+            (false, None) => PhiLimit::Never,
+        })
+    }
+
+    /// The positive D where the arrangement of the curves over the D axis
+    /// can change (see the module notes), increasing and distinct.
+    pub fn critical_params(&self) -> Vec<Algebraic> {
+        let (phi, d) = (Sym::phi(), self.param);
+        let curves: Vec<&Poly> = self.boundary_curves().map(|c| &c.poly).collect();
+        let mut projections: Vec<Poly> = Vec::new();
+        for f in &curves {
+            let c = f.coeffs_in(phi);
+            if c.len() == 1 {
+                projections.push(c[0].clone());
+                continue;
+            }
+            projections.push(c[c.len() - 1].clone());
+            projections.push(c[0].clone());
+            projections.push(resultant(&c, &f.derivative(phi).coeffs_in(phi)));
+        }
+        for (i, f) in curves.iter().enumerate() {
+            for g in &curves[i + 1..] {
+                let (cf, cg) = (f.coeffs_in(phi), g.coeffs_in(phi));
+                if cf.len() > 1 && cg.len() > 1 {
+                    projections.push(resultant(&cf, &cg));
+                }
+            }
+        }
+        let mut roots: Vec<Algebraic> = Vec::new();
+        for p in projections {
+            let Some(u) = p.to_upoly(d) else { continue };
+            if u.is_zero() || u.degree().unwrap_or(0) == 0 {
+                continue;
+            }
+            for r in Algebraic::positive_roots(&u) {
+                if !roots.contains(&r) {
+                    roots.push(r);
+                }
+            }
+        }
+        roots.sort();
+        roots
+    }
+
+    /// Decides stability for every Φ > 0 and D ≥ 0 (see the module notes).
+    pub fn unconditional(&self) -> Result<Unconditional, StabilityError> {
+        let critical = self.critical_params();
+        let mut samples: Vec<Q> = vec![Q::zero()];
+        let mut irrational_lines = 0;
+        let mut below = Algebraic::zero();
+        for c in &critical {
+            samples.push(rational_between(&below, c));
+            match c.as_rational() {
+                Some(q) => samples.push(q.clone()),
+                None => irrational_lines += 1,
+            }
+            below = c.clone();
+        }
+        samples.push(below.interval().1.floor() + Q::one() + Q::one());
+        for d in samples {
+            let limit = self.phi_max(&d)?;
+            if limit != PhiLimit::Every {
+                return Ok(Unconditional::Unstable { d, limit: Box::new(limit) });
+            }
+        }
+        Ok(Unconditional::Stable { irrational_lines })
+    }
+
+    /// The Φ in (lo, hi) where `curve` meets the line D = `d`, exactly,
+    /// increasing.
+    pub fn curve_phis(&self, curve: &Curve, d: &Q, lo: &Q, hi: &Q) -> Vec<Algebraic> {
+        let f = substitute(&curve.poly, self.param, d);
+        let Some(u) = f.to_upoly(Sym::phi()) else { return Vec::new() };
+        roots_inside(&u, lo, hi)
+    }
+
+    /// The D in (lo, hi) where `curve` meets the line Φ = `phi`, exactly,
+    /// increasing.
+    pub fn curve_params(&self, curve: &Curve, phi: &Q, lo: &Q, hi: &Q) -> Vec<Algebraic> {
+        let f = substitute(&curve.poly, Sym::phi(), phi);
+        let Some(u) = f.to_upoly(self.param) else { return Vec::new() };
+        roots_inside(&u, lo, hi)
+    }
+}
+
+fn roots_inside(u: &UPoly, lo: &Q, hi: &Q) -> Vec<Algebraic> {
+    if u.is_zero() || u.degree().unwrap_or(0) == 0 {
+        return Vec::new();
+    }
+    Algebraic::real_roots(u)
+        .into_iter()
+        .filter(|r| r.cmp_rational(lo) == Ordering::Greater && r.cmp_rational(hi) == Ordering::Less)
+        .collect()
+}
+
+/// `p` with `sym` set to the rational `value`.
+fn substitute(p: &Poly, sym: Sym, value: &Q) -> Poly {
+    let values: HashMap<Sym, Q> = [(sym, value.clone())].into_iter().collect();
+    p.eval_partial(&values)
+}
+
+/// Splits off the largest monomial Φ^i D^j dividing `p`: `(monomial, rest)`,
+/// the monomial as a polynomial.
+fn split_monomial(p: &Poly, syms: &[Sym]) -> (Poly, Poly) {
+    if p.is_zero() {
+        return (Poly::one(), Poly::zero());
+    }
+    let lowest: Vec<(Sym, u32)> = syms
+        .iter()
+        .map(|&s| (s, p.terms().map(|(m, _)| m.exponent(s)).min().unwrap_or(0)))
+        .collect();
+    let power =
+        |f: &[(Sym, u32)]| f.iter().fold(Poly::one(), |acc, &(s, e)| &acc * &Poly::sym(s).pow(e));
+    let mut rest = Poly::zero();
+    for (m, c) in p.terms() {
+        let f: Vec<(Sym, u32)> = m
+            .factors()
+            .iter()
+            .map(|&(s, e)| {
+                let low = lowest.iter().find(|(t, _)| *t == s).map_or(0, |&(_, l)| l);
+                (s, e - low)
+            })
+            .collect();
+        rest += &power(&f).scale(c);
+    }
+    (power(&lowest), rest)
+}
+
+/// `p` divided by its rational content, with a positive leading term (in
+/// the canonical order): the same zero set, smaller numbers.
+fn primitive(p: &Poly) -> Poly {
+    let Some((_, first)) = p.terms().last() else { return Poly::zero() };
+    // The gcd of numerators over the lcm of denominators.
+    let mut num = num_bigint::BigInt::zero();
+    let mut den = num_bigint::BigInt::one();
+    for (_, c) in p.terms() {
+        num = num_integer::Integer::gcd(&num, c.numer());
+        den = num_integer::Integer::lcm(&den, c.denom());
+    }
+    let mut content = Q::new(num, den);
+    if first.is_negative() {
+        content = -content;
+    }
+    p.scale(&(Q::one() / content))
+}
+
+/// The Sylvester resultant of two polynomials given by their coefficients
+/// (lowest power first), each coefficient a polynomial in the remaining
+/// symbols; zero when either is zero.
+fn resultant(f: &[Poly], g: &[Poly]) -> Poly {
+    let trim = |c: &[Poly]| -> Vec<Poly> {
+        let mut v = c.to_vec();
+        while v.last().is_some_and(Poly::is_zero) {
+            v.pop();
+        }
+        v
+    };
+    let (f, g) = (trim(f), trim(g));
+    if f.is_empty() || g.is_empty() {
+        return Poly::zero();
+    }
+    let (m, n) = (f.len() - 1, g.len() - 1);
+    if m + n == 0 {
+        return Poly::one();
+    }
+    let size = m + n;
+    let mut rows = vec![vec![Poly::zero(); size]; size];
+    for i in 0..n {
+        for (k, c) in f.iter().rev().enumerate() {
+            rows[i][i + k] = c.clone();
+        }
+    }
+    for i in 0..m {
+        for (k, c) in g.iter().rev().enumerate() {
+            rows[n + i][i + k] = c.clone();
+        }
+    }
+    PolyMatrix::from_rows(rows).det()
+}
+
+/// A rational strictly between two distinct algebraic numbers `lo < hi`.
+fn rational_between(lo: &Algebraic, hi: &Algebraic) -> Q {
+    let (mut a, mut b) = (lo.clone(), hi.clone());
+    let four = Q::from_integer(4.into());
+    loop {
+        let ((_, ahi), (blo, _)) = (a.interval(), b.interval());
+        if ahi < blo {
+            return (ahi + blo) / Q::from_integer(2.into());
+        }
+        let (alo, ahi) = a.interval();
+        let (blo, bhi) = b.interval();
+        a = a.refine(&((&ahi - &alo) / &four));
+        b = b.refine(&((&bhi - &blo) / &four));
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn chi_of(name: &str) -> Poly {
+        crate::charpoly(&crate::builtin(name).unwrap()).unwrap()
+    }
+
+    /// The Sylvester resultant equals the product of g over the roots of f
+    /// for polynomials with known rational roots (the obvious oracle).
+    #[test]
+    fn resultant_of_known_roots() {
+        // f = (x − 1)(x − 2), g = (x − 3): Res = g(1) g(2) = (−2)(−1) = 2.
+        let f = [Poly::int(2), Poly::int(-3), Poly::int(1)];
+        let g = [Poly::int(-3), Poly::int(1)];
+        assert_eq!(resultant(&f, &g), Poly::int(2));
+        // A common root: zero.
+        let g = [Poly::int(-2), Poly::int(1)];
+        assert_eq!(resultant(&f, &g), Poly::zero());
+    }
+
+    /// False Euler on the damped spring: χ(−1) is Φ² + 4DΦ − 4, whose
+    /// positive root is 2(√(1 + D²) − D); χ(1) is Φ² alone.
+    #[test]
+    fn false_euler_curves() {
+        let r = region(&chi_of("false_euler_damped"), Sym::new("D")).unwrap();
+        let minus_one = r.curves().iter().find(|c| c.kind == CurveKind::ChiAtMinusOne).unwrap();
+        assert_eq!(minus_one.poly, Poly::parse("Phi^2 + 4*D*Phi - 4").unwrap());
+        let one = r.curves().iter().find(|c| c.kind == CurveKind::ChiAtOne).unwrap();
+        assert_eq!(one.poly, Poly::one());
+        assert_eq!(one.monomial, Poly::parse("Phi^2").unwrap());
+    }
+}

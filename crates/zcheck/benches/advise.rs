@@ -1,0 +1,48 @@
+//! The scene advisor on a 1000-mass chain: modal reduction (eigenvalues of
+//! a 1000×1000 symmetric matrix), the exact (Φ, D) region of the seven
+//! direct methods, exact membership of every mode, accuracy per mode and a
+//! brief timing of each method's kernel; no checking simulation.
+//!
+//! Run: `cargo bench -p zcheck --bench advise -- --warm-up-time 1 --measurement-time 3`
+
+use criterion::{criterion_group, criterion_main, Criterion};
+use zcheck::scene::advisor::{advise, MethodSpec, Options};
+use zcheck::scene::file::SceneFile;
+use zcheck::scene::modal::{reduce_with, Shapes};
+
+/// A chain of `n` masses hanging from the ground, undamped or with a
+/// damper c = k/2000 in every link (Rayleigh damping).
+fn chain(n: usize, damped: bool) -> SceneFile {
+    let mut s = String::from("tick_hz = 60\nduration_s = 1\n");
+    for i in 0..n {
+        s += &format!("[[mass]]\nname = \"m{i}\"\nkg = 0.1\n");
+    }
+    for i in 0..n {
+        let prev = if i == 0 { "ground".to_owned() } else { format!("m{}", i - 1) };
+        s += &format!("[[spring]]\nbetween = [\"{prev}\", \"m{i}\"]\nstiffness = 1000.0\n");
+        if damped {
+            s += "damping = 0.5\n";
+        }
+    }
+    SceneFile::parse("chain.toml", &s).expect("a valid chain")
+}
+
+fn bench(c: &mut Criterion) {
+    let mut g = c.benchmark_group("advise");
+    g.sample_size(10);
+    for (name, damped) in [("chain1000_undamped", false), ("chain1000_rayleigh", true)] {
+        let scene = chain(1000, damped);
+        g.bench_function(name, |b| {
+            b.iter(|| {
+                let modal = reduce_with(&scene, Shapes::WhenNeeded).unwrap();
+                let specs = MethodSpec::builtins().unwrap();
+                advise(&scene, &modal, specs, Options { simulate: false, gauss_seidel: false })
+                    .unwrap()
+            })
+        });
+    }
+    g.finish();
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);

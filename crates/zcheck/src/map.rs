@@ -1,0 +1,322 @@
+//! The exact stability map of a method in (Φ, D): the critical curves of
+//! `poly::region`, traced exactly, over a grid of exact root classes, each
+//! grid point cross-checked by the numeric witnesses of `check`
+//! (eigenvalues of the numeric transition matrix by nalgebra and faer
+//! against the exact roots).
+//!
+//! Curve points are exact: at each rational D of a fine sample the
+//! critical Φ are real algebraic numbers (Sturm isolation), and likewise the
+//! critical D at each rational Φ, so steep and flat branches are both drawn;
+//! only the final conversion to plot coordinates is a float. Grid points
+//! and curve samples are computed in parallel (rayon).
+
+use std::path::Path;
+
+use check::numeric::{f64_to_q, q_to_f64, Params, ParamsF64};
+use check::witness::Witnesses;
+use plotters::prelude::*;
+use poly::region::{region, CurveKind, PhiLimit, Region, Unconditional};
+use poly::{Method, RootClass, Sym, Q};
+use rayon::prelude::*;
+use serde::Serialize;
+
+/// One grid point.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct GridPoint {
+    /// Φ (the f64 whose exact value was classified).
+    pub phi: f64,
+    /// D.
+    pub d: f64,
+    /// The exact class.
+    #[serde(serialize_with = "class_name")]
+    pub class: RootClass,
+    /// Whether the numeric witnesses agree with the exact roots.
+    pub witnesses_agree: bool,
+}
+
+fn class_name<S: serde::Serializer>(c: &RootClass, s: S) -> Result<S::Ok, S::Error> {
+    s.serialize_str(c.name())
+}
+
+/// One critical curve, traced.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct TracedCurve {
+    /// Which condition.
+    pub kind: String,
+    /// Its polynomial in Φ and D (the monomial factor split off).
+    pub poly: String,
+    /// The monomial factor.
+    pub monomial: String,
+    /// Points (Φ, D) on the curve inside the window.
+    pub points: Vec<(f64, f64)>,
+}
+
+/// Φ_max at one D.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct LimitAt {
+    /// D.
+    pub d: f64,
+    /// Φ_max to 12 decimals, "every" or "none".
+    pub phi_max: String,
+    /// Its defining polynomial and interval, when algebraic.
+    pub exact: Option<String>,
+}
+
+/// The map.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct StabilityMap {
+    /// The method.
+    pub method: String,
+    /// Φ window.
+    pub phi: (f64, f64),
+    /// D window.
+    pub d: (f64, f64),
+    /// Grid points, row by row (D outer, Φ inner).
+    pub grid: Vec<GridPoint>,
+    /// Grid size (Φ, D).
+    pub size: (usize, usize),
+    /// The critical curves.
+    pub curves: Vec<TracedCurve>,
+    /// Grid points whose witnesses disagreed.
+    pub disagreements: usize,
+    /// Φ_max along the D window.
+    pub limits: Vec<LimitAt>,
+    /// "stable for every Phi > 0 and D >= 0" or the counterexample.
+    pub unconditional: String,
+}
+
+/// Options of [`map`].
+#[derive(Clone, Debug)]
+pub struct MapWindow {
+    /// Φ range, exact.
+    pub phi: (Q, Q),
+    /// D range, exact.
+    pub d: (Q, Q),
+    /// Grid points per axis.
+    pub grid: usize,
+    /// Curve samples per axis.
+    pub samples: usize,
+}
+
+fn lin(lo: &Q, hi: &Q, k: usize, n: usize) -> Q {
+    let t = Q::new((k as i64).into(), (n.max(2) as i64 - 1).into());
+    lo + &((hi - lo) * t)
+}
+
+/// Grid cell centres: k + 1/2 of n cells.
+fn centre(lo: &Q, hi: &Q, k: usize, n: usize) -> Q {
+    let t = Q::new((2 * k as i64 + 1).into(), (2 * n as i64).into());
+    lo + &((hi - lo) * t)
+}
+
+/// Computes the map of `method` (which must have the parameter D).
+pub fn map(method: &Method, w: &MapWindow) -> anyhow::Result<StabilityMap> {
+    let d_sym = Sym::new("D");
+    if !method.params().contains(&d_sym) {
+        anyhow::bail!(
+            "method {} has no parameter D: expected `param D` (the test equation v' = -2*D*v - y, y' = v)",
+            method.name()
+        );
+    }
+    if let Some(extra) = method.params().iter().find(|s| s.name() != "Phi" && s.name() != "D") {
+        anyhow::bail!("method {}: parameter {extra} has no value on a (Phi, D) map", method.name());
+    }
+    let chi = poly::charpoly(method)?;
+    let r = region(&chi, d_sym).map_err(|e| anyhow::anyhow!("method {}: {e}", method.name()))?;
+    let witnesses = Witnesses::new(method)?;
+    let n = w.grid.max(2);
+    let cells: Vec<(usize, usize)> = (0..n).flat_map(|j| (0..n).map(move |i| (i, j))).collect();
+    let grid: Vec<GridPoint> = cells
+        .par_iter()
+        .map(|&(i, j)| {
+            let (phi_q, d_q) = (centre(&w.phi.0, &w.phi.1, i, n), centre(&w.d.0, &w.d.1, j, n));
+            let (phi, d) = (q_to_f64(&phi_q), q_to_f64(&d_q));
+            // Classify the exact value of the float that the witnesses use.
+            let (pe, de) = (f64_to_q(phi).unwrap_or(phi_q), f64_to_q(d).unwrap_or(d_q));
+            let class = r.class_at(&pe, &de).unwrap_or(RootClass::Deadbeat);
+            let agree = witnesses
+                .at(&Params::phi(phi).with("D", d), 0)
+                .is_ok_and(|rep| rep.agree() && rep.exact.class == class);
+            GridPoint { phi, d, class, witnesses_agree: agree }
+        })
+        .collect();
+    let disagreements = grid.iter().filter(|g| !g.witnesses_agree).count();
+    let curves = r
+        .boundary_curves()
+        .map(|c| {
+            let s = w.samples.max(2);
+            let mut points: Vec<(f64, f64)> = (0..s)
+                .into_par_iter()
+                .flat_map_iter(|k| {
+                    let d = lin(&w.d.0, &w.d.1, k, s);
+                    let dv = q_to_f64(&d);
+                    r.curve_phis(c, &d, &w.phi.0, &w.phi.1)
+                        .into_iter()
+                        .map(move |a| (approx(&a), dv))
+                })
+                .collect();
+            points.extend(
+                (0..s)
+                    .into_par_iter()
+                    .flat_map_iter(|k| {
+                        let phi = lin(&w.phi.0, &w.phi.1, k, s);
+                        let pv = q_to_f64(&phi);
+                        r.curve_params(c, &phi, &w.d.0, &w.d.1)
+                            .into_iter()
+                            .map(move |a| (pv, approx(&a)))
+                    })
+                    .collect::<Vec<_>>(),
+            );
+            TracedCurve {
+                kind: c.kind.name().to_owned(),
+                poly: c.poly.to_string(),
+                monomial: c.monomial.to_string(),
+                points,
+            }
+        })
+        .collect();
+    let limits = (0..5)
+        .map(|k| {
+            let d = lin(&w.d.0, &w.d.1, k, 5);
+            let (phi_max, exact) = match r.phi_max(&d) {
+                Ok(PhiLimit::Below(m)) => (m.to_decimal(12), Some(m.describe("Phi"))),
+                Ok(PhiLimit::Every) => ("every".to_owned(), None),
+                Ok(PhiLimit::Never) => ("none".to_owned(), None),
+                Err(e) => (format!("error: {e}"), None),
+            };
+            LimitAt { d: q_to_f64(&d), phi_max, exact }
+        })
+        .collect();
+    let unconditional = match r.unconditional()? {
+        Unconditional::Stable { irrational_lines } => format!(
+            "stable for every Phi > 0 and D >= 0 ({irrational_lines} irrational critical D not analysed on the line itself)"
+        ),
+        Unconditional::Unstable { d, limit } => format!(
+            "not unconditionally stable: at D = {d}, {}",
+            match *limit {
+                PhiLimit::Below(m) => format!("unbounded from Phi_max = {}", m.to_decimal(12)),
+                PhiLimit::Never => "unbounded for every small Phi > 0".to_owned(),
+                PhiLimit::Every => "bounded".to_owned(),
+            }
+        ),
+    };
+    Ok(StabilityMap {
+        method: method.name().to_owned(),
+        phi: (q_to_f64(&w.phi.0), q_to_f64(&w.phi.1)),
+        d: (q_to_f64(&w.d.0), q_to_f64(&w.d.1)),
+        grid,
+        size: (n, n),
+        curves,
+        disagreements,
+        limits,
+        unconditional,
+    })
+}
+
+fn approx(a: &poly::Algebraic) -> f64 {
+    q_to_f64(&a.approx(&poly::q(1, 1 << 40)))
+}
+
+/// The region object, for callers who want more than the map.
+pub fn region_of(method: &Method) -> anyhow::Result<Region> {
+    let chi = poly::charpoly(method)?;
+    region(&chi, Sym::new("D")).map_err(|e| anyhow::anyhow!("method {}: {e}", method.name()))
+}
+
+fn class_colour(c: RootClass) -> RGBColor {
+    match c {
+        RootClass::Deadbeat => RGBColor(200, 200, 200),
+        RootClass::DampedOscillation => RGBColor(140, 200, 140),
+        RootClass::Harmonic => RGBColor(90, 160, 230),
+        RootClass::UnstableOscillation => RGBColor(240, 140, 120),
+        RootClass::MonotonicStable => RGBColor(190, 230, 160),
+        RootClass::Constant => RGBColor(160, 160, 240),
+        RootClass::MonotonicUnstable => RGBColor(230, 100, 100),
+        RootClass::AlternatingStable => RGBColor(230, 230, 150),
+        RootClass::Alternating => RGBColor(200, 160, 230),
+        RootClass::AlternatingUnstable => RGBColor(200, 80, 140),
+        RootClass::DoubleRootOnCircle => RGBColor(120, 120, 120),
+    }
+}
+
+fn curve_colour(kind: &str) -> RGBColor {
+    match kind {
+        k if k == CurveKind::ChiAtOne.name() => RGBColor(0, 90, 0),
+        k if k == CurveKind::ChiAtMinusOne.name() => RGBColor(0, 0, 0),
+        k if k == CurveKind::UnitCircle.name() => RGBColor(0, 0, 160),
+        _ => RGBColor(120, 0, 120),
+    }
+}
+
+/// Draws the map as SVG.
+pub fn draw_svg(m: &StabilityMap, path: &Path) -> anyhow::Result<()> {
+    let err = |e: &dyn std::fmt::Display| anyhow::anyhow!("{}: cannot draw: {e}", path.display());
+    let root = SVGBackend::new(path, (900, 680)).into_drawing_area();
+    root.fill(&WHITE).map_err(|e| err(&e))?;
+    let mut chart = ChartBuilder::on(&root)
+        .caption(
+            format!("{}: root class over (Phi, D), exact critical curves", m.method),
+            ("sans-serif", 18),
+        )
+        .margin(10)
+        .x_label_area_size(40)
+        .y_label_area_size(50)
+        .right_y_label_area_size(10)
+        .build_cartesian_2d(m.phi.0..m.phi.1, m.d.0..m.d.1)
+        .map_err(|e| err(&e))?;
+    chart
+        .configure_mesh()
+        .x_desc("Phi = w T")
+        .y_desc("D (damping ratio)")
+        .draw()
+        .map_err(|e| err(&e))?;
+    let (n, _) = m.size;
+    let (dx, dy) = ((m.phi.1 - m.phi.0) / n as f64, (m.d.1 - m.d.0) / n as f64);
+    let mut seen: Vec<RootClass> = Vec::new();
+    chart
+        .draw_series(m.grid.iter().map(|g| {
+            if !seen.contains(&g.class) {
+                seen.push(g.class);
+            }
+            let c = class_colour(g.class);
+            Rectangle::new(
+                [(g.phi - dx / 2.0, g.d - dy / 2.0), (g.phi + dx / 2.0, g.d + dy / 2.0)],
+                c.filled(),
+            )
+        }))
+        .map_err(|e| err(&e))?;
+    chart
+        .draw_series(
+            m.grid
+                .iter()
+                .filter(|g| !g.witnesses_agree)
+                .map(|g| Cross::new((g.phi, g.d), 4, RED.stroke_width(2))),
+        )
+        .map_err(|e| err(&e))?;
+    for c in &m.curves {
+        let colour = curve_colour(&c.kind);
+        chart
+            .draw_series(c.points.iter().map(|&p| Circle::new(p, 1, colour.filled())))
+            .map_err(|e| err(&e))?
+            .label(format!("{} = 0: {}", c.kind, c.poly))
+            .legend(move |(x, y)| Circle::new((x + 8, y), 3, colour.filled()));
+    }
+    seen.sort();
+    for class in seen {
+        let colour = class_colour(class);
+        chart
+            .draw_series(std::iter::empty::<Circle<(f64, f64), i32>>())
+            .map_err(|e| err(&e))?
+            .label(class.name())
+            .legend(move |(x, y)| Rectangle::new([(x, y - 5), (x + 16, y + 5)], colour.filled()));
+    }
+    chart
+        .configure_series_labels()
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .position(SeriesLabelPosition::UpperRight)
+        .draw()
+        .map_err(|e| err(&e))?;
+    root.present().map_err(|e| err(&e))?;
+    Ok(())
+}

@@ -1,0 +1,1189 @@
+//! The scene advisor: which method, how many substeps per tick, for a whole
+//! scene of modes.
+//!
+//! For every candidate method and every mode (ω, ζ) the substep is
+//! Φ = ω/(tick·n). Per candidate:
+//!
+//! - `substeps_stable`: the smallest n putting every mode inside the exact
+//!   (Φ, D) region of the method. A float estimate of each mode's n picks
+//!   the limiting modes; the answer is then decided exactly: every mode is
+//!   checked inside the region at n by `poly::region` (exact class at the
+//!   rational (Φ, ζ)), and the limiting mode outside at n − 1. A mode whose
+//!   float estimate runs away is settled by the exact Φ_max(ζ) (`Never`:
+//!   unbounded at every small Φ). The stable set at fixed ζ is taken to be
+//!   the interval (0, Φ_max) below the first boundary.
+//! - `substeps_accurate`: the smallest n ≥ `substeps_stable` at which every
+//!   mode meets the target over the duration, from the exact χ's principal
+//!   root r·e^{jΨ} against the exact e^{(−ζ ± j√(1−ζ²))Φ} (the model of
+//!   `tradeoff::accuracy`, with p, q − 1 and q − p² exact polynomials in
+//!   (Φ, D) evaluated in f64). Overdamped modes (ζ ≥ 1) have no phase and
+//!   are judged for stability only.
+//! - the cost per tick: measured ns per step × substeps × degrees of freedom.
+//!
+//! With non-proportional damping, `substeps_stable` of a built-in comes
+//! from the assembled full-step matrix (`vector`), not from the modes.
+//!
+//! The prediction is checked by simulating the whole scene with the
+//! method's system kernel (`vector`) at `substeps_accurate`, projecting the
+//! positions on the mode shapes, and fitting each modal sequence's
+//! per-step root from the recurrence q_{k+1} = a q_k + b q_{k−1} (least
+//! squares): the simulated drifts are the fitted root's, over the duration.
+
+use std::collections::HashMap;
+use std::time::Duration;
+
+use check::numeric::{f64_to_q, Params, ParamsF64, Step};
+use nalgebra::DMatrix;
+use num_complex::Complex64 as C64;
+use poly::region::{region, PhiLimit, Region};
+use poly::{Method, Poly, Sym};
+use serde::Serialize;
+
+use super::file::SceneFile;
+use super::modal::{DampingKind, Modal, Mode, Sparse, System};
+use super::vector::{self, Kernel, Sweep, VState};
+use crate::tradeoff::accuracy::{Accuracy, Spring, Target};
+use crate::tradeoff::kernels;
+
+/// Agreement of predicted and simulated drifts: within this fraction of the
+/// target (phase in radians, amplitude relative), plus 1e-9 absolute.
+pub const AGREE_FRACTION: f64 = 1e-3;
+
+/// Largest number of substeps searched.
+const MAX_SUBSTEPS: u64 = 1 << 24;
+
+/// Largest system for the dense full-step analysis (2n × 2n eigenvalues).
+pub const MAX_FULL_DOF: usize = 400;
+
+/// A candidate method.
+#[derive(Clone, Debug)]
+pub struct MethodSpec {
+    /// The name shown.
+    pub display: String,
+    /// The method.
+    pub method: Method,
+    /// The system kernel of a built-in.
+    pub kernel: Option<Kernel>,
+    /// Its hand-written scalar kernel's name, for timing.
+    pub hand_kernel: Option<String>,
+}
+
+impl MethodSpec {
+    /// A built-in by its undamped or damped name (`false_euler` or
+    /// `false_euler_damped`), or a `.zm` file.
+    pub fn load(arg: &str) -> anyhow::Result<MethodSpec> {
+        let damped = match arg {
+            "standard_euler" => Some("damped_euler_d".to_owned()),
+            a if poly::DAMPED_METHODS.contains(&a) => Some(a.to_owned()),
+            a if poly::DAMPED_METHODS.contains(&format!("{a}_damped").as_str()) => {
+                Some(format!("{a}_damped"))
+            }
+            _ => None,
+        };
+        if let Some(name) = damped {
+            let method = poly::builtin(&name)?;
+            let display = match name.as_str() {
+                "damped_euler_d" => "standard_euler".to_owned(),
+                n => n.trim_end_matches("_damped").to_owned(),
+            };
+            let hand = if name == "damped_euler_d" {
+                "standard_euler_damped".to_owned()
+            } else {
+                name.clone()
+            };
+            return Ok(MethodSpec {
+                display,
+                method,
+                kernel: Kernel::for_method(&name),
+                hand_kernel: Some(hand),
+            });
+        }
+        let method = check::load::load_method(arg)?;
+        Ok(MethodSpec { display: arg.to_owned(), method, kernel: None, hand_kernel: None })
+    }
+
+    /// The seven direct methods on the damped spring.
+    pub fn builtins() -> anyhow::Result<Vec<MethodSpec>> {
+        poly::DAMPED_METHODS.iter().map(|n| MethodSpec::load(n)).collect()
+    }
+}
+
+/// Predicted or simulated errors over the duration (largest over modes).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Errors {
+    /// Phase error, radians.
+    pub phase_rad: f64,
+    /// Relative amplitude error.
+    pub amplitude: f64,
+}
+
+/// The simulation's verdict.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Simulated {
+    /// Errors measured from the simulation (modes simulated only).
+    pub phase_rad: f64,
+    /// Relative amplitude error measured.
+    pub amplitude: f64,
+    /// Whether they agree with the prediction for the same modes.
+    pub agree: bool,
+    /// How it was simulated.
+    pub how: String,
+    /// Modes projected and fitted.
+    pub modes_checked: usize,
+    /// Steps simulated.
+    pub steps: u64,
+}
+
+/// One candidate's answer.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct CandidateAdvice {
+    /// The method.
+    pub method: String,
+    /// Fewest substeps per tick with every mode inside the region (`None`:
+    /// none found).
+    pub substeps_stable: Option<u64>,
+    /// Fewest substeps meeting the target (`None`: none found).
+    pub substeps_accurate: Option<u64>,
+    /// Measured ns per step of one degree of freedom.
+    pub ns_per_step: f64,
+    /// ns per tick at `substeps_accurate`: ns per step × substeps × DOF.
+    pub ns_per_tick: Option<f64>,
+    /// Predicted errors at `substeps_accurate`.
+    pub predicted: Option<Errors>,
+    /// Simulated errors at `substeps_accurate`.
+    pub simulated: Option<Simulated>,
+    /// Exact Φ_max at the stability-limiting mode's ζ.
+    pub phi_max: Option<String>,
+    /// How `substeps_stable` was decided.
+    pub stability_from: String,
+    /// Per mode: own fewest stable substeps.
+    #[serde(skip)]
+    pub mode_stable: Vec<Option<u64>>,
+    /// Per mode: own fewest accurate substeps.
+    #[serde(skip)]
+    pub mode_accurate: Vec<Option<u64>>,
+}
+
+/// One mode in the report.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct ModeReport {
+    /// Undamped frequency, Hz.
+    pub hz: f64,
+    /// Damping ratio.
+    pub ratio: f64,
+    /// Whether it sets the recommended method's `substeps_stable`.
+    pub limits_stability: bool,
+    /// Whether it sets the recommended method's `substeps_accurate`.
+    pub limits_accuracy: bool,
+}
+
+/// The recommendation.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Recommended {
+    /// The method.
+    pub method: String,
+    /// Substeps per tick.
+    pub substeps: u64,
+}
+
+/// Gauss–Seidel analysis of one candidate.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct SweepReport {
+    /// The method.
+    pub method: String,
+    /// Fewest substeps stable with all bodies at once (modal).
+    pub substeps_modal: Option<u64>,
+    /// Fewest substeps with ρ ≤ 1 + 1e-12, all bodies at once (the same
+    /// numeric test as the Gauss–Seidel column, for a like comparison).
+    pub substeps_vector: Option<u64>,
+    /// Fewest substeps with ρ ≤ 1 + 1e-12 body by body.
+    pub substeps_gauss_seidel: Option<u64>,
+    /// ρ of the Gauss–Seidel full step at `substeps_modal`: nalgebra.
+    pub rho_nalgebra: Option<f64>,
+    /// The same by faer.
+    pub rho_faer: Option<f64>,
+    /// Whether the two eigenvalue witnesses agree (1e-9 relative).
+    pub witnesses_agree: bool,
+    /// Largest stable step T body by body over the modal one.
+    pub limit_ratio: Option<f64>,
+}
+
+/// The advisor's answer.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct SceneAdvice {
+    /// Tick rate, Hz.
+    pub tick_hz: f64,
+    /// Duration, s.
+    pub duration_s: f64,
+    /// Phase target, rad.
+    pub phase_rad: f64,
+    /// Amplitude target.
+    pub amplitude: f64,
+    /// Degrees of freedom.
+    pub dof: usize,
+    /// Rigid-body modes left out.
+    pub rigid_modes: usize,
+    /// The damping's structure.
+    pub damping: DampingKind,
+    /// The modes, increasing frequency.
+    pub modes: Vec<ModeReport>,
+    /// Every candidate.
+    pub candidates: Vec<CandidateAdvice>,
+    /// The cheapest candidate meeting the target.
+    pub recommended: Option<Recommended>,
+    /// The Gauss–Seidel analysis, when asked for.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub sweep: Option<Vec<SweepReport>>,
+}
+
+/// A polynomial in (Φ, D) with f64 coefficients.
+#[derive(Clone, Debug)]
+struct BiPoly(Vec<(f64, i32, i32)>);
+
+impl BiPoly {
+    fn new(p: &Poly, d: Sym) -> BiPoly {
+        BiPoly(
+            p.terms()
+                .map(|(m, c)| {
+                    (
+                        check::numeric::q_to_f64(c),
+                        m.exponent(Sym::phi()) as i32,
+                        m.exponent(d) as i32,
+                    )
+                })
+                .collect(),
+        )
+    }
+
+    fn eval(&self, phi: f64, d: f64) -> f64 {
+        self.0.iter().map(|&(c, i, j)| c * phi.powi(i) * d.powi(j)).sum()
+    }
+}
+
+/// Everything per candidate that does not depend on the mode.
+struct Analysed {
+    spec: MethodSpec,
+    region: Region,
+    /// χ's coefficients in z (lowest first), in (Φ, D).
+    coeffs: Vec<BiPoly>,
+    /// p, q − 1 and q − p² when χ is monic of degree 2.
+    second: Option<[BiPoly; 3]>,
+    exact_limits: HashMap<u64, PhiLimit>,
+    /// χ with D substituted, by the bits of D.
+    at_param: std::cell::RefCell<HashMap<u64, Poly>>,
+}
+
+impl Analysed {
+    fn new(spec: MethodSpec) -> anyhow::Result<Analysed> {
+        let d = Sym::new("D");
+        if let Some(extra) =
+            spec.method.params().iter().find(|s| s.name() != "Phi" && s.name() != "D")
+        {
+            anyhow::bail!(
+                "method {}: parameter {extra} has no value in a scene: expected only Phi and D",
+                spec.display
+            );
+        }
+        let chi = poly::charpoly(&spec.method)?;
+        let region =
+            region(&chi, d).map_err(|e| anyhow::anyhow!("method {}: {e}", spec.display))?;
+        let zc = chi.coeffs_in(Sym::z());
+        let coeffs = zc.iter().map(|c| BiPoly::new(c, d)).collect();
+        let second = (zc.len() == 3 && zc[2].is_one()).then(|| {
+            let p = &zc[1] * &Poly::constant(poly::q(-1, 2));
+            let q = zc[0].clone();
+            let disc = &q - &(&p * &p);
+            [BiPoly::new(&p, d), BiPoly::new(&(&q - &Poly::one()), d), BiPoly::new(&disc, d)]
+        });
+        Ok(Analysed {
+            spec,
+            region,
+            coeffs,
+            second,
+            exact_limits: HashMap::new(),
+            at_param: Default::default(),
+        })
+    }
+
+    /// Spectral radius of χ at (Φ, D) in f64.
+    fn rho(&self, phi: f64, d: f64) -> f64 {
+        let c: Vec<f64> = self.coeffs.iter().map(|p| p.eval(phi, d)).collect();
+        if c.len() == 3 {
+            let (a, b, cc) = (c[2], c[1], c[0]);
+            let disc = b * b - 4.0 * a * cc;
+            if disc < 0.0 {
+                return (cc / a).abs().sqrt();
+            }
+            let s = disc.sqrt();
+            let r1 = (-b - b.signum() * s) / (2.0 * a);
+            let r2 = if r1 != 0.0 { cc / (a * r1) } else { 0.0 };
+            return r1.abs().max(r2.abs());
+        }
+        match check::witness::polynomial_roots(&c) {
+            Ok(r) => r.iter().map(|z| z.norm()).fold(0.0, f64::max),
+            Err(_) => f64::INFINITY,
+        }
+    }
+
+    /// Exact: is (Φ, D) inside the stable region?
+    fn inside(&self, phi: f64, d: f64) -> bool {
+        let (Some(p), Some(dq)) = (f64_to_q(phi), f64_to_q(d)) else { return false };
+        let mut cache = self.at_param.borrow_mut();
+        let chi = cache.entry(d.to_bits()).or_insert_with(|| self.region.at_param(&dq));
+        poly::stability::class_at(chi, &p).is_ok_and(|c| c.is_bounded())
+    }
+
+    /// The exact Φ_max at ζ (cached by the bits of ζ).
+    fn limit(&mut self, d: f64) -> Option<PhiLimit> {
+        if let Some(l) = self.exact_limits.get(&d.to_bits()) {
+            return Some(l.clone());
+        }
+        let l = self.region.phi_max(&f64_to_q(d)?).ok()?;
+        self.exact_limits.insert(d.to_bits(), l.clone());
+        Some(l)
+    }
+
+    /// A float estimate of the smallest stable n for a mode with per-tick
+    /// step `phi1` (None: runs away).
+    fn estimate_stable(&self, phi1: f64, d: f64) -> Option<u64> {
+        let ok = |phi: f64| self.rho(phi, d) <= 1.0 + 1e-12;
+        if ok(phi1) {
+            return Some(1);
+        }
+        let mut lo = phi1 / MAX_SUBSTEPS as f64;
+        if !ok(lo) {
+            return None;
+        }
+        let mut hi = phi1;
+        for _ in 0..60 {
+            let mid = (lo * hi).sqrt();
+            if ok(mid) {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        Some(((phi1 / lo).ceil() as u64).max(1))
+    }
+
+    /// The exact smallest n (given the interval assumption) starting from a
+    /// guess: up while outside, down while n − 1 is inside.
+    fn exact_stable(&self, phi1: f64, d: f64, guess: u64) -> Option<u64> {
+        let mut n = guess.max(1);
+        let mut tries = 0;
+        while !self.inside(phi1 / n as f64, d) {
+            n = if tries < 16 { n + 1 } else { n * 2 };
+            tries += 1;
+            if n > MAX_SUBSTEPS {
+                return None;
+            }
+        }
+        while n > 1 && self.inside(phi1 / (n - 1) as f64, d) {
+            n -= 1;
+        }
+        Some(n)
+    }
+
+    /// The accuracy of one mode at substep Φ.
+    fn accuracy(&self, phi: f64, d: f64) -> Option<Accuracy> {
+        let [p, qm1, disc] = self.second.as_ref()?;
+        let (pv, dv) = (p.eval(phi, d), disc.eval(phi, d));
+        let (psi, ln_r, oscillating) = if dv > 0.0 {
+            (dv.sqrt().atan2(pv), 0.5 * qm1.eval(phi, d).ln_1p(), true)
+        } else {
+            let s = (-dv).sqrt();
+            let big = if pv >= 0.0 { pv + s } else { pv - s };
+            (if big >= 0.0 { 0.0 } else { std::f64::consts::PI }, big.abs().ln(), false)
+        };
+        let spring = Spring { damping: d };
+        Some(Accuracy {
+            phi,
+            oscillating,
+            psi,
+            phase_error_per_step: psi - spring.psi_exact(phi),
+            ln_growth_per_step: ln_r - spring.ln_r_exact(phi),
+        })
+    }
+
+    fn meets(&self, mode: &Mode, tick: f64, n: u64, target: &Target) -> bool {
+        if mode.ratio >= 1.0 {
+            return true;
+        }
+        let t = Target { periods: mode.hz() * target.periods, ..*target };
+        self.accuracy(mode.omega / (tick * n as f64), mode.ratio).is_some_and(|a| a.meets(&t))
+    }
+}
+
+/// The scene's step per tick and duration, and the target (periods is the
+/// duration in seconds here; each mode multiplies by its own frequency).
+fn target_of(scene: &SceneFile) -> Target {
+    Target { phase_tol: scene.phase_rad, amp_tol: scene.amplitude, periods: scene.duration_s }
+}
+
+/// ns per step of one degree of freedom.
+fn ns_per_step(spec: &MethodSpec, d: f64) -> f64 {
+    let budget = Duration::from_millis(3);
+    if let Some(h) = &spec.hand_kernel {
+        if let Some(ns) = kernels::time_hand_kernel(h, d, budget) {
+            return ns;
+        }
+    }
+    let params = Params::phi(kernels::TIMING_PHI).with("D", d);
+    match Step::compile(&spec.method, &params) {
+        Ok(step) => {
+            let start: Vec<f64> =
+                (0..step.order()).map(|i| if i == 0 { 1.0 } else { 0.0 }).collect();
+            kernels::time_ns_per_step(
+                |n| {
+                    let mut s = step.state(&start);
+                    step.advance(&mut s, n);
+                    std::hint::black_box(s.slots());
+                },
+                budget,
+            )
+        }
+        Err(_) => f64::NAN,
+    }
+}
+
+/// The system a scene simulates: its own, or (a scene of modes) one unit
+/// mass per mode with k = ω², c = 2ζω.
+fn system_of(modal: &Modal) -> (System, Vec<Vec<f64>>) {
+    if let Some(sys) = &modal.system {
+        let shapes = modal.modes.iter().map(|m| m.shape.clone().unwrap_or_default()).collect();
+        return (sys.clone(), shapes);
+    }
+    let n = modal.modes.len();
+    let (mut k, mut c) = (Sparse::default(), Sparse::default());
+    for m in &modal.modes {
+        k.push_row(vec![(k.n(), m.omega * m.omega)]);
+        c.push_row(vec![(c.n(), 2.0 * m.ratio * m.omega)]);
+    }
+    let shapes = (0..n).map(|i| (0..n).map(|j| if i == j { 1.0 } else { 0.0 }).collect()).collect();
+    (System { mass: vec![1.0; n], k, c }, shapes)
+}
+
+/// Options of [`advise`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Options {
+    /// Simulate to check the prediction.
+    pub simulate: bool,
+    /// Analyse the Gauss–Seidel sweep too.
+    pub gauss_seidel: bool,
+}
+
+/// Advises on a scene.
+pub fn advise(
+    scene: &SceneFile,
+    modal: &Modal,
+    specs: Vec<MethodSpec>,
+    options: Options,
+) -> anyhow::Result<SceneAdvice> {
+    let tick = scene.tick_hz;
+    let target = target_of(scene);
+    let dof = scene.dof();
+    let (system, shapes) = system_of(modal);
+    let mut candidates = Vec::new();
+    let mut analysed_all = Vec::new();
+    for spec in specs {
+        if !spec.method.params().iter().any(|s| s.name() == "D")
+            && modal.modes.iter().any(|m| m.ratio != 0.0)
+        {
+            anyhow::bail!(
+                "method {}: the scene is damped but the method has no parameter D: expected `param D` \
+                 (the test equation v' = -2*D*v - y, y' = v)",
+                spec.display
+            );
+        }
+        let mut a = Analysed::new(spec)?;
+        let adv = advise_one(&mut a, scene, modal, &system, &shapes, &target, options.simulate)?;
+        candidates.push(adv);
+        analysed_all.push(a);
+    }
+    let recommended = candidates
+        .iter()
+        .filter_map(|c| Some((c.ns_per_tick?, c.substeps_accurate?, c)))
+        .filter(|(ns, _, _)| ns.is_finite())
+        .min_by(|a, b| a.0.total_cmp(&b.0))
+        .map(|(_, n, c)| Recommended { method: c.method.clone(), substeps: n });
+    let reference = recommended
+        .as_ref()
+        .and_then(|r| candidates.iter().find(|c| c.method == r.method))
+        .or_else(|| candidates.iter().find(|c| c.substeps_stable.is_some()));
+    let modes = modal
+        .modes
+        .iter()
+        .enumerate()
+        .map(|(i, m)| ModeReport {
+            hz: m.hz(),
+            ratio: m.ratio,
+            limits_stability: reference.is_some_and(|c| {
+                c.substeps_stable.is_some() && c.mode_stable[i] == c.substeps_stable
+            }),
+            limits_accuracy: reference.is_some_and(|c| {
+                c.substeps_accurate.is_some() && c.mode_accurate[i] == c.substeps_accurate
+            }),
+        })
+        .collect();
+    let sweep = if options.gauss_seidel {
+        Some(
+            analysed_all
+                .iter()
+                .zip(&candidates)
+                .filter_map(|(a, c)| {
+                    Some(sweep_report(
+                        a.spec.kernel?,
+                        &a.spec.display,
+                        &system,
+                        tick,
+                        c.substeps_stable,
+                    ))
+                })
+                .collect::<anyhow::Result<Vec<_>>>()?,
+        )
+    } else {
+        None
+    };
+    Ok(SceneAdvice {
+        tick_hz: tick,
+        duration_s: scene.duration_s,
+        phase_rad: scene.phase_rad,
+        amplitude: scene.amplitude,
+        dof,
+        rigid_modes: modal.rigid,
+        damping: modal.damping,
+        modes,
+        candidates,
+        recommended,
+        sweep,
+    })
+}
+
+fn advise_one(
+    a: &mut Analysed,
+    scene: &SceneFile,
+    modal: &Modal,
+    system: &System,
+    shapes: &[Vec<f64>],
+    target: &Target,
+    simulate: bool,
+) -> anyhow::Result<CandidateAdvice> {
+    let tick = scene.tick_hz;
+    let modes = &modal.modes;
+    // Float estimates for every mode, then exact answers for the limiting
+    // ones (within a factor 0.9 of the largest estimate, or runaways).
+    let estimates: Vec<Option<u64>> =
+        modes.iter().map(|m| a.estimate_stable(m.omega / tick, m.ratio)).collect();
+    let top = estimates.iter().map(|e| e.unwrap_or(u64::MAX)).max().unwrap_or(1);
+    let mut mode_stable = vec![None; modes.len()];
+    let mut never = false;
+    let mut limiting: Option<usize> = None;
+    for (i, m) in modes.iter().enumerate() {
+        let e = estimates[i].unwrap_or(u64::MAX);
+        if (e as f64) < 0.9 * top as f64 && e != u64::MAX {
+            mode_stable[i] = Some(e);
+            continue;
+        }
+        let exact = match a.limit(m.ratio) {
+            Some(PhiLimit::Never) => None,
+            Some(PhiLimit::Every) => Some(1),
+            _ => a.exact_stable(m.omega / tick, m.ratio, estimates[i].unwrap_or(1)),
+        };
+        if exact.is_none() {
+            never = true;
+        }
+        mode_stable[i] = exact;
+    }
+    let mut stability_from = "exact (Phi, D) region per mode".to_owned();
+    let mut substeps_stable = if never || modes.is_empty() {
+        None
+    } else {
+        let mut n = mode_stable.iter().map(|s| s.unwrap_or(1)).max().unwrap_or(1);
+        // Every mode exactly inside at n (the float estimates of the
+        // non-limiting ones included).
+        let mut guard = 0;
+        while !modes.iter().all(|m| a.inside(m.omega / (tick * n as f64), m.ratio)) && guard < 64 {
+            n += 1;
+            guard += 1;
+        }
+        (guard < 64).then_some(n)
+    };
+    if let Some(n) = substeps_stable {
+        limiting = mode_stable.iter().position(|s| *s == Some(n));
+    }
+    if modal.damping == DampingKind::NonProportional {
+        match a.spec.kernel {
+            Some(k) if system.n() <= MAX_FULL_DOF => {
+                substeps_stable = full_stable(k, Sweep::Vector, system, tick, substeps_stable.unwrap_or(1));
+                stability_from = "full-step matrix (non-proportional damping)".to_owned();
+            }
+            _ => {
+                stability_from =
+                    "modal estimate only: non-proportional damping, no full-step analysis for this method or size"
+                        .to_owned()
+            }
+        }
+    }
+    let phi_max = limiting.and_then(|i| match a.limit(modes[i].ratio)? {
+        PhiLimit::Below(m) => Some(m.to_decimal(12)),
+        PhiLimit::Every => Some("every Phi".to_owned()),
+        PhiLimit::Never => Some("none".to_owned()),
+    });
+    // Accuracy: per mode, the fewest n ≥ substeps_stable meeting the target.
+    let mut mode_accurate = vec![None; modes.len()];
+    let mut substeps_accurate = None;
+    if let (Some(ns), true) = (substeps_stable, a.second.is_some()) {
+        for (i, m) in modes.iter().enumerate() {
+            mode_accurate[i] = smallest_meeting(|n| a.meets(m, tick, n, target), ns);
+        }
+        if mode_accurate.iter().all(Option::is_some) {
+            let mut n = mode_accurate.iter().flatten().copied().max().unwrap_or(ns);
+            let mut guard = 0;
+            while !modes.iter().all(|m| a.meets(m, tick, n, target)) && guard < 64 {
+                n += 1;
+                guard += 1;
+            }
+            substeps_accurate = (guard < 64).then_some(n);
+        }
+    }
+    let d_timing = modes.iter().map(|m| m.ratio).fold(0.0, f64::max).min(1.0);
+    let ns = ns_per_step(&a.spec, d_timing);
+    let dof = scene.dof() as f64;
+    let full = match a.spec.kernel {
+        Some(k) if modal.damping == DampingKind::NonProportional && system.n() <= MAX_FULL_DOF => {
+            Some(k)
+        }
+        _ => None,
+    };
+    let (predicted, simulated) = if let Some(kernel) = full {
+        // The modes are coupled: judge the full step's eigenvalues against
+        // the continuous system's e^{λT}.
+        let lambdas = continuous_eigenvalues(system);
+        let duration = scene.duration_s;
+        let meets = |n: u64| {
+            full_errors(kernel, system, &lambdas, tick, n, duration)
+                .is_some_and(|e| e.phase_rad <= target.phase_tol && e.amplitude <= target.amp_tol)
+        };
+        substeps_accurate = substeps_stable.and_then(|ns| smallest_meeting(meets, ns));
+        let predicted = substeps_accurate
+            .and_then(|n| full_errors(kernel, system, &lambdas, tick, n, duration));
+        let simulated = match (simulate, substeps_accurate) {
+            (true, Some(n)) => simulate_full(kernel, system, &lambdas, tick, n, duration, target),
+            _ => None,
+        };
+        (predicted, simulated)
+    } else {
+        let predicted =
+            substeps_accurate.map(|n| predicted_errors(a, modes, tick, n, target, None));
+        let simulated = match (simulate, substeps_accurate) {
+            (true, Some(n)) => simulate_check(a, scene, modal, system, shapes, n, target),
+            _ => None,
+        };
+        (predicted, simulated)
+    };
+    Ok(CandidateAdvice {
+        method: a.spec.display.clone(),
+        substeps_stable,
+        substeps_accurate,
+        ns_per_step: ns,
+        ns_per_tick: substeps_accurate.map(|n| ns * n as f64 * dof),
+        predicted,
+        simulated,
+        phi_max,
+        stability_from,
+        mode_stable,
+        mode_accurate,
+    })
+}
+
+/// The smallest n ≥ `from` with `ok(n)`, by doubling then bisection
+/// (assumes `ok` monotone), `None` past [`MAX_SUBSTEPS`].
+fn smallest_meeting(ok: impl Fn(u64) -> bool, from: u64) -> Option<u64> {
+    if ok(from) {
+        return Some(from);
+    }
+    let mut lo = from;
+    let mut hi = from.max(1) * 2;
+    while !ok(hi) {
+        lo = hi;
+        hi *= 2;
+        if hi > MAX_SUBSTEPS {
+            return None;
+        }
+    }
+    while hi - lo > 1 {
+        let mid = lo + (hi - lo) / 2;
+        if ok(mid) {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    Some(hi)
+}
+
+/// The largest predicted drifts over `modes` (or the listed ones).
+fn predicted_errors(
+    a: &Analysed,
+    modes: &[Mode],
+    tick: f64,
+    n: u64,
+    target: &Target,
+    only: Option<&[usize]>,
+) -> Errors {
+    let mut e = Errors { phase_rad: 0.0, amplitude: 0.0 };
+    for (i, m) in modes.iter().enumerate() {
+        if only.is_some_and(|o| !o.contains(&i)) || m.ratio >= 1.0 {
+            continue;
+        }
+        if let Some(acc) = a.accuracy(m.omega / (tick * n as f64), m.ratio) {
+            let periods = m.hz() * target.periods;
+            e.phase_rad = e.phase_rad.max(acc.phase_drift(periods));
+            e.amplitude = e.amplitude.max(acc.amplitude_drift(periods));
+        }
+    }
+    e
+}
+
+/// The modes the check projects on: all when few, else the 12 whose
+/// predicted drifts are largest and the 4 lowest.
+fn checked_modes(a: &Analysed, modes: &[Mode], tick: f64, n: u64, target: &Target) -> Vec<usize> {
+    let osc: Vec<usize> = (0..modes.len()).filter(|&i| modes[i].ratio < 1.0).collect();
+    if osc.len() <= 16 {
+        return osc;
+    }
+    let err = |i: usize| predicted_errors(a, modes, tick, n, target, Some(&[i]));
+    let mut by_phase = osc.clone();
+    by_phase.sort_by(|&x, &y| err(y).phase_rad.total_cmp(&err(x).phase_rad));
+    let mut by_amp = osc.clone();
+    by_amp.sort_by(|&x, &y| err(y).amplitude.total_cmp(&err(x).amplitude));
+    let mut out: Vec<usize> =
+        by_phase[..6].iter().chain(&by_amp[..6]).chain(&osc[..4]).copied().collect();
+    out.sort_unstable();
+    out.dedup();
+    out
+}
+
+/// Samples per mode for the fit.
+const FIT_SAMPLES: usize = 200;
+
+/// Largest simulated work, steps × degrees of freedom.
+const SIM_WORK: f64 = 2e8;
+
+/// Simulates the whole scene at `n` substeps and fits each checked mode's
+/// per-step root from its projected sequence. Each mode is sampled every
+/// m-th step with m·Φ ≈ 1/2, so that the fitted recurrence is well
+/// conditioned however small the substep (the root of the sampled sequence
+/// is z^m).
+fn simulate_check(
+    a: &Analysed,
+    scene: &SceneFile,
+    modal: &Modal,
+    system: &System,
+    shapes: &[Vec<f64>],
+    n: u64,
+    target: &Target,
+) -> Option<Simulated> {
+    let modes = &modal.modes;
+    let tick = scene.tick_hz;
+    let checked = checked_modes(a, modes, tick, n, target);
+    if checked.is_empty() {
+        return None;
+    }
+    let t = 1.0 / (tick * n as f64);
+    let total_steps = (scene.duration_s * tick).round().max(1.0) as u64 * n;
+    let dim = system.n();
+    let stride: Vec<u64> =
+        checked.iter().map(|&i| ((0.5 / (modes[i].omega * t)).round() as u64).max(1)).collect();
+    let wanted = stride.iter().map(|m| m * FIT_SAMPLES as u64).max().unwrap_or(1);
+    let steps = total_steps.min(wanted).min((SIM_WORK / dim as f64) as u64).max(1);
+    let mut seqs: Vec<Vec<f64>> = vec![Vec::with_capacity(FIT_SAMPLES); checked.len()];
+    let how;
+    match a.spec.kernel {
+        Some(kernel) => {
+            how = "whole scene, system kernel".to_owned();
+            // Start: each checked mode with unit modal amplitude, at rest.
+            let mut y = vec![0.0; dim];
+            for &i in &checked {
+                for (yk, s) in y.iter_mut().zip(&shapes[i]) {
+                    *yk += s;
+                }
+            }
+            let w = if kernel.keeps_previous() { y.clone() } else { vec![0.0; dim] };
+            let mut state = VState { y, w };
+            for k in 0..=steps {
+                if k > 0 {
+                    vector::step(kernel, Sweep::Vector, system, t, &mut state);
+                }
+                for (j, &i) in checked.iter().enumerate() {
+                    if k % stride[j] == 0 && seqs[j].len() < FIT_SAMPLES {
+                        let q = shapes[i]
+                            .iter()
+                            .zip(&state.y)
+                            .zip(&system.mass)
+                            .map(|((p, y), m)| p * m * y)
+                            .sum();
+                        seqs[j].push(q);
+                    }
+                }
+            }
+        }
+        None => {
+            // A .zm file has no system form: each checked mode runs the
+            // compiled scalar step at its own (Phi, D).
+            how = "per mode, compiled .zm step".to_owned();
+            let m = &a.spec.method;
+            let y_slot = m
+                .slots()
+                .iter()
+                .position(|&(var, lag)| m.state()[var] == "y" && lag == 0)
+                .unwrap_or(0);
+            let start = check::numeric::initial_slots(m, |v| if v == "y" { 1.0 } else { 0.0 });
+            for (j, &i) in checked.iter().enumerate() {
+                let params = Params::phi(modes[i].omega * t).with("D", modes[i].ratio);
+                let step = Step::compile(m, &params).ok()?;
+                let mut st = step.state(&start);
+                seqs[j].push(st.slots()[y_slot]);
+                while seqs[j].len() < FIT_SAMPLES && (seqs[j].len() as u64) * stride[j] <= steps {
+                    step.advance(&mut st, stride[j]);
+                    seqs[j].push(st.slots()[y_slot]);
+                }
+            }
+        }
+    }
+    let mut sim = Errors { phase_rad: 0.0, amplitude: 0.0 };
+    let mut agree = true;
+    let mut fitted = 0;
+    for ((s, &i), &m_stride) in seqs.iter().zip(&checked).zip(&stride) {
+        let m = &modes[i];
+        let phi = m.omega * t;
+        let pred = predicted_errors(a, modes, tick, n, target, Some(&[i]));
+        // Fit where the mode is still well above rounding noise.
+        let psi_eff = phi * m_stride as f64;
+        let window = if m.ratio > 0.0 {
+            ((18.0 / (m.ratio * psi_eff)).ceil() as usize).max(16)
+        } else {
+            s.len()
+        };
+        let s = &s[..s.len().min(window)];
+        if s.len() < 16 {
+            continue;
+        }
+        let Some((psi_fit, ln_r_fit)) = fit_root(s) else {
+            // Real roots: no oscillation to fit; only a prediction of no
+            // oscillation agrees.
+            agree &= pred.phase_rad.is_infinite();
+            continue;
+        };
+        fitted += 1;
+        let (psi, ln_r) = (psi_fit / m_stride as f64, ln_r_fit / m_stride as f64);
+        let spring = Spring { damping: m.ratio };
+        let phase = total_steps as f64 * (psi - spring.psi_exact(phi)).abs();
+        let amp = (total_steps as f64 * (ln_r - spring.ln_r_exact(phi))).exp_m1().abs();
+        agree &= close(phase, pred.phase_rad, target.phase_tol)
+            && close(amp, pred.amplitude, target.amp_tol);
+        sim.phase_rad = sim.phase_rad.max(phase);
+        sim.amplitude = sim.amplitude.max(amp);
+    }
+    Some(Simulated {
+        phase_rad: sim.phase_rad,
+        amplitude: sim.amplitude,
+        agree: agree && fitted > 0,
+        how,
+        modes_checked: fitted,
+        steps,
+    })
+}
+
+/// Whether a simulated error agrees with its prediction.
+fn close(sim: f64, pred: f64, tol: f64) -> bool {
+    (sim - pred).abs() <= AGREE_FRACTION * tol + 1e-9 || (sim.is_infinite() && pred.is_infinite())
+}
+
+/// (Ψ, ln r) of the sequence's two-term recurrence q_{k+1} = a q_k + b q_{k−1},
+/// fitted by least squares; `None` when the sequence is too short or its
+/// roots are real.
+fn fit_root(q: &[f64]) -> Option<(f64, f64)> {
+    if q.len() < 4 {
+        return None;
+    }
+    let scale = q.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let (mut s11, mut s12, mut s22, mut r1, mut r2) = (0.0, 0.0, 0.0, 0.0, 0.0);
+    for k in 1..q.len() - 1 {
+        let (x1, x2, y) = (q[k] / scale, q[k - 1] / scale, q[k + 1] / scale);
+        s11 += x1 * x1;
+        s12 += x1 * x2;
+        s22 += x2 * x2;
+        r1 += x1 * y;
+        r2 += x2 * y;
+    }
+    let det = s11 * s22 - s12 * s12;
+    if det == 0.0 {
+        return None;
+    }
+    let a = (r1 * s22 - r2 * s12) / det;
+    let b = (s11 * r2 - s12 * r1) / det;
+    if b >= 0.0 || a * a + 4.0 * b >= 0.0 {
+        return None;
+    }
+    let r = (-b).sqrt();
+    Some(((a / (2.0 * r)).clamp(-1.0, 1.0).acos(), r.ln()))
+}
+
+/// The eigenvalues λ of the continuous system ẏ = v, v̇ = −M⁻¹(K y + C v)
+/// with Im λ ≥ 0.
+pub fn continuous_eigenvalues(sys: &System) -> Vec<C64> {
+    let n = sys.n();
+    let mut a = DMatrix::zeros(2 * n, 2 * n);
+    for i in 0..n {
+        a[(i, n + i)] = 1.0;
+        for &(j, k) in sys.k.row(i) {
+            a[(n + i, j)] = -k / sys.mass[i];
+        }
+        for &(j, c) in sys.c.row(i) {
+            a[(n + i, n + j)] = -c / sys.mass[i];
+        }
+    }
+    let mut l: Vec<C64> = check::witness::eigenvalues_nalgebra(&a)
+        .unwrap_or_default()
+        .into_iter()
+        .filter(|z| z.im >= 0.0)
+        .collect();
+    l.sort_by(|x, y| x.norm().total_cmp(&y.norm()));
+    l
+}
+
+/// For each λ, the eigenvalue μ of the full step nearest e^{λT}.
+fn matched(p: &DMatrix<f64>, lambdas: &[C64], t: f64) -> Option<Vec<C64>> {
+    let mu = check::witness::eigenvalues_faer(p).ok()?;
+    Some(
+        lambdas
+            .iter()
+            .map(|l| {
+                let e = (l * t).exp();
+                *mu.iter()
+                    .min_by(|x, y| (*x - e).norm().total_cmp(&(*y - e).norm()))
+                    .expect("eigenvalues")
+            })
+            .collect(),
+    )
+}
+
+/// Phase and amplitude errors over `duration` of the full step at `n`
+/// substeps: per λ, N·|arg μ − Im λ·T| and |e^{N(ln|μ| − Re λ·T)} − 1|.
+fn full_errors(
+    kernel: Kernel,
+    sys: &System,
+    lambdas: &[C64],
+    tick: f64,
+    n: u64,
+    duration: f64,
+) -> Option<Errors> {
+    let t = 1.0 / (tick * n as f64);
+    let steps = (duration * tick).round().max(1.0) * n as f64;
+    let mu = matched(&vector::step_matrix(kernel, Sweep::Vector, sys, t), lambdas, t)?;
+    Some(drifts(lambdas, &mu, t, steps))
+}
+
+fn drifts(lambdas: &[C64], mu: &[C64], t: f64, steps: f64) -> Errors {
+    let mut e = Errors { phase_rad: 0.0, amplitude: 0.0 };
+    for (l, m) in lambdas.iter().zip(mu) {
+        if l.im > 0.0 {
+            e.phase_rad = e.phase_rad.max(steps * (m.arg() - l.im * t).abs());
+        }
+        e.amplitude = e.amplitude.max((steps * (m.norm().ln() - l.re * t)).exp_m1().abs());
+    }
+    e
+}
+
+/// The full-step check: simulate the whole scene with the kernel, project
+/// the state on the full step's left eigenvectors (faer, of Pᵀ), and fit
+/// each projected sequence's ratio w_{k+m}/w_k.
+fn simulate_full(
+    kernel: Kernel,
+    sys: &System,
+    lambdas: &[C64],
+    tick: f64,
+    n: u64,
+    duration: f64,
+    target: &Target,
+) -> Option<Simulated> {
+    let t = 1.0 / (tick * n as f64);
+    let dim = sys.n();
+    let p = vector::step_matrix(kernel, Sweep::Vector, sys, t);
+    let pt = faer::Mat::<f64>::from_fn(2 * dim, 2 * dim, |i, j| p[(j, i)]);
+    let evd = pt.eigen().ok()?;
+    let (u, s) = (evd.U(), evd.S());
+    let total_steps = (duration * tick).round().max(1.0) * n as f64;
+    let mut mu_sim = Vec::new();
+    let mut state = VState {
+        y: vec![1.0; dim],
+        w: if kernel.keeps_previous() { vec![1.0; dim] } else { vec![0.0; dim] },
+    };
+    // Per λ: the left eigenvector's column and the sampling stride.
+    let mut plan = Vec::new();
+    for l in lambdas {
+        let e = (l * t).exp();
+        let col = (0..2 * dim).min_by(|&x, &y| (s[x] - e).norm().total_cmp(&(s[y] - e).norm()))?;
+        plan.push((col, ((0.5 / (l.norm() * t)).round() as u64).max(1)));
+    }
+    let max_stride = plan.iter().map(|p| p.1).max().unwrap_or(1);
+    let steps = (total_steps as u64)
+        .min(max_stride * FIT_SAMPLES as u64)
+        .min((SIM_WORK / dim as f64) as u64);
+    let mut seqs: Vec<Vec<C64>> = vec![Vec::with_capacity(FIT_SAMPLES); lambdas.len()];
+    for k in 0..=steps {
+        if k > 0 {
+            vector::step(kernel, Sweep::Vector, sys, t, &mut state);
+        }
+        for (seq, &(col, stride)) in seqs.iter_mut().zip(&plan) {
+            if k % stride == 0 && seq.len() < FIT_SAMPLES {
+                let w: C64 = (0..dim)
+                    .map(|i| u[(i, col)] * state.y[i] + u[(dim + i, col)] * state.w[i])
+                    .sum();
+                seq.push(w);
+            }
+        }
+    }
+    for ((l, w), &(_, stride)) in lambdas.iter().zip(&seqs).zip(&plan) {
+        let (mut num, mut den) = (C64::new(0.0, 0.0), 0.0);
+        let window = if l.re < 0.0 {
+            ((18.0 / (-l.re * t * stride as f64)).ceil() as usize).max(16)
+        } else {
+            w.len()
+        };
+        for k in 0..w.len().min(window).saturating_sub(1) {
+            num += w[k + 1] * w[k].conj();
+            den += w[k].norm_sqr();
+        }
+        if den == 0.0 || w.len() < 16 {
+            return None;
+        }
+        let ratio = num / den;
+        mu_sim.push(C64::from_polar(
+            ratio.norm().powf(1.0 / stride as f64),
+            ratio.arg() / stride as f64,
+        ));
+    }
+    let predicted = drifts(lambdas, &matched(&p, lambdas, t)?, t, total_steps);
+    let sim = drifts(lambdas, &mu_sim, t, total_steps);
+    Some(Simulated {
+        phase_rad: sim.phase_rad,
+        amplitude: sim.amplitude,
+        agree: close(sim.phase_rad, predicted.phase_rad, target.phase_tol)
+            && close(sim.amplitude, predicted.amplitude, target.amp_tol),
+        how: "whole scene, system kernel, projected on the full step's left eigenvectors"
+            .to_owned(),
+        modes_checked: lambdas.len(),
+        steps,
+    })
+}
+
+/// ρ of a full-step matrix by nalgebra and by faer.
+fn radii(p: &DMatrix<f64>) -> Option<(f64, f64)> {
+    let rad = |v: Vec<num_complex::Complex<f64>>| v.iter().map(|z| z.norm()).fold(0.0, f64::max);
+    let a = check::witness::eigenvalues_nalgebra(p).ok()?;
+    let b = check::witness::eigenvalues_faer(p).ok()?;
+    Some((rad(a), rad(b)))
+}
+
+/// Numeric tolerance on ρ of a full step: eigenvalues on the unit circle
+/// come out within a few hundred ulps of it for these small, well
+/// conditioned matrices.
+pub const FULL_RHO_TOL: f64 = 1e-12;
+
+/// The largest substep count a full-step search reports: beyond it a
+/// growth of ρ − 1 below [`FULL_RHO_TOL`] cannot be told from none (the
+/// exact analysis says "never" for Standard Euler; the numeric one would
+/// find a step with ρ − 1 < 1e-12).
+pub const MAX_FULL_SUBSTEPS: u64 = 1 << 16;
+
+/// Numeric stability of a full step: ρ ≤ 1 + [`FULL_RHO_TOL`] by both witnesses.
+fn full_ok(kernel: Kernel, sweep: Sweep, sys: &System, t: f64) -> bool {
+    radii(&vector::step_matrix(kernel, sweep, sys, t))
+        .is_some_and(|(a, b)| a <= 1.0 + FULL_RHO_TOL && b <= 1.0 + FULL_RHO_TOL)
+}
+
+/// The smallest n with a stable full step at T = 1/(tick·n), searched from
+/// a guess (assumes stability monotone in n).
+fn full_stable(kernel: Kernel, sweep: Sweep, sys: &System, tick: f64, guess: u64) -> Option<u64> {
+    let ok = |n: u64| full_ok(kernel, sweep, sys, 1.0 / (tick * n as f64));
+    if ok(guess) {
+        let (mut lo, mut hi) = (0u64, guess);
+        // Shrink: find the smallest ok n in [1, guess].
+        while hi - lo > 1 {
+            let mid = lo + (hi - lo) / 2;
+            if mid >= 1 && ok(mid) {
+                hi = mid;
+            } else {
+                lo = mid;
+            }
+        }
+        return Some(hi);
+    }
+    smallest_meeting(ok, guess).filter(|&n| n <= MAX_FULL_SUBSTEPS)
+}
+
+/// The Gauss–Seidel report of one built-in.
+fn sweep_report(
+    kernel: Kernel,
+    name: &str,
+    sys: &System,
+    tick: f64,
+    modal: Option<u64>,
+) -> anyhow::Result<SweepReport> {
+    if sys.n() > MAX_FULL_DOF {
+        anyhow::bail!(
+            "--sweep gauss-seidel: the scene has {} degrees of freedom: the full-step analysis takes at most {MAX_FULL_DOF}",
+            sys.n()
+        );
+    }
+    let gs = full_stable(kernel, Sweep::GaussSeidel, sys, tick, modal.unwrap_or(1));
+    let vec_n = full_stable(kernel, Sweep::Vector, sys, tick, modal.unwrap_or(1));
+    let at = modal.or(gs).unwrap_or(1);
+    let r = radii(&vector::step_matrix(kernel, Sweep::GaussSeidel, sys, 1.0 / (tick * at as f64)));
+    // Largest stable T for each order, by bisection on T.
+    let largest = |sweep: Sweep| -> Option<f64> {
+        let mut lo = 0.0;
+        let mut hi = 1.0 / tick;
+        if full_ok(kernel, sweep, sys, hi) {
+            return None;
+        }
+        let mut found = false;
+        for k in 1..40 {
+            let t = hi / 2f64.powi(k);
+            if full_ok(kernel, sweep, sys, t) {
+                lo = t;
+                hi = t * 2.0;
+                found = true;
+                break;
+            }
+        }
+        if !found {
+            return None;
+        }
+        for _ in 0..50 {
+            let mid = 0.5 * (lo + hi);
+            if full_ok(kernel, sweep, sys, mid) {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        Some(lo)
+    };
+    let ratio = match (largest(Sweep::GaussSeidel), largest(Sweep::Vector)) {
+        (Some(g), Some(v)) => Some(g / v),
+        _ => None,
+    };
+    Ok(SweepReport {
+        method: name.to_owned(),
+        substeps_modal: modal,
+        substeps_vector: vec_n,
+        substeps_gauss_seidel: gs,
+        rho_nalgebra: r.map(|x| x.0),
+        rho_faer: r.map(|x| x.1),
+        witnesses_agree: r.is_some_and(|(x, y)| (x - y).abs() <= 1e-9 * x.max(1.0)),
+        limit_ratio: ratio,
+    })
+}

@@ -1,0 +1,467 @@
+//! Modal reduction of a mass–spring scene: M ÿ + C ẏ + K y = 0.
+//!
+//! The generalised eigenproblem K φ = ω² M φ is solved in its symmetric
+//! form: with K̃ = M^{-1/2} K M^{-1/2} (M is diagonal), K̃ u = ω² u and
+//! φ = M^{-1/2} u, by faer's self-adjoint eigendecomposition. Each mode
+//! q̈ + 2ζω q̇ + ω² q = 0 is then the test equation of the (Φ, D) analysis
+//! with Φ = ωT and D = ζ.
+//!
+//! That holds exactly when the damping is *proportional*: C̃ = M^{-1/2} C
+//! M^{-1/2} is diagonal in the same basis, which for symmetric K̃ and C̃ is
+//! the commutation K̃C̃ = C̃K̃ (Caughey and O'Kelly). Rayleigh damping
+//! C = αM + βK is the common case, with ζ = α/(2ω) + βω/2. Otherwise the
+//! damping is *non-proportional*: the modes still get ζ = uᵀC̃u/(2ω) as a
+//! description, but the advisor decides stability on the assembled
+//! full-step matrix instead (see `vector`).
+//!
+//! Modes with ω = 0 (a free body, or a chain not tied to the ground) move
+//! rigidly: Φ = 0 for every step, so they limit nothing and are dropped.
+
+use faer::Side;
+
+use super::file::{Body, SceneFile};
+
+/// A symmetric sparse matrix: for each row, its `(column, value)` entries.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Sparse {
+    rows: Vec<Vec<(usize, f64)>>,
+}
+
+impl Sparse {
+    fn new(n: usize) -> Sparse {
+        Sparse { rows: vec![Vec::new(); n] }
+    }
+
+    fn add(&mut self, i: usize, j: usize, x: f64) {
+        match self.rows[i].iter_mut().find(|(c, _)| *c == j) {
+            Some(e) => e.1 += x,
+            None => self.rows[i].push((j, x)),
+        }
+    }
+
+    /// Adds a two-ended element (a spring or damper of coefficient `x`
+    /// between `a` and `b`, or from `a` to ground).
+    fn add_link(&mut self, a: usize, b: Option<usize>, x: f64) {
+        self.add(a, a, x);
+        if let Some(b) = b {
+            self.add(b, b, x);
+            self.add(a, b, -x);
+            self.add(b, a, -x);
+        }
+    }
+
+    /// Appends a row.
+    pub(crate) fn push_row(&mut self, row: Vec<(usize, f64)>) {
+        self.rows.push(row);
+    }
+
+    /// The size.
+    pub fn n(&self) -> usize {
+        self.rows.len()
+    }
+
+    /// Row i's entries.
+    pub fn row(&self, i: usize) -> &[(usize, f64)] {
+        &self.rows[i]
+    }
+
+    /// Whether every entry is zero.
+    pub fn is_zero(&self) -> bool {
+        self.rows.iter().all(|r| r.iter().all(|&(_, x)| x == 0.0))
+    }
+
+    /// (D A D) for the diagonal D = diag(d).
+    fn scaled(&self, d: &[f64]) -> Sparse {
+        Sparse {
+            rows: self
+                .rows
+                .iter()
+                .enumerate()
+                .map(|(i, r)| r.iter().map(|&(j, x)| (j, d[i] * x * d[j])).collect())
+                .collect(),
+        }
+    }
+
+    /// The largest absolute entry.
+    fn max_abs(&self) -> f64 {
+        self.rows.iter().flatten().fold(0.0, |m, &(_, x)| m.max(x.abs()))
+    }
+
+    /// A x.
+    pub fn mul_vec(&self, x: &[f64], out: &mut [f64]) {
+        for (o, r) in out.iter_mut().zip(&self.rows) {
+            *o = r.iter().map(|&(j, a)| a * x[j]).sum();
+        }
+    }
+
+    /// xᵀ A x.
+    fn quad(&self, x: &[f64]) -> f64 {
+        self.rows
+            .iter()
+            .enumerate()
+            .map(|(i, r)| x[i] * r.iter().map(|&(j, a)| a * x[j]).sum::<f64>())
+            .sum()
+    }
+
+    /// Whether A B is symmetric (A, B symmetric: whether they commute), to
+    /// `tol` relative to the largest entry of the product.
+    fn commutes_with(&self, b: &Sparse, tol: f64) -> bool {
+        let n = self.n();
+        let mut prod: Vec<std::collections::HashMap<usize, f64>> = vec![Default::default(); n];
+        for (i, row) in prod.iter_mut().enumerate() {
+            for &(k, a) in &self.rows[i] {
+                for &(j, x) in &b.rows[k] {
+                    *row.entry(j).or_insert(0.0) += a * x;
+                }
+            }
+        }
+        let scale = prod.iter().flat_map(|r| r.values()).fold(0.0f64, |m, x| m.max(x.abs()));
+        prod.iter().enumerate().all(|(i, r)| {
+            r.iter().all(|(&j, &x)| {
+                let y = prod[j].get(&i).copied().unwrap_or(0.0);
+                (x - y).abs() <= tol * scale.max(f64::MIN_POSITIVE)
+            })
+        })
+    }
+}
+
+/// M, K and C of a scene.
+#[derive(Clone, Debug, PartialEq)]
+pub struct System {
+    /// The masses (M is diagonal).
+    pub mass: Vec<f64>,
+    /// Stiffness.
+    pub k: Sparse,
+    /// Damping.
+    pub c: Sparse,
+}
+
+impl System {
+    /// Assembles M, K, C from the masses and springs of a scene.
+    pub fn assemble(masses: &[f64], springs: &[super::file::Spring]) -> System {
+        let n = masses.len();
+        let (mut k, mut c) = (Sparse::new(n), Sparse::new(n));
+        for s in springs {
+            k.add_link(s.a, s.b, s.stiffness);
+            if s.damping > 0.0 {
+                c.add_link(s.a, s.b, s.damping);
+            }
+        }
+        System { mass: masses.to_vec(), k, c }
+    }
+
+    /// Degrees of freedom.
+    pub fn n(&self) -> usize {
+        self.mass.len()
+    }
+}
+
+/// How the scene's damping relates to its modes.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+#[serde(rename_all = "snake_case", tag = "kind")]
+pub enum DampingKind {
+    /// No damping at all.
+    Undamped,
+    /// C = αM + βK.
+    Rayleigh {
+        /// Mass coefficient α, 1/s.
+        alpha: f64,
+        /// Stiffness coefficient β, s.
+        beta: f64,
+    },
+    /// C̃ commutes with K̃ but is not of Rayleigh form.
+    Proportional,
+    /// C̃ does not commute with K̃: the modes are coupled by the damping.
+    NonProportional,
+}
+
+use serde::Serialize;
+
+/// One mode of a scene.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Mode {
+    /// Undamped natural frequency ω, rad/s.
+    pub omega: f64,
+    /// Damping ratio ζ (a description only when the damping is
+    /// non-proportional).
+    pub ratio: f64,
+    /// φ = M^{-1/2} u with φᵀ M φ = 1, in physical coordinates (`None` for
+    /// a scene given as modes).
+    pub shape: Option<Vec<f64>>,
+}
+
+impl Mode {
+    /// Frequency in Hz.
+    pub fn hz(&self) -> f64 {
+        self.omega / (2.0 * std::f64::consts::PI)
+    }
+}
+
+/// A scene reduced to its modes.
+#[derive(Clone, Debug)]
+pub struct Modal {
+    /// The assembled system (`None` for a scene given as modes).
+    pub system: Option<System>,
+    /// The modes with ω > 0, increasing ω.
+    pub modes: Vec<Mode>,
+    /// Rigid-body modes dropped (ω = 0).
+    pub rigid: usize,
+    /// The damping's structure.
+    pub damping: DampingKind,
+}
+
+/// Why a scene could not be reduced.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ModalError(String);
+
+impl std::fmt::Display for ModalError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for ModalError {}
+
+/// Relative tolerance of the structural tests (Rayleigh fit, commutation,
+/// rigid modes): a few hundred ulps of the largest entry.
+const STRUCTURE_TOL: f64 = 1e-10;
+
+/// Reduces a scene to its modes, with mode shapes.
+pub fn reduce(scene: &SceneFile) -> Result<Modal, ModalError> {
+    reduce_with(scene, Shapes::Compute)
+}
+
+/// Whether [`reduce_with`] computes mode shapes (eigenvectors): the check
+/// by simulation needs them, and so do ratios under proportional but not
+/// Rayleigh damping; frequencies alone need eigenvalues only.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Shapes {
+    /// Eigenvectors too.
+    Compute,
+    /// Only when the ratios need them.
+    WhenNeeded,
+}
+
+/// Reduces a scene to its modes.
+pub fn reduce_with(scene: &SceneFile, shapes: Shapes) -> Result<Modal, ModalError> {
+    match &scene.body {
+        Body::Modes(list) => {
+            let mut modes: Vec<Mode> = list
+                .iter()
+                .map(|m| Mode {
+                    omega: 2.0 * std::f64::consts::PI * m.hz,
+                    ratio: m.ratio,
+                    shape: None,
+                })
+                .collect();
+            modes.sort_by(|a, b| a.omega.total_cmp(&b.omega));
+            let damping = if modes.iter().all(|m| m.ratio == 0.0) {
+                DampingKind::Undamped
+            } else {
+                DampingKind::Proportional
+            };
+            Ok(Modal { system: None, modes, rigid: 0, damping })
+        }
+        Body::Springs { masses, springs } => {
+            let m: Vec<f64> = masses.iter().map(|m| m.kg).collect();
+            reduce_system_with(System::assemble(&m, springs), shapes)
+        }
+    }
+}
+
+/// Reduces an assembled system to its modes, with shapes.
+pub fn reduce_system(system: System) -> Result<Modal, ModalError> {
+    reduce_system_with(system, Shapes::Compute)
+}
+
+/// Reduces an assembled system to its modes.
+pub fn reduce_system_with(system: System, shapes: Shapes) -> Result<Modal, ModalError> {
+    let n = system.n();
+    let inv_sqrt: Vec<f64> = system.mass.iter().map(|m| 1.0 / m.sqrt()).collect();
+    let kt = system.k.scaled(&inv_sqrt);
+    let ct = system.c.scaled(&inv_sqrt);
+    let damping = damping_kind(&kt, &ct);
+    // Ratios from eigenvectors are needed unless the damping is zero or
+    // Rayleigh; the verification simulation needs shapes in any case.
+    let mut dense = faer::Mat::<f64>::zeros(n, n);
+    for i in 0..n {
+        for &(j, x) in kt.row(i) {
+            dense[(i, j)] = x;
+        }
+    }
+    let vectors = shapes == Shapes::Compute || damping == DampingKind::Proportional;
+    let fail = |e: faer::linalg::evd::EvdError| {
+        ModalError(format!("the eigenproblem K phi = w^2 M phi did not converge: {e:?}"))
+    };
+    let (s, u) = if vectors {
+        let evd = dense.self_adjoint_eigen(Side::Lower).map_err(fail)?;
+        let s: Vec<f64> = (0..n).map(|i| evd.S()[i]).collect();
+        (s, Some(evd.U().to_owned()))
+    } else {
+        (dense.self_adjoint_eigenvalues(Side::Lower).map_err(fail)?, None)
+    };
+    let lambda_max = s.iter().copied().fold(0.0f64, f64::max);
+    let mut modes = Vec::with_capacity(n);
+    let mut rigid = 0;
+    let mut col = vec![0.0; n];
+    for i in 0..n {
+        let lambda = s[i];
+        if lambda <= STRUCTURE_TOL * lambda_max {
+            rigid += 1;
+            continue;
+        }
+        let omega = lambda.sqrt();
+        if let Some(u) = &u {
+            for (r, c) in col.iter_mut().enumerate() {
+                *c = u[(r, i)];
+            }
+        }
+        let ratio = match damping {
+            DampingKind::Undamped => 0.0,
+            DampingKind::Rayleigh { alpha, beta } => alpha / (2.0 * omega) + beta * omega / 2.0,
+            _ => ct.quad(&col) / (2.0 * omega),
+        };
+        let shape = u.is_some().then(|| col.iter().zip(&inv_sqrt).map(|(x, d)| x * d).collect());
+        modes.push(Mode { omega, ratio, shape });
+    }
+    if damping == DampingKind::NonProportional {
+        // Coupled by the damping: the modes are the continuous system's
+        // complex eigenvalues λ = −ζω ± jω√(1−ζ²), ω = |λ|, ζ = −Re λ/|λ|
+        // (real λ, overdamped, count as ζ = 1).
+        let lambdas = super::advisor::continuous_eigenvalues(&system);
+        modes = lambdas
+            .iter()
+            .filter(|l| l.norm() > 0.0)
+            .map(|l| Mode {
+                omega: l.norm(),
+                ratio: if l.im > 0.0 { -l.re / l.norm() } else { 1.0 },
+                shape: None,
+            })
+            .collect();
+    }
+    Ok(Modal { system: Some(system), modes, rigid, damping })
+}
+
+/// Classifies the damping: zero, Rayleigh (C̃ = αI + βK̃, fitted on the
+/// entries), commuting, or non-proportional.
+fn damping_kind(kt: &Sparse, ct: &Sparse) -> DampingKind {
+    if ct.is_zero() {
+        return DampingKind::Undamped;
+    }
+    // β from the off-diagonal entries, α from the diagonal.
+    let n = kt.n();
+    let (mut num, mut den) = (0.0, 0.0);
+    for i in 0..n {
+        for &(j, c) in ct.row(i) {
+            if i != j {
+                let k = kt.row(i).iter().find(|e| e.0 == j).map_or(0.0, |e| e.1);
+                num += c * k;
+                den += k * k;
+            }
+        }
+    }
+    let beta = if den > 0.0 { num / den } else { 0.0 };
+    let diag = |a: &Sparse, i: usize| a.row(i).iter().find(|e| e.0 == i).map_or(0.0, |e| e.1);
+    let alpha = (0..n).map(|i| diag(ct, i) - beta * diag(kt, i)).sum::<f64>() / n as f64;
+    let scale = ct.max_abs();
+    let fits = (0..n).all(|i| {
+        let mut ok = true;
+        let mut seen_diag = false;
+        for &(j, c) in ct.row(i) {
+            let k = kt.row(i).iter().find(|e| e.0 == j).map_or(0.0, |e| e.1);
+            let model = beta * k + if i == j { alpha } else { 0.0 };
+            seen_diag |= i == j;
+            ok &= (c - model).abs() <= STRUCTURE_TOL * scale;
+        }
+        for &(j, k) in kt.row(i) {
+            if !ct.row(i).iter().any(|e| e.0 == j) {
+                let model = beta * k + if i == j { alpha } else { 0.0 };
+                ok &= model.abs() <= STRUCTURE_TOL * scale;
+            }
+        }
+        if !seen_diag {
+            ok &= (alpha + beta * diag(kt, i)).abs() <= STRUCTURE_TOL * scale;
+        }
+        ok
+    });
+    if fits && alpha >= -STRUCTURE_TOL * scale && beta >= 0.0 {
+        return DampingKind::Rayleigh { alpha: alpha.max(0.0), beta };
+    }
+    if kt.commutes_with(ct, STRUCTURE_TOL) {
+        DampingKind::Proportional
+    } else {
+        DampingKind::NonProportional
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::file::SceneFile;
+
+    fn chain(n: usize, tail: &str) -> String {
+        let mut s = String::from("tick_hz = 60\n");
+        for i in 0..n {
+            s += &format!("[[mass]]\nname = \"m{i}\"\nkg = {}\n", 1.0 + i as f64);
+        }
+        for i in 0..n {
+            let prev = if i == 0 { "ground".to_owned() } else { format!("m{}", i - 1) };
+            s += &format!(
+                "[[spring]]\nbetween = [\"{prev}\", \"m{i}\"]\nstiffness = {}\n{tail}",
+                100.0 * (i + 1) as f64
+            );
+        }
+        s
+    }
+
+    /// Each mode satisfies K φ = ω² M φ and φᵀ M φ = 1 (reconstruction, to
+    /// a few hundred ulps of ‖K‖).
+    #[test]
+    fn modes_solve_the_generalised_problem() {
+        for n in [1, 2, 3, 8] {
+            let modal = reduce(&SceneFile::parse("c.toml", &chain(n, "")).unwrap()).unwrap();
+            let sys = modal.system.as_ref().unwrap();
+            assert_eq!(modal.modes.len(), n);
+            let scale = sys.k.max_abs();
+            for m in &modal.modes {
+                let phi = m.shape.as_ref().unwrap();
+                let mut kphi = vec![0.0; n];
+                sys.k.mul_vec(phi, &mut kphi);
+                for i in 0..n {
+                    let r = kphi[i] - m.omega * m.omega * sys.mass[i] * phi[i];
+                    assert!(r.abs() <= 500.0 * f64::EPSILON * scale, "n {n}: residual {r}");
+                }
+                let norm: f64 = phi.iter().zip(&sys.mass).map(|(x, m)| m * x * x).sum();
+                assert!((norm - 1.0).abs() < 1e-12, "{norm}");
+            }
+        }
+    }
+
+    /// Dampers parallel to every spring, c = βk, are Rayleigh with α = 0;
+    /// a lone damper on one link of a chain is non-proportional.
+    #[test]
+    fn damping_structure_is_detected() {
+        let scene = SceneFile::parse("c.toml", &chain(4, "")).unwrap();
+        let Body::Springs { masses, mut springs } = scene.body else { panic!() };
+        let m: Vec<f64> = masses.iter().map(|m| m.kg).collect();
+        for s in &mut springs {
+            s.damping = 0.01 * s.stiffness;
+        }
+        let r = reduce_system(System::assemble(&m, &springs)).unwrap();
+        match r.damping {
+            DampingKind::Rayleigh { alpha, beta } => {
+                assert!(alpha.abs() < 1e-9 && (beta - 0.01).abs() < 1e-12, "{alpha} {beta}")
+            }
+            d => panic!("{d:?}"),
+        }
+        for m in &r.modes {
+            assert!((m.ratio - 0.005 * m.omega).abs() < 1e-12);
+        }
+        for s in &mut springs {
+            s.damping = 0.0;
+        }
+        springs[2].damping = 3.0;
+        let r = reduce_system(System::assemble(&m, &springs)).unwrap();
+        assert_eq!(r.damping, DampingKind::NonProportional);
+    }
+}
