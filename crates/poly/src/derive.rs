@@ -17,7 +17,7 @@
 
 use crate::error::{Error, ErrorKind, Span};
 use crate::method::{Method, Operand};
-use crate::{Poly, PolyMatrix, Sym};
+use crate::{Poly, PolyMatrix, SparsePolyMatrix, Sym};
 
 /// Everything derived from one method.
 #[derive(Clone, Debug)]
@@ -26,7 +26,8 @@ pub struct Derivation {
     pub method: Method,
     /// M as a polynomial matrix in w = z⁻¹ (see [`w`]); one row and column per
     /// assignment, plus one per state variable the step never assigns.
-    pub z_matrix: PolyMatrix,
+    /// Stored by rows: it is mostly zero.
+    pub z_matrix: SparsePolyMatrix,
     /// The transition matrix P over the augmented state
     /// ([`Method::slots`] order).
     pub transition_matrix: PolyMatrix,
@@ -134,19 +135,20 @@ fn carried_unknowns(m: &Method) -> Vec<usize> {
         .collect()
 }
 
-/// Route (a): M(w) with w = z⁻¹.
-pub fn z_matrix(m: &Method) -> PolyMatrix {
+/// Route (a): M(w) with w = z⁻¹, stored by rows (a program of n lines has
+/// an n×n matrix with O(n) nonzeros).
+pub fn z_matrix(m: &Method) -> SparsePolyMatrix {
     let n_assign = m.assigns().len();
     let unknown_of = carried_unknowns(m);
     let n = n_assign + unknown_of.iter().filter(|&&u| u >= n_assign).count();
     let wp = Poly::sym(w());
-    let mut mat = PolyMatrix::identity(n);
+    let mut mat = SparsePolyMatrix::identity(n);
     for (s, a) in m.assigns().iter().enumerate() {
         for (op, c) in &a.terms {
             match *op {
-                Operand::Stmt(t) => mat[(s, t)] -= c,
+                Operand::Stmt(t) => mat.add_to(s, t, &-c),
                 Operand::Start { var, lag } => {
-                    mat[(s, unknown_of[var])] -= &(c * &wp.pow(lag + 1));
+                    mat.add_to(s, unknown_of[var], &-(c * &wp.pow(lag + 1)));
                 }
             }
         }
@@ -154,22 +156,77 @@ pub fn z_matrix(m: &Method) -> PolyMatrix {
     // A variable the step never assigns keeps its value: x_i = z⁻¹ x_i.
     for (v, &u) in unknown_of.iter().enumerate() {
         if m.final_assign(v).is_none() {
-            mat[(u, u)] -= &wp;
+            mat.add_to(u, u, &-&wp);
         }
     }
     mat
 }
 
-/// det M, by Gaussian elimination on the unknowns that no later step reads
-/// (temporaries and overwritten values). Their diagonal entry is 1 and stays
-/// 1 (w only ever enters the columns of the carried unknowns), so each is a
-/// unit pivot: subtracting multiples of its row clears its column without
-/// division and keeps the determinant, and expanding along the cleared column
-/// drops the pivot's row and column. What remains is one row and column per
-/// state variable, whose determinant Berkowitz computes. A program with
-/// hundreds of temporaries (RK4 on a spring chain) thus costs a determinant
-/// of the size of its state, not of its listing.
-fn det_z_matrix(mut mat: PolyMatrix, carried: &[usize]) -> Poly {
+/// The Schur complement of M on its carried unknowns, by forward
+/// substitution over M's rows: an unknown that no later step reads
+/// (a temporary or an overwritten value) has a unit diagonal and reads only
+/// earlier unknowns, so its row expresses it through the carried ones
+/// without division, and the complement has the same determinant as M (the
+/// eliminated block is unit lower triangular). One row and column per
+/// state variable remain, in state order. The cost is linear in the number
+/// of nonzeros of M times the number of state variables.
+///
+/// `None` when M does not have that shape (an unknown read before its own
+/// row, or a diagonal other than 1 off the carried unknowns); the caller
+/// then eliminates on the dense matrix.
+fn reduce_z_matrix(mat: &SparsePolyMatrix, carried: &[usize]) -> Option<PolyMatrix> {
+    let n = mat.rows();
+    let s = carried.len();
+    let mut carried_index = vec![None; n];
+    for (v, &c) in carried.iter().enumerate() {
+        carried_index[c] = Some(v);
+    }
+    // Each eliminated unknown as a combination of the carried ones.
+    let mut value: Vec<Option<Vec<Poly>>> = vec![None; n];
+    let mut reduced = PolyMatrix::zeros(s, s);
+    for row in 0..n {
+        let mut acc = vec![Poly::zero(); s];
+        let mut diagonal_is_one = false;
+        for (j, x) in mat.row_entries(row) {
+            if let Some(v) = carried_index[*j] {
+                acc[v] += x;
+            } else if *j == row {
+                diagonal_is_one = x.is_one();
+            } else {
+                let earlier = value[*j].as_ref()?;
+                for (a, y) in acc.iter_mut().zip(earlier) {
+                    if y.is_zero() {
+                        continue;
+                    }
+                    if x.is_one() {
+                        *a += y;
+                    } else {
+                        *a += &(x * y);
+                    }
+                }
+            }
+        }
+        match carried_index[row] {
+            Some(v) => {
+                for (k, a) in acc.into_iter().enumerate() {
+                    reduced[(v, k)] = a;
+                }
+            }
+            // Row: u_row + Σ x_j u_j = 0, so u_row = −Σ x_j u_j.
+            None if diagonal_is_one => {
+                value[row] = Some(acc.into_iter().map(|a| -a).collect());
+            }
+            None => return None,
+        }
+    }
+    Some(reduced)
+}
+
+/// det M on the dense matrix, by Gaussian elimination on the unknowns that
+/// no later step reads, then sparse Berkowitz on what remains: the slow
+/// route (a), the oracle the tests hold [`reduce_z_matrix`] and the fast
+/// determinants against, and the fallback for a matrix of another shape.
+fn det_z_matrix_dense(mut mat: PolyMatrix, carried: &[usize]) -> Poly {
     let n = mat.rows();
     let mut kept: Vec<usize> = Vec::new();
     let mut removed = vec![false; n];
@@ -196,16 +253,38 @@ fn det_z_matrix(mut mat: PolyMatrix, carried: &[usize]) -> Poly {
     let rest = PolyMatrix::from_rows(
         kept.iter().map(|&i| kept.iter().map(|&j| mat[(i, j)].clone()).collect()).collect(),
     );
-    rest.det()
+    let c = rest.charpoly_berkowitz_sparse();
+    let det = c.last().cloned().unwrap_or_else(Poly::one);
+    if rest.rows() % 2 == 1 {
+        -det
+    } else {
+        det
+    }
 }
 
 /// Route (a)'s characteristic polynomial, z^N det M(1/z).
 pub fn charpoly_z_route(m: &Method) -> Result<Poly, Error> {
-    charpoly_from_z_matrix(m, z_matrix(m))
+    charpoly_from_z_matrix(m, &z_matrix(m))
 }
 
-fn charpoly_from_z_matrix(m: &Method, mat: PolyMatrix) -> Result<Poly, Error> {
-    let det = det_z_matrix(mat, &carried_unknowns(m));
+/// Route (a) the slow, obvious way: elimination on the dense M and sparse
+/// Berkowitz. Quadratic in the program's length; for tests only.
+#[doc(hidden)]
+pub fn charpoly_z_route_dense(m: &Method) -> Result<Poly, Error> {
+    let det = det_z_matrix_dense(z_matrix(m).to_dense(), &carried_unknowns(m));
+    charpoly_from_det(m, &det)
+}
+
+fn charpoly_from_z_matrix(m: &Method, mat: &SparsePolyMatrix) -> Result<Poly, Error> {
+    let carried = carried_unknowns(m);
+    let det = match reduce_z_matrix(mat, &carried) {
+        Some(reduced) => reduced.det(),
+        None => det_z_matrix_dense(mat.to_dense(), &carried),
+    };
+    charpoly_from_det(m, &det)
+}
+
+fn charpoly_from_det(m: &Method, det: &Poly) -> Result<Poly, Error> {
     let mut coeffs = det.coeffs_in(w());
     let n = m.order();
     if coeffs.len() > n + 1 {
@@ -225,9 +304,8 @@ fn charpoly_from_z_matrix(m: &Method, mat: PolyMatrix) -> Result<Poly, Error> {
 pub fn transition_matrix(m: &Method) -> PolyMatrix {
     let slots = m.slots();
     let n = slots.len();
-    let slot_of = |var: usize, lag: u32| {
-        slots.iter().position(|&s| s == (var, lag)).expect("lag within the method's history")
-    };
+    let slot_of: std::collections::HashMap<(usize, u32), usize> =
+        slots.iter().enumerate().map(|(k, &s)| (s, k)).collect();
     let unit = |k: usize| {
         let mut v = vec![Poly::zero(); n];
         v[k] = Poly::one();
@@ -237,14 +315,20 @@ pub fn transition_matrix(m: &Method) -> PolyMatrix {
     for a in m.assigns() {
         let mut acc = vec![Poly::zero(); n];
         for (op, c) in &a.terms {
-            let src = match *op {
-                Operand::Stmt(t) => values[t].clone(),
-                Operand::Start { var, lag } => unit(slot_of(var, lag)),
-            };
-            for (x, s) in acc.iter_mut().zip(&src) {
-                if !s.is_zero() {
-                    *x += &(c * s);
+            match *op {
+                Operand::Stmt(t) => {
+                    for (x, s) in acc.iter_mut().zip(&values[t]) {
+                        if s.is_zero() {
+                            continue;
+                        }
+                        if c.is_one() {
+                            *x += s;
+                        } else {
+                            *x += &(c * s);
+                        }
+                    }
                 }
+                Operand::Start { var, lag } => acc[slot_of[&(var, lag)]] += c,
             }
         }
         values.push(acc);
@@ -254,10 +338,10 @@ pub fn transition_matrix(m: &Method) -> PolyMatrix {
         let new = if lag == 0 {
             match m.final_assign(var) {
                 Some(t) => values[t].clone(),
-                None => unit(slot_of(var, 0)),
+                None => unit(slot_of[&(var, 0)]),
             }
         } else {
-            unit(slot_of(var, lag - 1))
+            unit(slot_of[&(var, lag - 1)])
         };
         for (col, x) in new.into_iter().enumerate() {
             p[(row, col)] = x;
@@ -299,7 +383,7 @@ pub fn derive_source(file: &str, src: &str) -> Result<Derivation, Error> {
 /// ```
 pub fn derive(method: &Method) -> Result<Derivation, Error> {
     let z_matrix = z_matrix(method);
-    let a = charpoly_from_z_matrix(method, z_matrix.clone())?;
+    let a = charpoly_from_z_matrix(method, &z_matrix)?;
     let transition_matrix = transition_matrix(method);
     let b = charpoly_state_route(&transition_matrix);
     if a != b {

@@ -54,6 +54,14 @@ impl Monomial {
         &self.0
     }
 
+    /// The product of `sym^exp` over distinct symbols, in any order; zero
+    /// exponents are dropped.
+    pub(crate) fn from_factors(mut factors: Vec<(Sym, u32)>) -> Monomial {
+        factors.retain(|&(_, e)| e > 0);
+        factors.sort_unstable();
+        Monomial(factors)
+    }
+
     /// This monomial with `sym` removed.
     pub fn without(&self, sym: Sym) -> Monomial {
         Monomial(self.0.iter().copied().filter(|&(s, _)| s != sym).collect())
@@ -111,6 +119,9 @@ impl Poly {
     pub fn parse(src: &str) -> Result<Poly, crate::Error> {
         crate::syntax::parse_poly(src).map_err(|e| e.located("<expression>", src))
     }
+
+    /// The zero polynomial, as a constant.
+    pub(crate) const ZERO: Poly = Poly { terms: BTreeMap::new() };
 
     /// The zero polynomial.
     pub fn zero() -> Poly {

@@ -384,7 +384,7 @@ fn check_program(prog: &Program, phi: Q, k: Q) {
     assert_eq!(a, b, "routes disagree on\n{src}");
     // The z route eliminates temporaries before its determinant; on small
     // programs, hold it against Berkowitz on the whole of M.
-    let m_full = poly::z_matrix(&method);
+    let m_full = poly::z_matrix(&method).to_dense();
     if m_full.rows() <= 6 {
         let det = m_full.det();
         let z = Poly::sym(Sym::z());
