@@ -278,7 +278,7 @@ pub fn charpoly_z_route_dense(m: &Method) -> Result<Poly, Error> {
 fn charpoly_from_z_matrix(m: &Method, mat: &SparsePolyMatrix) -> Result<Poly, Error> {
     let carried = carried_unknowns(m);
     let det = match reduce_z_matrix(mat, &carried) {
-        Some(reduced) => reduced.det(),
+        Some(reduced) => reduced.det_pencil(w()),
         None => det_z_matrix_dense(mat.to_dense(), &carried),
     };
     charpoly_from_det(m, &det)

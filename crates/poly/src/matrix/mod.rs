@@ -32,7 +32,7 @@ mod sparse;
 
 pub use sparse::SparsePolyMatrix;
 
-use crate::Poly;
+use crate::{Poly, Sym};
 
 /// A dense `rows × cols` matrix of [`Poly`] entries.
 #[derive(Clone, PartialEq, Eq)]
@@ -120,6 +120,16 @@ impl PolyMatrix {
     pub fn charpoly_modular(&self) -> Option<Vec<Poly>> {
         assert_eq!(self.rows, self.cols, "charpoly of a non-square matrix");
         modular::charpoly(self)
+    }
+
+    /// The determinant of a matrix whose entries have degree at most 1 in
+    /// `w` (a pencil B₀ + w·B₁), by the modular path's pencil job: per point
+    /// of the other symbols, one elimination and one Hessenberg reduction
+    /// give every coefficient in `w`. Falls back to [`PolyMatrix::det`].
+    #[track_caller]
+    pub fn det_pencil(&self, w: Sym) -> Poly {
+        assert_eq!(self.rows, self.cols, "determinant of a non-square matrix");
+        modular::det_linear_in(self, w).unwrap_or_else(|| self.det())
     }
 
     /// The determinant by the modular path alone, `None` when its grid

@@ -222,6 +222,9 @@ type Entry = Vec<(Vec<u32>, BigInt)>;
 struct Integral {
     n: usize,
     vars: Vec<Sym>,
+    /// Per symbol, 2 when the entries were rewritten in its square (see
+    /// [`halve`]), else 1: exponent `e` of the result stands for `spread·e`.
+    spread: Vec<u32>,
     entries: Vec<Entry>,
     /// Per symbol, the largest exponent in any entry.
     max_exp: Vec<u32>,
@@ -232,25 +235,23 @@ struct Integral {
 }
 
 /// The symbols of a matrix, the one of lowest entry degree last (it is
-/// evaluated innermost, by Horner).
-fn symbols(a: &PolyMatrix) -> Vec<Sym> {
+/// evaluated innermost, by Horner), or `last` when given.
+fn symbols(a: &PolyMatrix, last: Option<Sym>) -> Vec<Sym> {
     let set: BTreeSet<Sym> = a.data.iter().flat_map(|e| e.symbols()).collect();
-    let mut vars: Vec<Sym> = set.into_iter().collect();
+    let mut vars: Vec<Sym> = set.into_iter().filter(|&s| Some(s) != last).collect();
     let max_deg = |s: Sym| a.data.iter().map(|e| e.degree_in(s)).max().unwrap_or(0);
     vars.sort_by_key(|&s| std::cmp::Reverse(max_deg(s)));
+    vars.extend(last);
     vars
 }
 
 /// `a` with row `i` scaled by `scale[i]`, as integer entries, and the
 /// bounds of the module docs. `per_minor` adds the `2^n` of a sum over
-/// principal minors.
-fn integral(a: &PolyMatrix, scale: &[BigInt], per_minor: bool) -> Integral {
+/// principal minors. Every symbol but `keep` is halved where it can be.
+fn integral(a: &PolyMatrix, scale: &[BigInt], per_minor: bool, keep: Option<Sym>) -> Integral {
     let n = a.rows;
-    let vars = symbols(a);
+    let vars = symbols(a, keep);
     let mut entries = Vec::with_capacity(n * n);
-    let mut max_exp = vec![0u32; vars.len()];
-    let mut row_deg = vec![vec![0usize; n]; vars.len()];
-    let mut col_deg = vec![vec![0usize; n]; vars.len()];
     let mut bits = 2u64;
     for i in 0..n {
         let mut h2 = BigInt::zero();
@@ -259,11 +260,6 @@ fn integral(a: &PolyMatrix, scale: &[BigInt], per_minor: bool) -> Integral {
             let mut norm = BigInt::zero();
             for (m, c) in a[(i, j)].terms() {
                 let exps: Vec<u32> = vars.iter().map(|&s| m.exponent(s)).collect();
-                for (v, &e) in exps.iter().enumerate() {
-                    max_exp[v] = max_exp[v].max(e);
-                    row_deg[v][i] = row_deg[v][i].max(e as usize);
-                    col_deg[v][j] = col_deg[v][j].max(e as usize);
-                }
                 let x = c.numer() * (&scale[i] / c.denom());
                 norm += x.abs();
                 entry.push((exps, x));
@@ -277,10 +273,93 @@ fn integral(a: &PolyMatrix, scale: &[BigInt], per_minor: bool) -> Integral {
     if per_minor {
         bits += n as u64;
     }
+    let spread = (0..vars.len())
+        .map(|v| if Some(vars[v]) != keep && halve(n, &mut entries, v) { 2 } else { 1 })
+        .collect();
+    let mut max_exp = vec![0u32; vars.len()];
+    let mut row_deg = vec![vec![0usize; n]; vars.len()];
+    let mut col_deg = vec![vec![0usize; n]; vars.len()];
+    for (slot, entry) in entries.iter().enumerate() {
+        let (i, j) = (slot / n, slot % n);
+        for (exps, _) in entry {
+            for (v, &e) in exps.iter().enumerate() {
+                max_exp[v] = max_exp[v].max(e);
+                row_deg[v][i] = row_deg[v][i].max(e as usize);
+                col_deg[v][j] = col_deg[v][j].max(e as usize);
+            }
+        }
+    }
     let degree = (0..vars.len())
         .map(|v| row_deg[v].iter().sum::<usize>().min(col_deg[v].iter().sum()))
         .collect();
-    Integral { n, vars, entries, max_exp, degree, bits }
+    Integral { n, vars, spread, entries, max_exp, degree, bits }
+}
+
+/// The parity reduction in symbol `v`, in place; false (and nothing
+/// changed) when it does not apply or gains nothing.
+///
+/// When a diagonal similarity `D = diag(x^s_i)`, `s_i ∈ {0, 1}`, turns `A`
+/// into `B = D⁻¹AD` with only even powers of `x`, then `B(x) = C(x²)`, and
+/// `det A = det B` and `det(yI − A) = det(yI − B)` are those of `C` with
+/// `x²` for its symbol: the same answer from entries of half the degree.
+/// Such an `s` exists exactly when every entry's exponents of `x` share one
+/// parity `p_ij` and `s_i + s_j ≡ p_ij (mod 2)` is solvable, which is the
+/// shape of mechanical systems in Phi (positions even, velocities odd).
+fn halve(n: usize, entries: &mut [Entry], v: usize) -> bool {
+    let mut parity = vec![None; n * n];
+    let mut top = 0;
+    for (slot, entry) in entries.iter().enumerate() {
+        let mut exps = entry.iter().map(|(e, _)| e[v]);
+        if let Some(first) = exps.next() {
+            top = top.max(first);
+            for e in exps {
+                if e % 2 != first % 2 {
+                    return false;
+                }
+                top = top.max(e);
+            }
+            parity[slot] = Some(first % 2);
+        }
+    }
+    if top < 2 {
+        return false;
+    }
+    // Solve s_i + s_j ≡ p_ij over each connected component, from s = 0 at
+    // its first index.
+    let mut shift: Vec<Option<u32>> = vec![None; n];
+    let mut stack = Vec::new();
+    for root in 0..n {
+        if shift[root].is_some() {
+            continue;
+        }
+        shift[root] = Some(0);
+        stack.push(root);
+        while let Some(i) = stack.pop() {
+            let si = shift[i].unwrap_or(0);
+            for j in 0..n {
+                for p in [parity[i * n + j], parity[j * n + i]].into_iter().flatten() {
+                    let want = (p + si) % 2;
+                    match shift[j] {
+                        None => {
+                            shift[j] = Some(want);
+                            stack.push(j);
+                        }
+                        Some(sj) if sj != want => return false,
+                        Some(_) => {}
+                    }
+                }
+            }
+        }
+    }
+    // Entry (i, j) of B is x^(s_j − s_i) A_ij, whose exponents are even and
+    // non-negative (s_i = 1, s_j = 0 forces odd exponents, so ≥ 1).
+    for (slot, entry) in entries.iter_mut().enumerate() {
+        let (si, sj) = (shift[slot / n].unwrap_or(0), shift[slot % n].unwrap_or(0));
+        for (exps, _) in entry {
+            exps[v] = (exps[v] + sj - si) / 2;
+        }
+    }
+    true
 }
 
 /// The lcm of the denominators of some polynomials.
@@ -303,6 +382,10 @@ enum Job {
     Det,
     /// det(xI − B): `n + 1` values per point, `c_0..c_n`.
     Charpoly,
+    /// det B where B = B₀ + w·B₁ is linear in its innermost symbol w: at
+    /// each point of the other symbols, the coefficients in w at once (see
+    /// [`pencil_mod`]) instead of values at `deg_w + 1` points.
+    Pencil,
 }
 
 /// Residues, per prime, of the result's integer coefficients: slot
@@ -314,7 +397,7 @@ fn residues(b: &Integral, job: Job, f: Field) -> Vec<u64> {
     let sizes: Vec<usize> = b.degree.iter().map(|d| d + 1).collect();
     let grid: usize = sizes.iter().product();
     let outputs = match job {
-        Job::Det => 1,
+        Job::Det | Job::Pencil => 1,
         Job::Charpoly => n + 1,
     };
     let mut out = vec![0u64; outputs * grid];
@@ -336,6 +419,9 @@ fn residues(b: &Integral, job: Job, f: Field) -> Vec<u64> {
             }
             t
         })
+        .collect();
+    let inverses: Vec<u64> = (0..=sizes.iter().copied().max().unwrap_or(1))
+        .map(|k| if k == 0 { 0 } else { f.inv(f.from_u64(k as u64)) })
         .collect();
     // The innermost symbol is evaluated by Horner on each entry's dense
     // coefficients in it; the others once per outer point.
@@ -366,6 +452,20 @@ fn residues(b: &Integral, job: Job, f: Field) -> Vec<u64> {
                 *d = f.add(*d, x);
             }
         }
+        let base = outer * inner_size;
+        if job == Job::Pencil {
+            let (b0, b1) = split_pencil(&dense, inner_width, n);
+            if let Some(c) = pencil_mod(f, b0, b1, n, &mut scratch) {
+                for (k, &x) in c.iter().enumerate() {
+                    if k < inner_size {
+                        out[base + k] = x;
+                    } else {
+                        debug_assert_eq!(x, 0, "degree in w above its bound");
+                    }
+                }
+                continue;
+            }
+        }
         for point in 0..inner_size {
             let xm = inner.map_or(0, |_| f.from_u64(point as u64));
             for (slot, m) in mat.iter_mut().enumerate() {
@@ -376,9 +476,9 @@ fn residues(b: &Integral, job: Job, f: Field) -> Vec<u64> {
                 }
                 *m = acc;
             }
-            let idx = outer * inner_size + point;
+            let idx = base + point;
             match job {
-                Job::Det => out[idx] = det_mod(f, &mut mat, n),
+                Job::Det | Job::Pencil => out[idx] = det_mod(f, &mut mat, n),
                 Job::Charpoly => {
                     let c = charpoly_mod(f, &mut mat, n, &mut scratch);
                     for (k, &x) in c.iter().enumerate() {
@@ -387,14 +487,21 @@ fn residues(b: &Integral, job: Job, f: Field) -> Vec<u64> {
                 }
             }
         }
+        if job == Job::Pencil {
+            // This outer point fell back to values in w: interpolate them
+            // now, since the pass below skips the w axis.
+            interpolate(f, &mut out[base..base + inner_size], &inverses);
+        }
     }
     // Values on the grid to coefficients, one symbol at a time.
-    let inverses: Vec<u64> =
-        (0..=sizes.iter().copied().max().unwrap_or(1)).map(|k| if k == 0 { 0 } else { f.inv(f.from_u64(k as u64)) }).collect();
+    let axes = match job {
+        Job::Pencil => nv - 1,
+        Job::Det | Job::Charpoly => nv,
+    };
     let mut line = Vec::new();
     for block in out.chunks_mut(grid) {
         let mut stride = grid;
-        for &size in &sizes {
+        for &size in &sizes[..axes] {
             stride /= size;
             // Lines along this symbol: `stride` apart, `size` long.
             for start in 0..grid {
@@ -411,6 +518,58 @@ fn residues(b: &Integral, job: Job, f: Field) -> Vec<u64> {
         }
     }
     out
+}
+
+/// The coefficient matrices of w⁰ and w¹ of a pencil, from the dense
+/// per-entry coefficients in w (`width` = 1 or 2 per entry).
+fn split_pencil(dense: &[u64], width: usize, n: usize) -> (Vec<u64>, Vec<u64>) {
+    let b0 = (0..n * n).map(|s| dense[s * width]).collect();
+    let b1 = (0..n * n).map(|s| if width > 1 { dense[s * width + 1] } else { 0 }).collect();
+    (b0, b1)
+}
+
+/// The coefficients in w, lowest first, of det(B₀ + w·B₁) over `F_p`, or
+/// `None` when B₀ is singular. With C = −B₀⁻¹B₁,
+/// det(B₀ + wB₁) = det B₀ · det(I − wC) = det B₀ · Σ_k c_k(C) w^k, where
+/// det(xI − C) = Σ c_k x^(n−k): one elimination and one Hessenberg reduction
+/// instead of `n + 1` eliminations at points in w.
+fn pencil_mod(f: Field, mut b0: Vec<u64>, mut b1: Vec<u64>, n: usize, scratch: &mut Scratch) -> Option<Vec<u64>> {
+    // Gauss–Jordan on [B₀ | B₁]: B₀ to I, B₁ to B₀⁻¹B₁.
+    let mut det = f.one();
+    for c in 0..n {
+        let r = (c..n).find(|&r| b0[r * n + c] != 0)?;
+        if r != c {
+            for j in 0..n {
+                b0.swap(r * n + j, c * n + j);
+                b1.swap(r * n + j, c * n + j);
+            }
+            det = f.neg(det);
+        }
+        let pivot = b0[c * n + c];
+        det = f.mul(det, pivot);
+        let inv = f.inv(pivot);
+        for j in 0..n {
+            b0[c * n + j] = f.mul(b0[c * n + j], inv);
+            b1[c * n + j] = f.mul(b1[c * n + j], inv);
+        }
+        for r in 0..n {
+            let x = b0[r * n + c];
+            if r == c || x == 0 {
+                continue;
+            }
+            for j in c..n {
+                b0[r * n + j] = f.sub(b0[r * n + j], f.mul(x, b0[c * n + j]));
+            }
+            for j in 0..n {
+                b1[r * n + j] = f.sub(b1[r * n + j], f.mul(x, b1[c * n + j]));
+            }
+        }
+    }
+    for x in &mut b1 {
+        *x = f.neg(*x);
+    }
+    let c = charpoly_mod(f, &mut b1, n, scratch);
+    Some(c.into_iter().map(|x| f.mul(x, det)).collect())
 }
 
 /// Values at the points 0, 1, ..., len−1 to coefficients, lowest first, in
@@ -637,7 +796,7 @@ fn to_poly(b: &Integral, ints: &[Option<BigInt>], den: &BigInt) -> Poly {
         let mut rest = idx;
         let mut factors = Vec::with_capacity(b.vars.len());
         for v in (0..b.vars.len()).rev() {
-            factors.push((b.vars[v], (rest % sizes[v]) as u32));
+            factors.push((b.vars[v], b.spread[v] * (rest % sizes[v]) as u32));
             rest /= sizes[v];
         }
         Some((Q::new(c.clone(), den.clone()), Monomial::from_factors(factors)))
@@ -652,8 +811,23 @@ pub(crate) fn det(a: &PolyMatrix) -> Option<Poly> {
     }
     let scale: Vec<BigInt> =
         (0..n).map(|i| denominator_lcm(a.row(i).iter())).collect();
-    let b = integral(a, &scale, false);
+    let b = integral(a, &scale, false, None);
     let ints = solve(&b, Job::Det)?;
+    let den = scale.iter().fold(BigInt::one(), |acc, l| acc * l);
+    Some(to_poly(&b, &ints, &den))
+}
+
+/// `det a` for a matrix whose entries have degree at most 1 in `w`, by
+/// [`Job::Pencil`] (any degree falls back to [`det`]); `None` when the grid
+/// would be too large.
+pub(crate) fn det_linear_in(a: &PolyMatrix, w: Sym) -> Option<Poly> {
+    let n = a.rows;
+    if n == 0 || a.data.iter().any(|e| e.degree_in(w) > 1) || a.data.iter().all(|e| e.degree_in(w) == 0) {
+        return det(a);
+    }
+    let scale: Vec<BigInt> = (0..n).map(|i| denominator_lcm(a.row(i).iter())).collect();
+    let b = integral(a, &scale, false, Some(w));
+    let ints = solve(&b, Job::Pencil)?;
     let den = scale.iter().fold(BigInt::one(), |acc, l| acc * l);
     Some(to_poly(&b, &ints, &den))
 }
@@ -663,7 +837,7 @@ pub(crate) fn det(a: &PolyMatrix) -> Option<Poly> {
 pub(crate) fn charpoly(a: &PolyMatrix) -> Option<Vec<Poly>> {
     let n = a.rows;
     let l = denominator_lcm(a.data.iter());
-    let b = integral(a, &vec![l.clone(); n], true);
+    let b = integral(a, &vec![l.clone(); n], true, None);
     let ints = solve(&b, Job::Charpoly)?;
     let grid = ints.len() / (n + 1);
     let mut den = BigInt::one();

@@ -184,6 +184,41 @@ proptest! {
     }
 }
 
+/// An n×n pencil A + w·B over Phi and D, w = `1/z` as the z route has it;
+/// `unit` makes A the identity (the shape route (a) meets), else A is
+/// random and often singular at some points (the fallback to values in w).
+fn pencil(n: usize, unit: bool) -> impl Strategy<Value = PolyMatrix> {
+    let entry = || prop_oneof![1 => Just(Poly::zero()), 2 => poly_in(2, 3)];
+    (proptest::collection::vec(entry(), n * n), proptest::collection::vec(entry(), n * n)).prop_map(
+        move |(a, b)| {
+            let w = Poly::sym(poly::w());
+            let rows = (0..n)
+                .map(|i| {
+                    (0..n)
+                        .map(|j| {
+                            let a = if unit { Poly::int((i == j) as i64) } else { a[i * n + j].clone() };
+                            &a + &(&w * &b[i * n + j])
+                        })
+                        .collect()
+                })
+                .collect();
+            PolyMatrix::from_rows(rows)
+        },
+    )
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(48))]
+
+    /// The pencil job (coefficients in w from B₀⁻¹B₁) against Laplace.
+    #[test]
+    fn pencil_determinants_match_laplace(
+        a in (1usize..=5, any::<bool>()).prop_flat_map(|(n, unit)| pencil(n, unit))
+    ) {
+        prop_assert_eq!(a.det_pencil(poly::w()), a.det_laplace());
+    }
+}
+
 /// The modular determinant against Laplace on matrices with a zero column
 /// of pivots (singular modulo every prime at every point) and on the empty
 /// matrix.
