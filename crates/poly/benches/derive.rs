@@ -165,10 +165,14 @@ fn bench_chains(c: &mut Criterion) {
             b.iter(|| black_box(poly::derive(black_box(&m)).expect("routes agree")))
         });
         group.bench_function(format!("rk4_{n}/z_route"), |b| {
-            b.iter(|| black_box(poly::charpoly_z_route(black_box(&m)).expect("degree within order")))
+            b.iter(|| {
+                black_box(poly::charpoly_z_route(black_box(&m)).expect("degree within order"))
+            })
         });
         group.bench_function(format!("rk4_{n}/state_route"), |b| {
-            b.iter(|| black_box(poly::charpoly_state_route(&poly::transition_matrix(black_box(&m)))))
+            b.iter(|| {
+                black_box(poly::charpoly_state_route(&poly::transition_matrix(black_box(&m))))
+            })
         });
     }
     let src = programs::temporary_chain(100_000);

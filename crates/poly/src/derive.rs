@@ -14,6 +14,16 @@
 //!
 //! The routes share nothing but the lowered program and the determinant
 //! code, and [`derive`] refuses to answer when they disagree.
+//!
+//! **Cost.** Both routes are linear in the program's length: M is stored by
+//! rows ([`SparsePolyMatrix`]) and its temporaries are eliminated by forward
+//! substitution, the state route executes each line once. What remains is
+//! one determinant of the size of the state: route (a)'s is a pencil
+//! B₀ + w·B₁ in w and the parameters, route (b)'s a characteristic
+//! polynomial in the parameters, both taken by the modular path of
+//! [`crate::matrix`] (evaluation modulo primes, interpolation, CRT) unless
+//! the dense `i128` Berkowitz finishes first. [`charpoly_z_route_dense`]
+//! keeps the old, quadratic route (a) as the tests' oracle.
 
 use crate::error::{Error, ErrorKind, Span};
 use crate::method::{Method, Operand};
@@ -142,17 +152,25 @@ pub fn z_matrix(m: &Method) -> SparsePolyMatrix {
     let unknown_of = carried_unknowns(m);
     let n = n_assign + unknown_of.iter().filter(|&&u| u >= n_assign).count();
     let wp = Poly::sym(w());
-    let mut mat = SparsePolyMatrix::identity(n);
+    let deepest = m.history().iter().copied().max().unwrap_or(0);
+    let w_pow: Vec<Poly> = (0..=deepest).map(|lag| wp.pow(lag + 1)).collect();
+    let mut rows: Vec<Vec<(usize, Poly)>> = Vec::with_capacity(n);
     for (s, a) in m.assigns().iter().enumerate() {
+        let mut row: Vec<(usize, Poly)> = Vec::with_capacity(a.terms.len() + 1);
+        row.push((s, Poly::one()));
         for (op, c) in &a.terms {
-            match *op {
-                Operand::Stmt(t) => mat.add_to(s, t, &-c),
-                Operand::Start { var, lag } => {
-                    mat.add_to(s, unknown_of[var], &-(c * &wp.pow(lag + 1)));
-                }
-            }
+            row.push(match *op {
+                Operand::Stmt(t) => (t, -c),
+                Operand::Start { var, lag } => (unknown_of[var], -(c * &w_pow[lag as usize])),
+            });
         }
+        rows.push(row);
     }
+    rows.resize_with(n, Vec::new);
+    for (u, row) in rows.iter_mut().enumerate().skip(n_assign) {
+        row.push((u, Poly::one()));
+    }
+    let mut mat = SparsePolyMatrix::from_row_entries(n, rows);
     // A variable the step never assigns keeps its value: x_i = z⁻¹ x_i.
     for (v, &u) in unknown_of.iter().enumerate() {
         if m.final_assign(v).is_none() {
@@ -181,6 +199,14 @@ fn reduce_z_matrix(mat: &SparsePolyMatrix, carried: &[usize]) -> Option<PolyMatr
     for (v, &c) in carried.iter().enumerate() {
         carried_index[c] = Some(v);
     }
+    // The last row reading each unknown, so that its value is dropped
+    // once read for the last time.
+    let mut last_read = vec![0; n];
+    for row in 0..n {
+        for (j, _) in mat.row_entries(row) {
+            last_read[*j] = row;
+        }
+    }
     // Each eliminated unknown as a combination of the carried ones.
     let mut value: Vec<Option<Vec<Poly>>> = vec![None; n];
     let mut reduced = PolyMatrix::zeros(s, s);
@@ -203,6 +229,9 @@ fn reduce_z_matrix(mat: &SparsePolyMatrix, carried: &[usize]) -> Option<PolyMatr
                     } else {
                         *a += &(x * y);
                     }
+                }
+                if last_read[*j] == row {
+                    value[*j] = None;
                 }
             }
         }
@@ -311,8 +340,23 @@ pub fn transition_matrix(m: &Method) -> PolyMatrix {
         v[k] = Poly::one();
         v
     };
+    // The last assignment reading each value (values carried to the next
+    // step are read at the end, so they are never dropped early).
+    let mut last_read = vec![usize::MAX; m.assigns().len()];
+    for (s, a) in m.assigns().iter().enumerate() {
+        for (op, _) in &a.terms {
+            if let Operand::Stmt(t) = *op {
+                last_read[t] = s;
+            }
+        }
+    }
+    for var in 0..m.state().len() {
+        if let Some(t) = m.final_assign(var) {
+            last_read[t] = usize::MAX;
+        }
+    }
     let mut values: Vec<Vec<Poly>> = Vec::with_capacity(m.assigns().len());
-    for a in m.assigns() {
+    for (s, a) in m.assigns().iter().enumerate() {
         let mut acc = vec![Poly::zero(); n];
         for (op, c) in &a.terms {
             match *op {
@@ -329,6 +373,13 @@ pub fn transition_matrix(m: &Method) -> PolyMatrix {
                     }
                 }
                 Operand::Start { var, lag } => acc[slot_of[&(var, lag)]] += c,
+            }
+        }
+        for (op, _) in &a.terms {
+            if let Operand::Stmt(t) = *op {
+                if last_read[t] == s {
+                    values[t] = Vec::new();
+                }
             }
         }
         values.push(acc);

@@ -87,14 +87,24 @@ impl Lin {
     fn is_scalar(&self) -> bool {
         self.terms.is_empty()
     }
+    /// `self + other` (`sign` 1) or `self − other` (`sign` −1), reusing
+    /// `other`'s coefficients rather than multiplying them by the sign.
     fn add(mut self, other: Lin, sign: i64) -> Lin {
-        let s = Poly::int(sign);
-        self.scalar += &(&other.scalar * &s);
+        let signed = |p: Poly| if sign < 0 { -p } else { p };
+        if !other.scalar.is_zero() {
+            self.scalar += &signed(other.scalar);
+        }
         for (op, c) in other.terms {
-            let e = self.terms.entry(op).or_insert_with(Poly::zero);
-            *e += &(&c * &s);
-            if e.is_zero() {
-                self.terms.remove(&op);
+            match self.terms.entry(op) {
+                std::collections::btree_map::Entry::Vacant(e) => {
+                    e.insert(signed(c));
+                }
+                std::collections::btree_map::Entry::Occupied(mut e) => {
+                    *e.get_mut() += &signed(c);
+                    if e.get().is_zero() {
+                        e.remove();
+                    }
+                }
             }
         }
         self

@@ -296,4 +296,3 @@ impl fmt::Debug for PolyMatrix {
         fmt::Display::fmt(self, f)
     }
 }
-

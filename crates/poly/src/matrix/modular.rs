@@ -200,7 +200,8 @@ fn is_prime(n: u64) -> bool {
 /// per process).
 pub(crate) fn primes(count: usize) -> Vec<u64> {
     static PRIMES: OnceLock<Mutex<Vec<u64>>> = OnceLock::new();
-    let mut list = PRIMES.get_or_init(|| Mutex::new(Vec::new())).lock().unwrap_or_else(|e| e.into_inner());
+    let mut list =
+        PRIMES.get_or_init(|| Mutex::new(Vec::new())).lock().unwrap_or_else(|e| e.into_inner());
     let mut candidate = list.last().map_or((1u64 << 62) - 1, |&p| p - 2);
     while list.len() < count {
         if is_prime(candidate) {
@@ -533,7 +534,13 @@ fn split_pencil(dense: &[u64], width: usize, n: usize) -> (Vec<u64>, Vec<u64>) {
 /// det(B₀ + wB₁) = det B₀ · det(I − wC) = det B₀ · Σ_k c_k(C) w^k, where
 /// det(xI − C) = Σ c_k x^(n−k): one elimination and one Hessenberg reduction
 /// instead of `n + 1` eliminations at points in w.
-fn pencil_mod(f: Field, mut b0: Vec<u64>, mut b1: Vec<u64>, n: usize, scratch: &mut Scratch) -> Option<Vec<u64>> {
+fn pencil_mod(
+    f: Field,
+    mut b0: Vec<u64>,
+    mut b1: Vec<u64>,
+    n: usize,
+    scratch: &mut Scratch,
+) -> Option<Vec<u64>> {
     // Gauss–Jordan on [B₀ | B₁]: B₀ to I, B₁ to B₀⁻¹B₁.
     let mut det = f.one();
     for c in 0..n {
@@ -767,8 +774,7 @@ fn solve(b: &Integral, job: Job) -> Option<Vec<Option<BigInt>>> {
     let count = (b.bits + 1).div_ceil(BITS_PER_PRIME) as usize;
     let primes = primes(count);
     let crt = Crt::new(&primes);
-    let per_prime: Vec<Vec<u64>> =
-        crt.fields.iter().map(|&f| residues(b, job, f)).collect();
+    let per_prime: Vec<Vec<u64>> = crt.fields.iter().map(|&f| residues(b, job, f)).collect();
     let len = per_prime[0].len();
     let mut r = vec![0u64; primes.len()];
     Some(
@@ -809,8 +815,7 @@ pub(crate) fn det(a: &PolyMatrix) -> Option<Poly> {
     if n == 0 {
         return Some(Poly::one());
     }
-    let scale: Vec<BigInt> =
-        (0..n).map(|i| denominator_lcm(a.row(i).iter())).collect();
+    let scale: Vec<BigInt> = (0..n).map(|i| denominator_lcm(a.row(i).iter())).collect();
     let b = integral(a, &scale, false, None);
     let ints = solve(&b, Job::Det)?;
     let den = scale.iter().fold(BigInt::one(), |acc, l| acc * l);
@@ -822,7 +827,10 @@ pub(crate) fn det(a: &PolyMatrix) -> Option<Poly> {
 /// would be too large.
 pub(crate) fn det_linear_in(a: &PolyMatrix, w: Sym) -> Option<Poly> {
     let n = a.rows;
-    if n == 0 || a.data.iter().any(|e| e.degree_in(w) > 1) || a.data.iter().all(|e| e.degree_in(w) == 0) {
+    if n == 0
+        || a.data.iter().any(|e| e.degree_in(w) > 1)
+        || a.data.iter().all(|e| e.degree_in(w) == 0)
+    {
         return det(a);
     }
     let scale: Vec<BigInt> = (0..n).map(|i| denominator_lcm(a.row(i).iter())).collect();
@@ -861,10 +869,15 @@ mod tests {
     fn montgomery_arithmetic_matches_u128_arithmetic() {
         for &p in &primes(3) {
             let f = Field::new(p);
-            for (a, b) in [(0u64, 5u64), (1, 1), (p - 1, p - 1), (123_456_789, p - 2), (p / 3, p / 2)] {
+            for (a, b) in
+                [(0u64, 5u64), (1, 1), (p - 1, p - 1), (123_456_789, p - 2), (p / 3, p / 2)]
+            {
                 let want = ((u128::from(a) * u128::from(b)) % u128::from(p)) as u64;
                 assert_eq!(f.to_u64(f.mul(f.from_u64(a), f.from_u64(b))), want);
-                assert_eq!(f.to_u64(f.add(f.from_u64(a), f.from_u64(b))), ((u128::from(a) + u128::from(b)) % u128::from(p)) as u64);
+                assert_eq!(
+                    f.to_u64(f.add(f.from_u64(a), f.from_u64(b))),
+                    ((u128::from(a) + u128::from(b)) % u128::from(p)) as u64
+                );
             }
             let x = f.from_u64(987_654_321);
             assert_eq!(f.to_u64(f.mul(x, f.inv(x))), 1);

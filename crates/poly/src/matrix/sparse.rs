@@ -32,7 +32,34 @@ impl SparsePolyMatrix {
 
     /// The identity matrix.
     pub fn identity(n: usize) -> SparsePolyMatrix {
-        SparsePolyMatrix { rows: n, cols: n, entries: (0..n).map(|i| vec![(i, Poly::one())]).collect() }
+        SparsePolyMatrix {
+            rows: n,
+            cols: n,
+            entries: (0..n).map(|i| vec![(i, Poly::one())]).collect(),
+        }
+    }
+
+    /// From each row's `(column, entry)` pairs in any order; entries of one
+    /// column are summed and zeros dropped.
+    #[track_caller]
+    pub fn from_row_entries(cols: usize, rows: Vec<Vec<(usize, Poly)>>) -> SparsePolyMatrix {
+        let entries = rows
+            .into_iter()
+            .map(|mut row| {
+                assert!(row.iter().all(|(j, _)| *j < cols), "column out of bounds");
+                row.sort_by_key(|(j, _)| *j);
+                let mut out: Vec<(usize, Poly)> = Vec::with_capacity(row.len());
+                for (j, p) in row {
+                    match out.last_mut() {
+                        Some((k, q)) if *k == j => *q += &p,
+                        _ => out.push((j, p)),
+                    }
+                }
+                out.retain(|(_, p)| !p.is_zero());
+                out
+            })
+            .collect::<Vec<_>>();
+        SparsePolyMatrix { rows: entries.len(), cols, entries }
     }
 
     /// The number of rows.
@@ -117,7 +144,12 @@ impl From<&PolyMatrix> for SparsePolyMatrix {
             cols: m.cols(),
             entries: (0..m.rows())
                 .map(|i| {
-                    m.row(i).iter().enumerate().filter(|(_, p)| !p.is_zero()).map(|(j, p)| (j, p.clone())).collect()
+                    m.row(i)
+                        .iter()
+                        .enumerate()
+                        .filter(|(_, p)| !p.is_zero())
+                        .map(|(j, p)| (j, p.clone()))
+                        .collect()
                 })
                 .collect(),
         }

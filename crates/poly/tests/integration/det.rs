@@ -158,7 +158,9 @@ fn companion_matrices_recover_their_polynomial() {
 /// An n×n matrix over Phi, D and z with entries zero a third of the time,
 /// coefficients up to `2^bits` (so the modular path needs several primes).
 fn wide_matrix(n: usize, bits: u32) -> impl Strategy<Value = PolyMatrix> {
-    let big = move |p: Poly, k: i64| &p * &Poly::constant(poly::Q::from_integer(num_bigint::BigInt::from(k) << bits));
+    let big = move |p: Poly, k: i64| {
+        &p * &Poly::constant(poly::Q::from_integer(num_bigint::BigInt::from(k) << bits))
+    };
     let entry = prop_oneof![1 => Just(Poly::zero()), 2 => (poly_in(3, 3), -3i64..=3).prop_map(move |(p, k)| &p + &big(p.clone(), k))];
     proptest::collection::vec(entry, n * n)
         .prop_map(move |d| PolyMatrix::from_rows(d.chunks(n).map(<[Poly]>::to_vec).collect()))
@@ -196,7 +198,11 @@ fn pencil(n: usize, unit: bool) -> impl Strategy<Value = PolyMatrix> {
                 .map(|i| {
                     (0..n)
                         .map(|j| {
-                            let a = if unit { Poly::int((i == j) as i64) } else { a[i * n + j].clone() };
+                            let a = if unit {
+                                Poly::int((i == j) as i64)
+                            } else {
+                                a[i * n + j].clone()
+                            };
                             &a + &(&w * &b[i * n + j])
                         })
                         .collect()
@@ -226,7 +232,9 @@ proptest! {
 fn modular_determinants_of_degenerate_matrices() {
     let parse = |rows: &[&[&str]]| {
         PolyMatrix::from_rows(
-            rows.iter().map(|r| r.iter().map(|e| Poly::parse(e).expect("parses")).collect()).collect(),
+            rows.iter()
+                .map(|r| r.iter().map(|e| Poly::parse(e).expect("parses")).collect())
+                .collect(),
         )
     };
     for m in [
