@@ -111,16 +111,16 @@ impl Field {
     }
 
     /// The Montgomery residue of an integer.
-    pub(crate) fn from_u64(self, a: u64) -> u64 {
+    pub(crate) fn lift(self, a: u64) -> u64 {
         self.mul(a % self.p, self.r2)
     }
 
-    fn from_big(self, x: &BigInt) -> u64 {
+    fn lift_big(self, x: &BigInt) -> u64 {
         let r = match x.to_i128() {
             Some(v) => v.rem_euclid(i128::from(self.p)) as u64,
             None => x.mod_floor(&BigInt::from(self.p)).to_u64().expect("a residue fits"),
         };
-        self.from_u64(r)
+        self.lift(r)
     }
 
     /// The integer in `0..p` of a Montgomery residue.
@@ -129,7 +129,7 @@ impl Field {
     }
 
     pub(crate) fn one(self) -> u64 {
-        self.from_u64(1)
+        self.lift(1)
     }
 
     fn pow(self, mut a: u64, mut e: u64) -> u64 {
@@ -159,7 +159,7 @@ fn is_prime(n: u64) -> bool {
     }
     const BASES: [u64; 12] = [2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37];
     for &b in &BASES {
-        if n % b == 0 {
+        if n.is_multiple_of(b) {
             return n == b;
         }
     }
@@ -404,14 +404,14 @@ fn residues(b: &Integral, job: Job, f: Field) -> Vec<u64> {
     let mut out = vec![0u64; outputs * grid];
     // The entries' coefficients modulo p.
     let coeffs: Vec<Vec<u64>> =
-        b.entries.iter().map(|e| e.iter().map(|(_, c)| f.from_big(c)).collect()).collect();
+        b.entries.iter().map(|e| e.iter().map(|(_, c)| f.lift_big(c)).collect()).collect();
     // Powers of each grid coordinate: pow[v][(point, e)].
     let pow: Vec<Vec<u64>> = (0..nv)
         .map(|v| {
             let w = b.max_exp[v] as usize + 1;
             let mut t = vec![0u64; sizes[v] * w];
             for x in 0..sizes[v] {
-                let xm = f.from_u64(x as u64);
+                let xm = f.lift(x as u64);
                 let mut acc = f.one();
                 for e in 0..w {
                     t[x * w + e] = acc;
@@ -422,7 +422,7 @@ fn residues(b: &Integral, job: Job, f: Field) -> Vec<u64> {
         })
         .collect();
     let inverses: Vec<u64> = (0..=sizes.iter().copied().max().unwrap_or(1))
-        .map(|k| if k == 0 { 0 } else { f.inv(f.from_u64(k as u64)) })
+        .map(|k| if k == 0 { 0 } else { f.inv(f.lift(k as u64)) })
         .collect();
     // The innermost symbol is evaluated by Horner on each entry's dense
     // coefficients in it; the others once per outer point.
@@ -468,7 +468,7 @@ fn residues(b: &Integral, job: Job, f: Field) -> Vec<u64> {
             }
         }
         for point in 0..inner_size {
-            let xm = inner.map_or(0, |_| f.from_u64(point as u64));
+            let xm = inner.map_or(0, |_| f.lift(point as u64));
             for (slot, m) in mat.iter_mut().enumerate() {
                 let cs = &dense[slot * inner_width..(slot + 1) * inner_width];
                 let mut acc = 0;
@@ -506,7 +506,7 @@ fn residues(b: &Integral, job: Job, f: Field) -> Vec<u64> {
             stride /= size;
             // Lines along this symbol: `stride` apart, `size` long.
             for start in 0..grid {
-                if (start / stride) % size != 0 {
+                if !(start / stride).is_multiple_of(size) {
                     continue;
                 }
                 line.clear();
@@ -583,9 +583,9 @@ fn pencil_mod(
 /// place: Newton's divided differences, then the Newton form expanded.
 fn interpolate(f: Field, v: &mut [u64], inverses: &[u64]) {
     let d = v.len();
-    for j in 1..d {
+    for (j, &inv) in inverses.iter().enumerate().take(d).skip(1) {
         for i in (j..d).rev() {
-            v[i] = f.mul(f.sub(v[i], v[i - 1]), inverses[j]);
+            v[i] = f.mul(f.sub(v[i], v[i - 1]), inv);
         }
     }
     // p = c_{d-1}; p = p·(x − (i)) + c_i for i = d−2 down to 0.
@@ -593,7 +593,7 @@ fn interpolate(f: Field, v: &mut [u64], inverses: &[u64]) {
     v.fill(0);
     v[0] = newton[d - 1];
     for i in (0..d - 1).rev() {
-        let xi = f.from_u64(i as u64);
+        let xi = f.lift(i as u64);
         // p·x − xi·p + c_i, highest first so each slot reads the old value.
         for k in (1..d).rev() {
             v[k] = f.sub(v[k - 1], f.mul(xi, v[k]));
@@ -729,7 +729,7 @@ impl Crt {
         let mut inv_prefix = Vec::new();
         let mut p_mod = Vec::new();
         for (j, &f) in fields.iter().enumerate() {
-            let row: Vec<u64> = primes[..j].iter().map(|&p| f.from_u64(p)).collect();
+            let row: Vec<u64> = primes[..j].iter().map(|&p| f.lift(p)).collect();
             let prod = row.iter().fold(f.one(), |acc, &x| f.mul(acc, x));
             inv_prefix.push(f.inv(prod));
             p_mod.push(row);
@@ -743,14 +743,14 @@ impl Crt {
     fn reconstruct(&self, residues: &[u64]) -> BigInt {
         let m = self.primes.len();
         let mut digits = Vec::with_capacity(m);
-        for j in 0..m {
+        for (j, &residue) in residues.iter().enumerate().take(m) {
             let f = self.fields[j];
             // (v_0 + v_1 p_0 + ... ) mod p_j, by Horner from the top digit.
             let mut acc = 0u64;
             for i in (0..j).rev() {
-                acc = f.add(f.mul(acc, self.p_mod[j][i]), f.from_u64(digits[i]));
+                acc = f.add(f.mul(acc, self.p_mod[j][i]), f.lift(digits[i]));
             }
-            let v = f.mul(f.sub(residues[j], acc), self.inv_prefix[j]);
+            let v = f.mul(f.sub(residue, acc), self.inv_prefix[j]);
             digits.push(f.to_u64(v));
         }
         let mut x = BigInt::zero();
@@ -873,13 +873,13 @@ mod tests {
                 [(0u64, 5u64), (1, 1), (p - 1, p - 1), (123_456_789, p - 2), (p / 3, p / 2)]
             {
                 let want = ((u128::from(a) * u128::from(b)) % u128::from(p)) as u64;
-                assert_eq!(f.to_u64(f.mul(f.from_u64(a), f.from_u64(b))), want);
+                assert_eq!(f.to_u64(f.mul(f.lift(a), f.lift(b))), want);
                 assert_eq!(
-                    f.to_u64(f.add(f.from_u64(a), f.from_u64(b))),
+                    f.to_u64(f.add(f.lift(a), f.lift(b))),
                     ((u128::from(a) + u128::from(b)) % u128::from(p)) as u64
                 );
             }
-            let x = f.from_u64(987_654_321);
+            let x = f.lift(987_654_321);
             assert_eq!(f.to_u64(f.mul(x, f.inv(x))), 1);
         }
     }
@@ -901,15 +901,15 @@ mod tests {
     #[test]
     fn interpolation_inverts_evaluation() {
         let f = Field::new(primes(1)[0]);
-        let coeffs: Vec<u64> = [5u64, 0, 7, 1, 3].iter().map(|&c| f.from_u64(c)).collect();
+        let coeffs: Vec<u64> = [5u64, 0, 7, 1, 3].iter().map(|&c| f.lift(c)).collect();
         let mut values: Vec<u64> = (0..coeffs.len() as u64)
             .map(|x| {
-                let xm = f.from_u64(x);
+                let xm = f.lift(x);
                 coeffs.iter().rev().fold(0, |acc, &c| f.add(f.mul(acc, xm), c))
             })
             .collect();
         let inverses: Vec<u64> =
-            (0..=5).map(|k| if k == 0 { 0 } else { f.inv(f.from_u64(k)) }).collect();
+            (0..=5).map(|k| if k == 0 { 0 } else { f.inv(f.lift(k)) }).collect();
         interpolate(f, &mut values, &inverses);
         assert_eq!(values, coeffs);
     }
