@@ -34,6 +34,11 @@ pub use sparse::SparsePolyMatrix;
 
 use crate::{Poly, Sym};
 
+/// Up to this size the sparse Berkowitz beats the modular path's setup
+/// (primes, CRT constants, a grid), so multivariate matrices this small stay
+/// on it (measured on the built-ins, whose z-route matrices are 1×1 to 4×4).
+const SMALL: usize = 4;
+
 /// A dense `rows × cols` matrix of [`Poly`] entries.
 #[derive(Clone, PartialEq, Eq)]
 pub struct PolyMatrix {
@@ -106,8 +111,10 @@ impl PolyMatrix {
         if let Some(c) = dense::charpoly_univariate(self) {
             return c;
         }
-        if let Some(c) = modular::charpoly(self) {
-            return c;
+        if self.rows > SMALL {
+            if let Some(c) = modular::charpoly(self) {
+                return c;
+            }
         }
         self.charpoly_berkowitz_sparse()
     }
@@ -129,7 +136,19 @@ impl PolyMatrix {
     #[track_caller]
     pub fn det_pencil(&self, w: Sym) -> Poly {
         assert_eq!(self.rows, self.cols, "determinant of a non-square matrix");
+        if self.rows <= SMALL {
+            return self.det();
+        }
         modular::det_linear_in(self, w).unwrap_or_else(|| self.det())
+    }
+
+    /// [`PolyMatrix::det_pencil`] by the modular pencil job alone, whatever
+    /// the size. Exposed for the tests.
+    #[doc(hidden)]
+    #[track_caller]
+    pub fn det_pencil_modular(&self, w: Sym) -> Option<Poly> {
+        assert_eq!(self.rows, self.cols, "determinant of a non-square matrix");
+        modular::det_linear_in(self, w)
     }
 
     /// The determinant by the modular path alone, `None` when its grid
@@ -200,6 +219,7 @@ impl PolyMatrix {
         assert_eq!(self.rows, self.cols, "determinant of a non-square matrix");
         let c = match dense::charpoly_univariate(self) {
             Some(c) => c,
+            None if self.rows <= SMALL => self.charpoly_berkowitz_sparse(),
             None => match modular::det(self) {
                 Some(d) => return d,
                 None => self.charpoly_berkowitz_sparse(),
