@@ -9,6 +9,9 @@ use criterion::{criterion_group, criterion_main, Criterion};
 use poly::{Method, Poly, PolyMatrix, Sym};
 use std::hint::black_box;
 
+#[path = "common/programs.rs"]
+mod programs;
+
 /// RK4 on a chain of six unit masses joined by springs to each other and to
 /// two walls, written as a `.zm` step program with the four stages as
 /// temporaries. Spring `k` (between mass k and k+1, walls at 0 and 7) has
@@ -128,9 +131,10 @@ fn bench_det12(c: &mut Criterion) {
     c.bench_function("det12/rk4_spring_chain/charpoly_berkowitz", |b| {
         b.iter(|| black_box(poly::charpoly_state_route(black_box(&p))))
     });
-    // Berkowitz on zI − P itself (entries in z and Phi) and the whole
-    // derivation (whose z route ends in a determinant in 1/z and Phi) stay
-    // on the sparse multivariate path: slow, so few samples.
+    // The determinant of zI − P itself (entries in z and Phi) and the whole
+    // derivation (whose z route ends in a determinant in 1/z and Phi) take
+    // the modular path; the group keeps its name and small sample size from
+    // when they ran on the sparse path.
     let zi_minus_p = p.char_matrix(&Poly::sym(Sym::z()));
     let mut slow = c.benchmark_group("det12/rk4_spring_chain/bivariate");
     slow.sample_size(10);
@@ -148,5 +152,41 @@ fn bench_det12(c: &mut Criterion) {
     c.bench_function("det12/random_deg2_phi/det", |b| b.iter(|| black_box(black_box(&r).det())));
 }
 
-criterion_group!(benches, bench_builtins, bench_det12);
+/// Both routes of `derive` on RK4 spring chains of 6, 8 and 16 masses
+/// (`benches/fixtures/rk4_chain_N.zm`, 12–32 states), each route on its own,
+/// and the sparse path on the 6-mass chain for comparison; then parsing and
+/// deriving a chain of 100,000 temporaries.
+fn bench_chains(c: &mut Criterion) {
+    let mut group = c.benchmark_group("chain");
+    group.sample_size(10);
+    for n in [6, 8, 16] {
+        let m = Method::parse("rk4_chain.zm", &programs::rk4_chain(n)).expect("chain parses");
+        group.bench_function(format!("rk4_{n}/derive_both_routes"), |b| {
+            b.iter(|| black_box(poly::derive(black_box(&m)).expect("routes agree")))
+        });
+        group.bench_function(format!("rk4_{n}/z_route"), |b| {
+            b.iter(|| {
+                black_box(poly::charpoly_z_route(black_box(&m)).expect("degree within order"))
+            })
+        });
+        group.bench_function(format!("rk4_{n}/state_route"), |b| {
+            b.iter(|| {
+                black_box(poly::charpoly_state_route(&poly::transition_matrix(black_box(&m))))
+            })
+        });
+    }
+    let src = programs::temporary_chain(100_000);
+    group.bench_function("temporaries_100000/parse_and_derive", |b| {
+        b.iter(|| {
+            let m = Method::parse("chain.zm", black_box(&src)).expect("chain parses");
+            black_box(poly::derive(&m).expect("routes agree"))
+        })
+    });
+    group.bench_function("temporaries_100000/parse", |b| {
+        b.iter(|| black_box(Method::parse("chain.zm", black_box(&src)).expect("chain parses")))
+    });
+    group.finish();
+}
+
+criterion_group!(benches, bench_builtins, bench_det12, bench_chains);
 criterion_main!(benches);

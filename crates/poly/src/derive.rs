@@ -14,10 +14,20 @@
 //!
 //! The routes share nothing but the lowered program and the determinant
 //! code, and [`derive`] refuses to answer when they disagree.
+//!
+//! **Cost.** Both routes are linear in the program's length: M is stored by
+//! rows ([`SparsePolyMatrix`]) and its temporaries are eliminated by forward
+//! substitution, the state route executes each line once. What remains is
+//! one determinant of the size of the state: route (a)'s is a pencil
+//! B₀ + w·B₁ in w and the parameters, route (b)'s a characteristic
+//! polynomial in the parameters, both taken by the modular path of
+//! [`crate::matrix`] (evaluation modulo primes, interpolation, CRT) unless
+//! the dense `i128` Berkowitz finishes first. [`charpoly_z_route_dense`]
+//! keeps the old, quadratic route (a) as the tests' oracle.
 
 use crate::error::{Error, ErrorKind, Span};
 use crate::method::{Method, Operand};
-use crate::{Poly, PolyMatrix, Sym};
+use crate::{Poly, PolyMatrix, SparsePolyMatrix, Sym};
 
 /// Everything derived from one method.
 #[derive(Clone, Debug)]
@@ -26,7 +36,8 @@ pub struct Derivation {
     pub method: Method,
     /// M as a polynomial matrix in w = z⁻¹ (see [`w`]); one row and column per
     /// assignment, plus one per state variable the step never assigns.
-    pub z_matrix: PolyMatrix,
+    /// Stored by rows: it is mostly zero.
+    pub z_matrix: SparsePolyMatrix,
     /// The transition matrix P over the augmented state
     /// ([`Method::slots`] order).
     pub transition_matrix: PolyMatrix,
@@ -134,42 +145,117 @@ fn carried_unknowns(m: &Method) -> Vec<usize> {
         .collect()
 }
 
-/// Route (a): M(w) with w = z⁻¹.
-pub fn z_matrix(m: &Method) -> PolyMatrix {
+/// Route (a): M(w) with w = z⁻¹, stored by rows (a program of n lines has
+/// an n×n matrix with O(n) nonzeros).
+pub fn z_matrix(m: &Method) -> SparsePolyMatrix {
     let n_assign = m.assigns().len();
     let unknown_of = carried_unknowns(m);
     let n = n_assign + unknown_of.iter().filter(|&&u| u >= n_assign).count();
     let wp = Poly::sym(w());
-    let mut mat = PolyMatrix::identity(n);
+    let deepest = m.history().iter().copied().max().unwrap_or(0);
+    let w_pow: Vec<Poly> = (0..=deepest).map(|lag| wp.pow(lag + 1)).collect();
+    let mut rows: Vec<Vec<(usize, Poly)>> = Vec::with_capacity(n);
     for (s, a) in m.assigns().iter().enumerate() {
+        let mut row: Vec<(usize, Poly)> = Vec::with_capacity(a.terms.len() + 1);
+        row.push((s, Poly::one()));
         for (op, c) in &a.terms {
-            match *op {
-                Operand::Stmt(t) => mat[(s, t)] -= c,
-                Operand::Start { var, lag } => {
-                    mat[(s, unknown_of[var])] -= &(c * &wp.pow(lag + 1));
-                }
-            }
+            row.push(match *op {
+                Operand::Stmt(t) => (t, -c),
+                Operand::Start { var, lag } => (unknown_of[var], -(c * &w_pow[lag as usize])),
+            });
         }
+        rows.push(row);
     }
+    rows.resize_with(n, Vec::new);
+    for (u, row) in rows.iter_mut().enumerate().skip(n_assign) {
+        row.push((u, Poly::one()));
+    }
+    let mut mat = SparsePolyMatrix::from_row_entries(n, rows);
     // A variable the step never assigns keeps its value: x_i = z⁻¹ x_i.
     for (v, &u) in unknown_of.iter().enumerate() {
         if m.final_assign(v).is_none() {
-            mat[(u, u)] -= &wp;
+            mat.add_to(u, u, &-&wp);
         }
     }
     mat
 }
 
-/// det M, by Gaussian elimination on the unknowns that no later step reads
-/// (temporaries and overwritten values). Their diagonal entry is 1 and stays
-/// 1 (w only ever enters the columns of the carried unknowns), so each is a
-/// unit pivot: subtracting multiples of its row clears its column without
-/// division and keeps the determinant, and expanding along the cleared column
-/// drops the pivot's row and column. What remains is one row and column per
-/// state variable, whose determinant Berkowitz computes. A program with
-/// hundreds of temporaries (RK4 on a spring chain) thus costs a determinant
-/// of the size of its state, not of its listing.
-fn det_z_matrix(mut mat: PolyMatrix, carried: &[usize]) -> Poly {
+/// The Schur complement of M on its carried unknowns, by forward
+/// substitution over M's rows: an unknown that no later step reads
+/// (a temporary or an overwritten value) has a unit diagonal and reads only
+/// earlier unknowns, so its row expresses it through the carried ones
+/// without division, and the complement has the same determinant as M (the
+/// eliminated block is unit lower triangular). One row and column per
+/// state variable remain, in state order. The cost is linear in the number
+/// of nonzeros of M times the number of state variables.
+///
+/// `None` when M does not have that shape (an unknown read before its own
+/// row, or a diagonal other than 1 off the carried unknowns); the caller
+/// then eliminates on the dense matrix.
+fn reduce_z_matrix(mat: &SparsePolyMatrix, carried: &[usize]) -> Option<PolyMatrix> {
+    let n = mat.rows();
+    let s = carried.len();
+    let mut carried_index = vec![None; n];
+    for (v, &c) in carried.iter().enumerate() {
+        carried_index[c] = Some(v);
+    }
+    // The last row reading each unknown, so that its value is dropped
+    // once read for the last time.
+    let mut last_read = vec![0; n];
+    for row in 0..n {
+        for (j, _) in mat.row_entries(row) {
+            last_read[*j] = row;
+        }
+    }
+    // Each eliminated unknown as a combination of the carried ones.
+    let mut value: Vec<Option<Vec<Poly>>> = vec![None; n];
+    let mut reduced = PolyMatrix::zeros(s, s);
+    for row in 0..n {
+        let mut acc = vec![Poly::zero(); s];
+        let mut diagonal_is_one = false;
+        for (j, x) in mat.row_entries(row) {
+            if let Some(v) = carried_index[*j] {
+                acc[v] += x;
+            } else if *j == row {
+                diagonal_is_one = x.is_one();
+            } else {
+                let earlier = value[*j].as_ref()?;
+                for (a, y) in acc.iter_mut().zip(earlier) {
+                    if y.is_zero() {
+                        continue;
+                    }
+                    if x.is_one() {
+                        *a += y;
+                    } else {
+                        *a += &(x * y);
+                    }
+                }
+                if last_read[*j] == row {
+                    value[*j] = None;
+                }
+            }
+        }
+        match carried_index[row] {
+            Some(v) => {
+                for (k, a) in acc.into_iter().enumerate() {
+                    reduced[(v, k)] = a;
+                }
+            }
+            // Row: u_row + Σ x_j u_j = 0, so u_row = −Σ x_j u_j.
+            None if diagonal_is_one => {
+                value[row] = Some(acc.into_iter().map(|a| -a).collect());
+            }
+            None => return None,
+        }
+    }
+    Some(reduced)
+}
+
+/// det M on the dense matrix, by Gaussian elimination on the unknowns that
+/// no later step reads, then sparse Berkowitz on what remains: the slow
+/// route (a), the oracle the tests hold [`reduce_z_matrix`] and the fast
+/// determinants against, and the fallback for a matrix of another shape.
+fn det_z_matrix_dense(mut mat: PolyMatrix, carried: &[usize]) -> Poly {
     let n = mat.rows();
     let mut kept: Vec<usize> = Vec::new();
     let mut removed = vec![false; n];
@@ -196,16 +282,38 @@ fn det_z_matrix(mut mat: PolyMatrix, carried: &[usize]) -> Poly {
     let rest = PolyMatrix::from_rows(
         kept.iter().map(|&i| kept.iter().map(|&j| mat[(i, j)].clone()).collect()).collect(),
     );
-    rest.det()
+    let c = rest.charpoly_berkowitz_sparse();
+    let det = c.last().cloned().unwrap_or_else(Poly::one);
+    if rest.rows() % 2 == 1 {
+        -det
+    } else {
+        det
+    }
 }
 
 /// Route (a)'s characteristic polynomial, z^N det M(1/z).
 pub fn charpoly_z_route(m: &Method) -> Result<Poly, Error> {
-    charpoly_from_z_matrix(m, z_matrix(m))
+    charpoly_from_z_matrix(m, &z_matrix(m))
 }
 
-fn charpoly_from_z_matrix(m: &Method, mat: PolyMatrix) -> Result<Poly, Error> {
-    let det = det_z_matrix(mat, &carried_unknowns(m));
+/// Route (a) the slow, obvious way: elimination on the dense M and sparse
+/// Berkowitz. Quadratic in the program's length; for tests only.
+#[doc(hidden)]
+pub fn charpoly_z_route_dense(m: &Method) -> Result<Poly, Error> {
+    let det = det_z_matrix_dense(z_matrix(m).to_dense(), &carried_unknowns(m));
+    charpoly_from_det(m, &det)
+}
+
+fn charpoly_from_z_matrix(m: &Method, mat: &SparsePolyMatrix) -> Result<Poly, Error> {
+    let carried = carried_unknowns(m);
+    let det = match reduce_z_matrix(mat, &carried) {
+        Some(reduced) => reduced.det_pencil(w()),
+        None => det_z_matrix_dense(mat.to_dense(), &carried),
+    };
+    charpoly_from_det(m, &det)
+}
+
+fn charpoly_from_det(m: &Method, det: &Poly) -> Result<Poly, Error> {
     let mut coeffs = det.coeffs_in(w());
     let n = m.order();
     if coeffs.len() > n + 1 {
@@ -225,25 +333,52 @@ fn charpoly_from_z_matrix(m: &Method, mat: PolyMatrix) -> Result<Poly, Error> {
 pub fn transition_matrix(m: &Method) -> PolyMatrix {
     let slots = m.slots();
     let n = slots.len();
-    let slot_of = |var: usize, lag: u32| {
-        slots.iter().position(|&s| s == (var, lag)).expect("lag within the method's history")
-    };
+    let slot_of: std::collections::HashMap<(usize, u32), usize> =
+        slots.iter().enumerate().map(|(k, &s)| (s, k)).collect();
     let unit = |k: usize| {
         let mut v = vec![Poly::zero(); n];
         v[k] = Poly::one();
         v
     };
+    // The last assignment reading each value (values carried to the next
+    // step are read at the end, so they are never dropped early).
+    let mut last_read = vec![usize::MAX; m.assigns().len()];
+    for (s, a) in m.assigns().iter().enumerate() {
+        for (op, _) in &a.terms {
+            if let Operand::Stmt(t) = *op {
+                last_read[t] = s;
+            }
+        }
+    }
+    for var in 0..m.state().len() {
+        if let Some(t) = m.final_assign(var) {
+            last_read[t] = usize::MAX;
+        }
+    }
     let mut values: Vec<Vec<Poly>> = Vec::with_capacity(m.assigns().len());
-    for a in m.assigns() {
+    for (s, a) in m.assigns().iter().enumerate() {
         let mut acc = vec![Poly::zero(); n];
         for (op, c) in &a.terms {
-            let src = match *op {
-                Operand::Stmt(t) => values[t].clone(),
-                Operand::Start { var, lag } => unit(slot_of(var, lag)),
-            };
-            for (x, s) in acc.iter_mut().zip(&src) {
-                if !s.is_zero() {
-                    *x += &(c * s);
+            match *op {
+                Operand::Stmt(t) => {
+                    for (x, s) in acc.iter_mut().zip(&values[t]) {
+                        if s.is_zero() {
+                            continue;
+                        }
+                        if c.is_one() {
+                            *x += s;
+                        } else {
+                            *x += &(c * s);
+                        }
+                    }
+                }
+                Operand::Start { var, lag } => acc[slot_of[&(var, lag)]] += c,
+            }
+        }
+        for (op, _) in &a.terms {
+            if let Operand::Stmt(t) = *op {
+                if last_read[t] == s {
+                    values[t] = Vec::new();
                 }
             }
         }
@@ -254,10 +389,10 @@ pub fn transition_matrix(m: &Method) -> PolyMatrix {
         let new = if lag == 0 {
             match m.final_assign(var) {
                 Some(t) => values[t].clone(),
-                None => unit(slot_of(var, 0)),
+                None => unit(slot_of[&(var, 0)]),
             }
         } else {
-            unit(slot_of(var, lag - 1))
+            unit(slot_of[&(var, lag - 1)])
         };
         for (col, x) in new.into_iter().enumerate() {
             p[(row, col)] = x;
@@ -299,7 +434,7 @@ pub fn derive_source(file: &str, src: &str) -> Result<Derivation, Error> {
 /// ```
 pub fn derive(method: &Method) -> Result<Derivation, Error> {
     let z_matrix = z_matrix(method);
-    let a = charpoly_from_z_matrix(method, z_matrix.clone())?;
+    let a = charpoly_from_z_matrix(method, &z_matrix)?;
     let transition_matrix = transition_matrix(method);
     let b = charpoly_state_route(&transition_matrix);
     if a != b {

@@ -74,12 +74,14 @@ pub use crate::builtins::{
 };
 pub use crate::class::RootClass;
 pub use crate::cost::{step_cost, OpCount, StepCost};
+#[doc(hidden)]
+pub use crate::derive::charpoly_z_route_dense;
 pub use crate::derive::{
     charpoly, charpoly_state_route, charpoly_z_route, derive, derive_source, transition_matrix, w,
     z_matrix, Derivation,
 };
 pub use crate::error::{show_invisible, Error, ErrorKind, Span};
-pub use crate::matrix::PolyMatrix;
+pub use crate::matrix::{PolyMatrix, SparsePolyMatrix};
 pub use crate::method::{Assign, Method, Operand, Target};
 pub use crate::params::Params;
 pub use crate::poly::{Monomial, Poly};

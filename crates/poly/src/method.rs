@@ -66,6 +66,8 @@ pub struct Method {
     params: Vec<Sym>,
     assigns: Vec<Assign>,
     history: Vec<u32>,
+    /// The last assignment to each state variable, if any.
+    finals: Vec<Option<usize>>,
 }
 
 /// The linear value of a sub-expression during lowering.
@@ -85,14 +87,24 @@ impl Lin {
     fn is_scalar(&self) -> bool {
         self.terms.is_empty()
     }
+    /// `self + other` (`sign` 1) or `self − other` (`sign` −1), reusing
+    /// `other`'s coefficients rather than multiplying them by the sign.
     fn add(mut self, other: Lin, sign: i64) -> Lin {
-        let s = Poly::int(sign);
-        self.scalar += &(&other.scalar * &s);
+        let signed = |p: Poly| if sign < 0 { -p } else { p };
+        if !other.scalar.is_zero() {
+            self.scalar += &signed(other.scalar);
+        }
         for (op, c) in other.terms {
-            let e = self.terms.entry(op).or_insert_with(Poly::zero);
-            *e += &(&c * &s);
-            if e.is_zero() {
-                self.terms.remove(&op);
+            match self.terms.entry(op) {
+                std::collections::btree_map::Entry::Vacant(e) => {
+                    e.insert(signed(c));
+                }
+                std::collections::btree_map::Entry::Occupied(mut e) => {
+                    *e.get_mut() += &signed(c);
+                    if e.get().is_zero() {
+                        e.remove();
+                    }
+                }
             }
         }
         self
@@ -391,10 +403,13 @@ impl Method {
             assigned_anywhere,
             history: vec![0; state.len()],
         };
+        let state_index: HashMap<&str, usize> =
+            state.iter().enumerate().map(|(k, s)| (s.as_str(), k)).collect();
         let mut assigns = Vec::new();
         for (t, tspan, expr, text) in assigns_src {
             let lin = lw.lower(&expr)?;
-            let is_state = state.contains(&t);
+            let state_index = state_index.get(t.as_str()).copied();
+            let is_state = state_index.is_some();
             if !is_state && lin.is_scalar() {
                 // A temporary that depends on the parameters only (Appendix B's
                 // `D:=0.5*woT`) is folded into the coefficients that read it.
@@ -410,7 +425,7 @@ impl Method {
                     format!("term `{}` does not depend on the state: expected every term to be a multiple of a state variable (the step must be linear)", lin.scalar),
                 ));
             }
-            let target = match state.iter().position(|s| *s == t) {
+            let target = match state_index {
                 Some(v) => {
                     lw.latest_state[v] = Some(idx);
                     Target::State(v)
@@ -429,7 +444,8 @@ impl Method {
             });
         }
         let history = lw.history;
-        Ok(Method { name, state, params, assigns, history })
+        let finals = lw.latest_state;
+        Ok(Method { name, state, params, assigns, history, finals })
     }
 
     /// The method's name.
@@ -478,7 +494,7 @@ impl Method {
 
     /// The index of the last assignment to state variable `var`, if any.
     pub fn final_assign(&self, var: usize) -> Option<usize> {
-        self.assigns.iter().rposition(|a| a.target == Target::State(var))
+        self.finals[var]
     }
 
     /// The name an assignment writes.

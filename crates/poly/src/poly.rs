@@ -54,6 +54,14 @@ impl Monomial {
         &self.0
     }
 
+    /// The product of `sym^exp` over distinct symbols, in any order; zero
+    /// exponents are dropped.
+    pub(crate) fn from_factors(mut factors: Vec<(Sym, u32)>) -> Monomial {
+        factors.retain(|&(_, e)| e > 0);
+        factors.sort_unstable();
+        Monomial(factors)
+    }
+
     /// This monomial with `sym` removed.
     pub fn without(&self, sym: Sym) -> Monomial {
         Monomial(self.0.iter().copied().filter(|&(s, _)| s != sym).collect())
@@ -111,6 +119,9 @@ impl Poly {
     pub fn parse(src: &str) -> Result<Poly, crate::Error> {
         crate::syntax::parse_poly(src).map_err(|e| e.located("<expression>", src))
     }
+
+    /// The zero polynomial, as a constant.
+    pub(crate) const ZERO: Poly = Poly { terms: BTreeMap::new() };
 
     /// The zero polynomial.
     pub fn zero() -> Poly {
@@ -176,7 +187,24 @@ impl Poly {
 
     /// Whether this polynomial is the constant 1.
     pub fn is_one(&self) -> bool {
-        self.as_constant().is_some_and(|c| c.is_one())
+        self.terms.len() == 1 && self.terms.get(&Monomial::one()).is_some_and(|c| c.is_one())
+    }
+
+    /// The coefficient when this is a nonzero constant, without cloning it.
+    fn constant_ref(&self) -> Option<&Q> {
+        match self.terms.len() {
+            1 => self.terms.get(&Monomial::one()),
+            _ => None,
+        }
+    }
+
+    /// Every coefficient times the nonzero constant `c`; the terms stay in
+    /// order, so the map is rebuilt in one pass.
+    fn times_constant(&self, c: &Q) -> Poly {
+        if c.is_one() {
+            return self.clone();
+        }
+        Poly { terms: self.terms.iter().map(|(m, x)| (m.clone(), mul_q(x, c))).collect() }
     }
 
     /// The terms, each as `(monomial, coefficient)`.
@@ -525,6 +553,14 @@ impl<'a> Sub<&'a Poly> for &'a Poly {
 impl<'a> Mul<&'a Poly> for &'a Poly {
     type Output = Poly;
     fn mul(self, rhs: &Poly) -> Poly {
+        // A constant factor (the common case in lowering and derivation)
+        // scales without merging terms.
+        if let Some(c) = self.constant_ref() {
+            return rhs.times_constant(c);
+        }
+        if let Some(c) = rhs.constant_ref() {
+            return self.times_constant(c);
+        }
         let mut out = Poly::zero();
         for (ma, ca) in &self.terms {
             for (mb, cb) in &rhs.terms {
@@ -562,8 +598,11 @@ owned_ops!(Add add, Sub sub, Mul mul);
 
 impl Neg for Poly {
     type Output = Poly;
-    fn neg(self) -> Poly {
-        -&self
+    fn neg(mut self) -> Poly {
+        for c in self.terms.values_mut() {
+            *c = -std::mem::replace(c, Q::zero());
+        }
+        self
     }
 }
 

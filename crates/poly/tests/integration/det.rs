@@ -154,3 +154,101 @@ fn companion_matrices_recover_their_polynomial() {
         );
     }
 }
+
+/// An n×n matrix over Phi, D and z with entries zero a third of the time,
+/// coefficients up to `2^bits` (so the modular path needs several primes).
+fn wide_matrix(n: usize, bits: u32) -> impl Strategy<Value = PolyMatrix> {
+    let big = move |p: Poly, k: i64| {
+        &p * &Poly::constant(poly::Q::from_integer(num_bigint::BigInt::from(k) << bits))
+    };
+    let entry = prop_oneof![1 => Just(Poly::zero()), 2 => (poly_in(3, 3), -3i64..=3).prop_map(move |(p, k)| &p + &big(p.clone(), k))];
+    proptest::collection::vec(entry, n * n)
+        .prop_map(move |d| PolyMatrix::from_rows(d.chunks(n).map(<[Poly]>::to_vec).collect()))
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(48))]
+
+    /// The modular path (evaluation, interpolation, CRT) against sparse
+    /// Berkowitz, for determinants and characteristic polynomials in up to
+    /// three symbols, with small coefficients and with coefficients near
+    /// 2^70 and 2^200 (several primes).
+    #[test]
+    fn modular_path_matches_sparse_berkowitz(
+        a in (1usize..=5, prop_oneof![Just(0u32), Just(70), Just(200)])
+            .prop_flat_map(|(n, bits)| wide_matrix(n, bits))
+    ) {
+        let sparse = a.charpoly_berkowitz_sparse();
+        let n = a.rows();
+        let sign = if n % 2 == 0 { Poly::one() } else { Poly::int(-1) };
+        prop_assert_eq!(a.det_modular().expect("small grid"), &sign * &sparse[n]);
+        prop_assert_eq!(a.charpoly_modular().expect("small grid"), sparse);
+    }
+}
+
+/// An n×n pencil A + w·B over Phi and D, w = `1/z` as the z route has it;
+/// `unit` makes A the identity (the shape route (a) meets), else A is
+/// random and often singular at some points (the fallback to values in w).
+fn pencil(n: usize, unit: bool) -> impl Strategy<Value = PolyMatrix> {
+    let entry = || prop_oneof![1 => Just(Poly::zero()), 2 => poly_in(2, 3)];
+    (proptest::collection::vec(entry(), n * n), proptest::collection::vec(entry(), n * n)).prop_map(
+        move |(a, b)| {
+            let w = Poly::sym(poly::w());
+            let rows = (0..n)
+                .map(|i| {
+                    (0..n)
+                        .map(|j| {
+                            let a = if unit {
+                                Poly::int((i == j) as i64)
+                            } else {
+                                a[i * n + j].clone()
+                            };
+                            &a + &(&w * &b[i * n + j])
+                        })
+                        .collect()
+                })
+                .collect();
+            PolyMatrix::from_rows(rows)
+        },
+    )
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(48))]
+
+    /// The pencil job (coefficients in w from B₀⁻¹B₁) against Laplace.
+    #[test]
+    fn pencil_determinants_match_laplace(
+        a in (1usize..=5, any::<bool>()).prop_flat_map(|(n, unit)| pencil(n, unit))
+    ) {
+        let laplace = a.det_laplace();
+        prop_assert_eq!(a.det_pencil_modular(poly::w()).expect("small grid"), laplace.clone());
+        prop_assert_eq!(a.det_pencil(poly::w()), laplace);
+    }
+}
+
+/// The modular determinant against Laplace on matrices with a zero column
+/// of pivots (singular modulo every prime at every point) and on the empty
+/// matrix.
+#[test]
+fn modular_determinants_of_degenerate_matrices() {
+    let parse = |rows: &[&[&str]]| {
+        PolyMatrix::from_rows(
+            rows.iter()
+                .map(|r| r.iter().map(|e| Poly::parse(e).expect("parses")).collect())
+                .collect(),
+        )
+    };
+    for m in [
+        parse(&[]),
+        parse(&[&["0", "Phi"], &["0", "D"]]),
+        parse(&[&["Phi", "D"], &["2*Phi", "2*D"]]),
+        parse(&[&["0", "Phi*D", "1"], &["D", "0", "0"], &["1/3", "z", "Phi^3"]]),
+    ] {
+        assert_eq!(m.det_modular().expect("small grid"), m.det_laplace(), "{m}");
+        let mut c = m.charpoly_modular().expect("small grid");
+        c.reverse();
+        let x = Sym::new("x");
+        assert_eq!(Poly::from_coeffs_in(x, &c), m.char_matrix(&Poly::sym(x)).det_laplace(), "{m}");
+    }
+}

@@ -4,6 +4,8 @@
 //! - `det`: Berkowitz against the Laplace oracle, det(AB) = det(A)·det(B);
 //! - `routes`: the two derivations agree on random step programs, and the
 //!   transition matrix matches an independent exact interpreter;
+//! - `large`: RK4 on spring chains and 100,000 temporaries, fast paths
+//!   against slow ones;
 //! - `errors`: every kind of bad `.zm` input gives a located error, and the
 //!   parser never panics;
 //! - `fuzz_corpus`: the fuzz targets' corpora and crash regressions, replayed;
@@ -20,6 +22,7 @@ mod cost;
 mod det;
 mod errors;
 mod fuzz_corpus;
+mod large;
 mod parser;
 mod region;
 mod routes;

@@ -384,7 +384,7 @@ fn check_program(prog: &Program, phi: Q, k: Q) {
     assert_eq!(a, b, "routes disagree on\n{src}");
     // The z route eliminates temporaries before its determinant; on small
     // programs, hold it against Berkowitz on the whole of M.
-    let m_full = poly::z_matrix(&method);
+    let m_full = poly::z_matrix(&method).to_dense();
     if m_full.rows() <= 6 {
         let det = m_full.det();
         let z = Poly::sym(Sym::z());
@@ -395,6 +395,10 @@ fn check_program(prog: &Program, phi: Q, k: Q) {
             .fold(Poly::zero(), |acc, (k, c)| acc + c * z.pow((n - k) as u32));
         assert_eq!(w_to_z, a, "z^N det M(1/z) on the whole matrix\n{src}");
     }
+    // The fast route (a) (sparse M, forward substitution, modular
+    // determinant) against the slow one (dense elimination, sparse Berkowitz).
+    let slow = poly::charpoly_z_route_dense(&method).unwrap_or_else(|e| panic!("{e}\n{src}"));
+    assert_eq!(a, slow, "fast and slow z routes\n{src}");
     let d = poly::derive(&method).unwrap_or_else(|e| panic!("{e}\n{src}"));
     assert_eq!(d.charpoly, a);
     assert_eq!(d.charpoly.degree_in(Sym::z()) as usize, n, "degree = order\n{src}");

@@ -41,6 +41,9 @@ pub fn to_json(d: &Derivation) -> serde_json::Value {
     let rows = |mat: &poly::PolyMatrix, f: &dyn Fn(&Poly) -> String| -> Vec<Vec<String>> {
         (0..mat.rows()).map(|i| mat.row(i).iter().map(f).collect()).collect()
     };
+    let z_rows = |mat: &poly::SparsePolyMatrix, f: &dyn Fn(&Poly) -> String| -> Vec<Vec<String>> {
+        (0..mat.rows()).map(|i| mat.row(i).iter().map(f).collect()).collect()
+    };
     let mut v = json!({
         "method": m.name(),
         "state": m.state(),
@@ -48,7 +51,7 @@ pub fn to_json(d: &Derivation) -> serde_json::Value {
         "order": m.order(),
         "slots": m.slots().iter().map(|&(v, l)| m.operand_name(poly::Operand::Start { var: v, lag: l })).collect::<Vec<_>>(),
         "program": m.to_string(),
-        "z_matrix": rows(&d.z_matrix, &Derivation::z_entry_string),
+        "z_matrix": z_rows(&d.z_matrix, &Derivation::z_entry_string),
         "transition_matrix": rows(&d.transition_matrix, &|p| p.to_string()),
         "charpoly": d.charpoly.to_string(),
         "charpoly_coeffs": d.coeffs().iter().map(ToString::to_string).collect::<Vec<_>>(),
@@ -105,7 +108,7 @@ pub fn latex(d: &Derivation) -> String {
     };
     let mut s = String::new();
     let _ = writeln!(s, "% {}", d.method.name());
-    let _ = writeln!(s, "M(z) = {}", mat(&d.z_matrix, &Derivation::z_entry_latex));
+    let _ = writeln!(s, "M(z) = {}", mat(&d.z_matrix.to_dense(), &Derivation::z_entry_latex));
     let _ = writeln!(s, "\\mathbf{{P}} = {}", mat(&d.transition_matrix, &|p| p.latex()));
     let _ = writeln!(s, "\\det(zI - \\mathbf{{P}}) = {} = 0", d.charpoly.latex());
     if let Some((p, q)) = d.p_q() {

@@ -1,0 +1,80 @@
+//! Large programs: RK4 on spring chains and a chain of 100,000
+//! temporaries derive by the fast paths (sparse M reduced by forward
+//! substitution, modular determinants) exactly as by the slow ones.
+
+use poly::{Method, Poly, Sym};
+
+#[path = "../../benches/common/programs.rs"]
+mod programs;
+
+fn parse(src: &str) -> Method {
+    Method::parse("generated.zm", src).unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// Both routes of the fast derivation against route (a) on the dense M
+/// with sparse Berkowitz, and route (b) with sparse Berkowitz.
+#[test]
+fn rk4_chains_match_the_slow_routes() {
+    for n in 1..=3 {
+        let m = parse(&programs::rk4_chain(n));
+        let d = poly::derive(&m).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(d.charpoly, poly::charpoly_z_route_dense(&m).expect("slow z route"), "n = {n}");
+        let mut c = d.transition_matrix.charpoly_berkowitz_sparse();
+        c.reverse();
+        assert_eq!(d.charpoly, Poly::from_coeffs_in(Sym::z(), &c), "n = {n}");
+        assert_eq!(d.charpoly.degree_in(Sym::z()) as usize, 2 * n);
+    }
+}
+
+/// One mass: RK4 on the oscillator, whose amplification factor is the
+/// degree-4 Taylor polynomial R(iΦ) of e^(iΦ), so χ = z² − 2 Re R·z + |R|².
+#[test]
+fn one_mass_chain_is_rk4_on_the_oscillator() {
+    let d = poly::derive(&parse(&programs::rk4_chain(1))).expect("derives");
+    // ω = √2 (two unit springs to the walls), so Φ² enters as 2Φ².
+    let re = Poly::parse("1 - (2*Phi^2)/2 + (2*Phi^2)^2/24").expect("parses");
+    let im2 = Poly::parse("2*Phi^2*(1 - (2*Phi^2)/6)^2").expect("parses");
+    let z = Poly::sym(Sym::z());
+    let want = &(&z.pow(2) - &(&Poly::int(2) * &(&re * &z))) + &(&re.pow(2) + &im2);
+    assert_eq!(d.charpoly, want);
+}
+
+/// The committed fixture is what the generator writes (the SymPy bench
+/// script reads the fixtures).
+#[test]
+fn the_fixtures_are_the_generated_programs() {
+    for n in [6, 8, 16] {
+        let path = format!("{}/benches/fixtures/rk4_chain_{n}.zm", env!("CARGO_MANIFEST_DIR"));
+        let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
+        assert_eq!(text, programs::rk4_chain(n), "{path}");
+    }
+}
+
+/// 100,000 temporaries in a chain derive (lowering, the sparse M and both
+/// routes are linear in the program's length), to the two-line method they
+/// spell out.
+#[test]
+fn a_chain_of_100_000_temporaries_derives() {
+    let n = 100_000;
+    let m = parse(&programs::temporary_chain(n));
+    assert_eq!(m.assigns().len(), n + 2);
+    let d = poly::derive(&m).unwrap_or_else(|e| panic!("{e}"));
+    let short = parse("method se\nstate v y\nv = v - Phi*y\ny = y + Phi*v\n");
+    assert_eq!(d.charpoly, poly::charpoly(&short).expect("derives"));
+    // M has one row per assignment and about two nonzeros per row.
+    assert_eq!(d.z_matrix.rows(), n + 2);
+    assert!(d.z_matrix.nonzeros() <= 3 * (n + 2), "{} nonzeros", d.z_matrix.nonzeros());
+}
+
+/// Short chains against the slow dense route (a).
+#[test]
+fn short_temporary_chains_match_the_slow_route() {
+    for n in [2, 3, 10, 50] {
+        let m = parse(&programs::temporary_chain(n));
+        assert_eq!(
+            poly::charpoly_z_route(&m).expect("fast"),
+            poly::charpoly_z_route_dense(&m).expect("slow"),
+            "n = {n}"
+        );
+    }
+}
