@@ -82,8 +82,7 @@ fn always_stable(s: &mut Section) {
     let r = ranges::report("semi_false_heun");
     let limit = ranges::limit_text("semi_false_heun");
     let boundary = r
-        .boundary
-        .as_ref()
+        .boundary()
         .map(|b| b.to_string().replace('_', " "))
         .unwrap_or_else(|| "none".to_owned());
     let chi_minus_one =
