@@ -285,7 +285,11 @@ impl Algebraic {
         match &self.repr {
             Repr::Rational(q) => Algebraic::from_rational(-q.clone()),
             Repr::Root { poly, lo, hi } => Algebraic {
-                repr: Repr::Root { poly: poly.negate_x().monic(), lo: -hi.clone(), hi: -lo.clone() },
+                repr: Repr::Root {
+                    poly: poly.negate_x().monic(),
+                    lo: -hi.clone(),
+                    hi: -lo.clone(),
+                },
             },
         }
     }

@@ -99,7 +99,10 @@ pub(crate) fn sign_at(p: &UPoly, x: &Q) -> Ordering {
 /// each distinct root once), each term scaled by a positive rational to
 /// primitive integer coefficients. Empty for the zero polynomial.
 pub fn sturm_sequence(p: &UPoly) -> Vec<UPoly> {
-    chain(p).into_iter().map(|ip| UPoly::new(ip.c.into_iter().map(Q::from_integer).collect())).collect()
+    chain(p)
+        .into_iter()
+        .map(|ip| UPoly::new(ip.c.into_iter().map(Q::from_integer).collect()))
+        .collect()
 }
 
 fn chain(p: &UPoly) -> Vec<IntPoly> {

@@ -218,8 +218,7 @@ fn run(chi: &Charpoly, p: Option<&[Vec<UPoly>]>, charpoly: Option<&Poly>) -> Sta
                 open = Some(StableInterval { lo, lo_closed, hi: None, hi_closed: false });
             }
             if let Some(pt) = points.get(k) {
-                if pt.bounded == Some(true) && classes.get(k + 1).is_some_and(|c| c.is_bounded())
-                {
+                if pt.bounded == Some(true) && classes.get(k + 1).is_some_and(|c| c.is_bounded()) {
                     continue;
                 }
                 let mut s = open.take().expect("open");
@@ -301,9 +300,8 @@ fn boundary_at(chi: &Charpoly, conditions: &[(Condition, UPoly)], at: &Algebraic
     let vanishes = |p: &UPoly| at.is_root_of(p);
     let one = Q::one();
     let minus_one = -Q::one();
-    let named = |name: Condition| {
-        conditions.iter().any(|(n, p)| *n == name && !p.is_zero() && vanishes(p))
-    };
+    let named =
+        |name: Condition| conditions.iter().any(|(n, p)| *n == name && !p.is_zero() && vanishes(p));
     let at_minus_one = vanishes(&chi.value_at_z(&minus_one));
     let at_plus_one = vanishes(&chi.value_at_z(&one));
     if at_minus_one && vanishes(&chi.derivative_at_z(&minus_one)) {
@@ -358,10 +356,5 @@ fn marginal(chi: &Charpoly, charpoly: &Poly) -> Option<Marginal> {
         Stability::BoundedForAllPhi => None,
         Stability::UnboundedForAllPhi => return None,
     };
-    Some(Marginal {
-        coefficient: lead.coeff,
-        power: lead.order,
-        threshold,
-        practical_phi_max,
-    })
+    Some(Marginal { coefficient: lead.coeff, power: lead.order, threshold, practical_phi_max })
 }

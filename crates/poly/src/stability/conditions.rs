@@ -409,10 +409,13 @@ fn reciprocal_conditions(a: &[UPoly]) -> Vec<(Condition, UPoly)> {
             g = exact_div_z(&g, &[UPoly::constant(-s.clone()), UPoly::constant(Q::one())]);
         }
     }
-    if g.len() >= 3 && (g.len() - 1) % 2 == 0 {
-        let big_g = reciprocal_reduce(&g, UPoly::zero(), |x, y| x + y, |x, k| {
-            x.scale(&Q::from_integer(k.into()))
-        });
+    if g.len() >= 3 && (g.len() - 1).is_multiple_of(2) {
+        let big_g = reciprocal_reduce(
+            &g,
+            UPoly::zero(),
+            |x, y| x + y,
+            |x, k| x.scale(&Q::from_integer(k.into())),
+        );
         let big_g = integer_scaled(&big_g);
         if big_g.len() >= 3 {
             let d: Vec<UPoly> = big_g

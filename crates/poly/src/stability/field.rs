@@ -130,7 +130,11 @@ impl Field {
 
     pub fn derivative(&self, f: &[UPoly]) -> FPoly {
         self.trim(
-            f.iter().enumerate().skip(1).map(|(k, c)| c.scale(&Q::from_integer(k.into()))).collect(),
+            f.iter()
+                .enumerate()
+                .skip(1)
+                .map(|(k, c)| c.scale(&Q::from_integer(k.into())))
+                .collect(),
         )
     }
 
@@ -148,9 +152,10 @@ impl Field {
                     continue;
                 }
                 let f = self.mul(&m[r][c], &inv);
-                for k in c..cols {
-                    let v = self.mul(&f, &m[rank][k]);
-                    m[r][k] = self.reduce(&(&m[r][k] - &v));
+                let pivot_row = m[rank].clone();
+                for (x, y) in m[r][c..cols].iter_mut().zip(&pivot_row[c..cols]) {
+                    let v = self.mul(&f, y);
+                    *x = self.reduce(&(&*x - &v));
                 }
             }
             rank += 1;

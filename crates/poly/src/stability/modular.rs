@@ -66,7 +66,7 @@ fn is_prime(n: u64) -> bool {
     }
     const BASES: [u64; 12] = [2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37];
     for &b in &BASES {
-        if n % b == 0 {
+        if n.is_multiple_of(b) {
             return n == b;
         }
     }
@@ -241,9 +241,10 @@ fn det_mod(a: &mut [Vec<u64>], p: u64) -> u64 {
                 continue;
             }
             let f = mulmod(a[i][k], iv, p);
-            for j in k..n {
-                let s = mulmod(f, a[k][j], p);
-                a[i][j] = (a[i][j] + p - s) % p;
+            let (top, bottom) = a.split_at_mut(i);
+            for (x, &y) in bottom[0][k..].iter_mut().zip(&top[k][k..]) {
+                let s = mulmod(f, y, p);
+                *x = (*x + p - s) % p;
             }
         }
     }

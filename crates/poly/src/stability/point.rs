@@ -69,7 +69,11 @@ fn counts_squarefree(sf: &UPoly) -> Counts {
         return counts;
     }
     let g = g0.gcd(&g0.reversed());
-    let (h, dg) = if g.degree().unwrap_or(0) == 0 { (g0, 0) } else { (g0.div_rem(&g).0, g.degree().unwrap_or(0)) };
+    let (h, dg) = if g.degree().unwrap_or(0) == 0 {
+        (g0, 0)
+    } else {
+        (g0.div_rem(&g).0, g.degree().unwrap_or(0))
+    };
     let (hin, hout) = schur_cohn_inertia(&h);
     let on = if dg > 0 { on_circle_reciprocal(&g) } else { 0 };
     let off = (dg - on) / 2;
@@ -202,7 +206,11 @@ pub(crate) fn inertia(mut m: Vec<Vec<Q>>) -> (usize, usize, usize) {
         // Zero diagonal: a 2×2 pivot [[0, b], [b, 0]] has one eigenvalue of
         // each sign.
         let found = idx.iter().enumerate().find_map(|(a, &i)| {
-            idx.iter().enumerate().skip(a + 1).find(|(_, &j)| !m[i][j].is_zero()).map(|(b, _)| (a, b))
+            idx.iter()
+                .enumerate()
+                .skip(a + 1)
+                .find(|(_, &j)| !m[i][j].is_zero())
+                .map(|(b, _)| (a, b))
         });
         let Some((a, b)) = found else { break };
         let (i, j) = (idx[a], idx[b]);

@@ -83,7 +83,12 @@ fn check_samples(chi: &Poly, r: &StabilityReport) {
     for i in &r.intervals {
         let f = chi.subs(Sym::phi(), &Poly::constant(i.sample.clone())).to_upoly(Sym::z()).unwrap();
         assert_eq!(classify(&f), i.class, "Phi = {} in {chi}", i.sample);
-        assert_eq!(classify_roots_by_products(&f), i.class, "oracle at Phi = {} in {chi}", i.sample);
+        assert_eq!(
+            classify_roots_by_products(&f),
+            i.class,
+            "oracle at Phi = {} in {chi}",
+            i.sample
+        );
         assert_eq!(class_at(chi, &i.sample).unwrap(), i.class);
     }
 }

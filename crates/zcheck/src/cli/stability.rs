@@ -202,7 +202,8 @@ fn extras(r: &StabilityReport) -> String {
         let _ = writeln!(s, "\nbounded further out:");
         for i in further {
             let hi = i.hi.as_ref().map_or("inf".to_owned(), show);
-            let (l, rb) = (if i.lo_closed { "[" } else { "(" }, if i.hi_closed { "]" } else { ")" });
+            let (l, rb) =
+                (if i.lo_closed { "[" } else { "(" }, if i.hi_closed { "]" } else { ")" });
             let _ = writeln!(s, "  {l}{}, {hi}{rb}", show(&i.lo));
         }
     }
@@ -214,8 +215,13 @@ fn extras(r: &StabilityReport) -> String {
             m.power,
             show(&poly::Algebraic::from_rational(m.coefficient.clone()))
         );
-        let limit = m.practical_phi_max.as_ref().map_or("none (within it for every Phi)".to_owned(), show);
-        let _ = writeln!(s, "practical limit for growth per step <= 1 + {}: Phi <= {limit}", m.threshold);
+        let limit =
+            m.practical_phi_max.as_ref().map_or("none (within it for every Phi)".to_owned(), show);
+        let _ = writeln!(
+            s,
+            "practical limit for growth per step <= 1 + {}: Phi <= {limit}",
+            m.threshold
+        );
     }
     s
 }

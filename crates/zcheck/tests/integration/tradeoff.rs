@@ -338,7 +338,9 @@ fn advisor_agrees_with_stability_and_classification() {
                         assert!(!bounded(advice.phi / (k - 1) as f64), "{}: {k} - 1", c.name);
                     }
                 }
-                None => assert!(report.phi_max().is_none() && !report.bounded_for_all(), "{}", c.name),
+                None => {
+                    assert!(report.phi_max().is_none() && !report.bounded_for_all(), "{}", c.name)
+                }
             }
             if let Some(k) = m.substeps_tol {
                 assert!(k >= m.substeps_stable.unwrap(), "{}", c.name);
