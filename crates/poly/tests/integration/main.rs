@@ -20,6 +20,7 @@ mod cost;
 mod det;
 mod errors;
 mod fuzz_corpus;
+mod multistep;
 mod parser;
 mod region;
 mod routes;

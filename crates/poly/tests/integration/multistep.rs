@@ -97,20 +97,16 @@ fn adams_bashforth_four() {
     check_limit_against_schur("ab4", &r);
 }
 
-/// AB5 and AB6 have no stability interval on the imaginary axis; AB7 and
-/// AB8 have short ones, checked against Schur's test.
+/// AB5 and AB6 have no stability interval on the imaginary axis. (AB7 and
+/// AB8, with short intervals, are in the stability bench: too slow for an
+/// unoptimised test build.)
 #[test]
-fn adams_bashforth_five_to_eight() {
+fn adams_bashforth_five_and_six() {
     for name in ["ab5", "ab6"] {
         let r = report(name);
         assert_eq!(r.stability, Stability::UnboundedForAllPhi, "{name}");
         let chi = derivation(name).charpoly;
         assert!(!schur_strictly_inside(&chi_at(&chi, &q(1, 100))), "{name}");
-    }
-    for name in ["ab7", "ab8"] {
-        let r = report(name);
-        check_limit_against_schur(name, &r);
-        assert!(r.phi_max().unwrap().cmp_rational(&q(1, 10)).is_lt(), "{name}");
     }
 }
 
