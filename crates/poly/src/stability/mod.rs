@@ -3,11 +3,11 @@
 //!
 //! The root class of χ (section 4's taxonomy, [`RootClass`]) can change only
 //! at finitely many *critical* Φ, the positive roots of the polynomials in
-//! Φ listed in [`conditions`]: the leading and constant coefficients, χ(1),
+//! Φ listed in `conditions`: the leading and constant coefficients, χ(1),
 //! χ(−1), the unit-circle condition ∏_{i<j}(1 − z_i z_j) (Jury's inners
 //! determinant, of degree ≤ (n − 1)·deg_Φ; for a self-reciprocal factor the
 //! discriminant of G with g(z) = z^m G(z + 1/z)), the discriminant in z, and
-//! ties for the largest modulus. Each is computed over Z[Φ] by modular
+//! ties for the largest modulus. Each is computed over Z\[Φ\] by modular
 //! evaluation and interpolation, made square-free, and its positive real
 //! roots are isolated with Sturm sequences as exact [`Algebraic`] numbers.
 //!

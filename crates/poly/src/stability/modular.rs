@@ -1,4 +1,4 @@
-//! Determinants and resultants over Z[Φ] by multi-modular evaluation and
+//! Determinants and resultants over Z\[Φ\] by multi-modular evaluation and
 //! interpolation.
 //!
 //! A determinant whose entries are integer polynomials in Φ is itself an
