@@ -36,70 +36,9 @@ use std::cmp::Ordering;
 use num_complex::Complex;
 use poly::RootClass;
 
-/// The signs of the shifted polynomials of a second-order χ at one point.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct PqSigns {
-    /// Sign of p² − q (the discriminant over four).
-    pub disc: Ordering,
-    /// Sign of p.
-    pub p: Ordering,
-    /// Sign of p − 1.
-    pub p_minus_1: Ordering,
-    /// Sign of p + 1.
-    pub p_plus_1: Ordering,
-    /// Sign of q − 1.
-    pub q_minus_1: Ordering,
-    /// Sign of q + 1.
-    pub q_plus_1: Ordering,
-    /// Sign of χ(1) = 1 − 2p + q.
-    pub chi_1: Ordering,
-    /// Sign of χ(−1) = 1 + 2p + q.
-    pub chi_minus_1: Ordering,
-}
-
-/// The class of χ(z) = z² − 2p·z + q from the signs of its shifted
-/// polynomials (see the module docs).
-pub fn classify_pq(s: &PqSigns) -> RootClass {
-    use Ordering::{Equal, Greater, Less};
-    use RootClass::*;
-    match s.disc {
-        Less => match s.q_minus_1 {
-            Equal => Harmonic,
-            Less => DampedOscillation,
-            Greater => UnstableOscillation,
-        },
-        // A double real root at z = p.
-        Equal => match s.p {
-            Equal => Deadbeat,
-            _ if s.p_minus_1 == Equal || s.p_plus_1 == Equal => DoubleRootOnCircle,
-            Greater if s.p_minus_1 == Less => MonotonicStable,
-            Greater => MonotonicUnstable,
-            _ if s.p_plus_1 == Greater => AlternatingStable,
-            _ => AlternatingUnstable,
-        },
-        // Two distinct real roots p ± √(p² − q); the dominant one has the
-        // sign of p, and χ(±1) tells on which side of ±1 the roots lie.
-        Greater => match s.p {
-            Equal => match s.q_plus_1 {
-                Equal => Alternating,
-                Greater => AlternatingStable,
-                Less => AlternatingUnstable,
-            },
-            Greater => match s.chi_1 {
-                Equal if s.p_minus_1 == Less => Constant,
-                Equal | Less => MonotonicUnstable,
-                Greater if s.p_minus_1 == Greater => MonotonicUnstable,
-                Greater => MonotonicStable,
-            },
-            Less => match s.chi_minus_1 {
-                Equal if s.p_plus_1 == Greater => Alternating,
-                Equal | Less => AlternatingUnstable,
-                Greater if s.p_plus_1 == Less => AlternatingUnstable,
-                Greater => AlternatingStable,
-            },
-        },
-    }
-}
+/// The sign table of second-order methods lives in `poly` (one table for the
+/// exact analysis and the numeric classifiers).
+pub use poly::stability::{classify_pq, PqSigns};
 
 /// The class decided by numeric roots with per-root tolerances (see the
 /// module docs). `tolerance[i]` belongs to `roots[i]`.

@@ -18,7 +18,7 @@ use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
 
-use crate::sturm::{count_real_roots, isolate_real_roots, refine_interval, sign};
+use crate::sturm::{count_real_roots, isolate_real_roots, refine_interval, sign, sign_at, IntPoly};
 use crate::{UPoly, Q};
 
 /// A real algebraic number, exact.
@@ -58,20 +58,18 @@ impl Algebraic {
         let intervals = isolate_real_roots(&sf);
         // Find the rational roots once, then reduce the irrational ones with
         // the polynomial already freed of them.
-        let rational: Vec<Option<Q>> = intervals
-            .iter()
-            .map(|(lo, hi)| if lo == hi { Some(lo.clone()) } else { rational_root_in(&sf, lo, hi) })
-            .collect();
+        let rational = rational_roots(&sf, &intervals);
         let mut irrational = sf.clone();
         for r in rational.iter().flatten() {
             irrational = irrational.div_rem(&UPoly::new(vec![-r.clone(), Q::one()])).0;
         }
+        let even_factors = even_rational_factors(&irrational);
         intervals
             .into_iter()
             .zip(rational)
             .map(|((lo, hi), r)| match r {
                 Some(r) => Algebraic::from_rational(r),
-                None => reduce_irrational(irrational.clone(), lo, hi),
+                None => reduce_irrational_with(irrational.clone(), &even_factors, lo, hi),
             })
             .collect()
     }
@@ -164,7 +162,7 @@ impl Algebraic {
                     Ordering::Greater
                 } else if r >= hi {
                     Ordering::Less
-                } else if sign(&poly.eval(r)) == sign(&poly.eval(lo)) {
+                } else if sign_at(poly, r) == sign_at(poly, lo) {
                     // No sign change in (lo, r], so the root lies above r
                     // (poly(r) is non-zero: poly has no rational roots).
                     Ordering::Greater
@@ -282,6 +280,45 @@ impl Algebraic {
         k
     }
 
+    /// The negated number −a, exact.
+    pub fn neg(&self) -> Algebraic {
+        match &self.repr {
+            Repr::Rational(q) => Algebraic::from_rational(-q.clone()),
+            Repr::Root { poly, lo, hi } => Algebraic {
+                repr: Repr::Root {
+                    poly: poly.negate_x().monic(),
+                    lo: -hi.clone(),
+                    hi: -lo.clone(),
+                },
+            },
+        }
+    }
+
+    /// The absolute value |a|.
+    pub fn abs(&self) -> Algebraic {
+        if self.sign() == Ordering::Less {
+            self.neg()
+        } else {
+            self.clone()
+        }
+    }
+
+    /// The simplest rational strictly between `lo < hi` (smallest
+    /// denominator, then numerator), found by refining both numbers until
+    /// their intervals separate.
+    pub fn rational_between(lo: &Algebraic, hi: &Algebraic) -> Q {
+        let (mut a, mut b) = (lo.clone(), hi.clone());
+        let four = Q::from_integer(4.into());
+        loop {
+            let ((alo, ahi), (blo, bhi)) = (a.interval(), b.interval());
+            if ahi < blo {
+                return simplest_between(&ahi, &blo);
+            }
+            a = a.refine(&((&ahi - &alo) / &four));
+            b = b.refine(&((&bhi - &blo) / &four));
+        }
+    }
+
     /// Like `Display`, but writes a defining polynomial in the variable `var`.
     pub fn describe(&self, var: &str) -> String {
         if let Some(s) = self.closed_form() {
@@ -292,10 +329,30 @@ impl Algebraic {
     }
 }
 
+/// The rational with the smallest denominator (then numerator) strictly
+/// inside (l, r), l < r, by continued fractions.
+pub(crate) fn simplest_between(l: &Q, r: &Q) -> Q {
+    let fl = l.floor();
+    if &fl + Q::one() < *r {
+        return fl + Q::one();
+    }
+    let frac_l = l - &fl;
+    let frac_r = r - &fl;
+    if frac_l.is_zero() {
+        // (fl, r) with r ≤ fl + 1: fl + 1/k for the least k with 1/k < frac_r.
+        let k = (Q::one() / &frac_r).floor() + Q::one();
+        return fl + Q::one() / k;
+    }
+    fl + Q::one() / simplest_between(&(Q::one() / frac_r), &(Q::one() / frac_l))
+}
+
 /// The sign of `g` at the unique root of `poly` in (lo, hi).
 fn sign_at_root(poly: &UPoly, lo: &Q, hi: &Q, g: &UPoly) -> Ordering {
     if g.is_zero() {
         return Ordering::Equal;
+    }
+    if g.degree() == Some(0) {
+        return sign(&g.coeff(0));
     }
     let h = poly.gcd(g);
     // h divides poly, so its only possible root in (lo, hi) is our number;
@@ -303,11 +360,15 @@ fn sign_at_root(poly: &UPoly, lo: &Q, hi: &Q, g: &UPoly) -> Ordering {
     if h.degree().unwrap_or(0) > 0 && count_real_roots(&h, lo, hi) > 0 {
         return Ordering::Equal;
     }
+    // g does not vanish at the number: narrow the interval until g has no
+    // root in [lo, hi], then g's sign anywhere there is the answer.
+    let gi = IntPoly::new(g);
+    let chain = crate::sturm::Chain::new(g);
     let (mut lo, mut hi) = (lo.clone(), hi.clone());
     let four = Q::from_integer(4.into());
     loop {
-        if count_real_roots(g, &lo, &hi) == 0 && !g.eval(&lo).is_zero() {
-            return sign(&g.eval(&hi));
+        if chain.count(&lo, &hi) == 0 && !gi.sign_at(&lo).is_eq() {
+            return gi.sign_at(&hi);
         }
         let width = (&hi - &lo) / &four;
         (lo, hi) = refine_interval(poly, &lo, &hi, &width);
@@ -323,46 +384,104 @@ fn reduce(f: UPoly, lo: Q, hi: Q) -> Algebraic {
     if f.degree() == Some(1) {
         return Algebraic::from_rational(-f.coeff(0) / f.coeff(1));
     }
-    if let Some(r) = rational_root_in(&f, &lo, &hi) {
+    if let Some(r) = rational_roots(&f, &[(lo.clone(), hi.clone())])[0].clone() {
         return Algebraic::from_rational(r);
     }
     let mut f = f;
     // Drop the other rational roots: they are not ours and would only hide
     // a closed form.
-    for (a, b) in isolate_real_roots(&f) {
-        if let Some(r) = if a == b { Some(a) } else { rational_root_in(&f, &a, &b) } {
-            f = f.div_rem(&UPoly::new(vec![-r, Q::one()])).0;
-        }
+    let intervals = isolate_real_roots(&f);
+    for r in rational_roots(&f, &intervals).into_iter().flatten() {
+        f = f.div_rem(&UPoly::new(vec![-r, Q::one()])).0;
     }
     reduce_irrational(f, lo, hi)
 }
 
 /// [`reduce`] for an irrational root of a square-free `f` without rational
 /// roots.
-fn reduce_irrational(mut f: UPoly, lo: Q, hi: Q) -> Algebraic {
-    // For an even f(x) = F(x²), a rational root y of F gives the factor
-    // x² − y: either it is ours (a square root of a rational) or it goes.
-    if f.coeffs().iter().enumerate().all(|(k, c)| k % 2 == 0 || c.is_zero()) {
-        let big_f = UPoly::new(f.coeffs().iter().step_by(2).cloned().collect());
-        for y in isolate_real_roots(&big_f.squarefree()).into_iter().filter_map(|(a, b)| {
-            if a == b {
-                Some(a)
-            } else {
-                rational_root_in(&big_f.squarefree(), &a, &b)
-            }
-        }) {
-            let factor = UPoly::new(vec![-y, Q::zero(), Q::one()]);
-            if sign_at_root(&f, &lo, &hi, &factor) == Ordering::Equal {
-                f = factor;
-                break;
-            }
-            let (quotient, rem) = f.div_rem(&factor);
-            if rem.is_zero() {
-                f = quotient;
-            }
+fn reduce_irrational(f: UPoly, lo: Q, hi: Q) -> Algebraic {
+    let factors = even_rational_factors(&f);
+    reduce_irrational_with(f, &factors, lo, hi)
+}
+
+/// For an even f(x) = F(x²): the factors x² − y for the rational roots y of
+/// F; empty otherwise.
+fn even_rational_factors(f: &UPoly) -> Vec<UPoly> {
+    if f.degree().unwrap_or(0) < 2
+        || !f.coeffs().iter().enumerate().all(|(k, c)| k % 2 == 0 || c.is_zero())
+    {
+        return Vec::new();
+    }
+    let big_f = UPoly::new(f.coeffs().iter().step_by(2).cloned().collect()).squarefree();
+    let intervals = isolate_real_roots(&big_f);
+    rational_roots(&big_f, &intervals)
+        .into_iter()
+        .flatten()
+        .map(|y| UPoly::new(vec![-y, Q::zero(), Q::one()]))
+        .collect()
+}
+
+/// [`reduce`] for an irrational root of a square-free `f` without rational
+/// roots, given the factors x² − y of an even f: either one is ours (a
+/// square root of a rational) or it goes.
+fn reduce_irrational_with(mut f: UPoly, factors: &[UPoly], lo: Q, hi: Q) -> Algebraic {
+    for factor in factors {
+        if sign_at_root(&f, &lo, &hi, factor) == Ordering::Equal {
+            f = factor.clone();
+            break;
+        }
+        let (quotient, rem) = f.div_rem(factor);
+        if rem.is_zero() {
+            f = quotient;
         }
     }
     Algebraic { repr: Repr::Root { poly: f.monic(), lo, hi } }
+}
+
+/// The rational root in each isolating interval of the square-free `f`, if
+/// any. Roots met exactly by bisection come first; then, when a prime bound
+/// ([`crate::stability::modular::rational_root_bound`]) allows more, the
+/// simplest rational of a narrowed interval is tried in each; only if that
+/// finds fewer than the bound does the slow, complete search run.
+fn rational_roots(f: &UPoly, intervals: &[(Q, Q)]) -> Vec<Option<Q>> {
+    let mut out: Vec<Option<Q>> =
+        intervals.iter().map(|(lo, hi)| (lo == hi).then(|| lo.clone())).collect();
+    // Roots at zero are found by bisection (0 is a dyadic point).
+    let zero_free = {
+        let lowest = f.coeffs().iter().position(|c| !c.is_zero()).unwrap_or(0);
+        UPoly::new(f.coeffs()[lowest..].to_vec())
+    };
+    let found_nonzero = out.iter().flatten().filter(|r| !r.is_zero()).count();
+    let bound = if zero_free.degree().unwrap_or(0) == 0 {
+        Some(0)
+    } else {
+        crate::stability::modular::rational_root_bound(&crate::upoly::int_primitive(&zero_free))
+    };
+    if bound == Some(found_nonzero) {
+        return out;
+    }
+    let width = Q::new(BigInt::one(), BigInt::one() << 48);
+    let mut found = found_nonzero;
+    for (k, (lo, hi)) in intervals.iter().enumerate() {
+        if out[k].is_some() {
+            continue;
+        }
+        let (a, b) = refine_interval(f, lo, hi, &width);
+        let c = if a == b { a } else { simplest_between(&a, &b) };
+        if sign_at(f, &c).is_eq() {
+            out[k] = Some(c);
+            found += 1;
+        }
+    }
+    if bound == Some(found) {
+        return out;
+    }
+    for (k, (lo, hi)) in intervals.iter().enumerate() {
+        if out[k].is_none() {
+            out[k] = rational_root_in(f, lo, hi);
+        }
+    }
+    out
 }
 
 /// The rational root of the square-free `f` in (lo, hi), if the root
@@ -381,7 +500,7 @@ fn rational_root_in(f: &UPoly, lo: &Q, hi: &Q) -> Option<Q> {
     // The smallest j with j / a_n > lo; at most one such candidate fits.
     let j = (&lo * &lead_q).floor().to_integer() + BigInt::one();
     let candidate = Q::new(j, lead);
-    (candidate < hi && f.eval(&candidate).is_zero()).then_some(candidate)
+    (candidate < hi && sign_at(f, &candidate).is_eq()).then_some(candidate)
 }
 
 /// |a_n| of the primitive integer polynomial proportional to `f`.
@@ -496,6 +615,12 @@ impl Ord for Algebraic {
                 Repr::Root { poly: p1, lo: lo1, hi: hi1 },
                 Repr::Root { poly: p2, lo: lo2, hi: hi2 },
             ) => {
+                if hi1 <= lo2 {
+                    return Ordering::Less;
+                }
+                if hi2 <= lo1 {
+                    return Ordering::Greater;
+                }
                 let g = p1.gcd(p2);
                 let lo = lo1.max(lo2);
                 let hi = hi1.min(hi2);

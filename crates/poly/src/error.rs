@@ -34,6 +34,12 @@ pub enum ErrorKind {
     Encoding,
     /// A method name that is no built-in.
     UnknownBuiltin,
+    /// Stability analysis: a symbol other than `z` and `Phi` remains (give
+    /// it a value first).
+    ExtraSymbol,
+    /// Stability analysis: the polynomial does not depend on `z` (no roots
+    /// to classify).
+    NoRoots,
 }
 
 /// A position in a source file, 1-based.
@@ -223,6 +229,11 @@ fn snippet(line: &str, span: Span) -> (String, usize, usize) {
 impl std::error::Error for Error {}
 
 impl Error {
+    /// An analysis error: no source location.
+    pub(crate) fn analysis(kind: ErrorKind, message: impl Into<String>) -> Error {
+        Error::new(kind, Span::default(), message)
+    }
+
     pub(crate) fn unknown_builtin(name: &str) -> Error {
         let names: Vec<&str> = crate::all_builtin_names().collect();
         Error::new(

@@ -41,7 +41,8 @@ use std::fmt;
 
 use num_traits::{One, Signed, Zero};
 
-use crate::stability::{self, StabilityError};
+use crate::stability::{self, Stability};
+use crate::Error as StabilityError;
 use crate::{Algebraic, Poly, PolyMatrix, RootClass, Sym, UPoly, Q};
 
 /// Which condition a critical curve expresses.
@@ -207,10 +208,10 @@ impl Region {
     /// Φ_max at a rational D, exactly.
     pub fn phi_max(&self, d: &Q) -> Result<PhiLimit, StabilityError> {
         let r = stability::analyze(&self.at_param(d))?;
-        Ok(match (r.bounded_for_all, r.phi_max) {
-            (true, _) => PhiLimit::Every,
-            (false, Some(m)) => PhiLimit::Below(m),
-            (false, None) => PhiLimit::Never,
+        Ok(match r.stability {
+            Stability::BoundedForAllPhi => PhiLimit::Every,
+            Stability::Limited { phi_max, .. } => PhiLimit::Below(phi_max),
+            Stability::UnboundedForAllPhi => PhiLimit::Never,
         })
     }
 

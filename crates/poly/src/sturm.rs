@@ -16,35 +16,141 @@
 
 use std::cmp::Ordering;
 
+use num_bigint::BigInt;
+use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
 
 use crate::{UPoly, Q};
 
+/// A polynomial scaled by a positive rational to primitive integer
+/// coefficients: the same signs everywhere, evaluated without fractions.
+#[derive(Clone, Debug)]
+pub(crate) struct IntPoly {
+    c: Vec<BigInt>,
+}
+
+impl IntPoly {
+    pub(crate) fn new(p: &UPoly) -> IntPoly {
+        let mut den = BigInt::one();
+        for q in p.coeffs() {
+            den = den.lcm(q.denom());
+        }
+        let mut c: Vec<BigInt> =
+            p.coeffs().iter().map(|q| q.numer() * (&den / q.denom())).collect();
+        let g = c.iter().fold(BigInt::zero(), |g, x| g.gcd(x));
+        if !g.is_zero() && !g.is_one() {
+            for x in &mut c {
+                *x /= &g;
+            }
+        }
+        IntPoly { c }
+    }
+
+    pub(crate) fn degree(&self) -> Option<usize> {
+        self.c.len().checked_sub(1)
+    }
+
+    fn leading_sign(&self) -> Ordering {
+        self.c.last().map_or(Ordering::Equal, |x| x.sign().cmp_zero())
+    }
+
+    /// The sign of the polynomial at `x`: the sign of Σ c_k p^k q^(n−k) for
+    /// x = p/q, q > 0.
+    pub(crate) fn sign_at(&self, x: &Q) -> Ordering {
+        let Some(n) = self.degree() else { return Ordering::Equal };
+        let (p, q) = (x.numer(), x.denom());
+        if q.is_one() {
+            let mut acc = BigInt::zero();
+            for c in self.c.iter().rev() {
+                acc = acc * p + c;
+            }
+            return acc.sign().cmp_zero();
+        }
+        let mut acc = self.c[n].clone();
+        let mut qk = BigInt::one();
+        for c in self.c[..n].iter().rev() {
+            qk *= q;
+            acc = acc * p + c * &qk;
+        }
+        acc.sign().cmp_zero()
+    }
+}
+
+trait CmpZero {
+    fn cmp_zero(self) -> Ordering;
+}
+
+impl CmpZero for num_bigint::Sign {
+    fn cmp_zero(self) -> Ordering {
+        match self {
+            num_bigint::Sign::Minus => Ordering::Less,
+            num_bigint::Sign::NoSign => Ordering::Equal,
+            num_bigint::Sign::Plus => Ordering::Greater,
+        }
+    }
+}
+
+/// The sign of `p(x)`, exactly, without fractions.
+pub(crate) fn sign_at(p: &UPoly, x: &Q) -> Ordering {
+    IntPoly::new(p).sign_at(x)
+}
+
 /// The Sturm sequence of `p` (of its square-free part, so that counts see
-/// each distinct root once). Empty for the zero polynomial.
+/// each distinct root once), each term scaled by a positive rational to
+/// primitive integer coefficients. Empty for the zero polynomial.
 pub fn sturm_sequence(p: &UPoly) -> Vec<UPoly> {
+    chain(p)
+        .into_iter()
+        .map(|ip| UPoly::new(ip.c.into_iter().map(Q::from_integer).collect()))
+        .collect()
+}
+
+fn chain(p: &UPoly) -> Vec<IntPoly> {
     if p.is_zero() {
         return Vec::new();
     }
-    let p = p.squarefree();
-    let mut seq = vec![p.clone()];
-    let mut b = p.derivative();
-    let mut a = p;
-    while !b.is_zero() {
-        let r = a.div_rem(&b).1;
-        seq.push(b.clone());
+    let sf = p.squarefree();
+    let a = crate::upoly::int_primitive(&sf);
+    let mut b = crate::upoly::int_primitive(&sf.derivative());
+    let mut seq = vec![IntPoly { c: a.clone() }];
+    let mut a = a;
+    while !b.is_empty() {
+        // lc(b)^k·a = q·b + r, so −rem(a, b) is a positive multiple of
+        // −sign(lc(b))^k·r.
+        let (r, k) = crate::upoly::prem(&a, &b);
+        let negative_lead = b.last().is_some_and(|x| x.is_negative());
+        let flip = !(negative_lead && k % 2 == 1);
+        let next: Vec<BigInt> = if flip { r.into_iter().map(|x| -x).collect() } else { r };
+        seq.push(IntPoly { c: b.clone() });
         a = b;
-        b = -&r;
+        b = crate::upoly::primitive(next);
     }
     seq
 }
 
+/// A Sturm chain kept for repeated counts.
+pub(crate) struct Chain(Vec<IntPoly>);
+
+impl Chain {
+    pub(crate) fn new(p: &UPoly) -> Chain {
+        Chain(chain(p))
+    }
+
+    /// Distinct real roots in (lo, hi].
+    pub(crate) fn count(&self, lo: &Q, hi: &Q) -> usize {
+        if hi <= lo || self.0.is_empty() {
+            return 0;
+        }
+        count_with(&self.0, lo, hi)
+    }
+}
+
 /// Sign changes of the sequence at `x`, zeros skipped.
-fn variations(seq: &[UPoly], x: &Q) -> usize {
+fn variations(seq: &[IntPoly], x: &Q) -> usize {
     let mut count = 0;
     let mut last = Ordering::Equal;
     for p in seq {
-        let s = sign(&p.eval(x));
+        let s = p.sign_at(x);
         if s != Ordering::Equal {
             if last != Ordering::Equal && s != last {
                 count += 1;
@@ -56,11 +162,11 @@ fn variations(seq: &[UPoly], x: &Q) -> usize {
 }
 
 /// Sign changes at +∞ (leading coefficients) or −∞.
-fn variations_at_infinity(seq: &[UPoly], positive: bool) -> usize {
+fn variations_at_infinity(seq: &[IntPoly], positive: bool) -> usize {
     let mut count = 0;
     let mut last = Ordering::Equal;
     for p in seq {
-        let mut s = sign(&p.leading());
+        let mut s = p.leading_sign();
         if !positive && p.degree().unwrap_or(0) % 2 == 1 {
             s = s.reverse();
         }
@@ -91,11 +197,11 @@ pub fn count_real_roots(p: &UPoly, lo: &Q, hi: &Q) -> usize {
     if hi <= lo || p.is_zero() {
         return 0;
     }
-    let seq = sturm_sequence(p);
+    let seq = chain(p);
     count_with(&seq, lo, hi)
 }
 
-fn count_with(seq: &[UPoly], lo: &Q, hi: &Q) -> usize {
+fn count_with(seq: &[IntPoly], lo: &Q, hi: &Q) -> usize {
     variations(seq, lo).saturating_sub(variations(seq, hi))
 }
 
@@ -104,7 +210,7 @@ pub fn count_all_real_roots(p: &UPoly) -> usize {
     if p.is_zero() {
         return 0;
     }
-    let seq = sturm_sequence(p);
+    let seq = chain(p);
     variations_at_infinity(&seq, false).saturating_sub(variations_at_infinity(&seq, true))
 }
 
@@ -136,24 +242,24 @@ pub fn isolate_real_roots(p: &UPoly) -> Vec<(Q, Q)> {
         return Vec::new();
     }
     let sf = p.squarefree();
-    let seq = sturm_sequence(&sf);
+    let seq = chain(&sf);
     let b = root_bound(&sf);
     let mut out = Vec::new();
     let lo = -b.clone();
     let n = count_with(&seq, &lo, &b);
-    isolate_in(&sf, &seq, lo, b, n, &mut out);
+    isolate_in(&seq[0], &seq, lo, b, n, &mut out);
     out
 }
 
 /// Isolates the `n` roots in `(lo, hi]`, appending them in increasing order.
 /// `lo` is never a root here: it is the (root-free) bound or a bisection
 /// point that was tested.
-fn isolate_in(sf: &UPoly, seq: &[UPoly], lo: Q, hi: Q, n: usize, out: &mut Vec<(Q, Q)>) {
+fn isolate_in(sf: &IntPoly, seq: &[IntPoly], lo: Q, hi: Q, n: usize, out: &mut Vec<(Q, Q)>) {
     if n == 0 {
         return;
     }
     if n == 1 {
-        if sf.eval(&hi).is_zero() {
+        if sf.sign_at(&hi).is_eq() {
             out.push((hi.clone(), hi));
         } else {
             out.push((lo, hi));
@@ -163,7 +269,7 @@ fn isolate_in(sf: &UPoly, seq: &[UPoly], lo: Q, hi: Q, n: usize, out: &mut Vec<(
     let two = Q::from_integer(2.into());
     let mid = (&lo + &hi) / &two;
     let left = count_with(seq, &lo, &mid);
-    if sf.eval(&mid).is_zero() {
+    if sf.sign_at(&mid).is_eq() {
         // `mid` is a root: isolate the others on either side from points
         // next to it that are not roots, so every endpoint stays non-zero.
         let below = beside(sf, seq, &lo, &mid);
@@ -180,7 +286,7 @@ fn isolate_in(sf: &UPoly, seq: &[UPoly], lo: Q, hi: Q, n: usize, out: &mut Vec<(
 /// A point strictly between `toward` and the root `r`, not a root itself,
 /// with no root between it and `r`. Roots are isolated, so halving the step
 /// ends.
-fn beside(sf: &UPoly, seq: &[UPoly], toward: &Q, r: &Q) -> Q {
+fn beside(sf: &IntPoly, seq: &[IntPoly], toward: &Q, r: &Q) -> Q {
     let two = Q::from_integer(2.into());
     let mut step = (toward - r) / &two;
     loop {
@@ -188,7 +294,7 @@ fn beside(sf: &UPoly, seq: &[UPoly], toward: &Q, r: &Q) -> Q {
         let (a, b) = if x < *r { (x.clone(), r.clone()) } else { (r.clone(), x.clone()) };
         // (a, b] holds r when x is below, nothing else wanted either way.
         let expected = usize::from(x < *r);
-        if !sf.eval(&x).is_zero() && count_with(seq, &a, &b) == expected {
+        if !sf.sign_at(&x).is_eq() && count_with(seq, &a, &b) == expected {
             return x;
         }
         step /= &two;
@@ -204,10 +310,11 @@ pub fn refine_interval(p: &UPoly, lo: &Q, hi: &Q, width: &Q) -> (Q, Q) {
         return (lo, hi);
     }
     let two = Q::from_integer(2.into());
-    let s_lo = sign(&p.eval(&lo));
+    let ip = IntPoly::new(p);
+    let s_lo = ip.sign_at(&lo);
     while &hi - &lo > *width {
         let mid = (&lo + &hi) / &two;
-        let s = sign(&p.eval(&mid));
+        let s = ip.sign_at(&mid);
         if s == Ordering::Equal {
             return (mid.clone(), mid);
         }

@@ -8,6 +8,8 @@
 use std::fmt;
 use std::ops::{Add, Mul, Neg, Sub};
 
+use num_bigint::BigInt;
+use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
 
 use crate::Q;
@@ -126,14 +128,34 @@ impl UPoly {
     }
 
     /// The monic greatest common divisor (zero when both are zero).
+    ///
+    /// Coprime inputs (the common case) are recognised by one Euclid run
+    /// modulo a 62-bit prime dividing neither leading coefficient (the gcd
+    /// modulo p has at least the true gcd's degree); otherwise the primitive
+    /// pseudo-remainder sequence over Z gives the gcd without fractions.
     pub fn gcd(&self, other: &UPoly) -> UPoly {
-        let (mut a, mut b) = (self.clone(), other.clone());
-        while !b.is_zero() {
-            let r = a.div_rem(&b).1;
-            a = b;
-            b = r;
+        if self.is_zero() {
+            return other.monic();
         }
-        a.monic()
+        if other.is_zero() {
+            return self.monic();
+        }
+        if self.degree() == Some(0) || other.degree() == Some(0) {
+            return UPoly::constant(Q::one());
+        }
+        let (mut a, mut b) = (int_primitive(self), int_primitive(other));
+        if crate::stability::modular::coprime_mod_p(&a, &b) {
+            return UPoly::constant(Q::one());
+        }
+        if a.len() < b.len() {
+            std::mem::swap(&mut a, &mut b);
+        }
+        while !b.is_empty() {
+            let (r, _) = prem(&a, &b);
+            a = b;
+            b = primitive(r);
+        }
+        UPoly::new(a.into_iter().map(Q::from_integer).collect()).monic()
     }
 
     /// The square-free part `p / gcd(p, p')`, monic.
@@ -142,6 +164,9 @@ impl UPoly {
             return self.monic();
         }
         let g = self.gcd(&self.derivative());
+        if g.degree() == Some(0) {
+            return self.monic();
+        }
         self.div_rem(&g).0.monic()
     }
 
@@ -264,4 +289,51 @@ impl Neg for &UPoly {
     fn neg(self) -> UPoly {
         UPoly { c: self.c.iter().map(|c| -c).collect() }
     }
+}
+
+/// The coefficients scaled by a positive rational to primitive integers.
+pub(crate) fn int_primitive(p: &UPoly) -> Vec<BigInt> {
+    let mut den = BigInt::one();
+    for q in p.coeffs() {
+        den = den.lcm(q.denom());
+    }
+    primitive(p.coeffs().iter().map(|q| q.numer() * (&den / q.denom())).collect())
+}
+
+/// Divides by the (positive) gcd of the coefficients; trailing zeros dropped.
+pub(crate) fn primitive(mut c: Vec<BigInt>) -> Vec<BigInt> {
+    while c.last().is_some_and(Zero::is_zero) {
+        c.pop();
+    }
+    let g = c.iter().fold(BigInt::zero(), |g, x| g.gcd(x));
+    if !g.is_zero() && !g.is_one() {
+        for x in &mut c {
+            *x /= &g;
+        }
+    }
+    c
+}
+
+/// The pseudo-remainder over Z: (r, k) with lc(b)^k·a = q·b + r, deg r <
+/// deg b; `b` non-zero.
+pub(crate) fn prem(a: &[BigInt], b: &[BigInt]) -> (Vec<BigInt>, usize) {
+    let n = b.len() - 1;
+    let lb = &b[n];
+    let mut r = a.to_vec();
+    let mut k = 0;
+    while r.len() > n && !r.is_empty() {
+        let s = r.len() - 1 - n;
+        let lr = r.last().expect("non-empty").clone();
+        for x in r.iter_mut() {
+            *x *= lb;
+        }
+        for (j, bj) in b.iter().enumerate() {
+            r[s + j] -= &lr * bj;
+        }
+        k += 1;
+        while r.last().is_some_and(Zero::is_zero) {
+            r.pop();
+        }
+    }
+    (r, k)
 }

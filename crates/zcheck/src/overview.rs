@@ -78,13 +78,13 @@ pub fn summarize(method: &poly::Method, order: usize) -> Result<MethodSummary, O
     let d = poly::derive(method).map_err(err)?;
     let chi = &d.charpoly;
     let report = poly::stability::analyze(chi).map_err(err)?;
-    let (phi_max_exact, phi_max) = match &report.phi_max {
+    let (phi_max_exact, phi_max) = match report.phi_max() {
         Some(a) => {
             let exact = a.closed_form().unwrap_or_else(|| a.describe("Phi"));
             let value: f64 = a.to_decimal(17).parse().map_err(err)?;
             (exact, Some(value))
         }
-        None if report.bounded_for_all => ("none: bounded for every Phi > 0".to_owned(), None),
+        None if report.bounded_for_all() => ("none: bounded for every Phi > 0".to_owned(), None),
         None => ("none: unbounded for every Phi > 0".to_owned(), None),
     };
     let (psi_series, phase_error) = match series::psi_series_scaled(chi, order) {

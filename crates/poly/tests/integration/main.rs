@@ -23,6 +23,7 @@ mod det;
 mod errors;
 mod fuzz_corpus;
 mod large;
+mod multistep;
 mod parser;
 mod region;
 mod routes;

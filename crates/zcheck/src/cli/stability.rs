@@ -12,7 +12,7 @@ use std::fmt::Write as _;
 use std::process::ExitCode;
 
 use anyhow::Context;
-use poly::stability::{analyze, StabilityReport};
+use poly::stability::{analyze_derivation, Stability, StabilityReport};
 use poly::{Algebraic, Sym, Q};
 use serde_json::{json, Value};
 
@@ -50,7 +50,11 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
         shown.push((p.name.clone(), p.value.value.clone()));
     }
     let chi = chi.eval_partial(&values);
-    let report = analyze(&chi).with_context(|| format!("method {}", method.name()))?;
+    // With the transition matrix, boundedness at a repeated root on the
+    // circle is decided from P's Jordan structure (Merson at 2√3: P = I).
+    let derivation = poly::derive(&method)?;
+    let report = analyze_derivation(&derivation, &values)
+        .with_context(|| format!("method {}", method.name()))?;
     let out = match args.format {
         Format::Text => text(method.name(), &shown, &chi, &report),
         Format::Json => {
@@ -92,24 +96,18 @@ fn number_json(a: &Algebraic) -> Value {
 pub fn to_json(name: &str, params: &[(String, Q)], chi: &poly::Poly, r: &StabilityReport) -> Value {
     let params: serde_json::Map<String, Value> =
         params.iter().map(|(n, v)| (n.clone(), json!(v.to_string()))).collect();
-    let stability = if r.bounded_for_all {
-        "bounded_for_all_phi"
-    } else if r.phi_max.is_some() {
-        "limited"
-    } else {
-        "unbounded_for_all_phi"
-    };
     json!({
         "method": name,
         "params": params,
         "charpoly": chi.to_string(),
         "degree": r.degree,
-        "stability": stability,
-        "phi_max": r.phi_max.as_ref().map(to_f64),
-        "phi_max_exact": r.phi_max.as_ref().map(exact),
-        "phi_max_detail": r.phi_max.as_ref().map(number_json),
-        "bounded_at_phi_max": r.bounded_at_phi_max,
-        "boundary": r.boundary.map(|b| b.name()),
+        "stability": r.stability.name(),
+        "phi_max": r.phi_max().map(to_f64),
+        "phi_max_exact": r.phi_max().map(exact),
+        "phi_max_detail": r.phi_max().map(number_json),
+        "bounded_at_phi_max": r.bounded_at_phi_max(),
+        "boundary": r.boundary().map(|b| b.name()),
+        "boundedness_from": if r.from_transition_matrix { "transition_matrix" } else { "charpoly" },
         "class_changes": r.class_changes.iter().map(|c| json!({
             "phi": to_f64(&c.at),
             "phi_exact": exact(&c.at),
@@ -124,11 +122,28 @@ pub fn to_json(name: &str, params: &[(String, Q)], chi: &poly::Poly, r: &Stabili
             "hi_exact": i.hi.as_ref().map(exact),
             "class": i.class.name(),
             "sample_phi": i.sample.to_string(),
+            "roots_inside": i.counts.inside,
+            "roots_on": i.counts.on,
+            "roots_outside": i.counts.outside,
         })).collect::<Vec<_>>(),
+        "stable_intervals": r.stable_intervals.iter().map(|i| json!({
+            "lo_exact": exact(&i.lo),
+            "lo_closed": i.lo_closed,
+            "hi_exact": i.hi.as_ref().map(exact),
+            "hi_closed": i.hi_closed,
+        })).collect::<Vec<_>>(),
+        "marginal": r.marginal.as_ref().map(|m| json!({
+            "coefficient": m.coefficient.to_string(),
+            "power": m.power,
+            "growth_threshold": m.threshold.to_string(),
+            "practical_phi_max_exact": m.practical_phi_max.as_ref().map(exact),
+            "practical_phi_max": m.practical_phi_max.as_ref().map(to_f64),
+        })),
         "critical_points": r.critical_points.iter().map(|p| json!({
             "phi": to_f64(&p.at),
             "phi_exact": exact(&p.at),
-            "conditions": p.conditions,
+            "conditions": p.conditions.iter().map(|c| c.name()).collect::<Vec<_>>(),
+            "bounded": p.bounded,
         })).collect::<Vec<_>>(),
     })
 }
@@ -153,26 +168,20 @@ fn text(name: &str, params: &[(String, Q)], chi: &poly::Poly, r: &StabilityRepor
         if given.is_empty() { String::new() } else { format!("   ({})", given.join(", ")) }
     );
     let _ = writeln!(s, "chi(z) = {chi}\n");
-    match (&r.phi_max, r.bounded_for_all) {
-        (_, true) => {
+    match &r.stability {
+        Stability::BoundedForAllPhi => {
             let _ = writeln!(s, "bounded for every Phi > 0");
         }
-        (None, false) => {
+        Stability::UnboundedForAllPhi => {
             let _ = writeln!(s, "unbounded for every Phi > 0 (no stability limit)");
         }
-        (Some(m), false) => {
+        Stability::Limited { phi_max: m, bounded_at_phi_max, boundary: b } => {
             let _ = writeln!(s, "stable for 0 < Phi < {}", show(m));
-            if let Some(b) = r.boundary {
-                let at = match r.bounded_at_phi_max {
-                    Some(true) => "bounded",
-                    Some(false) => "unbounded",
-                    None => "not decided",
-                };
-                let _ = writeln!(s, "at the limit: {b}; the limit itself is {at}");
-            }
+            let at = if *bounded_at_phi_max { "bounded" } else { "unbounded" };
+            let _ = writeln!(s, "at the limit: {b}; the limit itself is {at}");
             let (lo, hi) = m.refine(&fine()).interval();
             if m.is_rational() {
-                return s + &classes(r);
+                return s + &classes(r) + &extras(r);
             }
             let _ = writeln!(
                 s,
@@ -181,7 +190,40 @@ fn text(name: &str, params: &[(String, Q)], chi: &poly::Poly, r: &StabilityRepor
             );
         }
     }
-    s + &classes(r)
+    s + &classes(r) + &extras(r)
+}
+
+/// Disjoint stable intervals and the marginal-verdict note, when present.
+fn extras(r: &StabilityReport) -> String {
+    let mut s = String::new();
+    let near_zero = r.stable_intervals.first().is_some_and(|i| i.lo.sign().is_eq());
+    let further: Vec<_> = r.stable_intervals.iter().skip(usize::from(near_zero)).collect();
+    if !further.is_empty() {
+        let _ = writeln!(s, "\nbounded further out:");
+        for i in further {
+            let hi = i.hi.as_ref().map_or("inf".to_owned(), show);
+            let (l, rb) =
+                (if i.lo_closed { "[" } else { "(" }, if i.hi_closed { "]" } else { ")" });
+            let _ = writeln!(s, "  {l}{}, {hi}{rb}", show(&i.lo));
+        }
+    }
+    if let Some(m) = &r.marginal {
+        let _ = writeln!(
+            s,
+            "\nnote: the verdict hangs on a tiny term: |z|^2 - 1 = c*Phi^{} + ... with c = {} \
+             (|c| < 1e-12, below the rounding of 16-digit coefficients)",
+            m.power,
+            show(&poly::Algebraic::from_rational(m.coefficient.clone()))
+        );
+        let limit =
+            m.practical_phi_max.as_ref().map_or("none (within it for every Phi)".to_owned(), show);
+        let _ = writeln!(
+            s,
+            "practical limit for growth per step <= 1 + {}: Phi <= {limit}",
+            m.threshold
+        );
+    }
+    s
 }
 
 fn classes(r: &StabilityReport) -> String {

@@ -124,7 +124,8 @@ impl Candidate {
         let charpoly = full.eval_partial(&values);
         let report = poly::stability::analyze(&charpoly)
             .map_err(|e| TradeoffError::new(format!("method `{name}`: stability: {e}")))?;
-        let limit = Limit { phi_max: report.phi_max, bounded_for_all: report.bounded_for_all };
+        let limit =
+            Limit { phi_max: report.phi_max().cloned(), bounded_for_all: report.bounded_for_all() };
         let model = SecondOrder::new(&charpoly, &[])
             .map_err(|e| TradeoffError::new(format!("method `{name}`: {e}")))?;
         let display = match name.as_str() {

@@ -319,7 +319,7 @@ fn advisor_agrees_with_stability_and_classification() {
         let advice = advise(&s, &cands, |_| 1.0).unwrap();
         for (c, m) in cands.iter().zip(&advice.methods) {
             let report = poly::stability::analyze(&c.charpoly).unwrap();
-            let below_max = report.phi_max.as_ref().is_some_and(|max| {
+            let below_max = report.phi_max().is_some_and(|max| {
                 max.cmp_rational(&f64_to_q(advice.phi).unwrap()) == std::cmp::Ordering::Greater
             });
             assert_eq!(m.stable_at_phi, below_max, "{} at {}", c.name, advice.phi);
@@ -338,7 +338,9 @@ fn advisor_agrees_with_stability_and_classification() {
                         assert!(!bounded(advice.phi / (k - 1) as f64), "{}: {k} - 1", c.name);
                     }
                 }
-                None => assert!(report.phi_max.is_none() && !report.bounded_for_all, "{}", c.name),
+                None => {
+                    assert!(report.phi_max().is_none() && !report.bounded_for_all(), "{}", c.name)
+                }
             }
             if let Some(k) = m.substeps_tol {
                 assert!(k >= m.substeps_stable.unwrap(), "{}", c.name);

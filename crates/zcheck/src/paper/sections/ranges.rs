@@ -35,22 +35,9 @@ pub fn positive_roots(p: &Poly) -> Vec<Algebraic> {
     roots
 }
 
-/// A rational strictly between two numbers (`a < b`).
-pub fn rational_between(a: &Algebraic, b: &Algebraic) -> Q {
-    let mut width = poly::q(1, 16);
-    loop {
-        let (_, a_hi) = a.refine(&width).interval();
-        let (b_lo, _) = b.refine(&width).interval();
-        if a_hi < b_lo {
-            return (a_hi + b_lo) / poly::q(2, 1);
-        }
-        width /= poly::q(16, 1);
-    }
-}
-
 /// A rational in (0, a) for a positive `a`.
 fn rational_below(a: &Algebraic) -> Q {
-    rational_between(&Algebraic::zero(), a)
+    Algebraic::rational_between(&Algebraic::zero(), a)
 }
 
 /// A rational above `a`.
@@ -85,7 +72,7 @@ impl Piece {
             Piece::Open(None, None) => Some(poly::q(1, 1)),
             Piece::Open(None, Some(h)) => Some(rational_below(h)),
             Piece::Open(Some(l), None) => Some(rational_above(l)),
-            Piece::Open(Some(l), Some(h)) => Some(rational_between(l, h)),
+            Piece::Open(Some(l), Some(h)) => Some(Algebraic::rational_between(l, h)),
             Piece::Point(a) => a.as_rational().cloned(),
         }
     }
@@ -288,7 +275,7 @@ pub fn title(name: &str) -> String {
 /// Φ_max of a stability report: the largest Φ₀ with every 0 < Φ < Φ₀
 /// bounded (`None` when there is none, or when every Φ is bounded).
 pub fn limit_of(report: &StabilityReport) -> Option<Algebraic> {
-    report.phi_max.clone()
+    report.phi_max().cloned()
 }
 
 /// Φ_max of a built-in, in words ("2", "sqrt(2) ≈ 1.4142", "none").

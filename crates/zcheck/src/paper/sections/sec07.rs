@@ -114,7 +114,7 @@ fn stability_limit(s: &mut Section) {
     let show_all =
         |v: &[poly::Algebraic]| v.iter().map(ranges::show).collect::<Vec<_>>().join(", ");
     let limit = phi_max.as_ref().map(ranges::show).unwrap_or_else(|| "none".to_owned());
-    let boundary = r.boundary.as_ref().map(|b| b.to_string()).unwrap_or_else(|| "none".to_owned());
+    let boundary = r.boundary().map(|b| b.to_string()).unwrap_or_else(|| "none".to_owned());
     // T/T0 = 1/π as a step: Φ = 2π·T/T0 = 2π/π.
     let period_ratio = poly::q(2, 1);
     s.push(

@@ -81,11 +81,8 @@ fn always_stable(s: &mut Section) {
     let (finding, map, failing) = ranges::always("semi_false_heun", RootClass::is_bounded, None);
     let r = ranges::report("semi_false_heun");
     let limit = ranges::limit_text("semi_false_heun");
-    let boundary = r
-        .boundary
-        .as_ref()
-        .map(|b| b.to_string().replace('_', " "))
-        .unwrap_or_else(|| "none".to_owned());
+    let boundary =
+        r.boundary().map(|b| b.to_string().replace('_', " ")).unwrap_or_else(|| "none".to_owned());
     let chi_minus_one =
         derivation("semi_false_heun").charpoly.subs(poly::Sym::z(), &poly::Poly::int(-1));
     let crossings: Vec<String> =

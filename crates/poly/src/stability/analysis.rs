@@ -1,0 +1,360 @@
+//! The walk over Φ > 0: critical points, a class per interval, the class
+//! and boundedness at the points, the stability limit and the stable
+//! intervals.
+
+use std::collections::HashMap;
+
+use num_traits::{One, Signed};
+
+use crate::algebraic::Algebraic;
+use crate::error::{Error, ErrorKind};
+use crate::{Derivation, Poly, RootClass, Sym, UPoly, Q};
+
+use super::conditions::{critical_conditions, discriminant, Charpoly};
+use super::field::{FPoly, Field};
+use super::point::{
+    circle_counts, class_of_single_root, classify_quadratic, classify_with_counts, Counts,
+};
+use super::{
+    Boundary, ClassChange, ClassInterval, Condition, CriticalPoint, Marginal, Stability,
+    StabilityReport, StableInterval,
+};
+
+/// The class and root counts of χ at a rational Φ.
+pub(crate) fn class_at_rational(chi: &Charpoly, phi: &Q) -> (RootClass, Counts) {
+    let f = chi.at(phi);
+    if chi.degree() == 2 {
+        let class = classify_quadratic(&chi.a, |p| crate::sturm::sign_at(p, phi));
+        let counts = if f.is_zero() { Counts::default() } else { circle_counts(&f) };
+        return (class, counts);
+    }
+    classify_with_counts(&f)
+}
+
+/// The class of χ exactly at an algebraic Φ, when computed (rational Φ,
+/// or degree ≤ 2).
+pub(crate) fn class_at_point(chi: &Charpoly, phi: &Algebraic) -> Option<RootClass> {
+    if let Some(q) = phi.as_rational() {
+        return Some(class_at_rational(chi, q).0);
+    }
+    match chi.degree() {
+        2 => Some(classify_quadratic(&chi.a, |p| phi.sign_of(p))),
+        1 => {
+            // One root r = −a0/a1: signs of r, r − 1, r + 1 from polynomials.
+            let (a0, a1) = (&chi.a[0], &chi.a[1]);
+            let by = |o: std::cmp::Ordering| if phi.sign_of(a1).is_gt() { o } else { o.reverse() };
+            Some(class_of_single_root(
+                by(phi.sign_of(&-a0)),
+                by(phi.sign_of(&-&(a0 + a1))),
+                by(phi.sign_of(&(a1 - a0))),
+            ))
+        }
+        _ => None,
+    }
+}
+
+/// The exact stability analysis of χ(z; Φ) over Φ > 0, from χ alone: a
+/// repeated root on the unit circle counts as unbounded.
+///
+/// ```
+/// let chi = poly::Poly::parse("z^2 - 2*(1 - Phi^2/2)*z + 1")?; // False Euler
+/// let report = poly::stability::analyze(&chi)?;
+/// assert_eq!(report.phi_max().unwrap().to_string(), "2");
+/// assert_eq!(report.boundary(), Some(poly::stability::Boundary::DoubleRootAtMinusOne));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn analyze(charpoly: &Poly) -> Result<StabilityReport, Error> {
+    let chi = Charpoly::new(charpoly)?;
+    Ok(run(&chi, None, Some(charpoly)))
+}
+
+/// The exact stability analysis of a derivation with the given parameter
+/// values: like [`analyze`], but boundedness where a root on the unit
+/// circle is repeated is decided from the transition matrix P (bounded
+/// exactly when P is semisimple there).
+pub fn analyze_derivation(
+    d: &Derivation,
+    params: &HashMap<Sym, Q>,
+) -> Result<StabilityReport, Error> {
+    let charpoly = d.charpoly.eval_partial(params);
+    let chi = Charpoly::new(&charpoly)?;
+    let phi = Sym::phi();
+    let p = &d.transition_matrix;
+    let mut rows = Vec::with_capacity(p.rows());
+    for i in 0..p.rows() {
+        let mut row = Vec::with_capacity(p.cols());
+        for e in p.row(i) {
+            let e = e.eval_partial(params);
+            let u = e.to_upoly(phi).ok_or_else(|| {
+                Error::analysis(
+                    ErrorKind::ExtraSymbol,
+                    format!(
+                        "transition matrix entry {e} still contains a parameter; \
+                         expected a polynomial in Phi only (give it a value)"
+                    ),
+                )
+            })?;
+            row.push(u);
+        }
+        rows.push(row);
+    }
+    Ok(run(&chi, Some(&rows), Some(&charpoly)))
+}
+
+/// Every positive root of every non-trivial condition, merged exactly.
+fn critical_points(conditions: &[(Condition, UPoly)]) -> Vec<CriticalPoint> {
+    let mut points: Vec<CriticalPoint> = Vec::new();
+    for (name, cond) in conditions {
+        if cond.degree().unwrap_or(0) == 0 {
+            continue;
+        }
+        for root in Algebraic::positive_roots(cond) {
+            match points.iter_mut().find(|p| p.at == root) {
+                Some(p) if p.conditions.contains(name) => {}
+                Some(p) => p.conditions.push(*name),
+                None => {
+                    points.push(CriticalPoint { at: root, conditions: vec![*name], bounded: None })
+                }
+            }
+        }
+    }
+    points.sort_by(|x, y| x.at.cmp(&y.at));
+    // Narrow intervals make the printed "root of ... in [a, b]" readable.
+    let width = Q::new(1.into(), 1024.into());
+    for p in &mut points {
+        p.at = p.at.refine(&width);
+    }
+    points
+}
+
+fn run(chi: &Charpoly, p: Option<&[Vec<UPoly>]>, charpoly: Option<&Poly>) -> StabilityReport {
+    let conditions = critical_conditions(chi);
+    let mut points = critical_points(&conditions);
+
+    // The class on each open interval, at a rational sample.
+    let zero = Algebraic::zero();
+    let mut samples = Vec::with_capacity(points.len() + 1);
+    for k in 0..=points.len() {
+        let lo = if k == 0 { &zero } else { &points[k - 1].at };
+        let sample = match points.get(k) {
+            Some(hi) => Algebraic::rational_between(lo, &hi.at),
+            None => {
+                let (_, hi) = lo.interval();
+                hi.floor() + Q::one()
+            }
+        };
+        samples.push(sample);
+    }
+    let at_samples: Vec<(RootClass, Counts)> =
+        samples.iter().map(|s| class_at_rational(chi, s)).collect();
+    let classes: Vec<RootClass> = at_samples.iter().map(|c| c.0).collect();
+    let at_classes: Vec<Option<RootClass>> =
+        points.iter().map(|pt| class_at_point(chi, &pt.at)).collect();
+
+    // Boundedness exactly at every point next to a bounded interval.
+    let disc = discriminant(&chi.a);
+    for (k, point) in points.iter_mut().enumerate() {
+        if classes[k].is_bounded() || classes[k + 1].is_bounded() {
+            point.bounded = Some(bounded_at(chi, &point.at, at_classes[k], &disc, p));
+        }
+    }
+
+    // Merge intervals across critical points where nothing changes.
+    let mut intervals = vec![ClassInterval {
+        lo: zero.clone(),
+        hi: None,
+        class: classes[0],
+        sample: samples[0].clone(),
+        counts: at_samples[0].1,
+    }];
+    let mut class_changes = Vec::new();
+    for (k, point) in points.iter().enumerate() {
+        let (from, to, at_class) = (classes[k], classes[k + 1], at_classes[k]);
+        if from == to && (at_class.is_none() || at_class == Some(from)) {
+            continue;
+        }
+        class_changes.push(ClassChange { at: point.at.clone(), from, to, at_class });
+        intervals.last_mut().expect("one interval at least").hi = Some(point.at.clone());
+        intervals.push(ClassInterval {
+            lo: point.at.clone(),
+            hi: None,
+            class: to,
+            sample: samples[k + 1].clone(),
+            counts: at_samples[k + 1].1,
+        });
+    }
+
+    // The stability limit: walk up from Φ = 0 while everything is bounded.
+    let stability = if !classes[0].is_bounded() {
+        Stability::UnboundedForAllPhi
+    } else {
+        let mut verdict = Stability::BoundedForAllPhi;
+        for (k, point) in points.iter().enumerate() {
+            let at_bounded = point.bounded.expect("decided next to a bounded interval");
+            if at_bounded && classes[k + 1].is_bounded() {
+                continue;
+            }
+            verdict = Stability::Limited {
+                phi_max: point.at.clone(),
+                bounded_at_phi_max: at_bounded,
+                boundary: boundary_at(chi, &conditions, &point.at),
+            };
+            break;
+        }
+        verdict
+    };
+
+    // Maximal bounded runs: open intervals joined through bounded points.
+    let mut stable_intervals: Vec<StableInterval> = Vec::new();
+    let mut open: Option<StableInterval> = None;
+    for k in 0..=points.len() {
+        if classes[k].is_bounded() {
+            if open.is_none() {
+                let (lo, lo_closed) = if k == 0 {
+                    (zero.clone(), false)
+                } else {
+                    (points[k - 1].at.clone(), points[k - 1].bounded == Some(true))
+                };
+                open = Some(StableInterval { lo, lo_closed, hi: None, hi_closed: false });
+            }
+            if let Some(pt) = points.get(k) {
+                if pt.bounded == Some(true) && classes.get(k + 1).is_some_and(|c| c.is_bounded()) {
+                    continue;
+                }
+                let mut s = open.take().expect("open");
+                s.hi = Some(pt.at.clone());
+                s.hi_closed = pt.bounded == Some(true);
+                stable_intervals.push(s);
+            }
+        }
+    }
+    if let Some(s) = open {
+        stable_intervals.push(s);
+    }
+
+    let marginal = charpoly.and_then(|c| marginal(chi, c));
+    StabilityReport {
+        degree: chi.degree(),
+        stability,
+        from_transition_matrix: p.is_some(),
+        class_changes,
+        intervals,
+        stable_intervals,
+        critical_points: points,
+        marginal,
+    }
+}
+
+/// Whether Φ = α is bounded, given that every root at α has |z| ≤ 1 (the
+/// point borders a bounded interval, and roots move continuously).
+fn bounded_at(
+    chi: &Charpoly,
+    alpha: &Algebraic,
+    at_class: Option<RootClass>,
+    disc: &UPoly,
+    p: Option<&[Vec<UPoly>]>,
+) -> bool {
+    match at_class {
+        Some(c) if c.is_bounded() => return true,
+        Some(RootClass::DoubleRootOnCircle) if p.is_some() => {}
+        Some(_) => return false,
+        None => {
+            if !disc.is_zero() && !alpha.is_root_of(disc) {
+                // Simple roots, none outside: bounded.
+                return true;
+            }
+        }
+    }
+    let mut field = Field::new(alpha);
+    let f: FPoly = field.trim(chi.a.iter().map(|c| field.reduce(c)).collect());
+    // Roots at zero are inside the circle: strip them.
+    let lowest = f.iter().position(|c| !field.is_zero(c)).unwrap_or(0);
+    let f: FPoly = f[lowest..].to_vec();
+    if f.len() < 3 {
+        return true;
+    }
+    let df = field.derivative(&f);
+    let d = field.gcd(&f, &df);
+    if d.len() < 2 {
+        return true;
+    }
+    let rev: FPoly = d.iter().rev().cloned().collect();
+    let e = field.gcd(&d, &rev);
+    if e.len() < 2 {
+        return true;
+    }
+    let Some(p) = p else { return false };
+    // q: the distinct repeated roots on the circle.
+    let de = field.derivative(&e);
+    let g = field.gcd(&e, &de);
+    let q = if g.len() >= 2 { field.div(&e, &g) } else { e };
+    let pm: Vec<Vec<UPoly>> =
+        p.iter().map(|row| row.iter().map(|x| field.reduce(x)).collect()).collect();
+    let qp = field.poly_at_matrix(&q, &pm);
+    let qp2 = field.mat_mul(&qp, &qp);
+    field.rank(qp) == field.rank(qp2)
+}
+
+/// What happens at the stability limit, from which conditions vanish there.
+fn boundary_at(chi: &Charpoly, conditions: &[(Condition, UPoly)], at: &Algebraic) -> Boundary {
+    let vanishes = |p: &UPoly| at.is_root_of(p);
+    let one = Q::one();
+    let minus_one = -Q::one();
+    let named =
+        |name: Condition| conditions.iter().any(|(n, p)| *n == name && !p.is_zero() && vanishes(p));
+    let at_minus_one = vanishes(&chi.value_at_z(&minus_one));
+    let at_plus_one = vanishes(&chi.value_at_z(&one));
+    if at_minus_one && vanishes(&chi.derivative_at_z(&minus_one)) {
+        Boundary::DoubleRootAtMinusOne
+    } else if at_plus_one && vanishes(&chi.derivative_at_z(&one)) {
+        Boundary::DoubleRootAtPlusOne
+    } else if at_plus_one {
+        Boundary::RootThroughPlusOne
+    } else if at_minus_one {
+        Boundary::RootThroughMinusOne
+    } else if named(Condition::LeadingCoefficient) {
+        Boundary::RootFromInfinity
+    } else if named(Condition::UnitCircle) {
+        if named(Condition::Discriminant) {
+            Boundary::RepeatedPairOnCircle
+        } else {
+            Boundary::ComplexPairLeavesCircle
+        }
+    } else if named(Condition::ReciprocalDiscriminant) || named(Condition::Discriminant) {
+        Boundary::RepeatedPairOnCircle
+    } else {
+        Boundary::Other
+    }
+}
+
+/// For a second-order χ whose |z|² − 1 = c·Φ^k + … has 0 < |c| < 10⁻¹²
+/// (a term below the rounding of 16-digit decimal coefficients): the
+/// practical limit for growth per step at most 1 + 10⁻⁹, exactly, as the
+/// stability limit of χ((1 + ε) w).
+fn marginal(chi: &Charpoly, charpoly: &Poly) -> Option<Marginal> {
+    if chi.degree() != 2 {
+        return None;
+    }
+    let lead = crate::series::dissipation_order(charpoly).ok().flatten()?;
+    let tiny = Q::new(1.into(), num_traits::pow(num_bigint::BigInt::from(10), 12));
+    if lead.coeff.abs() >= tiny {
+        return None;
+    }
+    let threshold = Q::new(1.into(), num_traits::pow(num_bigint::BigInt::from(10), 9));
+    let r = Q::one() + &threshold;
+    // Roots of χ((1 + ε) w) are z / (1 + ε): |w| ≤ 1 ⇔ |z| ≤ 1 + ε.
+    let mut pow = Q::one();
+    let mut a = Vec::with_capacity(chi.a.len());
+    for c in &chi.a {
+        a.push(c.scale(&pow));
+        pow *= &r;
+    }
+    let scaled = Charpoly::from_coeffs(a);
+    let report = run(&scaled, None, None);
+    let practical_phi_max = match report.stability {
+        Stability::Limited { phi_max, .. } => Some(phi_max),
+        Stability::BoundedForAllPhi => None,
+        Stability::UnboundedForAllPhi => return None,
+    };
+    Some(Marginal { coefficient: lead.coeff, power: lead.order, threshold, practical_phi_max })
+}

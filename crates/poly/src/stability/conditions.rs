@@ -1,0 +1,459 @@
+//! The critical conditions of χ(z; Φ): polynomials in Φ whose positive
+//! roots are the only places where the root class can change.
+//!
+//! χ = Σ a_k(Φ) z^k is first scaled to integer coefficients (the roots do not
+//! change). A root meets the unit circle only where
+//! - χ(1) = 0 or χ(−1) = 0 (a real root passes ±1), or
+//! - two roots have product 1: ∏_{i<j}(1 − z_i z_j) = 0, which for a complex
+//!   pair is |z|² = 1. Times a_n^{n−1} this product is the determinant of the
+//!   (n−1)×(n−1) matrix X − Y of Jury's inners (X upper triangular Toeplitz of
+//!   a_n … a_2, Y the lower-right triangular Toeplitz of a_0 … a_{n−2}); it is
+//!   the square root of Res_z(χ, z^n χ(1/z)) / (χ(1) χ(−1)), so it carries the
+//!   same roots at half the degree. It is computed by modular evaluation and
+//!   interpolation ([`super::modular`]).
+//!
+//! When that product vanishes identically (a self-reciprocal factor:
+//! symplectic methods keep roots on the circle for a whole Φ-interval), the
+//! factor g = gcd(χ, z^n χ(1/z)) over Q(Φ) is split off: its roots on the
+//! circle are the real roots x ∈ (−2, 2) of G(x) with g = z^m G(z + 1/z), so
+//! they change only where G(±2) = g(±1) = 0 (in χ(±1)), where G's leading
+//! coefficient vanishes (in a_n) or where the discriminant of G vanishes.
+//! The cofactor h = χ/g is handled like χ.
+//!
+//! The class of the dominant roots also changes where roots collide (the
+//! discriminant of χ in z, Res_z(χ, χ′)/a_n), where a root comes from
+//! infinity (a_n = 0), and where roots of different kind tie for the largest
+//! modulus: r = −s (Res_y(E, O) with χ(z) = E(z²) + z·O(z²)) and, for
+//! degree ≤ 4, a real root against a complex pair (r² = z z̄, from the
+//! polynomials of squares and of pair products). Ties of a real root and a
+//! complex pair at degree ≥ 5 are not among the conditions: such a change
+//! inside an interval would go unlisted (see the module notes).
+
+use num_bigint::BigInt;
+use num_integer::Integer;
+use num_traits::One;
+
+use crate::error::{Error, ErrorKind};
+use crate::{Poly, Sym, UPoly, Q};
+
+use super::modular;
+use super::Condition;
+
+/// χ split into its coefficients in z, each an integer polynomial in Φ.
+#[derive(Clone, Debug)]
+pub(crate) struct Charpoly {
+    /// a[k] multiplies z^k; the last is non-zero.
+    pub a: Vec<UPoly>,
+}
+
+impl Charpoly {
+    pub fn new(chi: &Poly) -> Result<Charpoly, Error> {
+        let (z, phi) = (Sym::z(), Sym::phi());
+        if let Some(s) = chi.symbols().into_iter().find(|&s| s != z && s != phi) {
+            return Err(Error::analysis(
+                ErrorKind::ExtraSymbol,
+                format!(
+                    "characteristic polynomial {chi} still contains the parameter {s}; \
+                     expected a polynomial in z and Phi only (give {s} a value)"
+                ),
+            ));
+        }
+        let a: Vec<UPoly> =
+            chi.coeffs_in(z).iter().map(|c| c.to_upoly(phi).expect("only Phi remains")).collect();
+        if a.len() < 2 {
+            return Err(Error::analysis(
+                ErrorKind::NoRoots,
+                format!("characteristic polynomial {chi} does not depend on z"),
+            ));
+        }
+        Ok(Charpoly::from_coeffs(a))
+    }
+
+    /// From coefficients in z (lowest first), scaled to integers, trailing
+    /// zeros dropped.
+    pub fn from_coeffs(mut a: Vec<UPoly>) -> Charpoly {
+        while a.last().is_some_and(UPoly::is_zero) {
+            a.pop();
+        }
+        Charpoly { a: integer_scaled(&a) }
+    }
+
+    pub fn degree(&self) -> usize {
+        self.a.len() - 1
+    }
+
+    /// χ at a rational Φ, as a polynomial in z.
+    pub fn at(&self, phi: &Q) -> UPoly {
+        UPoly::new(self.a.iter().map(|c| c.eval(phi)).collect())
+    }
+
+    /// χ(x) as a polynomial in Φ, for a rational x.
+    pub fn value_at_z(&self, x: &Q) -> UPoly {
+        let mut acc = UPoly::zero();
+        for c in self.a.iter().rev() {
+            acc = &acc.scale(x) + c;
+        }
+        acc
+    }
+
+    /// χ′(x) as a polynomial in Φ.
+    pub fn derivative_at_z(&self, x: &Q) -> UPoly {
+        let d: Vec<UPoly> = self
+            .a
+            .iter()
+            .enumerate()
+            .skip(1)
+            .map(|(k, c)| c.scale(&Q::from_integer(k.into())))
+            .collect();
+        let mut acc = UPoly::zero();
+        for c in d.iter().rev() {
+            acc = &acc.scale(x) + c;
+        }
+        acc
+    }
+}
+
+/// The coefficients times the least common multiple of their denominators.
+pub(crate) fn integer_scaled(a: &[UPoly]) -> Vec<UPoly> {
+    let mut den = BigInt::one();
+    for c in a {
+        for q in c.coeffs() {
+            den = den.lcm(q.denom());
+        }
+    }
+    let s = Q::from_integer(den);
+    a.iter().map(|c| c.scale(&s)).collect()
+}
+
+/// Jury's inners determinant det(X − Y) = a_n^{n−1} ∏_{i<j}(1 − z_i z_j).
+pub(crate) fn unit_circle_condition(a: &[UPoly]) -> UPoly {
+    let n = a.len() - 1;
+    if n < 2 {
+        return UPoly::constant(Q::one());
+    }
+    let m = n - 1;
+    let mut rows = vec![vec![UPoly::zero(); m]; m];
+    for (i, row) in rows.iter_mut().enumerate() {
+        for (j, e) in row.iter_mut().enumerate() {
+            // X: upper triangular Toeplitz, X[i][j] = a_{n − (j − i)} for j ≥ i.
+            let x = if j >= i { a[n - (j - i)].clone() } else { UPoly::zero() };
+            // Y: Y[i][j] = a_{i + j − (m − 1)} when i + j ≥ m − 1.
+            let y = if i + j + 1 >= m { a[i + j + 1 - m].clone() } else { UPoly::zero() };
+            *e = &x - &y;
+        }
+    }
+    modular::det(&rows)
+}
+
+/// The discriminant of χ in z, up to a non-zero constant.
+pub(crate) fn discriminant(a: &[UPoly]) -> UPoly {
+    let n = a.len() - 1;
+    if n < 2 {
+        return UPoly::constant(Q::one());
+    }
+    if n == 2 {
+        let (c, b, a) = (&a[0], &a[1], &a[2]);
+        return &(b * b) - &(a * c).scale(&Q::from_integer(4.into()));
+    }
+    let d: Vec<UPoly> =
+        a.iter().enumerate().skip(1).map(|(k, c)| c.scale(&Q::from_integer(k.into()))).collect();
+    let res = modular::resultant(a, &d);
+    res.div_rem(&a[n]).0
+}
+
+/// Ties r = −s between roots: Res_y(E, O) with χ(z) = E(z²) + z·O(z²).
+/// `None` when O or E vanishes identically (χ even or odd: every root ties
+/// with its negative for all Φ).
+pub(crate) fn opposite_tie(a: &[UPoly]) -> Option<UPoly> {
+    let mut e: Vec<UPoly> = a.iter().step_by(2).cloned().collect();
+    let mut o: Vec<UPoly> = a.iter().skip(1).step_by(2).cloned().collect();
+    for v in [&mut e, &mut o] {
+        while v.last().is_some_and(UPoly::is_zero) {
+            v.pop();
+        }
+    }
+    if e.is_empty() || o.is_empty() {
+        return None;
+    }
+    if o.len() == 1 {
+        // Res(E, c) = c^{deg E}: the roots of c.
+        return Some(o[0].clone());
+    }
+    if e.len() == 1 {
+        return Some(e[0].clone());
+    }
+    Some(modular::resultant(&e, &o))
+}
+
+/// For degree 3 and 4: r² = z_i z_j, a real root against a complex pair, as
+/// the resultant of the polynomial of squares and that of pair products
+/// (built from power sums by Newton's identities; small at these degrees).
+pub(crate) fn pair_tie(a: &[UPoly]) -> Option<UPoly> {
+    let n = a.len() - 1;
+    if !(3..=4).contains(&n) {
+        return None;
+    }
+    let pairs = n * (n - 1) / 2;
+    let p = scaled_power_sums(a, (2 * pairs).max(2 * n));
+    let half = Q::new(1.into(), 2.into());
+    let pair_sums: Vec<UPoly> =
+        (0..=pairs).map(|k| (&(&p[k] * &p[k]) - &p[2 * k]).scale(&half)).collect();
+    let square_sums: Vec<UPoly> = (0..=n).map(|k| p[2 * k].clone()).collect();
+    let an_sq = &a[n] * &a[n];
+    let products = integer_scaled(&poly_from_scaled_sums(&pair_sums, pairs, &an_sq));
+    let squares = integer_scaled(&poly_from_scaled_sums(&square_sums, n, &an_sq));
+    if products.last().is_none_or(UPoly::is_zero) || squares.last().is_none_or(UPoly::is_zero) {
+        return None;
+    }
+    let r = modular::resultant(&squares, &products);
+    (!r.is_zero()).then_some(r)
+}
+
+/// Power sums scaled to stay polynomial in Φ: p̃_k = a_n^k p_k.
+fn scaled_power_sums(a: &[UPoly], kmax: usize) -> Vec<UPoly> {
+    let n = a.len() - 1;
+    let an = &a[n];
+    let mut an_pow = vec![UPoly::constant(Q::one())];
+    for k in 1..=kmax {
+        let next = &an_pow[k - 1] * an;
+        an_pow.push(next);
+    }
+    let mut p = vec![UPoly::constant(Q::from_integer(n.into()))];
+    for k in 1..=kmax {
+        let mut s = UPoly::zero();
+        for i in 1..=k.min(n) {
+            if i < k {
+                s = &s + &(&(&a[n - i] * &an_pow[i - 1]) * &p[k - i]);
+            } else {
+                s = &s + &(&a[n - k] * &an_pow[k - 1]).scale(&Q::from_integer(k.into()));
+            }
+        }
+        p.push(-&s);
+    }
+    p
+}
+
+/// The coefficients (lowest power of x first) of a_n^{2m}·∏(x − w) over the
+/// m numbers w whose power sums, scaled by a_n^{2k}, are `sums[k]`.
+fn poly_from_scaled_sums(sums: &[UPoly], m: usize, an_sq: &UPoly) -> Vec<UPoly> {
+    let mut e = vec![UPoly::constant(Q::one())];
+    for k in 1..=m {
+        let mut acc = UPoly::zero();
+        for i in 1..=k {
+            let term = &e[k - i] * &sums[i];
+            acc = if i % 2 == 1 { &acc + &term } else { &acc - &term };
+        }
+        e.push(acc.scale(&(Q::one() / Q::from_integer(k.into()))));
+    }
+    let mut coeffs = vec![UPoly::zero(); m + 1];
+    let mut an_pow = UPoly::constant(Q::one());
+    for k in (0..=m).rev() {
+        let c = &e[k] * &an_pow;
+        coeffs[m - k] = if k % 2 == 0 { c } else { -&c };
+        an_pow = &an_pow * an_sq;
+    }
+    coeffs
+}
+
+/// Polynomials in z over Q[Φ] (coefficients lowest first).
+type ZPoly = Vec<UPoly>;
+
+fn trim(mut v: ZPoly) -> ZPoly {
+    while v.last().is_some_and(UPoly::is_zero) {
+        v.pop();
+    }
+    v
+}
+
+/// The content (monic gcd of the coefficients over Q[Φ]).
+fn content(f: &[UPoly]) -> UPoly {
+    f.iter().fold(UPoly::zero(), |g, c| g.gcd(c))
+}
+
+fn primitive(f: ZPoly) -> ZPoly {
+    let c = content(&f);
+    if c.degree().unwrap_or(0) == 0 {
+        return integer_scaled(&f);
+    }
+    integer_scaled(&f.iter().map(|x| x.div_rem(&c).0).collect::<Vec<_>>())
+}
+
+/// lc(g)^e·f = q·g + r in Q[Φ][z]: (q, r).
+fn pseudo_div(f: &[UPoly], g: &[UPoly]) -> (ZPoly, ZPoly) {
+    let n = g.len() - 1;
+    let lg = &g[n];
+    let mut r: ZPoly = f.to_vec();
+    let mut q: ZPoly = vec![UPoly::zero(); f.len().saturating_sub(n).max(1)];
+    while r.len() > n && !r.is_empty() {
+        let k = r.len() - 1 - n;
+        let lr = r.last().expect("non-empty").clone();
+        // r ← lg·r − lr·z^k·g ; q ← lg·q + lr·z^k
+        for c in q.iter_mut() {
+            *c = &*c * lg;
+        }
+        q[k] = &q[k] + &lr;
+        for c in r.iter_mut() {
+            *c = &*c * lg;
+        }
+        for (j, gj) in g.iter().enumerate() {
+            r[k + j] = &r[k + j] - &(&lr * gj);
+        }
+        r = trim(r);
+    }
+    (trim(q), r)
+}
+
+/// The primitive gcd of two polynomials in Q[Φ][z] (primitive PRS).
+pub(crate) fn gcd_z(f: &[UPoly], g: &[UPoly]) -> ZPoly {
+    let (mut a, mut b) = (primitive(trim(f.to_vec())), primitive(trim(g.to_vec())));
+    if a.len() < b.len() {
+        std::mem::swap(&mut a, &mut b);
+    }
+    while !b.is_empty() {
+        let (_, r) = pseudo_div(&a, &b);
+        a = b;
+        b = if r.is_empty() { r } else { primitive(r) };
+    }
+    a
+}
+
+/// f / g in Q[Φ][z] when g divides f (up to a factor in Q[Φ], removed).
+pub(crate) fn exact_div_z(f: &[UPoly], g: &[UPoly]) -> ZPoly {
+    let (q, r) = pseudo_div(f, g);
+    debug_assert!(r.is_empty(), "exact division");
+    primitive(q)
+}
+
+/// For a palindromic g of even degree 2m (coefficients lowest first), G with
+/// g(z) = z^m G(z + 1/z): G = c_m + Σ_k c_{m+k} D_k(x), D_k(z + 1/z) = z^k + z^{−k}.
+pub(crate) fn reciprocal_reduce<T: Clone>(
+    c: &[T],
+    zero: T,
+    add: impl Fn(&T, &T) -> T,
+    scale_int: impl Fn(&T, i64) -> T,
+) -> Vec<T> {
+    let m = (c.len() - 1) / 2;
+    // D_k as integer polynomials in x.
+    let mut d: Vec<Vec<i64>> = vec![vec![2], vec![0, 1]];
+    for k in 2..=m {
+        let mut next = vec![0i64; k + 1];
+        for (i, &v) in d[k - 1].iter().enumerate() {
+            next[i + 1] += v;
+        }
+        for (i, &v) in d[k - 2].iter().enumerate() {
+            next[i] -= v;
+        }
+        d.push(next);
+    }
+    let mut g = vec![zero.clone(); m + 1];
+    g[0] = add(&g[0], &c[m]);
+    for k in 1..=m {
+        for (i, &v) in d[k].iter().enumerate() {
+            if v != 0 {
+                g[i] = add(&g[i], &scale_int(&c[m + k], v));
+            }
+        }
+    }
+    g
+}
+
+/// The critical conditions of χ, each a polynomial in Φ.
+pub(crate) fn critical_conditions(chi: &Charpoly) -> Vec<(Condition, UPoly)> {
+    let a = &chi.a;
+    let n = chi.degree();
+    let one = Q::one();
+    let mut out = vec![
+        (Condition::LeadingCoefficient, a[n].clone()),
+        (Condition::ConstantCoefficient, a[0].clone()),
+        (Condition::ChiAtOne, chi.value_at_z(&one)),
+        (Condition::ChiAtMinusOne, chi.value_at_z(&-one.clone())),
+    ];
+    if n >= 2 {
+        let circle = unit_circle_condition(a);
+        if !circle.is_zero() {
+            out.push((Condition::UnitCircle, circle));
+        } else {
+            out.extend(reciprocal_conditions(a));
+        }
+    }
+    out.push((Condition::Discriminant, discriminant(a)));
+    if let Some(t) = opposite_tie(a) {
+        out.push((Condition::ModulusTie, t));
+    }
+    if let Some(t) = pair_tie(a) {
+        out.push((Condition::ModulusTie, t));
+    }
+    out
+}
+
+/// χ has a self-reciprocal factor g = gcd(χ, χ*) over Q(Φ): conditions of g
+/// through G(x), and of the cofactor h through its inners determinant.
+fn reciprocal_conditions(a: &[UPoly]) -> Vec<(Condition, UPoly)> {
+    let rev: Vec<UPoly> = a.iter().rev().cloned().collect();
+    let mut g = gcd_z(a, &rev);
+    let h = exact_div_z(a, &g);
+    let mut out = Vec::new();
+    if h.len() >= 3 {
+        let c = unit_circle_condition(&h);
+        if !c.is_zero() {
+            out.push((Condition::UnitCircle, c));
+        }
+    }
+    // Strip the factors z ∓ 1 of g (identically in Φ), leaving a palindrome.
+    for s in [Q::one(), -Q::one()] {
+        loop {
+            let val = g.iter().rev().fold(UPoly::zero(), |acc, c| &acc.scale(&s) + c);
+            if !val.is_zero() || g.len() < 2 {
+                break;
+            }
+            g = exact_div_z(&g, &[UPoly::constant(-s.clone()), UPoly::constant(Q::one())]);
+        }
+    }
+    if g.len() >= 3 && (g.len() - 1).is_multiple_of(2) {
+        let big_g = reciprocal_reduce(
+            &g,
+            UPoly::zero(),
+            |x, y| x + y,
+            |x, k| x.scale(&Q::from_integer(k.into())),
+        );
+        let big_g = integer_scaled(&big_g);
+        if big_g.len() >= 3 {
+            let d: Vec<UPoly> = big_g
+                .iter()
+                .enumerate()
+                .skip(1)
+                .map(|(k, c)| c.scale(&Q::from_integer(k.into())))
+                .collect();
+            let disc = modular::resultant(&big_g, &d);
+            if !disc.is_zero() {
+                out.push((Condition::ReciprocalDiscriminant, disc));
+            }
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn inners_square_times_chi_pm1_is_the_reciprocal_resultant() {
+        // χ = 2z³ + z² − z + 3 − Φ·(z² + 1): compare with the Sylvester resultant.
+        let a = vec![
+            UPoly::from_ints(&[3, -1]),
+            UPoly::from_ints(&[-1]),
+            UPoly::from_ints(&[1, -1]),
+            UPoly::from_ints(&[2]),
+        ];
+        let rev: Vec<UPoly> = a.iter().rev().cloned().collect();
+        let r = modular::resultant(&a, &rev);
+        let s = unit_circle_condition(&a);
+        let chi = Charpoly { a: a.clone() };
+        let p1 = chi.value_at_z(&Q::one());
+        let m1 = chi.value_at_z(&-Q::one());
+        let rhs = &(&(&p1 * &m1) * &s) * &s;
+        // R = (−1)^n χ(1) χ(−1) S², n = 3.
+        assert_eq!(r, -&rhs);
+    }
+}

@@ -1,0 +1,482 @@
+//! Determinants and resultants over Z\[Φ\] by multi-modular evaluation and
+//! interpolation.
+//!
+//! A determinant whose entries are integer polynomials in Φ is itself an
+//! integer polynomial of known degree bound D (the sum over rows of the
+//! largest entry degree). Modulo a 62-bit prime p it is evaluated at D + 1
+//! points by Gaussian elimination (or, for a resultant, by Euclid's algorithm
+//! over F_p), interpolated, and the residues are combined by the Chinese
+//! remainder theorem in the symmetric range. Enough primes are taken that
+//! their product exceeds twice a proven bound on every coefficient:
+//! |coefficient| ≤ max_{|t| = 1} |det M(t)| ≤ ∏_i (Σ_j ‖m_ij‖₁²)^{1/2}
+//! (Hadamard's inequality at each point of the unit circle, with the 1-norm
+//! bounding an entry's modulus there). Nothing is guessed: the answer is the
+//! exact integer polynomial.
+
+use std::sync::OnceLock;
+
+use num_bigint::BigInt;
+use num_integer::Integer;
+use num_traits::{One, Signed, ToPrimitive, Zero};
+
+use crate::{UPoly, Q};
+
+/// The integer coefficients of `p`; panics when one is not an integer (a
+/// programmer error: callers clear denominators first).
+#[track_caller]
+pub(crate) fn ints(p: &UPoly) -> Vec<BigInt> {
+    p.coeffs()
+        .iter()
+        .map(|c| {
+            assert!(c.is_integer(), "modular kernels take integer polynomials");
+            c.to_integer()
+        })
+        .collect()
+}
+
+/// Σ |c_k|.
+fn norm1(c: &[BigInt]) -> BigInt {
+    c.iter().fold(BigInt::zero(), |acc, x| acc + x.abs())
+}
+
+fn mulmod(a: u64, b: u64, p: u64) -> u64 {
+    ((a as u128 * b as u128) % p as u128) as u64
+}
+
+fn powmod(mut a: u64, mut e: u64, p: u64) -> u64 {
+    let mut r = 1 % p;
+    while e > 0 {
+        if e & 1 == 1 {
+            r = mulmod(r, a, p);
+        }
+        a = mulmod(a, a, p);
+        e >>= 1;
+    }
+    r
+}
+
+fn inv(a: u64, p: u64) -> u64 {
+    powmod(a, p - 2, p)
+}
+
+/// Deterministic Miller–Rabin for 64-bit integers.
+fn is_prime(n: u64) -> bool {
+    if n < 2 {
+        return false;
+    }
+    const BASES: [u64; 12] = [2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37];
+    for &b in &BASES {
+        if n.is_multiple_of(b) {
+            return n == b;
+        }
+    }
+    let (mut d, mut s) = (n - 1, 0);
+    while d % 2 == 0 {
+        d /= 2;
+        s += 1;
+    }
+    'next: for &a in &BASES {
+        let mut x = powmod(a, d, n);
+        if x == 1 || x == n - 1 {
+            continue;
+        }
+        for _ in 1..s {
+            x = mulmod(x, x, n);
+            if x == n - 1 {
+                continue 'next;
+            }
+        }
+        return false;
+    }
+    true
+}
+
+/// The first `count` primes below 2^62, decreasing (computed once, cached).
+fn primes(count: usize) -> Vec<u64> {
+    static CACHE: OnceLock<std::sync::Mutex<Vec<u64>>> = OnceLock::new();
+    let cache = CACHE.get_or_init(|| std::sync::Mutex::new(Vec::new()));
+    let mut list = cache.lock().unwrap_or_else(|e| e.into_inner());
+    let mut n = list.last().map_or(1u64 << 62, |&p| p - 2) | 1;
+    while list.len() < count {
+        if is_prime(n) {
+            list.push(n);
+        }
+        n -= 2;
+    }
+    list[..count].to_vec()
+}
+
+fn reduce(c: &[BigInt], p: u64) -> Vec<u64> {
+    let pb = BigInt::from(p);
+    c.iter().map(|x| x.mod_floor(&pb).to_u64().expect("reduced below p")).collect()
+}
+
+fn eval_mod(c: &[u64], x: u64, p: u64) -> u64 {
+    c.iter().rev().fold(0, |acc, &a| (mulmod(acc, x, p) + a) % p)
+}
+
+/// Newton interpolation over F_p; coefficients lowest power first. The
+/// points are small distinct integers, so the inverses of their differences
+/// come from one table.
+fn interpolate(xs: &[u64], ys: &[u64], p: u64) -> Vec<u64> {
+    let n = xs.len();
+    let max = xs.iter().copied().max().unwrap_or(0) as usize;
+    // inv_table[d] = 1/d mod p for d = 1..=max, by the recurrence
+    // 1/d = −(p div d)·1/(p mod d).
+    let mut inv_table = vec![0u64; max + 1];
+    if max >= 1 {
+        inv_table[1] = 1;
+    }
+    for d in 2..=max {
+        let q = p / d as u64;
+        let r = (p % d as u64) as usize;
+        inv_table[d] = (p - mulmod(q, inv_table[r], p)) % p;
+    }
+    let mut dd = ys.to_vec();
+    for j in 1..n {
+        for i in (j..n).rev() {
+            let num = (dd[i] + p - dd[i - 1]) % p;
+            dd[i] = mulmod(num, inv_table[(xs[i] - xs[i - j]) as usize], p);
+        }
+    }
+    // Horner on the Newton form: c ← c·(x − x_k) + dd[k].
+    let mut c: Vec<u64> = Vec::with_capacity(n);
+    for k in (0..n).rev() {
+        let xk = xs[k];
+        c.push(0);
+        for i in (1..c.len()).rev() {
+            c[i] = (c[i - 1] + p - mulmod(c[i], xk, p)) % p;
+        }
+        c[0] = (p - mulmod(c[0], xk, p)) % p;
+        c[0] = (c[0] + dd[k]) % p;
+    }
+    c
+}
+
+/// Combines residue vectors (one per prime) into integers in the symmetric
+/// range, as a polynomial over Q.
+fn crt(residues: &[(u64, Vec<u64>)]) -> UPoly {
+    let len = residues.first().map_or(0, |r| r.1.len());
+    let mut value = vec![BigInt::zero(); len];
+    let mut modulus = BigInt::one();
+    for (p, r) in residues {
+        let pb = BigInt::from(*p);
+        // x ≡ value (mod modulus), x ≡ r (mod p): x = value + modulus·t,
+        // t = (r − value)·modulus⁻¹ mod p.
+        let m_mod = modulus.mod_floor(&pb).to_u64().expect("below p");
+        let m_inv = inv(m_mod, *p);
+        for (v, &ri) in value.iter_mut().zip(r) {
+            let v_mod = v.mod_floor(&pb).to_u64().expect("below p");
+            let t = mulmod((ri + p - v_mod) % p, m_inv, *p);
+            *v += &modulus * BigInt::from(t);
+        }
+        modulus *= pb;
+    }
+    let half = &modulus >> 1;
+    UPoly::new(
+        value
+            .into_iter()
+            .map(|v| Q::from_integer(if v > half { v - &modulus } else { v }))
+            .collect(),
+    )
+}
+
+/// How many primes make a product above 2·2^bits.
+fn primes_for(bound_sq: &BigInt) -> Vec<u64> {
+    // |c| ≤ √bound_sq < 2^(bits(bound_sq)/2 + 1); need ∏p > 2|c|.
+    let bits = bound_sq.bits() / 2 + 3;
+    let count = (bits as usize).div_ceil(61);
+    primes(count.max(1))
+}
+
+/// The determinant of a square matrix of integer polynomials in Φ.
+pub(crate) fn det(m: &[Vec<UPoly>]) -> UPoly {
+    let n = m.len();
+    if n == 0 {
+        return UPoly::constant(Q::one());
+    }
+    let entries: Vec<Vec<Vec<BigInt>>> =
+        m.iter().map(|row| row.iter().map(ints).collect()).collect();
+    let degree: usize =
+        m.iter().map(|row| row.iter().filter_map(UPoly::degree).max().unwrap_or(0)).sum();
+    let mut bound = BigInt::one();
+    for row in &entries {
+        let s = row.iter().map(|e| norm1(e).pow(2)).fold(BigInt::zero(), |a, b| a + b);
+        bound *= s;
+    }
+    if bound.is_zero() {
+        return UPoly::zero();
+    }
+    let mut residues = Vec::new();
+    for p in primes_for(&bound) {
+        let red: Vec<Vec<Vec<u64>>> =
+            entries.iter().map(|row| row.iter().map(|e| reduce(e, p)).collect()).collect();
+        let xs: Vec<u64> = (0..=degree as u64).collect();
+        let ys: Vec<u64> = xs
+            .iter()
+            .map(|&x| {
+                let mut a: Vec<Vec<u64>> =
+                    red.iter().map(|row| row.iter().map(|e| eval_mod(e, x, p)).collect()).collect();
+                det_mod(&mut a, p)
+            })
+            .collect();
+        residues.push((p, interpolate(&xs, &ys, p)));
+    }
+    crt(&residues)
+}
+
+fn det_mod(a: &mut [Vec<u64>], p: u64) -> u64 {
+    let n = a.len();
+    let mut d = 1u64;
+    for k in 0..n {
+        let Some(piv) = (k..n).find(|&i| a[i][k] != 0) else { return 0 };
+        if piv != k {
+            a.swap(piv, k);
+            d = (p - d) % p;
+        }
+        d = mulmod(d, a[k][k], p);
+        let iv = inv(a[k][k], p);
+        for i in k + 1..n {
+            if a[i][k] == 0 {
+                continue;
+            }
+            let f = mulmod(a[i][k], iv, p);
+            let (top, bottom) = a.split_at_mut(i);
+            for (x, &y) in bottom[0][k..].iter_mut().zip(&top[k][k..]) {
+                let s = mulmod(f, y, p);
+                *x = (*x + p - s) % p;
+            }
+        }
+    }
+    d
+}
+
+fn trim(v: &mut Vec<u64>) {
+    while v.last() == Some(&0) {
+        v.pop();
+    }
+}
+
+/// Res(f, g) over F_p by Euclid's algorithm (actual degrees).
+fn res_mod(mut f: Vec<u64>, mut g: Vec<u64>, p: u64) -> u64 {
+    trim(&mut f);
+    trim(&mut g);
+    if f.is_empty() || g.is_empty() {
+        return 0;
+    }
+    let mut acc = 1u64;
+    loop {
+        let (m, n) = (f.len() - 1, g.len() - 1);
+        if n == 0 {
+            return mulmod(acc, powmod(g[0], m as u64, p), p);
+        }
+        if m == 0 {
+            return mulmod(acc, powmod(f[0], n as u64, p), p);
+        }
+        // r = f mod g
+        let mut r = f.clone();
+        let lg_inv = inv(g[n], p);
+        if r.len() > n {
+            for k in (0..r.len() - n).rev() {
+                let c = mulmod(r[k + n], lg_inv, p);
+                if c != 0 {
+                    for (j, &gj) in g.iter().enumerate() {
+                        r[k + j] = (r[k + j] + p - mulmod(c, gj, p)) % p;
+                    }
+                }
+            }
+            r.truncate(n);
+        }
+        trim(&mut r);
+        if r.is_empty() {
+            return 0;
+        }
+        let k = r.len() - 1;
+        if (m * n) % 2 == 1 {
+            acc = (p - acc) % p;
+        }
+        acc = mulmod(acc, powmod(g[n], (m - k) as u64, p), p);
+        f = std::mem::replace(&mut g, r);
+    }
+}
+
+/// Whether two integer polynomials (lowest power first, non-zero leading
+/// coefficients) are coprime over Q, proven by their gcd modulo a prime
+/// dividing neither leading coefficient having degree 0. `false` means "not
+/// proven" (they may still be coprime).
+pub(crate) fn coprime_mod_p(a: &[BigInt], b: &[BigInt]) -> bool {
+    let (la, lb) = (a.last().expect("non-zero"), b.last().expect("non-zero"));
+    for p in primes(4) {
+        let pb = BigInt::from(p);
+        if (la % &pb).is_zero() || (lb % &pb).is_zero() {
+            continue;
+        }
+        let (mut x, mut y) = (reduce(a, p), reduce(b, p));
+        trim(&mut x);
+        trim(&mut y);
+        while !y.is_empty() {
+            let n = y.len() - 1;
+            let li = inv(y[n], p);
+            while x.len() > n {
+                let c = mulmod(x[x.len() - 1], li, p);
+                let s = x.len() - 1 - n;
+                for (j, &yj) in y.iter().enumerate() {
+                    x[s + j] = (x[s + j] + p - mulmod(c, yj, p)) % p;
+                }
+                trim(&mut x);
+            }
+            std::mem::swap(&mut x, &mut y);
+        }
+        return x.len() == 1;
+    }
+    false
+}
+
+fn rem_mod(mut a: Vec<u64>, b: &[u64], p: u64) -> Vec<u64> {
+    trim(&mut a);
+    let n = b.len() - 1;
+    let li = inv(b[n], p);
+    while a.len() > n {
+        let c = mulmod(a[a.len() - 1], li, p);
+        let s = a.len() - 1 - n;
+        for (j, &bj) in b.iter().enumerate() {
+            a[s + j] = (a[s + j] + p - mulmod(c, bj, p)) % p;
+        }
+        trim(&mut a);
+    }
+    a
+}
+
+fn gcd_mod(mut a: Vec<u64>, mut b: Vec<u64>, p: u64) -> Vec<u64> {
+    trim(&mut a);
+    trim(&mut b);
+    while !b.is_empty() {
+        let r = rem_mod(a, &b, p);
+        a = b;
+        b = r;
+    }
+    a
+}
+
+fn mul_mod_poly(a: &[u64], b: &[u64], p: u64) -> Vec<u64> {
+    if a.is_empty() || b.is_empty() {
+        return Vec::new();
+    }
+    let mut c = vec![0u64; a.len() + b.len() - 1];
+    for (i, &x) in a.iter().enumerate() {
+        if x == 0 {
+            continue;
+        }
+        for (j, &y) in b.iter().enumerate() {
+            c[i + j] = (c[i + j] + mulmod(x, y, p)) % p;
+        }
+    }
+    c
+}
+
+/// An upper bound on the number of distinct rational roots of the integer
+/// polynomial `f` (square-free over Q, f(0) ≠ 0): the number of roots in
+/// F_p of f mod p, for a prime p dividing neither the leading coefficient
+/// nor the discriminant (f mod p square-free, so distinct rational roots stay
+/// distinct mod p); the least over a few primes. `None` when no such prime
+/// was found among those tried.
+pub(crate) fn rational_root_bound(f: &[BigInt]) -> Option<usize> {
+    let lead = f.last()?;
+    let mut best: Option<usize> = None;
+    for p in primes(6) {
+        if (lead % BigInt::from(p)).is_zero() {
+            continue;
+        }
+        let fp = reduce(f, p);
+        let d: Vec<u64> =
+            fp.iter().enumerate().skip(1).map(|(k, &c)| mulmod(c, k as u64 % p, p)).collect();
+        if gcd_mod(fp.clone(), d, p).len() != 1 {
+            continue;
+        }
+        // x^p mod f by repeated squaring, then gcd(x^p − x, f).
+        let mut acc = vec![1u64];
+        let mut base = rem_mod(vec![0, 1], &fp, p);
+        let mut e = p;
+        while e > 0 {
+            if e & 1 == 1 {
+                acc = rem_mod(mul_mod_poly(&acc, &base, p), &fp, p);
+            }
+            base = rem_mod(mul_mod_poly(&base, &base, p), &fp, p);
+            e >>= 1;
+        }
+        acc.resize(acc.len().max(2), 0);
+        acc[1] = (acc[1] + p - 1) % p;
+        let g = gcd_mod(acc, fp, p);
+        let count = g.len().saturating_sub(1);
+        best = Some(best.map_or(count, |b: usize| b.min(count)));
+        if count == 0 {
+            break;
+        }
+    }
+    best
+}
+
+/// Res_z(f, g) for f, g in Z[Φ][z] given by their coefficients in z (lowest
+/// first, each an integer polynomial in Φ, the last one non-zero).
+pub(crate) fn resultant(f: &[UPoly], g: &[UPoly]) -> UPoly {
+    let (m, n) = (f.len() - 1, g.len() - 1);
+    let fi: Vec<Vec<BigInt>> = f.iter().map(ints).collect();
+    let gi: Vec<Vec<BigInt>> = g.iter().map(ints).collect();
+    let df = f.iter().filter_map(UPoly::degree).max().unwrap_or(0);
+    let dg = g.iter().filter_map(UPoly::degree).max().unwrap_or(0);
+    let degree = n * df + m * dg;
+    let sf = fi.iter().map(|e| norm1(e).pow(2)).fold(BigInt::zero(), |a, b| a + b);
+    let sg = gi.iter().map(|e| norm1(e).pow(2)).fold(BigInt::zero(), |a, b| a + b);
+    let bound = sf.pow(n as u32) * sg.pow(m as u32);
+    if bound.is_zero() {
+        return UPoly::zero();
+    }
+    let mut residues = Vec::new();
+    for p in primes_for(&bound) {
+        let fr: Vec<Vec<u64>> = fi.iter().map(|e| reduce(e, p)).collect();
+        let gr: Vec<Vec<u64>> = gi.iter().map(|e| reduce(e, p)).collect();
+        let (mut xs, mut ys) = (Vec::new(), Vec::new());
+        let mut x = 0u64;
+        while xs.len() <= degree {
+            let fx: Vec<u64> = fr.iter().map(|c| eval_mod(c, x, p)).collect();
+            let gx: Vec<u64> = gr.iter().map(|c| eval_mod(c, x, p)).collect();
+            // Skip points where a formal leading coefficient vanishes: there
+            // the actual resultant is not the formal one.
+            if fx[m] != 0 && gx[n] != 0 {
+                xs.push(x);
+                ys.push(res_mod(fx, gx, p));
+            }
+            x += 1;
+        }
+        residues.push((p, interpolate(&xs, &ys, p)));
+    }
+    crt(&residues)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn up(c: &[i64]) -> UPoly {
+        UPoly::from_ints(c)
+    }
+
+    #[test]
+    fn det_of_polynomial_matrix() {
+        // [[x, 1], [2, x]] → x² − 2
+        let m = vec![vec![up(&[0, 1]), up(&[1])], vec![up(&[2]), up(&[0, 1])]];
+        assert_eq!(det(&m), up(&[-2, 0, 1]));
+    }
+
+    #[test]
+    fn resultant_matches_sylvester() {
+        // Res_z(z² − x, z − 1) = 1 − x.
+        let f = vec![up(&[0, -1]), up(&[]), up(&[1])];
+        let g = vec![up(&[-1]), up(&[1])];
+        assert_eq!(resultant(&f, &g), up(&[1, -1]));
+        // Res_z(x z + 1, z² + x) : roots z = −1/x: x·(1/x² + x)·... = 1 + x³.
+        let f = vec![up(&[1]), up(&[0, 1])];
+        let g = vec![up(&[0, 1]), up(&[]), up(&[1])];
+        assert_eq!(resultant(&f, &g), up(&[1, 0, 0, 1]));
+    }
+}

@@ -1,0 +1,587 @@
+//! Exact classification and counting at one Φ.
+//!
+//! At a rational Φ, χ is a polynomial in z over Q. [`circle_counts`] counts
+//! its distinct roots inside, on and outside the unit circle: the factor
+//! g = gcd(f, f*) holds every root on the circle and every reciprocal pair
+//! (w, 1/w); its roots on the circle are the real roots of G in (−2, 2)
+//! (g = z^m G(z + 1/z)) plus ±1, and its other roots split evenly. The
+//! cofactor h has no root on the circle and no reciprocal pair, so its
+//! Schur–Cohn matrix BᵀB − AᵀA (A, B lower triangular Toeplitz of
+//! a_0 … a_{n−1} and a_n … a_1) is non-singular, and its inertia gives the
+//! roots inside (positive eigenvalues) and outside (negative). The inertia
+//! comes from an exact symmetric elimination over Q with 1×1 and 2×2 pivots.
+//!
+//! [`classify`] then finds the dominant roots: the real roots are isolated
+//! (Sturm), the largest modulus R among them is bracketed by rationals
+//! l < R < u, and the counts of roots of f(u z) outside and of f(l z) inside
+//! the circle tell whether a complex root lies beyond R (oscillatory), or
+//! only the real roots sit in the annulus l ≤ |z| ≤ u (real dominant). A
+//! complex root of modulus exactly R (a tie) makes the bracket fail to
+//! separate; after a bounded number of refinements the slow, obvious
+//! classifier [`classify_roots_by_products`] decides.
+//!
+//! The second-order sign table ([`classify_pq`]) is shared with `check`.
+
+use std::cmp::Ordering;
+
+use num_bigint::BigInt;
+use num_traits::{One, Zero};
+
+use crate::algebraic::Algebraic;
+use crate::sturm::count_real_roots;
+use crate::{RootClass, UPoly, Q};
+
+/// Distinct roots inside, on and outside the unit circle.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
+pub struct Counts {
+    /// Strictly inside.
+    pub inside: usize,
+    /// On the circle.
+    pub on: usize,
+    /// Strictly outside.
+    pub outside: usize,
+}
+
+/// `f(s·z)`.
+fn scaled(f: &UPoly, s: &Q) -> UPoly {
+    let mut p = Q::one();
+    let mut c = Vec::with_capacity(f.coeffs().len());
+    for a in f.coeffs() {
+        c.push(a * &p);
+        p *= s;
+    }
+    UPoly::new(c)
+}
+
+/// The distinct roots of a non-zero `f` inside, on and outside the unit
+/// circle, exactly.
+pub fn circle_counts(f: &UPoly) -> Counts {
+    counts_squarefree(&f.squarefree())
+}
+
+/// [`circle_counts`] of a square-free polynomial.
+fn counts_squarefree(sf: &UPoly) -> Counts {
+    let Some(n) = sf.degree() else { return Counts::default() };
+    let lowest = sf.coeffs().iter().position(|c| !c.is_zero()).unwrap_or(n);
+    let g0 = UPoly::new(sf.coeffs()[lowest..].to_vec());
+    let mut counts = Counts { inside: lowest.min(1), ..Counts::default() };
+    if g0.degree().unwrap_or(0) == 0 {
+        return counts;
+    }
+    let g = g0.gcd(&g0.reversed());
+    let (h, dg) = if g.degree().unwrap_or(0) == 0 {
+        (g0, 0)
+    } else {
+        (g0.div_rem(&g).0, g.degree().unwrap_or(0))
+    };
+    let (hin, hout) = schur_cohn_inertia(&h);
+    let on = if dg > 0 { on_circle_reciprocal(&g) } else { 0 };
+    let off = (dg - on) / 2;
+    counts.inside += hin + off;
+    counts.on = on;
+    counts.outside = hout + off;
+    counts
+}
+
+/// Roots on the circle of a monic, square-free g whose roots are closed
+/// under inversion.
+fn on_circle_reciprocal(g: &UPoly) -> usize {
+    let mut g = g.clone();
+    let mut on = 0;
+    for s in [Q::one(), -Q::one()] {
+        if g.eval(&s).is_zero() {
+            on += 1;
+            g = g.div_rem(&UPoly::new(vec![-s, Q::one()])).0;
+        }
+    }
+    let Some(d) = g.degree() else { return on };
+    if d == 0 {
+        return on;
+    }
+    debug_assert!(d % 2 == 0, "a palindrome of even degree remains");
+    let big_g = super::conditions::reciprocal_reduce(
+        g.coeffs(),
+        Q::zero(),
+        |a, b| a + b,
+        |a, k| a * Q::from_integer(k.into()),
+    );
+    let big_g = UPoly::new(big_g);
+    let two = Q::from_integer(2.into());
+    on + 2 * count_real_roots(&big_g, &-two.clone(), &two)
+}
+
+/// (inside, outside) for h with h(0) ≠ 0 and h, h* coprime, from the
+/// inertia of the Schur–Cohn matrix.
+fn schur_cohn_inertia(h: &UPoly) -> (usize, usize) {
+    let Some(n) = h.degree() else { return (0, 0) };
+    if n == 0 {
+        return (0, 0);
+    }
+    let a = crate::upoly::int_primitive(h);
+    // C = BᵀB − AᵀA, A[i][j] = a_{i−j}, B[i][j] = a_{n−(i−j)} (i ≥ j).
+    // (BᵀB)[j][k] = Σ_{i ≥ max(j,k)} B[i][j] B[i][k].
+    let mut c = vec![vec![BigInt::zero(); n]; n];
+    for j in 0..n {
+        for k in j..n {
+            let mut s = BigInt::zero();
+            for i in k..n {
+                s += &a[n - (i - j)] * &a[n - (i - k)];
+                s -= &a[i - j] * &a[i - k];
+            }
+            c[j][k] = s.clone();
+            c[k][j] = s;
+        }
+    }
+    if let Some(r) = inertia_by_minors(c.clone()) {
+        return r;
+    }
+    let cq: Vec<Vec<Q>> =
+        c.into_iter().map(|row| row.into_iter().map(Q::from_integer).collect()).collect();
+    let (pos, neg, zero) = inertia(cq);
+    debug_assert_eq!(zero, 0, "h and h* are coprime");
+    (pos, neg)
+}
+
+/// Jacobi's rule: when every leading principal minor D_k of the symmetric
+/// integer matrix is non-zero, the negative eigenvalues are the sign changes
+/// of 1, D_1, …, D_n. The minors are Bareiss's pivots (exact integer
+/// elimination). `None` when some D_k vanishes.
+fn inertia_by_minors(mut m: Vec<Vec<BigInt>>) -> Option<(usize, usize)> {
+    let n = m.len();
+    let mut prev = BigInt::one();
+    let mut last_sign = Ordering::Greater;
+    let mut neg = 0;
+    for k in 0..n {
+        let d = m[k][k].clone();
+        let s = match d.sign() {
+            num_bigint::Sign::Minus => Ordering::Less,
+            num_bigint::Sign::NoSign => return None,
+            num_bigint::Sign::Plus => Ordering::Greater,
+        };
+        if s != last_sign {
+            neg += 1;
+        }
+        last_sign = s;
+        for i in k + 1..n {
+            for j in k + 1..n {
+                let v = (&d * &m[i][j] - &m[i][k] * &m[k][j]) / &prev;
+                m[i][j] = v;
+            }
+        }
+        prev = d;
+    }
+    Some((n - neg, neg))
+}
+
+/// (positive, negative, zero) eigenvalue counts of a symmetric matrix over
+/// Q, by symmetric elimination with 1×1 and 2×2 pivots (Sylvester's law of
+/// inertia).
+pub(crate) fn inertia(mut m: Vec<Vec<Q>>) -> (usize, usize, usize) {
+    let (mut pos, mut neg) = (0, 0);
+    let mut idx: Vec<usize> = (0..m.len()).collect();
+    while !idx.is_empty() {
+        if let Some(p) = idx.iter().position(|&i| !m[i][i].is_zero()) {
+            let i = idx.remove(p);
+            let d = m[i][i].clone();
+            if d > Q::zero() {
+                pos += 1;
+            } else {
+                neg += 1;
+            }
+            let row: Vec<Q> = idx.iter().map(|&k| m[i][k].clone()).collect();
+            for (a, &j) in idx.iter().enumerate() {
+                if row[a].is_zero() {
+                    continue;
+                }
+                let f = &row[a] / &d;
+                for (b, &k) in idx.iter().enumerate() {
+                    if !row[b].is_zero() {
+                        let v = &f * &row[b];
+                        m[j][k] -= v;
+                    }
+                }
+            }
+            continue;
+        }
+        // Zero diagonal: a 2×2 pivot [[0, b], [b, 0]] has one eigenvalue of
+        // each sign.
+        let found = idx.iter().enumerate().find_map(|(a, &i)| {
+            idx.iter()
+                .enumerate()
+                .skip(a + 1)
+                .find(|(_, &j)| !m[i][j].is_zero())
+                .map(|(b, _)| (a, b))
+        });
+        let Some((a, b)) = found else { break };
+        let (i, j) = (idx[a], idx[b]);
+        idx.retain(|&k| k != i && k != j);
+        pos += 1;
+        neg += 1;
+        // Schur complement with the block E = [[0, e], [e, 0]], E⁻¹ = [[0, 1/e], [1/e, 0]]:
+        // m[k][l] −= (m[k][i] m[j][l] + m[k][j] m[i][l]) / e.
+        let e = m[i][j].clone();
+        let ci: Vec<Q> = idx.iter().map(|&k| m[k][i].clone()).collect();
+        let cj: Vec<Q> = idx.iter().map(|&k| m[k][j].clone()).collect();
+        for (x, &k) in idx.iter().enumerate() {
+            for (y, &l) in idx.iter().enumerate() {
+                let v = &(&(&ci[x] * &cj[y]) + &(&cj[x] * &ci[y])) / &e;
+                if !v.is_zero() {
+                    m[k][l] -= v;
+                }
+            }
+        }
+    }
+    let zero = m.len() - pos - neg;
+    (pos, neg, zero)
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+enum Kind {
+    Complex,
+    Negative,
+    Positive,
+}
+
+/// The root class of a polynomial in z with rational coefficients, exactly,
+/// for any degree (see the module notes). Ties for the largest modulus are
+/// resolved towards oscillation (a dominant complex pair wins), then
+/// alternation (a dominant negative root wins); a repeated root on the
+/// circle when the largest modulus is 1 gives
+/// [`RootClass::DoubleRootOnCircle`].
+pub fn classify(f: &UPoly) -> RootClass {
+    classify_with_counts(f).0
+}
+
+/// [`classify`] and [`circle_counts`] together.
+pub(crate) fn classify_with_counts(f: &UPoly) -> (RootClass, Counts) {
+    let Some(n) = f.degree() else { return (RootClass::Deadbeat, Counts::default()) };
+    let lowest = f.coeffs().iter().position(|c| !c.is_zero()).unwrap_or(n);
+    let g = UPoly::new(f.coeffs()[lowest..].to_vec());
+    let zero_counts = Counts { inside: lowest.min(1), ..Counts::default() };
+    if g.degree().unwrap_or(0) == 0 {
+        return (RootClass::Deadbeat, zero_counts);
+    }
+    let sf = g.squarefree();
+    let mut counts = counts_squarefree(&sf);
+    counts.inside += zero_counts.inside;
+    let rho = if counts.outside > 0 {
+        Ordering::Greater
+    } else if counts.on > 0 {
+        Ordering::Equal
+    } else {
+        Ordering::Less
+    };
+    let kind = match dominant_kind(&sf) {
+        Some(k) => k,
+        None => return (classify_roots_by_products(&g), counts),
+    };
+    let repeated_on = || {
+        let d = g.gcd(&g.derivative());
+        d.degree().unwrap_or(0) > 0 && circle_counts(&d).on > 0
+    };
+    let (stable, on, unstable) = match kind {
+        Kind::Complex => {
+            (RootClass::DampedOscillation, RootClass::Harmonic, RootClass::UnstableOscillation)
+        }
+        Kind::Negative => {
+            (RootClass::AlternatingStable, RootClass::Alternating, RootClass::AlternatingUnstable)
+        }
+        Kind::Positive => {
+            (RootClass::MonotonicStable, RootClass::Constant, RootClass::MonotonicUnstable)
+        }
+    };
+    let class = match rho {
+        Ordering::Less => stable,
+        Ordering::Equal if repeated_on() => RootClass::DoubleRootOnCircle,
+        Ordering::Equal => on,
+        Ordering::Greater => unstable,
+    };
+    (class, counts)
+}
+
+/// Which kind of root has the largest modulus; `None` when a bracket does
+/// not separate (a tie between a real root and a complex pair).
+fn dominant_kind(sf: &UPoly) -> Option<Kind> {
+    let n = sf.degree().expect("non-constant");
+    let reals = Algebraic::real_roots(sf);
+    let (Some(bottom), Some(top)) = (reals.first(), reals.last()) else {
+        return Some(Kind::Complex);
+    };
+    let neg_mod = (bottom.sign() == Ordering::Less).then(|| bottom.neg());
+    let (r, kind, n_dom) = match (&neg_mod, top.sign() == Ordering::Greater) {
+        (Some(m), true) => match m.cmp(top) {
+            Ordering::Less => (top.clone(), Kind::Positive, 1),
+            Ordering::Equal => (top.clone(), Kind::Negative, 2),
+            Ordering::Greater => (m.clone(), Kind::Negative, 1),
+        },
+        (Some(m), false) => (m.clone(), Kind::Negative, 1),
+        (None, _) => (top.clone(), Kind::Positive, 1),
+    };
+    if reals.len() == n {
+        return Some(kind);
+    }
+    if let Some(q) = r.as_rational() {
+        let c = counts_squarefree(&scaled(sf, q));
+        if c.outside > 0 || c.on > n_dom {
+            return Some(Kind::Complex);
+        }
+        return Some(kind);
+    }
+    let mut width = {
+        let (lo, hi) = r.interval();
+        (hi - lo) / Q::from_integer(4.into())
+    };
+    for _ in 0..24 {
+        let (l, u) = r.refine(&width).interval();
+        if l <= Q::zero() {
+            width /= Q::from_integer(16.into());
+            continue;
+        }
+        let cu = counts_squarefree(&scaled(sf, &u));
+        if cu.outside > 0 {
+            return Some(Kind::Complex);
+        }
+        let cl = counts_squarefree(&scaled(sf, &l));
+        let annulus = n - cl.inside - cu.outside;
+        let reals_in = reals.iter().filter(|x| x.abs().cmp_rational(&l) != Ordering::Less).count();
+        if annulus == reals_in {
+            return Some(kind);
+        }
+        width = (&u - &l) / Q::from_integer(64.into());
+    }
+    None
+}
+
+/// The signs of the shifted polynomials of a second-order χ = z² − 2p·z + q
+/// at one point.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PqSigns {
+    /// Sign of p² − q (the discriminant over four).
+    pub disc: Ordering,
+    /// Sign of p.
+    pub p: Ordering,
+    /// Sign of p − 1.
+    pub p_minus_1: Ordering,
+    /// Sign of p + 1.
+    pub p_plus_1: Ordering,
+    /// Sign of q − 1.
+    pub q_minus_1: Ordering,
+    /// Sign of q + 1.
+    pub q_plus_1: Ordering,
+    /// Sign of χ(1) = 1 − 2p + q.
+    pub chi_1: Ordering,
+    /// Sign of χ(−1) = 1 + 2p + q.
+    pub chi_minus_1: Ordering,
+}
+
+/// The class of χ(z) = z² − 2p·z + q from the signs of its shifted
+/// polynomials: the one sign table of second-order methods, used by the
+/// exact analysis (at rational and algebraic Φ) and by `check`.
+pub fn classify_pq(s: &PqSigns) -> RootClass {
+    use Ordering::{Equal, Greater, Less};
+    use RootClass::*;
+    match s.disc {
+        Less => match s.q_minus_1 {
+            Equal => Harmonic,
+            Less => DampedOscillation,
+            Greater => UnstableOscillation,
+        },
+        // A double real root at z = p.
+        Equal => match s.p {
+            Equal => Deadbeat,
+            _ if s.p_minus_1 == Equal || s.p_plus_1 == Equal => DoubleRootOnCircle,
+            Greater if s.p_minus_1 == Less => MonotonicStable,
+            Greater => MonotonicUnstable,
+            _ if s.p_plus_1 == Greater => AlternatingStable,
+            _ => AlternatingUnstable,
+        },
+        // Two distinct real roots p ± √(p² − q); the dominant one has the
+        // sign of p, and χ(±1) tells on which side of ±1 the roots lie.
+        Greater => match s.p {
+            Equal => match s.q_plus_1 {
+                Equal => Alternating,
+                Greater => AlternatingStable,
+                Less => AlternatingUnstable,
+            },
+            Greater => match s.chi_1 {
+                Equal if s.p_minus_1 == Less => Constant,
+                Equal | Less => MonotonicUnstable,
+                Greater if s.p_minus_1 == Greater => MonotonicUnstable,
+                Greater => MonotonicStable,
+            },
+            Less => match s.chi_minus_1 {
+                Equal if s.p_plus_1 == Greater => Alternating,
+                Equal | Less => AlternatingUnstable,
+                Greater if s.p_plus_1 == Less => AlternatingUnstable,
+                Greater => AlternatingStable,
+            },
+        },
+    }
+}
+
+/// The class of a real root r alone (a first-degree χ).
+pub(crate) fn class_of_single_root(
+    r_sign: Ordering,
+    r_minus_one: Ordering,
+    r_plus_one: Ordering,
+) -> RootClass {
+    match r_sign {
+        Ordering::Equal => RootClass::Deadbeat,
+        Ordering::Greater => match r_minus_one {
+            Ordering::Less => RootClass::MonotonicStable,
+            Ordering::Equal => RootClass::Constant,
+            Ordering::Greater => RootClass::MonotonicUnstable,
+        },
+        Ordering::Less => match r_plus_one {
+            Ordering::Greater => RootClass::AlternatingStable,
+            Ordering::Equal => RootClass::Alternating,
+            Ordering::Less => RootClass::AlternatingUnstable,
+        },
+    }
+}
+
+/// The class of a z² + b z + c (coefficients polynomials in Φ) from signs;
+/// `sgn` gives the sign of a polynomial in Φ at the point of interest, so
+/// this is exact at algebraic Φ too. With p = −b/(2a), q = c/a each shifted
+/// value's sign is the sign of a polynomial times the sign of a.
+pub(crate) fn classify_quadratic(a: &[UPoly], sgn: impl Fn(&UPoly) -> Ordering) -> RootClass {
+    let (c, b, a) = (&a[0], &a[1], &a[2]);
+    let sa = sgn(a);
+    if sa == Ordering::Equal {
+        let sb = sgn(b);
+        if sb == Ordering::Equal {
+            return RootClass::Deadbeat;
+        }
+        // The one root r = −c/b: r − 1 = −(c + b)/b, r + 1 = (b − c)/b.
+        let by_b = |o: Ordering| if sb == Ordering::Greater { o } else { o.reverse() };
+        return class_of_single_root(by_b(sgn(&-c)), by_b(sgn(&-&(c + b))), by_b(sgn(&(b - c))));
+    }
+    let by_a = |o: Ordering| if sa == Ordering::Greater { o } else { o.reverse() };
+    let two_a = a.scale(&Q::from_integer(2.into()));
+    let s = PqSigns {
+        disc: sgn(&(&(b * b) - &(a * c).scale(&Q::from_integer(4.into())))),
+        p: by_a(sgn(&-b)),
+        p_minus_1: by_a(sgn(&-&(b + &two_a))),
+        p_plus_1: by_a(sgn(&(&two_a - b))),
+        q_minus_1: by_a(sgn(&(c - a))),
+        q_plus_1: by_a(sgn(&(c + a))),
+        chi_1: by_a(sgn(&(&(a + b) + c))),
+        chi_minus_1: by_a(sgn(&(&(a - b) + c))),
+    };
+    classify_pq(&s)
+}
+
+// ---------------------------------------------------------------------------
+// The slow, obvious classifier: products of roots by Newton's identities.
+
+/// The power sums p_k = Σ z_i^k, k = 0..=kmax, of the roots of `f` (with
+/// multiplicity), by Newton's identities.
+fn power_sums(f: &UPoly, kmax: usize) -> Vec<Q> {
+    let n = f.degree().expect("non-zero polynomial");
+    let an = f.leading();
+    let a = |k: usize| f.coeff(k) / &an;
+    let mut p = vec![Q::from_integer(n.into())];
+    for k in 1..=kmax {
+        let mut s = Q::zero();
+        for i in 1..=k.min(n) {
+            if i < k {
+                s += a(n - i) * &p[k - i];
+            } else {
+                s += a(n - k) * Q::from_integer(k.into());
+            }
+        }
+        p.push(-s);
+    }
+    p
+}
+
+/// The monic polynomial of degree `m` whose roots have power sums `s[1..=m]`.
+fn from_power_sums(s: &[Q], m: usize) -> UPoly {
+    let mut e = vec![Q::one()];
+    for k in 1..=m {
+        let mut acc = Q::zero();
+        for i in 1..=k {
+            let term = &e[k - i] * &s[i];
+            if i % 2 == 1 {
+                acc += term;
+            } else {
+                acc -= term;
+            }
+        }
+        e.push(acc / Q::from_integer(k.into()));
+    }
+    let mut c = vec![Q::zero(); m + 1];
+    for (k, ek) in e.iter().enumerate() {
+        c[m - k] = if k % 2 == 0 { ek.clone() } else { -ek.clone() };
+    }
+    UPoly::new(c)
+}
+
+/// The polynomial whose roots are z_i z_j (i ≤ j) over the roots of `f`.
+fn pair_products_with_squares(f: &UPoly) -> UPoly {
+    let n = f.degree().expect("non-zero polynomial");
+    let m = n * (n + 1) / 2;
+    let p = power_sums(f, 2 * m);
+    let half = Q::new(1.into(), 2.into());
+    let s: Vec<Q> = (0..=m).map(|k| (&p[k] * &p[k] + &p[2 * k]) * &half).collect();
+    from_power_sums(&s, m)
+}
+
+/// How many roots of the square-free `f` have modulus² equal to `rho_sq`:
+/// (real ones, complex conjugate pairs).
+fn count_on_circle(f: &UPoly, reals: &[Algebraic], rho_sq: &Algebraic) -> (usize, usize) {
+    let real = reals.iter().filter(|r| r.square() == *rho_sq).count();
+    let mult = rho_sq.multiplicity_in(&pair_products_with_squares(f));
+    (real, mult.saturating_sub(real))
+}
+
+/// The root class of a polynomial in z over Q by the slow, obvious route:
+/// the dominant modulus² is the largest positive root of the polynomial of
+/// all products z_i z_j (i ≤ j), degree n(n+1)/2; real roots with r² = ρ²
+/// and conjugate pairs with z z̄ = ρ² are counted exactly. Same tie rules as
+/// [`classify`]; kept as its oracle (and its fallback at exact ties).
+pub fn classify_roots_by_products(f: &UPoly) -> RootClass {
+    let Some(n) = f.degree() else { return RootClass::Deadbeat };
+    let lowest = f.coeffs().iter().position(|c| !c.is_zero()).unwrap_or(n);
+    let g = UPoly::new(f.coeffs()[lowest..].to_vec());
+    if g.degree().unwrap_or(0) == 0 {
+        return RootClass::Deadbeat;
+    }
+    let sf = g.squarefree();
+    let reals = Algebraic::real_roots(&sf);
+    let products = pair_products_with_squares(&sf);
+    let rho_sq = Algebraic::positive_roots(&products)
+        .pop()
+        .expect("a non-zero root gives a positive product z z̄");
+    let (n_real, n_pairs) = count_on_circle(&sf, &reals, &rho_sq);
+    let vs_one = rho_sq.cmp_rational(&Q::one());
+    let repeated = || {
+        let rep = g.gcd(&g.derivative());
+        if rep.degree().unwrap_or(0) == 0 {
+            return false;
+        }
+        let rep_reals = Algebraic::real_roots(&rep);
+        let (r, c) = count_on_circle(&rep, &rep_reals, &rho_sq);
+        r + c > 0
+    };
+    let pick = |stable, on_circle, unstable| match vs_one {
+        Ordering::Less => stable,
+        Ordering::Equal if repeated() => RootClass::DoubleRootOnCircle,
+        Ordering::Equal => on_circle,
+        Ordering::Greater => unstable,
+    };
+    if n_pairs > 0 {
+        return pick(
+            RootClass::DampedOscillation,
+            RootClass::Harmonic,
+            RootClass::UnstableOscillation,
+        );
+    }
+    debug_assert!(n_real > 0, "the dominant modulus belongs to some root");
+    let negative = reals.iter().any(|r| r.sign() == Ordering::Less && r.square() == rho_sq);
+    if negative {
+        pick(RootClass::AlternatingStable, RootClass::Alternating, RootClass::AlternatingUnstable)
+    } else {
+        pick(RootClass::MonotonicStable, RootClass::Constant, RootClass::MonotonicUnstable)
+    }
+}
