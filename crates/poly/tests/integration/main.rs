@@ -20,6 +20,7 @@ mod cost;
 mod det;
 mod errors;
 mod fuzz_corpus;
+mod invariant;
 mod parser;
 mod region;
 mod routes;
