@@ -102,14 +102,14 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
     if args.starts == 0 {
         bail!("--starts 0: expected at least one start");
     }
-    let (_, phi) = super::stability::parse_param(&format!("Phi={}", args.phi))
+    let (_, phi) = super::values::parse_param(&format!("Phi={}", args.phi))
         .with_context(|| format!("--phi {}", args.phi))?;
     if phi <= Q::from_integer(0.into()) {
         bail!("--phi {}: expected a step > 0", args.phi);
     }
     let mut extra = Vec::new();
     for p in &args.params {
-        let (name, value) = super::stability::parse_param(p)?;
+        let (name, value) = super::values::parse_param(p)?;
         if name == "Phi" {
             bail!("--param {p}: give the step with --phi");
         }

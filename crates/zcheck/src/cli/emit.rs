@@ -44,11 +44,11 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
             Binding::Parametric
         }
         Some(phi) => {
-            let (_, phi) = super::stability::parse_param(&format!("Phi={phi}"))
+            let (_, phi) = super::values::parse_param(&format!("Phi={phi}"))
                 .with_context(|| format!("--phi {phi}"))?;
             let mut given: Vec<(String, Q)> = vec![("Phi".to_owned(), phi)];
             for p in &args.params {
-                given.push(super::stability::parse_param(p)?);
+                given.push(super::values::parse_param(p)?);
             }
             let mut values: Vec<(Sym, Q)> = Vec::new();
             for sym in method.params() {

@@ -118,7 +118,7 @@ fn user_candidates(
     family: &[Candidate],
 ) -> anyhow::Result<Vec<Candidate>> {
     let parsed: Vec<(String, poly::Q)> =
-        params.iter().map(|p| super::stability::parse_param(p)).collect::<Result<_, _>>()?;
+        params.iter().map(|p| super::values::parse_param(p)).collect::<Result<_, _>>()?;
     if let Some((name, _)) = parsed.iter().find(|(n, _)| n == "Phi") {
         bail!("--param {name}=...: Phi is the step size the trade chooses; it cannot be fixed");
     }
