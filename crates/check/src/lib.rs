@@ -45,7 +45,9 @@
 //! (`file:line:column: ...`) unchanged; an I/O error carries its path.
 
 pub mod classify;
+pub mod drift;
 mod error;
+pub mod kernel;
 pub mod load;
 pub mod numeric;
 pub mod sweep;

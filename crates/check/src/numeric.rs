@@ -189,18 +189,20 @@ pub fn f64_to_q(x: f64) -> Option<poly::Q> {
 /// `dst += ...` when `accumulate`). When `unit_first`, `coef[0]` is exactly
 /// 1 and the first product is skipped.
 #[derive(Clone, Debug, PartialEq)]
-struct Instr {
-    dst: usize,
-    src: [usize; 4],
-    coef: [f64; 4],
-    len: u8,
-    unit_first: bool,
-    accumulate: bool,
+pub(crate) struct Instr {
+    pub(crate) dst: usize,
+    pub(crate) src: [usize; 4],
+    pub(crate) coef: [f64; 4],
+    pub(crate) len: u8,
+    pub(crate) unit_first: bool,
+    pub(crate) accumulate: bool,
+    /// Where each coefficient came from: (assignment, term) of the method.
+    pub(crate) origin: [(usize, usize); 4],
 }
 
 /// A register move done at the end of a step.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Move {
+pub(crate) enum Move {
     Swap(usize, usize),
     Copy { dst: usize, src: usize },
 }
@@ -236,18 +238,18 @@ impl Step {
         let mut instrs = Vec::new();
         for (k, a) in method.assigns().iter().enumerate() {
             let dst = n_slots + k;
-            let mut terms: Vec<(usize, f64)> = Vec::with_capacity(a.terms.len());
-            for (op, c) in &a.terms {
+            let mut terms: Vec<(usize, f64, (usize, usize))> = Vec::with_capacity(a.terms.len());
+            for (t_idx, (op, c)) in a.terms.iter().enumerate() {
                 let src = match *op {
                     Operand::Start { var, lag } => slot_reg(var, lag),
                     Operand::Stmt(t) => n_slots + t,
                 };
                 let coef = eval_poly(c, &named)?;
-                terms.push((src, coef));
+                terms.push((src, coef, (k, t_idx)));
             }
             // A unit coefficient first saves a multiplication; the sum is
             // then `a + c1*b + ...`, as a hand-written update reads.
-            if let Some(i) = terms.iter().position(|&(_, c)| c == 1.0) {
+            if let Some(i) = terms.iter().position(|&(_, c, _)| c == 1.0) {
                 let t = terms.remove(i);
                 terms.insert(0, t);
             }
@@ -259,14 +261,17 @@ impl Step {
                     len: 1,
                     unit_first: false,
                     accumulate: false,
+                    origin: [(k, usize::MAX); 4],
                 });
             }
             for (chunk_idx, chunk) in terms.chunks(4).enumerate() {
                 let mut src = [0usize; 4];
                 let mut coef = [0.0f64; 4];
-                for (i, &(s, c)) in chunk.iter().enumerate() {
+                let mut origin = [(k, usize::MAX); 4];
+                for (i, &(s, c, o)) in chunk.iter().enumerate() {
                     src[i] = s;
                     coef[i] = c;
+                    origin[i] = o;
                 }
                 instrs.push(Instr {
                     dst,
@@ -275,6 +280,7 @@ impl Step {
                     len: chunk.len() as u8,
                     unit_first: chunk_idx == 0 && coef[0] == 1.0,
                     accumulate: chunk_idx > 0,
+                    origin,
                 });
             }
         }
@@ -334,6 +340,51 @@ impl Step {
     /// The parameter values the step was compiled at (only the method's).
     pub fn params(&self) -> &Params {
         &self.params
+    }
+
+    /// The instructions of one step, in order.
+    pub(crate) fn instrs(&self) -> &[Instr] {
+        &self.instrs
+    }
+
+    /// The end-of-step register moves, in order.
+    pub(crate) fn moves(&self) -> &[Move] {
+        &self.moves
+    }
+
+    /// Registers: the slots, then one per assignment.
+    pub(crate) fn n_regs(&self) -> usize {
+        self.n_regs
+    }
+
+    /// The instructions and end-of-step moves as data, for printing the step
+    /// as source code in another language.
+    pub fn listing(&self) -> Listing {
+        let instrs = self
+            .instrs
+            .iter()
+            .map(|ins| Listed {
+                dst: ins.dst,
+                terms: (0..ins.len as usize)
+                    .map(|i| ListedTerm {
+                        src: ins.src[i],
+                        coef: ins.coef[i],
+                        origin: (ins.origin[i].1 != usize::MAX).then_some(ins.origin[i]),
+                    })
+                    .collect(),
+                unit_first: ins.unit_first,
+                accumulate: ins.accumulate,
+            })
+            .collect();
+        let moves = self
+            .moves
+            .iter()
+            .map(|m| match *m {
+                Move::Swap(a, b) => ListedMove::Swap(a, b),
+                Move::Copy { dst, src } => ListedMove::Copy { dst, src },
+            })
+            .collect();
+        Listing { n_slots: self.n_slots, n_regs: self.n_regs, instrs, moves }
     }
 
     /// The number of instructions per step (a cost measure).
@@ -496,6 +547,61 @@ fn lin<const B: usize, const N: usize, const UNIT: bool>(
         }
         d[l] = v;
     }
+}
+
+/// A compiled step as data ([`Step::listing`]): registers `0..n_slots` are
+/// the slots, the rest one per assignment.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Listing {
+    /// Slots of the augmented state.
+    pub n_slots: usize,
+    /// Registers in all.
+    pub n_regs: usize,
+    /// The instructions in order.
+    pub instrs: Vec<Listed>,
+    /// The end-of-step moves in order.
+    pub moves: Vec<ListedMove>,
+}
+
+/// One instruction: `dst = Σ coef·src` (or `dst += ...` when `accumulate`),
+/// summed left to right; when `unit_first` the first term's coefficient is
+/// exactly 1 and its product is skipped.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Listed {
+    /// Destination register.
+    pub dst: usize,
+    /// The terms, in order.
+    pub terms: Vec<ListedTerm>,
+    /// The first term is taken without multiplying.
+    pub unit_first: bool,
+    /// Adds to the destination's value.
+    pub accumulate: bool,
+}
+
+/// One term of an instruction.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ListedTerm {
+    /// Source register.
+    pub src: usize,
+    /// Coefficient at the compiled parameter values.
+    pub coef: f64,
+    /// `(assignment, term)` of [`Method::assigns`] the coefficient is the
+    /// value of (`None` for the zero of an empty sum).
+    pub origin: Option<(usize, usize)>,
+}
+
+/// An end-of-step register move.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ListedMove {
+    /// Exchange two registers.
+    Swap(usize, usize),
+    /// `dst = src`.
+    Copy {
+        /// Destination.
+        dst: usize,
+        /// Source.
+        src: usize,
+    },
 }
 
 /// One state of a compiled method: the slots plus the step's scratch

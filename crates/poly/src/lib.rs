@@ -55,6 +55,7 @@ pub mod cost;
 mod derive;
 pub mod equiv;
 mod error;
+pub mod invariant;
 mod matrix;
 mod method;
 mod params;

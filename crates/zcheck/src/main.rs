@@ -45,6 +45,10 @@ enum Command {
     Equiv(cli::equiv::Args),
     /// Exact stability region in (Phi, D), drawn over a grid of root classes.
     Map(cli::map::Args),
+    /// Round-off drift of a method's exact conserved form over long runs.
+    Drift(cli::drift::Args),
+    /// Print a method's step as a Rust or C function.
+    Emit(cli::emit::Args),
 }
 
 /// The most bytes of an error message printed: enough for any real error,
@@ -71,6 +75,8 @@ fn main() -> ExitCode {
         Command::Scene(a) => cli::scene::run(a),
         Command::Equiv(a) => cli::equiv::run(a),
         Command::Map(a) => cli::map::run(a),
+        Command::Drift(a) => cli::drift::run(a),
+        Command::Emit(a) => cli::emit::run(a),
     };
     match result {
         Ok(code) => code,

@@ -6,6 +6,7 @@
 //! - `snapshots`: rounded summaries of sweeps and verification.
 
 mod extremes;
+mod kernel;
 mod numeric;
 #[path = "../../../../tests/support/snapshot.rs"]
 mod snapshot;

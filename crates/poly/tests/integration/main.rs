@@ -24,6 +24,7 @@ mod errors;
 mod fuzz_corpus;
 mod large;
 mod multistep;
+mod invariant;
 mod parser;
 mod region;
 mod routes;

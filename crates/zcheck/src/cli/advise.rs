@@ -93,9 +93,18 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
     scene.validate()?;
     let cands = candidates(args.damping.as_ref().map(|d| &d.value))?;
     let d = scene.damping.unwrap_or(0.0);
-    let advice = tradeoff::advise(&scene, &cands, |c| {
-        kernels::time_hand_kernel(c.kernel_name(), d, Duration::from_millis(3)).unwrap_or(f64::NAN)
+    let budget = Duration::from_millis(3);
+    let ns: Vec<f64> =
+        cands.iter().map(|c| super::tradeoff::measure(c, budget)).collect::<anyhow::Result<_>>()?;
+    let mut k = 0;
+    let mut advice = tradeoff::advise(&scene, &cands, |_| {
+        k += 1;
+        ns[k - 1]
     })?;
+    // advise keeps the candidates' order.
+    for (m, c) in advice.methods.iter_mut().zip(&cands) {
+        m.ns_per_step_hand = kernels::time_hand_kernel(c.kernel_name(), d, budget);
+    }
     match args.format {
         Format::Json => super::output::emitln(&serde_json::to_string_pretty(&advice)?)?,
         Format::Text => super::output::emit(&text(&advice))?,

@@ -2,6 +2,8 @@
 
 pub mod advise;
 pub mod derive;
+pub mod drift;
+pub mod emit;
 pub mod equiv;
 pub mod map;
 pub mod methods;

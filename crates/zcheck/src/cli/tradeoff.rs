@@ -5,7 +5,9 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Duration;
 
-use zcheck::tradeoff::{self, family, figure, kernels, Spring, Target, TradeRow};
+use anyhow::{bail, Context};
+use check::numeric::{q_to_f64, Params, ParamsF64};
+use zcheck::tradeoff::{self, family, figure, kernels, Candidate, Spring, Target, TradeRow};
 
 /// Output format of `zcheck tradeoff`.
 #[derive(Clone, Copy, clap::ValueEnum)]
@@ -31,6 +33,14 @@ pub struct Args {
     /// Time budget per method for the in-process ns/step measurement, ms.
     #[arg(long, default_value_t = 3)]
     pub budget_ms: u64,
+    /// Also rank this method: a built-in name or a path to a `.zm` file
+    /// (repeatable). Its compiled step is timed like every other.
+    #[arg(long = "method", value_name = "METHOD")]
+    pub methods: Vec<String>,
+    /// A value for a parameter of a `--method` other than Phi, `NAME=VALUE`
+    /// (exact: integer, fraction or decimal); repeatable.
+    #[arg(long = "param", value_name = "NAME=VALUE")]
+    pub params: Vec<String>,
     /// Also draw the work-precision figure (SVG) of the seven direct methods here.
     #[arg(long)]
     pub svg: Option<PathBuf>,
@@ -46,16 +56,29 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
         anyhow::ensure!(x.is_finite() && x > 0.0, "{name} {x}: expected a finite number > 0");
     }
     let budget = Duration::from_millis(args.budget_ms.max(1));
-    let candidates = family::undamped_family()?;
-    let ns: Vec<f64> = candidates
-        .iter()
-        .map(|c| kernels::time_hand_kernel(c.kernel_name(), 0.0, budget).unwrap_or(f64::NAN))
-        .collect();
+    let mut candidates = family::undamped_family()?;
+    let n_builtin = candidates.len();
+    candidates.extend(user_candidates(&args.methods, &args.params, &candidates)?);
+    let mut ns = Vec::with_capacity(candidates.len());
+    let mut hand = Vec::with_capacity(candidates.len());
+    for (i, c) in candidates.iter().enumerate() {
+        ns.push(measure(c, budget)?);
+        hand.push(if i < n_builtin {
+            kernels::time_hand_kernel(c.kernel_name(), 0.0, budget)
+        } else {
+            None
+        });
+    }
     let mut k = 0;
-    let rows = tradeoff::trade(&candidates, Spring::UNDAMPED, &target, |_| {
+    let mut rows = tradeoff::trade(&candidates, Spring::UNDAMPED, &target, |_| {
         k += 1;
         ns[k - 1]
     });
+    for row in &mut rows {
+        let i =
+            candidates.iter().position(|c| c.display == row.method).expect("a row per candidate");
+        row.ns_per_step_hand = hand[i];
+    }
     if let Some(path) = &args.svg {
         let direct: Vec<(&tradeoff::Candidate, f64)> = candidates
             .iter()
@@ -76,6 +99,53 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
     Ok(ExitCode::SUCCESS)
 }
 
+/// The compiled step of `c` timed at the timing Φ (and `c`'s other
+/// parameters).
+pub fn measure(c: &Candidate, budget: Duration) -> anyhow::Result<f64> {
+    let mut params = Params::phi(kernels::TIMING_PHI);
+    for (sym, q) in &c.params {
+        params.set(sym.name(), q_to_f64(q));
+    }
+    tradeoff::measure_ns_per_step_within(&c.method, &params, budget)
+        .with_context(|| format!("method {}", c.display))
+}
+
+/// The `--method` candidates: each shown by its argument (a path or a
+/// built-in name), with the `--param` values it declares.
+fn user_candidates(
+    methods: &[String],
+    params: &[String],
+    family: &[Candidate],
+) -> anyhow::Result<Vec<Candidate>> {
+    let parsed: Vec<(String, poly::Q)> =
+        params.iter().map(|p| super::values::parse_param(p)).collect::<Result<_, _>>()?;
+    if let Some((name, _)) = parsed.iter().find(|(n, _)| n == "Phi") {
+        bail!("--param {name}=...: Phi is the step size the trade chooses; it cannot be fixed");
+    }
+    let mut out: Vec<Candidate> = Vec::new();
+    for arg in methods {
+        if family.iter().chain(&out).any(|c| &c.display == arg) {
+            bail!("--method {arg}: already in the comparison");
+        }
+        let method = check::load::load_method(arg)?;
+        let mut values = Vec::new();
+        for sym in method.params().iter().filter(|s| s.name() != "Phi") {
+            let Some((_, q)) = parsed.iter().find(|(n, _)| n == sym.name()) else {
+                bail!(
+                    "--method {arg}: parameter {} has no value: expected --param {}=VALUE",
+                    sym.name(),
+                    sym.name()
+                );
+            };
+            values.push((*sym, q.clone()));
+        }
+        let mut c = Candidate::new(method, values).with_context(|| format!("--method {arg}"))?;
+        c.display = arg.clone();
+        out.push(c);
+    }
+    Ok(out)
+}
+
 fn opt(x: Option<f64>, digits: usize) -> String {
     x.map_or("-".to_owned(), |x| format!("{x:.digits$}"))
 }
@@ -84,21 +154,32 @@ fn opt(x: Option<f64>, digits: usize) -> String {
 pub fn text(rows: &[TradeRow], target: &Target) -> String {
     let mut out = format!(
         "target over {} periods: phase drift <= {} rad, amplitude drift <= {}; undamped spring\n\
-         ns/step: hand-written kernel, one state, measured now on this machine\n\n",
+         ns/step: the compiled step of each method, one state, measured now on this machine \
+         (hand: the hand-written kernel, where there is one)\n\n",
         target.periods, target.phase_tol, target.amp_tol
     );
     out += &format!(
-        "{:<4} {:<24} {:>16} {:>8} {:>10} {:>10} {:>9} {:>10} {:>11}\n",
-        "rank", "method", "ops/step", "ns/step", "phi_max", "adm. phi", "steps/T", "ops/T", "ns/T"
+        "{:<4} {:<24} {:>16} {:>8} {:>8} {:>10} {:>10} {:>9} {:>10} {:>11}\n",
+        "rank",
+        "method",
+        "ops/step",
+        "ns/step",
+        "hand",
+        "phi_max",
+        "adm. phi",
+        "steps/T",
+        "ops/T",
+        "ns/T"
     );
     for r in rows {
         let ops = format!("{}m+{}a", r.ops_per_step.mul, r.ops_per_step.add);
         out += &format!(
-            "{:<4} {:<24} {:>16} {:>8.2} {:>10} {:>10} {:>9} {:>10} {:>11}\n",
+            "{:<4} {:<24} {:>16} {:>8.2} {:>8} {:>10} {:>10} {:>9} {:>10} {:>11}\n",
             r.rank.map_or("-".to_owned(), |k| k.to_string()),
             r.method,
             ops,
             r.ns_per_step,
+            opt(r.ns_per_step_hand, 2),
             r.phi_max_exact,
             opt(r.admissible_phi, 5),
             r.steps_per_period.map_or("-".to_owned(), |n| n.to_string()),

@@ -174,3 +174,9 @@ pub fn show_f64_digits(x: f64, digits: usize) -> String {
         format!("{x:.digits$e}")
     }
 }
+
+/// Parses `NAME=VALUE` with an exact VALUE into its parts.
+pub fn parse_param(s: &str) -> anyhow::Result<(String, poly::Q)> {
+    let p: ParamArg = s.parse().map_err(|e: String| anyhow::anyhow!("--param {s}: {e}"))?;
+    Ok((p.name, p.value.value))
+}

@@ -113,8 +113,10 @@ pub struct MethodAdvice {
     pub substeps_tol: Option<u64>,
     /// Operations per step.
     pub ops_per_step: Ops,
-    /// Measured ns per step.
+    /// Measured ns per step (the compiled step).
     pub ns_per_step: f64,
+    /// Measured ns per step of the hand-written kernel, where there is one.
+    pub ns_per_step_hand: Option<f64>,
     /// Operations per tick at `substeps_tol`.
     pub ops_per_tick: Option<Ops>,
     /// ns per tick at `substeps_tol`.
@@ -182,6 +184,7 @@ pub fn advise(
             substeps_tol,
             ops_per_step: per_step.into(),
             ns_per_step: ns,
+            ns_per_step_hand: None,
             ops_per_tick: substeps_tol.map(|k| Ops {
                 mul: k * u64::from(per_step.mul),
                 add: k * u64::from(per_step.add),

@@ -5,7 +5,8 @@
 //! puts the four together for a programmer with a target:
 //!
 //! - cost per step, exact, from the method definition ([`poly::cost`]), and
-//!   measured on hand-written kernels ([`kernels`]);
+//!   measured on the compiled step of any method ([`measure`]), with the
+//!   hand-written kernels ([`kernels`]) as a baseline;
 //! - accuracy per step from the exact characteristic polynomial
 //!   ([`accuracy`]): phase error Ψ − Φ and amplitude factor per period;
 //! - the exact stability limit Φ_max (`poly::stability`), which no answer
@@ -23,11 +24,13 @@ pub mod advise;
 pub mod family;
 pub mod figure;
 pub mod kernels;
+pub mod measure;
 pub mod rank;
 
 pub use accuracy::{Accuracy, SecondOrder, Spring, Target};
 pub use advise::{advise, Advice, MethodAdvice, Scene};
 pub use family::{damped_family, undamped_family, Candidate, Limit};
+pub use measure::{measure_ns_per_step, measure_ns_per_step_within};
 pub use rank::{trade, TradeRow};
 
 /// Why a trade-off could not be computed.

@@ -58,8 +58,11 @@ pub struct TradeRow {
     pub ops_per_step: Ops,
     /// Exact operations per step of the transition matrix applied directly.
     pub ops_per_step_matrix_form: Ops,
-    /// Measured nanoseconds per step (hand-written kernel, one state).
+    /// Measured nanoseconds per step of the compiled step, one state.
     pub ns_per_step: f64,
+    /// Measured nanoseconds per step of the hand-written kernel, one state
+    /// (`None` where there is no hand kernel, e.g. a user's method).
+    pub ns_per_step_hand: Option<f64>,
     /// The exact stability limit as a number (`None`: see `phi_max_exact`).
     pub phi_max: Option<f64>,
     /// The exact limit as text ("2", "sqrt(2)", ...), "none" when unbounded
@@ -113,6 +116,7 @@ pub fn trade_row(c: &Candidate, spring: Spring, target: &Target, ns_per_step: f6
         ops_per_step: c.cost.program.into(),
         ops_per_step_matrix_form: c.cost.matrix_form.into(),
         ns_per_step,
+        ns_per_step_hand: None,
         phi_max: c.limit.phi_max_f64(),
         phi_max_exact: limit_text(c),
         admissible_phi,

@@ -3,9 +3,12 @@
 
 mod advise_cli;
 mod cli_derive;
+mod drift;
+mod emit;
 mod equiv_cli;
 mod extremes;
 mod hostile;
+mod measured_cost;
 mod plot_cli;
 mod scene_advise;
 mod scene_cli;

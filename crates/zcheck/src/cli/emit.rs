@@ -1,0 +1,70 @@
+//! `zcheck emit`: a method's step as a Rust or C function to paste into an
+//! engine (`zcheck::emit`).
+
+use std::process::ExitCode;
+
+use anyhow::{bail, Context};
+use poly::{Sym, Q};
+use zcheck::emit::{emit, Binding, Lang};
+
+/// The language to emit.
+#[derive(Clone, Copy, clap::ValueEnum)]
+pub enum Language {
+    Rust,
+    C,
+}
+
+/// Arguments of `zcheck emit`.
+#[derive(clap::Args)]
+pub struct Args {
+    /// A built-in method name or a path to a `.zm` file.
+    pub method: String,
+    #[arg(long, value_enum)]
+    pub lang: Language,
+    /// Fold the constants at this Phi (exact: integer, fraction or decimal);
+    /// without it Phi, and every other parameter, is an argument.
+    #[arg(long)]
+    pub phi: Option<String>,
+    /// With --phi: a value for another parameter, `NAME=VALUE`; repeatable.
+    #[arg(long = "param", value_name = "NAME=VALUE")]
+    pub params: Vec<String>,
+}
+
+pub fn run(args: Args) -> anyhow::Result<ExitCode> {
+    let method = check::load::load_method(&args.method)?;
+    let lang = match args.lang {
+        Language::Rust => Lang::Rust,
+        Language::C => Lang::C,
+    };
+    let binding = match &args.phi {
+        None => {
+            if !args.params.is_empty() {
+                bail!("--param needs --phi: without --phi every parameter is an argument");
+            }
+            Binding::Parametric
+        }
+        Some(phi) => {
+            let (_, phi) = super::values::parse_param(&format!("Phi={phi}"))
+                .with_context(|| format!("--phi {phi}"))?;
+            let mut given: Vec<(String, Q)> = vec![("Phi".to_owned(), phi)];
+            for p in &args.params {
+                given.push(super::values::parse_param(p)?);
+            }
+            let mut values: Vec<(Sym, Q)> = Vec::new();
+            for sym in method.params() {
+                let Some((_, v)) = given.iter().find(|(n, _)| n == sym.name()) else {
+                    bail!("method {} needs --param {}=VALUE", method.name(), sym.name());
+                };
+                values.push((*sym, v.clone()));
+            }
+            for (n, _) in &given {
+                if !method.params().iter().any(|s| s.name() == n) {
+                    bail!("--param {n}=...: method {} has no parameter {n}", method.name());
+                }
+            }
+            Binding::Folded(values)
+        }
+    };
+    print!("{}", emit(&method, lang, &binding)?);
+    Ok(ExitCode::SUCCESS)
+}

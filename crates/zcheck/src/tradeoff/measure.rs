@@ -1,0 +1,78 @@
+//! The measured cost of any method: its compiled step, timed on this machine.
+//!
+//! A method, built-in or a user's `.zm` file, is compiled to the
+//! interpreter's instructions ([`check::numeric::Step`]) and specialised
+//! ([`check::kernel::Kernel`]); the specialised step is what is timed, on one
+//! state, with the same brief timer as the hand-written kernels
+//! ([`super::kernels::time_ns_per_step`]). The hand kernels stay as a
+//! baseline column beside it.
+//!
+//! The state is renormalised between chunks of steps, so an unstable method
+//! at a large Φ never reaches infinities or subnormal numbers (which would
+//! time the floating-point unit's slow paths, not the method).
+
+use std::hint::black_box;
+use std::time::Duration;
+
+use check::kernel::Kernel;
+use check::numeric::{Params, Step};
+use check::Error;
+use poly::Method;
+
+use super::kernels::time_ns_per_step;
+
+/// The default time budget of one measurement.
+pub const DEFAULT_BUDGET: Duration = Duration::from_millis(3);
+
+/// Steps between two renormalisations of the timed state.
+const CHUNK: u64 = 1024;
+
+/// Measured nanoseconds per step of `method`'s compiled step at `params`
+/// (which must give every parameter of the method, Φ included), one state,
+/// timed for about [`DEFAULT_BUDGET`].
+///
+/// ```
+/// use check::numeric::{Params, ParamsF64};
+/// let m = poly::builtin("false_euler")?;
+/// let ns = zcheck::tradeoff::measure_ns_per_step(&m, &Params::phi(0.1))?;
+/// assert!(ns.is_finite() && ns > 0.0);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn measure_ns_per_step(method: &Method, params: &Params) -> Result<f64, Error> {
+    measure_ns_per_step_within(method, params, DEFAULT_BUDGET)
+}
+
+/// [`measure_ns_per_step`] with a time budget.
+pub fn measure_ns_per_step_within(
+    method: &Method,
+    params: &Params,
+    budget: Duration,
+) -> Result<f64, Error> {
+    let step = Step::compile(method, params)?;
+    let kernel = Kernel::<f64>::new(&step);
+    let ones = vec![1.0; step.order()];
+    let mut state = kernel.state(&ones);
+    Ok(time_ns_per_step(
+        |n| {
+            let mut left = n;
+            while left > 0 {
+                let k = left.min(CHUNK);
+                kernel.advance(black_box(&mut state), k);
+                left -= k;
+                renormalise(state.slots_mut(), &ones);
+            }
+        },
+        budget,
+    ))
+}
+
+/// Scales the state back to size 1 when it has grown or shrunk far, and
+/// restarts it when it is no longer finite (or is zero).
+fn renormalise(slots: &mut [f64], start: &[f64]) {
+    let big = slots.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    if !big.is_finite() || big == 0.0 {
+        slots.copy_from_slice(start);
+    } else if !(1e-100..=1e100).contains(&big) {
+        slots.iter_mut().for_each(|x| *x /= big);
+    }
+}

@@ -1,0 +1,49 @@
+//! Any method is ranked by measured cost: `zcheck tradeoff --method FILE`
+//! times a user's `.zm` file's compiled step (finite ns), with no hand
+//! kernel beside it, while every built-in has both columns.
+
+use std::process::Command;
+
+use serde_json::Value;
+
+#[test]
+fn tradeoff_ranks_a_user_method_by_measured_cost() {
+    let path = std::env::temp_dir().join(format!("zcheck-user-{}.zm", std::process::id()));
+    // A False Euler written another way: a user's own method.
+    std::fs::write(&path, "method my_false_euler\nstate v y\nv = v - Phi*y\ny = y + Phi*v\n")
+        .unwrap();
+    let p = path.display().to_string();
+    let out = Command::new(env!("CARGO_BIN_EXE_zcheck"))
+        .args(["tradeoff", "--method", &p, "--budget-ms", "1", "--format", "json"])
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let v: Value = serde_json::from_slice(&out.stdout).unwrap();
+    let rows = v["methods"].as_array().unwrap();
+    let user = rows.iter().find(|r| r["method"] == p.as_str()).expect("user row");
+    assert!(user["ns_per_step"].as_f64().is_some_and(|x| x.is_finite() && x > 0.0), "{user}");
+    assert!(user["ns_per_step_hand"].is_null());
+    assert!(user["rank"].as_u64().is_some(), "a stable method is ranked: {user}");
+    for r in rows.iter().filter(|r| r["method"] != p.as_str()) {
+        assert!(r["ns_per_step"].as_f64().is_some_and(|x| x > 0.0), "{r}");
+        assert!(r["ns_per_step_hand"].as_f64().is_some_and(|x| x > 0.0), "{r}");
+    }
+    std::fs::remove_file(&path).ok();
+}
+
+/// The library call the advisor uses measures any method.
+#[test]
+fn measure_any_method() {
+    let m = poly::Method::parse("x.zm", "method x\nstate y\ny = 2*y - y@1 - Phi^2*y\n").unwrap();
+    let ns = zcheck::tradeoff::measure_ns_per_step(
+        &m,
+        &<check::numeric::Params as check::numeric::ParamsF64>::phi(0.1),
+    )
+    .unwrap();
+    assert!(ns.is_finite() && ns > 0.0);
+    let err = zcheck::tradeoff::measure_ns_per_step(
+        &poly::builtin("damped_euler_d").unwrap(),
+        &<check::numeric::Params as check::numeric::ParamsF64>::phi(0.1),
+    );
+    assert!(err.is_err(), "D has no value");
+}
