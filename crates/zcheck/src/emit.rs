@@ -79,8 +79,8 @@ fn phi_max_text(method: &Method, values: &[(Sym, Q)]) -> String {
         return "depends on the parameters other than Phi".to_owned();
     }
     match poly::stability::analyze(&chi) {
-        Ok(r) if r.bounded_for_all => "none: stable for every Phi > 0".to_owned(),
-        Ok(r) => match r.phi_max {
+        Ok(r) if r.bounded_for_all() => "none: stable for every Phi > 0".to_owned(),
+        Ok(r) => match r.phi_max() {
             Some(m) => format!(
                 "{} (exact): stable for 0 < Phi < Phi_max",
                 m.closed_form().unwrap_or_else(|| m.to_decimal(15))
