@@ -102,8 +102,11 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
     if args.starts == 0 {
         bail!("--starts 0: expected at least one start");
     }
-    let (_, phi) = super::values::parse_param(&format!("Phi={}", args.phi))
-        .with_context(|| format!("--phi {}", args.phi))?;
+    let phi = args
+        .phi
+        .parse::<super::values::Exact>()
+        .map_err(|e| anyhow::anyhow!("--phi {}: {e}", args.phi))?
+        .value;
     if phi <= Q::from_integer(0.into()) {
         bail!("--phi {}: expected a step > 0", args.phi);
     }
