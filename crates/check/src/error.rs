@@ -68,6 +68,13 @@ impl Error {
         )
     }
 
+    pub(crate) fn singular(method: &str, phi: f64) -> Error {
+        Error::new(
+            ErrorKind::NotFinite,
+            format!("method `{method}`: the step's linear system is singular at Phi = {phi}: expected a Phi where it has a unique solution"),
+        )
+    }
+
     pub(crate) fn not_finite(what: &str) -> Error {
         Error::new(ErrorKind::NotFinite, format!("{what} is not finite: expected a finite number"))
     }

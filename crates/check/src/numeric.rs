@@ -159,9 +159,13 @@ pub fn eval_poly(p: &Poly, params: &Params) -> Result<f64, Error> {
     for (mono, c) in p.terms() {
         let mut term = q_to_f64(c);
         for &(sym, exp) in mono.factors() {
-            let x = params
-                .get(sym.name())
-                .ok_or_else(|| Error::missing_param("(polynomial)", sym.name()))?;
+            // An exact constant's generator p^(1/L) has a value of its own.
+            let x = match params.get(sym.name()) {
+                Some(x) => x,
+                None => poly::field::generator_value(sym)
+                    .map(|q| q_to_f64(&q))
+                    .ok_or_else(|| Error::missing_param("(polynomial)", sym.name()))?,
+            };
             term *= x.powi(exp as i32);
         }
         sum += term;
@@ -200,6 +204,104 @@ pub(crate) struct Instr {
     pub(crate) origin: [(usize, usize); 4],
 }
 
+/// Appends the instructions for `dst = Σ c·reg[src]`; each term carries its
+/// origin (assignment, term) in the method, `(k, usize::MAX)` for none.
+fn push_sum(
+    instrs: &mut Vec<Instr>,
+    dst: usize,
+    k: usize,
+    mut terms: Vec<(usize, f64, (usize, usize))>,
+) {
+    // A unit coefficient first saves a multiplication; the sum is
+    // then `a + c1*b + ...`, as a hand-written update reads.
+    if let Some(i) = terms.iter().position(|&(_, c, _)| c == 1.0) {
+        let t = terms.remove(i);
+        terms.insert(0, t);
+    }
+    if terms.is_empty() {
+        instrs.push(Instr {
+            dst,
+            src: [0; 4],
+            coef: [0.0; 4],
+            len: 1,
+            unit_first: false,
+            accumulate: false,
+            origin: [(k, usize::MAX); 4],
+        });
+    }
+    for (chunk_idx, chunk) in terms.chunks(4).enumerate() {
+        let mut src = [0usize; 4];
+        let mut coef = [0.0f64; 4];
+        let mut origin = [(k, usize::MAX); 4];
+        for (i, &(s, c, o)) in chunk.iter().enumerate() {
+            src[i] = s;
+            coef[i] = c;
+            origin[i] = o;
+        }
+        instrs.push(Instr {
+            dst,
+            src,
+            coef,
+            len: chunk.len() as u8,
+            unit_first: chunk_idx == 0 && coef[0] == 1.0,
+            accumulate: chunk_idx > 0,
+            origin,
+        });
+    }
+}
+
+/// A⁻¹E of an implicit step (unknowns as a linear map of the slots), by
+/// one LU factorisation of A at the compiled parameters.
+fn implicit_solution(
+    method: &Method,
+    coef_of: &dyn Fn(&Poly) -> Result<f64, Error>,
+    n_slots: usize,
+    slot_reg: &dyn Fn(usize, u32) -> usize,
+) -> Result<DMatrix<f64>, Error> {
+    let n_u = method.unknowns().len();
+    let width = n_slots + n_u;
+    let form = |terms: &[(Operand, Poly)], values: &[Vec<f64>]| -> Result<Vec<f64>, Error> {
+        let mut acc = vec![0.0; width];
+        for (op, c) in terms {
+            let c = coef_of(c)?;
+            match *op {
+                Operand::Start { var, lag } => acc[slot_reg(var, lag)] += c,
+                Operand::Unknown(u) => acc[n_slots + u] += c,
+                Operand::Stmt(t) => {
+                    for (a, v) in acc.iter_mut().zip(&values[t]) {
+                        *a += c * v;
+                    }
+                }
+            }
+        }
+        Ok(acc)
+    };
+    let mut values: Vec<Vec<f64>> = Vec::with_capacity(method.assigns().len());
+    for a in method.assigns() {
+        let v = form(&a.terms, &values)?;
+        values.push(v);
+    }
+    let mut a = DMatrix::<f64>::identity(n_u, n_u);
+    let mut e = DMatrix::<f64>::zeros(n_u, n_slots);
+    for eq in method.equations() {
+        let r = form(&eq.terms, &values)?;
+        for (i, x) in r.into_iter().enumerate() {
+            if i < n_slots {
+                e[(eq.unknown, i)] = x;
+            } else {
+                a[(eq.unknown, i - n_slots)] -= x;
+            }
+        }
+    }
+    let phi = coef_of(&Poly::sym(poly::Sym::phi()))?;
+    let singular = || Error::singular(method.name(), phi);
+    let solved = a.lu().solve(&e).ok_or_else(singular)?;
+    if solved.iter().any(|x| !x.is_finite()) {
+        return Err(singular());
+    }
+    Ok(solved)
+}
+
 /// A register move done at the end of a step.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum Move {
@@ -235,7 +337,23 @@ impl Step {
         let slot_reg = |var: usize, lag: u32| {
             slots.iter().position(|&s| s == (var, lag)).expect("lag within the method's history")
         };
+        let n_assign = method.assigns().len();
+        let unknown_reg = |u: usize| n_slots + n_assign + u;
+        let coef_of = |c: &Poly| eval_poly(c, &named);
         let mut instrs = Vec::new();
+        // An implicit step first solves its linear system: u = A⁻¹E·s, with
+        // A⁻¹E from one LU factorisation at these parameters, so each step
+        // costs one matrix-vector product.
+        if method.is_implicit() {
+            let solve = implicit_solution(method, &coef_of, n_slots, &slot_reg)?;
+            for u in 0..method.unknowns().len() {
+                let terms: Vec<(usize, f64, (usize, usize))> = (0..n_slots)
+                    .map(|j| (j, solve[(u, j)], (usize::MAX, usize::MAX)))
+                    .filter(|&(_, c, _)| c != 0.0)
+                    .collect();
+                push_sum(&mut instrs, unknown_reg(u), usize::MAX, terms);
+            }
+        }
         for (k, a) in method.assigns().iter().enumerate() {
             let dst = n_slots + k;
             let mut terms: Vec<(usize, f64, (usize, usize))> = Vec::with_capacity(a.terms.len());
@@ -243,46 +361,11 @@ impl Step {
                 let src = match *op {
                     Operand::Start { var, lag } => slot_reg(var, lag),
                     Operand::Stmt(t) => n_slots + t,
+                    Operand::Unknown(u) => unknown_reg(u),
                 };
-                let coef = eval_poly(c, &named)?;
-                terms.push((src, coef, (k, t_idx)));
+                terms.push((src, coef_of(c)?, (k, t_idx)));
             }
-            // A unit coefficient first saves a multiplication; the sum is
-            // then `a + c1*b + ...`, as a hand-written update reads.
-            if let Some(i) = terms.iter().position(|&(_, c, _)| c == 1.0) {
-                let t = terms.remove(i);
-                terms.insert(0, t);
-            }
-            if terms.is_empty() {
-                instrs.push(Instr {
-                    dst,
-                    src: [0; 4],
-                    coef: [0.0; 4],
-                    len: 1,
-                    unit_first: false,
-                    accumulate: false,
-                    origin: [(k, usize::MAX); 4],
-                });
-            }
-            for (chunk_idx, chunk) in terms.chunks(4).enumerate() {
-                let mut src = [0usize; 4];
-                let mut coef = [0.0f64; 4];
-                let mut origin = [(k, usize::MAX); 4];
-                for (i, &(s, c, o)) in chunk.iter().enumerate() {
-                    src[i] = s;
-                    coef[i] = c;
-                    origin[i] = o;
-                }
-                instrs.push(Instr {
-                    dst,
-                    src,
-                    coef,
-                    len: chunk.len() as u8,
-                    unit_first: chunk_idx == 0 && coef[0] == 1.0,
-                    accumulate: chunk_idx > 0,
-                    origin,
-                });
-            }
+            push_sum(&mut instrs, dst, k, terms);
         }
         // End of step: shift each variable's history one lag deeper and put
         // its new value in slot lag 0. Swaps rotate the registers, so the
@@ -290,12 +373,17 @@ impl Step {
         // overwrites next step before anything reads it.
         let mut moves = Vec::new();
         for (var, &depth) in method.history().iter().enumerate() {
-            match method.final_assign(var) {
-                Some(k) => {
+            let end_reg = match method.end_value(var) {
+                poly::EndValue::Assign(k) => Some(n_slots + k),
+                poly::EndValue::Unknown(u) => Some(unknown_reg(u)),
+                poly::EndValue::Kept => None,
+            };
+            match end_reg {
+                Some(r) => {
                     for lag in (1..=depth).rev() {
                         moves.push(Move::Swap(slot_reg(var, lag), slot_reg(var, lag - 1)));
                     }
-                    moves.push(Move::Swap(slot_reg(var, 0), n_slots + k));
+                    moves.push(Move::Swap(slot_reg(var, 0), r));
                 }
                 None => {
                     for lag in (1..=depth).rev() {
@@ -315,7 +403,7 @@ impl Step {
             name: method.name().to_owned(),
             slot_names,
             n_slots,
-            n_regs: n_slots + method.assigns().len(),
+            n_regs: n_slots + n_assign + method.unknowns().len(),
             instrs,
             moves,
             params: named,

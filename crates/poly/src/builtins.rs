@@ -30,6 +30,33 @@ pub const BUILTINS: &[(&str, &str)] = &[
     ("false_heun_matrix", include_str!("../methods/false_heun_matrix.zm")),
     ("semi_false_heun", include_str!("../methods/semi_false_heun.zm")),
     ("semi_false_heun_matrix", include_str!("../methods/semi_false_heun_matrix.zm")),
+    // Implicit and algebraic methods (not from the paper).
+    ("trapezoidal", include_str!("../methods/trapezoidal.zm")),
+    ("implicit_midpoint", include_str!("../methods/implicit_midpoint.zm")),
+    ("backward_euler", include_str!("../methods/backward_euler.zm")),
+    ("bdf2", include_str!("../methods/bdf2.zm")),
+    ("newmark_average", include_str!("../methods/newmark_average.zm")),
+    ("newmark_linear", include_str!("../methods/newmark_linear.zm")),
+    ("gauss_legendre_2", include_str!("../methods/gauss_legendre_2.zm")),
+    ("radau_iia_2", include_str!("../methods/radau_iia_2.zm")),
+    ("sdirk2", include_str!("../methods/sdirk2.zm")),
+    ("forest_ruth", include_str!("../methods/forest_ruth.zm")),
+    ("soft_spring", include_str!("../methods/soft_spring.zm")),
+];
+
+/// The implicit and algebraic built-ins, beyond the paper's methods.
+pub const IMPLICIT_METHODS: [&str; 11] = [
+    "trapezoidal",
+    "implicit_midpoint",
+    "backward_euler",
+    "bdf2",
+    "newmark_average",
+    "newmark_linear",
+    "gauss_legendre_2",
+    "radau_iia_2",
+    "sdirk2",
+    "forest_ruth",
+    "soft_spring",
 ];
 
 /// `(name, source)` for every damped-spring built-in (`param D`), in the
@@ -80,6 +107,12 @@ pub fn damped_builtin_names() -> impl Iterator<Item = &'static str> {
 /// Every built-in: the paper's programs, then the damped-spring ones.
 pub fn all_builtin_names() -> impl Iterator<Item = &'static str> {
     builtin_names().chain(damped_builtin_names())
+}
+
+/// The built-ins transcribed from the paper (sections 5–11 and Appendix B):
+/// every built-in but [`IMPLICIT_METHODS`], in the paper's order.
+pub fn paper_builtin_names() -> impl Iterator<Item = &'static str> {
+    builtin_names().filter(|n| !IMPLICIT_METHODS.contains(n))
 }
 
 /// The source text of a built-in method (paper or damped-spring).

@@ -117,6 +117,11 @@ pub struct StepCost {
     /// The step written as the transition matrix applied to the augmented
     /// state (see [`matrix_cost`]).
     pub matrix_form: OpCount,
+    /// For an implicit step, the per-step solve (also included in
+    /// `program`): the unknowns as A⁻¹E applied to the N slots, n·N
+    /// multiplications and n·(N − 1) additions with the factorisation done
+    /// once per Φ (as `check` compiles it); zero for an explicit step.
+    pub solve: OpCount,
 }
 
 /// The cost of one linear combination `Σ c_k · x_k` under the model.
@@ -193,7 +198,10 @@ pub fn step_cost(method: &Method) -> StepCost {
     let mut program = per_assign.iter().copied().fold(OpCount::default(), Add::add);
     program.copy += shifts;
     let matrix_form = matrix_cost(&crate::transition_matrix(method));
-    StepCost { program, per_assign, shifts, matrix_form }
+    let (n_u, n_s) = (method.unknowns().len() as u32, method.order() as u32);
+    let solve = OpCount { mul: n_u * n_s, add: n_u * n_s.saturating_sub(1), copy: 0 };
+    program += solve;
+    StepCost { program, per_assign, shifts, matrix_form, solve }
 }
 
 /// Which assignments are live: the last assignment to each state variable,
@@ -203,7 +211,7 @@ pub fn live_assigns(method: &Method) -> Vec<bool> {
     let assigns = method.assigns();
     let mut live = vec![false; assigns.len()];
     for var in 0..method.state().len() {
-        if let Some(k) = method.final_assign(var) {
+        if let crate::EndValue::Assign(k) = method.end_value(var) {
             live[k] = true;
         }
     }

@@ -26,7 +26,7 @@
 //! keeps the old, quadratic route (a) as the tests' oracle.
 
 use crate::error::{Error, ErrorKind, Span};
-use crate::method::{Method, Operand};
+use crate::method::{EndValue, Method, Operand};
 use crate::{Poly, PolyMatrix, SparsePolyMatrix, Sym};
 
 /// Everything derived from one method.
@@ -39,9 +39,14 @@ pub struct Derivation {
     /// Stored by rows: it is mostly zero.
     pub z_matrix: SparsePolyMatrix,
     /// The transition matrix P over the augmented state
-    /// ([`Method::slots`] order).
+    /// ([`Method::slots`] order); for an implicit step, P times
+    /// [`Derivation::p_denominator`].
     pub transition_matrix: PolyMatrix,
-    /// χ(z) = det(zI − P), a polynomial in z and the parameters.
+    /// The common denominator d of P's entries: det A of the step's linear
+    /// system for an implicit method, 1 for an explicit one.
+    pub p_denominator: Poly,
+    /// χ(z) = det(zI − P), a polynomial in z and the parameters; for an
+    /// implicit method d·det(zI − P), whose leading coefficient in z is d.
     pub charpoly: Poly,
 }
 
@@ -52,7 +57,8 @@ pub fn w() -> Sym {
 }
 
 impl Derivation {
-    /// χ's coefficients, highest power of z first (the first is 1).
+    /// χ's coefficients, highest power of z first (the first is 1 for an
+    /// explicit method, det A for an implicit one).
     pub fn coeffs(&self) -> Vec<Poly> {
         let mut c = self.charpoly.coeffs_in(Sym::z());
         c.reverse();
@@ -63,7 +69,7 @@ impl Derivation {
     /// paper's form (section 4).
     pub fn p_q(&self) -> Option<(Poly, Poly)> {
         let c = self.coeffs();
-        if c.len() != 3 {
+        if c.len() != 3 || !c[0].is_one() {
             return None;
         }
         let half = Poly::constant(crate::Q::new((-1).into(), 2.into()));
@@ -134,13 +140,16 @@ fn laurent(p: &Poly, latex: bool) -> String {
 /// step: its final assignment, or an extra unknown (numbered after the
 /// assignments) when the step never assigns it.
 fn carried_unknowns(m: &Method) -> Vec<usize> {
-    let mut extra = m.assigns().len();
+    let n_a = m.assigns().len();
+    let mut extra = n_a + m.unknowns().len();
     (0..m.state().len())
-        .map(|v| {
-            m.final_assign(v).unwrap_or_else(|| {
+        .map(|v| match m.end_value(v) {
+            EndValue::Assign(k) => k,
+            EndValue::Unknown(u) => n_a + u,
+            EndValue::Kept => {
                 extra += 1;
                 extra - 1
-            })
+            }
         })
         .collect()
 }
@@ -149,31 +158,39 @@ fn carried_unknowns(m: &Method) -> Vec<usize> {
 /// an n×n matrix with O(n) nonzeros).
 pub fn z_matrix(m: &Method) -> SparsePolyMatrix {
     let n_assign = m.assigns().len();
+    let n_eq = m.unknowns().len();
     let unknown_of = carried_unknowns(m);
-    let n = n_assign + unknown_of.iter().filter(|&&u| u >= n_assign).count();
+    let n = n_assign
+        + n_eq
+        + (0..m.state().len()).filter(|&v| m.end_value(v) == EndValue::Kept).count();
     let wp = Poly::sym(w());
     let deepest = m.history().iter().copied().max().unwrap_or(0);
     let w_pow: Vec<Poly> = (0..=deepest).map(|lag| wp.pow(lag + 1)).collect();
     let mut rows: Vec<Vec<(usize, Poly)>> = Vec::with_capacity(n);
-    for (s, a) in m.assigns().iter().enumerate() {
-        let mut row: Vec<(usize, Poly)> = Vec::with_capacity(a.terms.len() + 1);
+    // Assignment rows, then one row per equation of the implicit system
+    // (its unknown is read at this step: no power of z).
+    let sources =
+        m.assigns().iter().map(|a| &a.terms).chain(m.equations().iter().map(|e| &e.terms));
+    for (s, terms) in sources.enumerate() {
+        let mut row: Vec<(usize, Poly)> = Vec::with_capacity(terms.len() + 1);
         row.push((s, Poly::one()));
-        for (op, c) in &a.terms {
+        for (op, c) in terms {
             row.push(match *op {
                 Operand::Stmt(t) => (t, -c),
+                Operand::Unknown(u) => (n_assign + u, -c),
                 Operand::Start { var, lag } => (unknown_of[var], -(c * &w_pow[lag as usize])),
             });
         }
         rows.push(row);
     }
     rows.resize_with(n, Vec::new);
-    for (u, row) in rows.iter_mut().enumerate().skip(n_assign) {
+    for (u, row) in rows.iter_mut().enumerate().skip(n_assign + n_eq) {
         row.push((u, Poly::one()));
     }
     let mut mat = SparsePolyMatrix::from_row_entries(n, rows);
     // A variable the step never assigns keeps its value: x_i = z⁻¹ x_i.
     for (v, &u) in unknown_of.iter().enumerate() {
-        if m.final_assign(v).is_none() {
+        if m.end_value(v) == EndValue::Kept {
             mat.add_to(u, u, &-&wp);
         }
     }
@@ -300,16 +317,34 @@ pub fn charpoly_z_route(m: &Method) -> Result<Poly, Error> {
 /// Berkowitz. Quadratic in the program's length; for tests only.
 #[doc(hidden)]
 pub fn charpoly_z_route_dense(m: &Method) -> Result<Poly, Error> {
-    let det = det_z_matrix_dense(z_matrix(m).to_dense(), &carried_unknowns(m));
+    let det = det_z_matrix_dense(z_matrix(m).to_dense(), &kept_unknowns(m));
     charpoly_from_det(m, &det)
 }
 
+/// The unknowns of M that stay in the reduced matrix: the carried ones,
+/// then every unknown of the implicit system (`x' = ...`, `unknown a`),
+/// whose rows need not have a unit diagonal nor read only earlier
+/// unknowns; the pencil determinant handles the general block.
+fn kept_unknowns(m: &Method) -> Vec<usize> {
+    let mut kept = carried_unknowns(m);
+    let n_a = m.assigns().len();
+    for u in 0..m.unknowns().len() {
+        if !kept.contains(&(n_a + u)) {
+            kept.push(n_a + u);
+        }
+    }
+    kept
+}
+
 fn charpoly_from_z_matrix(m: &Method, mat: &SparsePolyMatrix) -> Result<Poly, Error> {
-    let carried = carried_unknowns(m);
-    let det = match reduce_z_matrix(mat, &carried) {
+    let kept = kept_unknowns(m);
+    let mut det = match reduce_z_matrix(mat, &kept) {
         Some(reduced) => reduced.det_pencil(w()),
-        None => det_z_matrix_dense(mat.to_dense(), &carried),
+        None => det_z_matrix_dense(mat.to_dense(), &kept),
     };
+    if !m.constants().is_empty() {
+        det = crate::field::reduce(&det);
+    }
     charpoly_from_det(m, &det)
 }
 
@@ -329,8 +364,13 @@ fn charpoly_from_det(m: &Method, det: &Poly) -> Result<Poly, Error> {
     Ok(Poly::from_coeffs_in(Sym::z(), &coeffs))
 }
 
-/// Route (b): the transition matrix P by symbolic execution.
+/// Route (b): the transition matrix P by symbolic execution (for an
+/// implicit method, d·P with d = det A: see `implicit.rs`).
 pub fn transition_matrix(m: &Method) -> PolyMatrix {
+    if m.is_implicit() {
+        let sys = crate::implicit::system(m);
+        return crate::implicit::transition_fraction(m, &sys).0;
+    }
     let slots = m.slots();
     let n = slots.len();
     let slot_of: std::collections::HashMap<(usize, u32), usize> =
@@ -373,6 +413,7 @@ pub fn transition_matrix(m: &Method) -> PolyMatrix {
                     }
                 }
                 Operand::Start { var, lag } => acc[slot_of[&(var, lag)]] += c,
+                Operand::Unknown(_) => unreachable!("explicit route of an implicit method"),
             }
         }
         for (op, _) in &a.terms {
@@ -387,9 +428,9 @@ pub fn transition_matrix(m: &Method) -> PolyMatrix {
     let mut p = PolyMatrix::zeros(n, n);
     for (row, &(var, lag)) in slots.iter().enumerate() {
         let new = if lag == 0 {
-            match m.final_assign(var) {
-                Some(t) => values[t].clone(),
-                None => unit(slot_of[&(var, 0)]),
+            match m.end_value(var) {
+                EndValue::Assign(t) => values[t].clone(),
+                _ => unit(slot_of[&(var, 0)]),
             }
         } else {
             unit(slot_of[&(var, lag - 1)])
@@ -435,8 +476,19 @@ pub fn derive_source(file: &str, src: &str) -> Result<Derivation, Error> {
 pub fn derive(method: &Method) -> Result<Derivation, Error> {
     let z_matrix = z_matrix(method);
     let a = charpoly_from_z_matrix(method, &z_matrix)?;
-    let transition_matrix = transition_matrix(method);
-    let b = charpoly_state_route(&transition_matrix);
+    let (transition_matrix, p_denominator, b) = if method.is_implicit() {
+        let sys = crate::implicit::system(method);
+        let (p, d) = crate::implicit::transition_fraction(method, &sys);
+        (p, d, crate::implicit::charpoly_pencil(method, &sys))
+    } else {
+        let mut p = transition_matrix(method);
+        let mut b = charpoly_state_route(&p);
+        if !method.constants().is_empty() {
+            p = p.map(crate::field::reduce);
+            b = crate::field::reduce(&b);
+        }
+        (p, Poly::one(), b)
+    };
     if a != b {
         return Err(Error::new(
             ErrorKind::RoutesDisagree,
@@ -447,7 +499,13 @@ pub fn derive(method: &Method) -> Result<Derivation, Error> {
             ),
         ));
     }
-    Ok(Derivation { method: method.clone(), z_matrix, transition_matrix, charpoly: a })
+    Ok(Derivation {
+        method: method.clone(),
+        z_matrix,
+        transition_matrix,
+        p_denominator,
+        charpoly: a,
+    })
 }
 
 /// The characteristic polynomial of a method, derived by both routes.

@@ -141,8 +141,16 @@ fn permutations(n: usize) -> Vec<Vec<usize>> {
 }
 
 /// The strongest relation between two derivations' transition matrices.
+///
+/// An implicit method's P is stored as `transition_matrix / p_denominator`;
+/// the two are compared as fractions, by cross-multiplying with the other
+/// side's denominator, so backward Euler's P is never mistaken for its
+/// numerator.
 pub fn relate(a: &Derivation, b: &Derivation) -> Relation {
-    let (pa, pb) = (&a.transition_matrix, &b.transition_matrix);
+    let (da, db) = (&a.p_denominator, &b.p_denominator);
+    let same_den = da == db;
+    let cross = |m: &PolyMatrix, d: &Poly| if same_den { m.clone() } else { m.map(|e| e * d) };
+    let (pa, pb) = (&cross(&a.transition_matrix, db), &cross(&b.transition_matrix, da));
     if pa == pb {
         return Relation::Equal;
     }
@@ -180,7 +188,9 @@ pub fn relate(a: &Derivation, b: &Derivation) -> Relation {
             return r;
         }
     }
-    if a.charpoly == b.charpoly {
+    let same_charpoly =
+        if same_den { a.charpoly == b.charpoly } else { &a.charpoly * db == &b.charpoly * da };
+    if same_charpoly {
         Relation::SameCharpoly
     } else {
         Relation::Different

@@ -40,6 +40,16 @@ pub enum ErrorKind {
     /// Stability analysis: the polynomial does not depend on `z` (no roots
     /// to classify).
     NoRoots,
+    /// An unknown (`unknown a` or a primed state `x'`) without an equation,
+    /// with two, or an equation for a name that is not an unknown.
+    Equation,
+    /// A prime on a name that has no end-of-step value: a temporary, a
+    /// parameter, a constant or a history read (`y'@1`).
+    BadPrime,
+    /// The implicit system is singular for every Φ.
+    Singular,
+    /// A `const` that is not `sqrt`, `cbrt` or `root` of a positive integer.
+    BadConstant,
 }
 
 /// A position in a source file, 1-based.

@@ -155,10 +155,22 @@ pub fn form_value(q: &[Vec<Q>], x: &[Q]) -> Q {
 }
 
 /// The exact transition matrix of `method` with its parameters set to
-/// `values` (every parameter must have a value; `None` otherwise).
+/// `values` (every parameter must have a value; `None` otherwise, and for
+/// an exact irrational constant or an implicit step singular there).
 pub fn transition_matrix_at(method: &Method, values: &HashMap<Sym, Q>) -> Option<Vec<Vec<Q>>> {
-    let p = crate::transition_matrix(method);
-    (0..p.rows()).map(|i| p.row(i).iter().map(|e| e.eval(values)).collect()).collect()
+    // An implicit step's P is (d·P)/d with d = det A.
+    let (p, d) = if method.is_implicit() {
+        crate::implicit::transition_fraction(method, &crate::implicit::system(method))
+    } else {
+        (crate::transition_matrix(method), crate::Poly::one())
+    };
+    let d = d.eval(values)?;
+    if d.is_zero() {
+        return None;
+    }
+    (0..p.rows())
+        .map(|i| p.row(i).iter().map(|e| e.eval(values).map(|x| x / &d)).collect())
+        .collect()
 }
 
 /// The form as text over the slot names, e.g. `v^2 + y^2 - 1/10*v*y`.

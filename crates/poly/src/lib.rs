@@ -55,6 +55,9 @@ pub mod cost;
 mod derive;
 pub mod equiv;
 mod error;
+pub mod field;
+pub mod field_stability;
+mod implicit;
 pub mod invariant;
 mod matrix;
 mod method;
@@ -71,7 +74,8 @@ mod upoly;
 pub use crate::algebraic::Algebraic;
 pub use crate::builtins::{
     all_builtin_names, builtin, builtin_names, builtin_source, damped_builtin_names, direct_twin,
-    BUILTINS, DAMPED_BUILTINS, DAMPED_METHODS, PAPER_METHODS,
+    paper_builtin_names, BUILTINS, DAMPED_BUILTINS, DAMPED_METHODS, IMPLICIT_METHODS,
+    PAPER_METHODS,
 };
 pub use crate::class::RootClass;
 pub use crate::cost::{step_cost, OpCount, StepCost};
@@ -82,8 +86,11 @@ pub use crate::derive::{
     z_matrix, Derivation,
 };
 pub use crate::error::{show_invisible, Error, ErrorKind, Span};
+pub use crate::implicit::{singular_points, system as implicit_system, System as ImplicitSystem};
 pub use crate::matrix::{PolyMatrix, SparsePolyMatrix};
-pub use crate::method::{Assign, Method, Operand, Target};
+pub use crate::method::{
+    Assign, Constant, EndValue, Equation, GaussSeidelRead, Method, Operand, Target, Unknown,
+};
 pub use crate::params::Params;
 pub use crate::poly::{Monomial, Poly};
 pub use crate::sym::Sym;

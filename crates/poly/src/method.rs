@@ -34,6 +34,70 @@ pub enum Operand {
     },
     /// The value computed by assignment `.0` earlier in this step.
     Stmt(usize),
+    /// Unknown `.0` of the step's implicit system ([`Method::unknowns`]): a
+    /// primed state `x'` or an `unknown` temporary.
+    Unknown(usize),
+}
+
+/// An unknown of the implicit system.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Unknown {
+    /// `x'` for a primed state variable, else the declared name.
+    pub name: String,
+    /// The state variable whose end-of-step value this is (`x'`), if any.
+    pub state: Option<usize>,
+}
+
+/// One equation of the implicit system: `unknown = Σ coeff · operand`.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Equation {
+    /// The unknown it defines, by index into [`Method::unknowns`].
+    pub unknown: usize,
+    /// Nonzero coefficients per operand; operands may be unknowns.
+    pub terms: Vec<(Operand, Poly)>,
+    /// The 1-based source line.
+    pub line: u32,
+    /// The equation as written, without its comment.
+    pub text: String,
+}
+
+/// An exact algebraic constant `const NAME = sqrt(N)` and its value.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Constant {
+    /// The name in the program.
+    pub name: String,
+    /// The radical in normal form (√12 = 2·√3).
+    pub radical: crate::field::Radical,
+    /// The value as an element of the field spanned by the generators.
+    pub value: Poly,
+    /// The 1-based source line.
+    pub line: u32,
+}
+
+/// A read of a state variable that an earlier line of the same step has
+/// already updated (a Gauss–Seidel read, as opposed to reading the value the
+/// step started from).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct GaussSeidelRead {
+    /// Where the read is.
+    pub line: u32,
+    /// Its column.
+    pub col: u32,
+    /// The state variable read.
+    pub name: String,
+    /// The line of the assignment whose value it reads.
+    pub updated_on: u32,
+}
+
+/// Where a state variable's value at the end of the step comes from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum EndValue {
+    /// Its last assignment, by index.
+    Assign(usize),
+    /// Its primed unknown `x'`, by index into [`Method::unknowns`].
+    Unknown(usize),
+    /// It is neither assigned nor solved for: it keeps its value.
+    Kept,
 }
 
 /// What an assignment writes.
@@ -68,6 +132,10 @@ pub struct Method {
     history: Vec<u32>,
     /// The last assignment to each state variable, if any.
     finals: Vec<Option<usize>>,
+    unknowns: Vec<Unknown>,
+    equations: Vec<Equation>,
+    constants: Vec<Constant>,
+    gauss_seidel: Vec<GaussSeidelRead>,
 }
 
 /// The linear value of a sub-expression during lowering.
@@ -134,6 +202,16 @@ struct Lowerer<'a> {
     /// Every name that is assigned anywhere, with its first line.
     assigned_anywhere: HashMap<String, u32>,
     history: Vec<u32>,
+    /// Constants by name, with their values in the field of the generators.
+    consts: HashMap<String, Poly>,
+    /// Unknowns by name (`x'` or the declared name).
+    unknown_of: HashMap<String, usize>,
+    /// Whether any constant exists: coefficients are then reduced.
+    reduce: bool,
+    /// The line being lowered and the line of every assignment so far.
+    line: u32,
+    assign_lines: Vec<u32>,
+    gauss_seidel: Vec<GaussSeidelRead>,
 }
 
 impl Lowerer<'_> {
@@ -165,11 +243,12 @@ impl Lowerer<'_> {
                 self.history[var] = self.history[var].max(*k);
                 Ok(Lin::operand(Operand::Start { var, lag: *k }))
             }
+            ExprKind::Primed(n) => self.primed(n, e.span),
             ExprKind::Neg(x) => Ok(Lin::default().add(self.lower(x)?, -1)),
             ExprKind::Pow(b, n) => {
                 let base = self.lower(b)?;
                 if base.is_scalar() {
-                    Ok(Lin::scalar(base.scalar.pow(*n)))
+                    Ok(Lin::scalar(self.fix(base.scalar.pow(*n))))
                 } else if *n == 1 {
                     Ok(base)
                 } else {
@@ -187,9 +266,9 @@ impl Lowerer<'_> {
                     BinOp::Sub => Ok(a.add(b, -1)),
                     BinOp::Mul => {
                         if a.is_scalar() {
-                            Ok(b.scale(&a.scalar))
+                            Ok(self.fix_lin(b.scale(&a.scalar)))
                         } else if b.is_scalar() {
-                            Ok(a.scale(&b.scalar))
+                            Ok(self.fix_lin(a.scale(&b.scalar)))
                         } else {
                             Err(Error::new(
                                 ErrorKind::Nonlinear,
@@ -207,6 +286,17 @@ impl Lowerer<'_> {
                             ));
                         }
                         let Some(c) = b.scalar.as_constant() else {
+                            if crate::field::has_generators(&b.scalar)
+                                && b.scalar
+                                    .symbols()
+                                    .iter()
+                                    .all(|&s| crate::field::generator_of(s).is_some())
+                            {
+                                // A nonzero constant of the field: exact inverse.
+                                let inv = crate::field::inverse(&b.scalar)
+                                    .expect("a nonzero field element");
+                                return Ok(self.fix_lin(a.scale(&inv)));
+                            }
                             let names: Vec<&str> =
                                 b.scalar.symbols().iter().map(|s| s.name()).collect();
                             return Err(Error::new(
@@ -229,15 +319,93 @@ impl Lowerer<'_> {
         }
     }
 
+    /// `p` reduced modulo the constants' minimal polynomials, when any.
+    fn fix(&self, p: Poly) -> Poly {
+        if self.reduce {
+            crate::field::reduce(&p)
+        } else {
+            p
+        }
+    }
+
+    fn fix_lin(&self, l: Lin) -> Lin {
+        if !self.reduce {
+            return l;
+        }
+        Lin {
+            scalar: crate::field::reduce(&l.scalar),
+            terms: l
+                .terms
+                .into_iter()
+                .map(|(op, c)| (op, crate::field::reduce(&c)))
+                .filter(|(_, c)| !c.is_zero())
+                .collect(),
+        }
+    }
+
+    fn primed(&mut self, n: &str, span: Span) -> Result<Lin, Error> {
+        let key = format!("{n}'");
+        if let Some(&u) = self.unknown_of.get(&key) {
+            return Ok(Lin::operand(Operand::Unknown(u)));
+        }
+        if self.state.iter().any(|s| s == n) {
+            return Err(Error::new(
+                ErrorKind::Equation,
+                span,
+                format!("`{n}'` is read but `{n}` has no equation: expected a line `{n}' = ...` defining its end-of-step value"),
+            ));
+        }
+        let what = if self.params.iter().any(|p| p.name() == n) {
+            "a parameter"
+        } else if self.consts.contains_key(n) {
+            "a constant"
+        } else if self.unknown_of.contains_key(n) {
+            "an unknown (it is already the solution; read it as `NAME`)"
+        } else if self.assigned_anywhere.contains_key(n) {
+            "a temporary"
+        } else {
+            return Err(Error::new(
+                ErrorKind::UnknownName,
+                span,
+                format!(
+                    "unknown name `{n}'`: expected a primed state variable ({})",
+                    self.state.join(", ")
+                ),
+            ));
+        };
+        Err(Error::new(
+            ErrorKind::BadPrime,
+            span,
+            format!(
+                "`{n}'` primes {what}: expected a prime only on a state variable ({})",
+                self.state.join(", ")
+            ),
+        ))
+    }
+
     fn name(&mut self, n: &str, span: Span) -> Result<Lin, Error> {
         if let Some(&p) = self.params.iter().find(|p| p.name() == n) {
             return Ok(Lin::scalar(Poly::sym(p)));
         }
+        if let Some(c) = self.consts.get(n) {
+            return Ok(Lin::scalar(c.clone()));
+        }
         if let Some(var) = self.state.iter().position(|s| s == n) {
             return Ok(Lin::operand(match self.latest_state[var] {
-                Some(t) => Operand::Stmt(t),
+                Some(t) => {
+                    self.gauss_seidel.push(GaussSeidelRead {
+                        line: self.line,
+                        col: span.col,
+                        name: n.to_owned(),
+                        updated_on: self.assign_lines[t],
+                    });
+                    Operand::Stmt(t)
+                }
                 None => Operand::Start { var, lag: 0 },
             }));
+        }
+        if let Some(&u) = self.unknown_of.get(n) {
+            return Ok(Lin::operand(Operand::Unknown(u)));
         }
         if let Some(p) = self.scalar_temps.get(n) {
             return Ok(Lin::scalar(p.clone()));
@@ -262,7 +430,63 @@ impl Lowerer<'_> {
 
 enum ItemKind {
     State,
+    Unknown,
     Other,
+}
+
+fn check_new_name(declared: &HashMap<String, Span>, n: &str, s: Span) -> Result<(), Error> {
+    if n == "Phi" {
+        return Err(decl_err(s, "`Phi` is always a parameter: expected it not to be declared"));
+    }
+    if n == "z" {
+        return Err(decl_err(
+            s,
+            "`z` is reserved for the z-transform variable: expected another name",
+        ));
+    }
+    if let Some(prev) = declared.get(n) {
+        return Err(decl_err(
+            s,
+            format!(
+                "`{n}` is declared twice (first on line {}): expected distinct names",
+                prev.line
+            ),
+        ));
+    }
+    Ok(())
+}
+
+fn affine_err(lin: &Lin, span: Span) -> Error {
+    Error::new(
+        ErrorKind::Affine,
+        span,
+        format!("term `{}` does not depend on the state: expected every term to be a multiple of a state variable (the step must be linear)", lin.scalar),
+    )
+}
+
+/// The radical a `const` line defines, or a located error.
+fn radical_of(
+    func: &str,
+    args: &[(crate::Q, Span)],
+    call: Span,
+) -> Result<crate::field::Radical, Error> {
+    let bad = |s: Span, what: &str| {
+        Error::new(ErrorKind::BadConstant, s, format!("{what}: expected `sqrt(N)`, `cbrt(N)` or `root(K, N)` with N a positive integer (at most {}) and K an integer from 2 to 64", crate::field::MAX_RADICAND))
+    };
+    let (k, n) = match (func, args) {
+        ("sqrt", [n]) => (2, n),
+        ("cbrt", [n]) => (3, n),
+        ("root", [(k, ks), n]) => {
+            let k = crate::field::radicand(k)
+                .filter(|&k| (2..=64).contains(&k))
+                .ok_or_else(|| bad(*ks, &format!("root index {k}")))?;
+            (k as u32, n)
+        }
+        _ => return Err(bad(call, &format!("`{func}` with {} argument(s)", args.len()))),
+    };
+    let value = crate::field::radicand(&n.0)
+        .ok_or_else(|| bad(n.1, &format!("{} is not a positive integer", n.0)))?;
+    Ok(crate::field::Radical::root(k, value))
 }
 
 fn decl_err(span: Span, msg: impl Into<String>) -> Error {
@@ -301,9 +525,12 @@ impl Method {
         let mut declared: HashMap<String, Span> = HashMap::new();
         declared.insert("Phi".into(), Span::default());
         let mut assigns_src = Vec::new();
+        let mut declared_unknowns: Vec<(String, Span)> = Vec::new();
+        let mut const_src: Vec<(String, Span, crate::field::Radical)> = Vec::new();
         for item in items {
             let item_kind = match item {
                 Item::State(..) => ItemKind::State,
+                Item::Unknown(..) => ItemKind::Unknown,
                 _ => ItemKind::Other,
             };
             match item {
@@ -319,8 +546,24 @@ impl Method {
                     }
                     name = Some(n);
                 }
-                Item::State(names, span) | Item::Param(names, span) => {
-                    let is_state = matches!(item_kind, ItemKind::State);
+                Item::Const { name: n, span, func, args, call_span } => {
+                    if name.is_none() {
+                        return Err(decl_err(
+                            span,
+                            "missing `method NAME` line: expected it before `const`",
+                        ));
+                    }
+                    if !assigns_src.is_empty() {
+                        return Err(decl_err(span, "declaration after an assignment: expected `const` lines before the first assignment"));
+                    }
+                    check_new_name(&declared, &n, span)?;
+                    declared.insert(n.clone(), span);
+                    let radical = radical_of(&func, &args, call_span)?;
+                    const_src.push((n, span, radical));
+                }
+                Item::State(names, span)
+                | Item::Param(names, span)
+                | Item::Unknown(names, span) => {
                     if name.is_none() {
                         return Err(decl_err(
                             span,
@@ -328,35 +571,25 @@ impl Method {
                         ));
                     }
                     if !assigns_src.is_empty() {
-                        return Err(decl_err(span, "declaration after an assignment: expected `state` and `param` lines before the first assignment"));
+                        return Err(decl_err(span, "declaration after an assignment: expected `state`, `param`, `unknown` and `const` lines before the first assignment"));
                     }
+                    let is_state = matches!(item_kind, ItemKind::State);
                     if is_state && state.is_some() {
                         return Err(decl_err(span, "a second `state` line: expected exactly one, listing every state variable"));
                     }
                     let mut vars = Vec::new();
                     for (n, s) in names {
-                        if n == "Phi" {
-                            return Err(decl_err(
-                                s,
-                                "`Phi` is always a parameter: expected it not to be declared",
-                            ));
-                        }
-                        if n == "z" {
-                            return Err(decl_err(s, "`z` is reserved for the z-transform variable: expected another name"));
-                        }
-                        if let Some(prev) = declared.get(&n) {
-                            return Err(decl_err(s, format!("`{n}` is declared twice (first on line {}): expected distinct names", prev.line)));
-                        }
+                        check_new_name(&declared, &n, s)?;
                         declared.insert(n.clone(), s);
-                        vars.push(n);
+                        vars.push((n, s));
                     }
-                    if is_state {
-                        state = Some(vars);
-                    } else {
-                        params.extend(vars.iter().map(|n| Sym::new(n)));
+                    match item_kind {
+                        ItemKind::State => state = Some(vars.into_iter().map(|(n, _)| n).collect()),
+                        ItemKind::Unknown => declared_unknowns.extend(vars),
+                        ItemKind::Other => params.extend(vars.iter().map(|(n, _)| Sym::new(n))),
                     }
                 }
-                Item::Assign { target, target_span, expr, line_text } => {
+                Item::Assign { target, target_span, expr, line_text, primed } => {
                     if name.is_none() {
                         return Err(decl_err(
                             target_span,
@@ -366,7 +599,7 @@ impl Method {
                     if state.is_none() {
                         return Err(decl_err(target_span, "missing `state` line: expected `state NAME...` before the first assignment"));
                     }
-                    assigns_src.push((target, target_span, expr, line_text));
+                    assigns_src.push((target, target_span, expr, line_text, primed));
                 }
             }
         }
@@ -381,10 +614,52 @@ impl Method {
             )
         })?;
 
+        // Constants: one generator per prime, with the index every constant
+        // of this program needs.
+        let index = crate::field::generator_indices(const_src.iter().map(|(_, _, r)| r));
+        let constants: Vec<Constant> = const_src
+            .iter()
+            .map(|(n, s, r)| Constant {
+                name: n.clone(),
+                radical: r.clone(),
+                value: r.to_poly(&index),
+                line: s.line,
+            })
+            .collect();
+
         let mut assigned_anywhere = HashMap::new();
-        for (t, s, _, _) in &assigns_src {
+        // Unknowns: the primed state variables that have an equation, in
+        // state order, then the declared ones.
+        let mut primed_vars = vec![false; state.len()];
+        for (t, s, _, _, primed) in &assigns_src {
+            if *primed {
+                match state.iter().position(|v| v == t) {
+                    Some(v) => primed_vars[v] = true,
+                    None => {
+                        let what = if params.iter().any(|p| p.name() == t) {
+                            Some("a parameter")
+                        } else if const_src.iter().any(|(n, _, _)| n == t) {
+                            Some("a constant")
+                        } else if declared_unknowns.iter().any(|(n, _)| n == t) {
+                            Some("an unknown (write its equation as `NAME = ...`)")
+                        } else if assigns_src.iter().any(|(n, _, _, _, p)| n == t && !p) {
+                            Some("a temporary")
+                        } else {
+                            None
+                        };
+                        return Err(match what {
+                            Some(w) => Error::new(ErrorKind::BadPrime, *s, format!("`{t}'` primes {w}: expected an equation `x' = ...` only for a state variable ({})", state.join(", "))),
+                            None => Error::new(ErrorKind::Equation, *s, format!("equation for `{t}'`, but `{t}` is not declared: expected a state variable ({}) or `unknown {t}` with an equation `{t} = ...`", state.join(", "))),
+                        });
+                    }
+                }
+                continue;
+            }
             if params.iter().any(|p| p.name() == t) {
                 return Err(decl_err(*s, format!("`{t}` is a parameter and cannot be assigned: expected a state variable or a temporary")));
+            }
+            if const_src.iter().any(|(n, _, _)| n == t) {
+                return Err(decl_err(*s, format!("`{t}` is a constant and cannot be assigned: expected a state variable or a temporary")));
             }
             if t == "z" {
                 return Err(decl_err(
@@ -394,6 +669,15 @@ impl Method {
             }
             assigned_anywhere.entry(t.clone()).or_insert(s.line);
         }
+        let mut unknowns: Vec<Unknown> = Vec::new();
+        for (v, _) in primed_vars.iter().enumerate().filter(|(_, p)| **p) {
+            unknowns.push(Unknown { name: format!("{}'", state[v]), state: Some(v) });
+        }
+        for (n, _) in &declared_unknowns {
+            unknowns.push(Unknown { name: n.clone(), state: None });
+        }
+        let unknown_of: HashMap<String, usize> =
+            unknowns.iter().enumerate().map(|(i, u)| (u.name.clone(), i)).collect();
         let mut lw = Lowerer {
             state: &state,
             params: &params,
@@ -402,14 +686,55 @@ impl Method {
             scalar_temps: HashMap::new(),
             assigned_anywhere,
             history: vec![0; state.len()],
+            consts: constants.iter().map(|c| (c.name.clone(), c.value.clone())).collect(),
+            unknown_of,
+            reduce: !constants.is_empty(),
+            line: 0,
+            assign_lines: Vec::new(),
+            gauss_seidel: Vec::new(),
         };
         let state_index: HashMap<&str, usize> =
             state.iter().enumerate().map(|(k, s)| (s.as_str(), k)).collect();
         let mut assigns = Vec::new();
-        for (t, tspan, expr, text) in assigns_src {
+        let mut equations: Vec<Option<Equation>> = vec![None; unknowns.len()];
+        // The line of each state variable's equation, once seen.
+        let mut solved_on: Vec<Option<u32>> = vec![None; state.len()];
+        for (t, tspan, expr, text, primed) in assigns_src {
+            lw.line = tspan.line;
             let lin = lw.lower(&expr)?;
+            let lin = lw.fix_lin(lin);
             let state_index = state_index.get(t.as_str()).copied();
             let is_state = state_index.is_some();
+            let unknown = if primed {
+                lw.unknown_of.get(&format!("{t}'")).copied()
+            } else if is_state {
+                None
+            } else {
+                lw.unknown_of.get(&t).copied()
+            };
+            if let Some(u) = unknown {
+                if !lin.scalar.is_zero() {
+                    return Err(affine_err(&lin, expr.span));
+                }
+                if let Some(prev) = &equations[u] {
+                    return Err(Error::new(ErrorKind::Equation, tspan, format!("a second equation for `{}` (the first is on line {}): expected exactly one", unknowns[u].name, prev.line)));
+                }
+                if let Some(v) = unknowns[u].state {
+                    solved_on[v] = Some(tspan.line);
+                }
+                equations[u] = Some(Equation {
+                    unknown: u,
+                    terms: lin.terms.into_iter().collect(),
+                    line: tspan.line,
+                    text,
+                });
+                continue;
+            }
+            if let Some(v) = state_index {
+                if let Some(l) = solved_on[v] {
+                    return Err(Error::new(ErrorKind::Equation, tspan, format!("`{t}` is assigned after its equation `{t}' = ...` on line {l}: expected every assignment to `{t}` before its equation (the equation's solution ends the step)")));
+                }
+            }
             if !is_state && lin.is_scalar() {
                 // A temporary that depends on the parameters only (Appendix B's
                 // `D:=0.5*woT`) is folded into the coefficients that read it.
@@ -419,11 +744,7 @@ impl Method {
             }
             let idx = assigns.len();
             if !lin.scalar.is_zero() {
-                return Err(Error::new(
-                    ErrorKind::Affine,
-                    expr.span,
-                    format!("term `{}` does not depend on the state: expected every term to be a multiple of a state variable (the step must be linear)", lin.scalar),
-                ));
+                return Err(affine_err(&lin, expr.span));
             }
             let target = match state_index {
                 Some(v) => {
@@ -436,6 +757,7 @@ impl Method {
                     Target::Temp(t)
                 }
             };
+            lw.assign_lines.push(tspan.line);
             assigns.push(Assign {
                 target,
                 terms: lin.terms.into_iter().collect(),
@@ -443,9 +765,48 @@ impl Method {
                 text,
             });
         }
+        let n_primed = unknowns.iter().filter(|u| u.state.is_some()).count();
+        let equations: Vec<Equation> = equations
+            .into_iter()
+            .enumerate()
+            .map(|(u, e)| {
+                e.ok_or_else(|| {
+                    let (n, s) = &declared_unknowns[u - n_primed];
+                    Error::new(
+                        ErrorKind::Equation,
+                        *s,
+                        format!("unknown `{n}` has no equation: expected one line `{n} = ...`"),
+                    )
+                })
+            })
+            .collect::<Result<_, _>>()?;
         let history = lw.history;
         let finals = lw.latest_state;
-        Ok(Method { name, state, params, assigns, history, finals })
+        let gauss_seidel = lw.gauss_seidel;
+        let m = Method {
+            name,
+            state,
+            params,
+            assigns,
+            history,
+            unknowns,
+            equations,
+            constants,
+            gauss_seidel,
+            finals,
+        };
+        if !m.unknowns.is_empty() {
+            let det = crate::implicit::system_determinant(&m);
+            if det.is_zero() {
+                let line = m.equations.iter().map(|e| e.line).min().unwrap_or(1);
+                return Err(Error::new(
+                    ErrorKind::Singular,
+                    Span { line, col: 1, len: 1 },
+                    format!("the implicit system in {} is singular for every Phi: its determinant det(I - d(right-hand sides)/d(unknowns)) is 0; expected equations that determine every unknown", m.unknowns.iter().map(|u| u.name.as_str()).collect::<Vec<_>>().join(", ")),
+                ));
+            }
+        }
+        Ok(m)
     }
 
     /// The method's name.
@@ -493,8 +854,48 @@ impl Method {
     }
 
     /// The index of the last assignment to state variable `var`, if any.
+    /// A variable with an equation `x' = ...` ends the step with its
+    /// unknown instead: see [`Method::end_value`].
     pub fn final_assign(&self, var: usize) -> Option<usize> {
         self.finals[var]
+    }
+
+    /// Where state variable `var`'s end-of-step value comes from.
+    pub fn end_value(&self, var: usize) -> EndValue {
+        if let Some(u) = self.unknowns.iter().position(|u| u.state == Some(var)) {
+            return EndValue::Unknown(u);
+        }
+        match self.final_assign(var) {
+            Some(k) => EndValue::Assign(k),
+            None => EndValue::Kept,
+        }
+    }
+
+    /// The unknowns of the implicit system: primed state variables (in state
+    /// order), then declared `unknown`s. Empty for an explicit method.
+    pub fn unknowns(&self) -> &[Unknown] {
+        &self.unknowns
+    }
+
+    /// The equations, one per unknown, in [`Method::unknowns`] order.
+    pub fn equations(&self) -> &[Equation] {
+        &self.equations
+    }
+
+    /// Whether the step solves a linear system (it has unknowns).
+    pub fn is_implicit(&self) -> bool {
+        !self.unknowns.is_empty()
+    }
+
+    /// The exact constants declared with `const`.
+    pub fn constants(&self) -> &[Constant] {
+        &self.constants
+    }
+
+    /// Every read of a state variable that an earlier line of the same step
+    /// has already updated, in program order.
+    pub fn gauss_seidel_reads(&self) -> &[GaussSeidelRead] {
+        &self.gauss_seidel
     }
 
     /// The name an assignment writes.
@@ -511,6 +912,7 @@ impl Method {
             Operand::Start { var, lag: 0 } => self.state[var].clone(),
             Operand::Start { var, lag } => format!("{}@{lag}", self.state[var]),
             Operand::Stmt(t) => format!("%{t}"),
+            Operand::Unknown(u) => self.unknowns[u].name.clone(),
         }
     }
 }
@@ -525,9 +927,31 @@ impl fmt::Display for Method {
         writeln!(f, "state {}", self.state.join(" "))?;
         let ps: Vec<&str> = self.params.iter().map(|p| p.name()).collect();
         writeln!(f, "param {}", ps.join(" "))?;
-        for (k, a) in self.assigns.iter().enumerate() {
+        if !self.constants.is_empty() {
+            for c in &self.constants {
+                let (k, n) = c.radical.minimal_polynomial();
+                writeln!(f, "const {} = {} (minimal polynomial x^{k} - {n})", c.name, c.value)?;
+            }
+        }
+        if !self.unknowns.is_empty() {
+            let us: Vec<&str> = self.unknowns.iter().map(|u| u.name.as_str()).collect();
+            writeln!(f, "unknown {}", us.join(" "))?;
+        }
+        let lines = self
+            .assigns
+            .iter()
+            .enumerate()
+            .map(|(k, a)| (a.line, format!("%{k} ({})", self.target_name(a)), &a.terms))
+            .chain(
+                self.equations
+                    .iter()
+                    .map(|e| (e.line, format!("{} =", self.unknowns[e.unknown].name), &e.terms)),
+            );
+        let mut lines: Vec<_> = lines.collect();
+        lines.sort_by_key(|l| l.0);
+        for (_, head, terms) in lines {
             let mut rhs = String::new();
-            for (i, (op, c)) in a.terms.iter().enumerate() {
+            for (i, (op, c)) in terms.iter().enumerate() {
                 // A one-term negative coefficient prints as a subtraction.
                 let neg = c.len() == 1 && c.terms().all(|(_, q)| q < &crate::Q::zero());
                 let body = if neg { -c } else { c.clone() };
@@ -549,7 +973,10 @@ impl fmt::Display for Method {
             if rhs.is_empty() {
                 rhs.push('0');
             }
-            writeln!(f, "%{k} ({}) = {rhs}", self.target_name(a))?;
+            match head.strip_suffix(" =") {
+                Some(u) => writeln!(f, "{u} = {rhs}")?,
+                None => writeln!(f, "{head} = {rhs}")?,
+            }
         }
         Ok(())
     }

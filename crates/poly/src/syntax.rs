@@ -3,11 +3,12 @@
 //! ```text
 //! file   := line*
 //! line   := [ 'method' NAME | 'state' NAME+ | 'param' NAME+ | NAME '=' expr ] [ '#' comment ]
+//!         | 'unknown' NAME+ | 'const' NAME '=' FUNC '(' INT [',' INT] ')' | NAME "'" '=' expr
 //! expr   := term (('+' | '-') term)*
 //! term   := unary (('*' | '/') unary)*
 //! unary  := ('-' | '+') unary | power
 //! power  := atom [ '^' INT | '^' '(' INT ')' ]
-//! atom   := NUMBER | NAME [ '@' INT ] | '(' expr ')'
+//! atom   := NUMBER | NAME [ '@' INT | "'" ] | '(' expr ')'
 //! ```
 //!
 //! Numbers are integers or decimals (`0.5`, `2.5e-3`), taken exactly. The
@@ -67,6 +68,8 @@ pub(crate) enum ExprKind {
     Name(String),
     /// `name@k`.
     Hist(String, u32),
+    /// `name'`: the value at the end of the step, an unknown.
+    Primed(String),
     Neg(Box<Expr>),
     Bin(BinOp, Box<Expr>, Box<Expr>),
     Pow(Box<Expr>, u32),
@@ -86,7 +89,23 @@ pub(crate) enum Item {
     Method(String, Span),
     State(Vec<(String, Span)>, Span),
     Param(Vec<(String, Span)>, Span),
-    Assign { target: String, target_span: Span, expr: Expr, line_text: String },
+    Assign {
+        target: String,
+        target_span: Span,
+        expr: Expr,
+        line_text: String,
+        primed: bool,
+    },
+    /// `unknown a b ...`.
+    Unknown(Vec<(String, Span)>, Span),
+    /// `const NAME = FUNC(args)`: FUNC is `sqrt`, `cbrt` or `root`.
+    Const {
+        name: String,
+        span: Span,
+        func: String,
+        args: Vec<(Q, Span)>,
+        call_span: Span,
+    },
 }
 
 fn lex(src: &str) -> Result<Vec<Token>, Error> {
@@ -141,7 +160,7 @@ fn lex(src: &str) -> Result<Vec<Token>, Error> {
                 out.push(Token { tok, span: span(len) });
                 continue;
             }
-            if "+-*/^()=@".contains(c) {
+            if "+-*/^()=@',".contains(c) {
                 out.push(Token { tok: Tok::Sym(c), span: span(1) });
                 i += 1;
                 continue;
@@ -426,8 +445,16 @@ impl Parser {
                 Item::Method(n, t.span)
             }
             "state" => Item::State(self.names("one or more state variable names")?, head.span),
+            "unknown" if matches!(self.peek().tok, Tok::Name(_)) => {
+                Item::Unknown(self.names("one or more unknown names")?, head.span)
+            }
+            "const" if matches!(self.peek().tok, Tok::Name(_)) => self.constant()?,
             "param" => Item::Param(self.names("one or more parameter names")?, head.span),
             _ => {
+                let primed = self.peek().tok == Tok::Sym('\'');
+                if primed {
+                    self.bump();
+                }
                 if self.peek().tok != Tok::Sym('=') {
                     return Err(self.err("`=` after the assigned name"));
                 }
@@ -437,11 +464,59 @@ impl Parser {
                     .get(head.span.line as usize - 1)
                     .map(|l| l.split('#').next().unwrap_or("").trim().to_owned())
                     .unwrap_or_default();
-                Item::Assign { target: word, target_span: head.span, expr, line_text }
+                Item::Assign { target: word, target_span: head.span, expr, line_text, primed }
             }
         };
         self.end_of_line()?;
         Ok(Some(item))
+    }
+
+    /// `const NAME = FUNC(INT [, INT])`, after the word `const`.
+    fn constant(&mut self) -> Result<Item, Error> {
+        let t = self.bump();
+        let Tok::Name(name) = t.tok else { unreachable!("checked by the caller") };
+        self.expect_sym('=', "`=` after the constant's name")?;
+        let f = self.peek().clone();
+        let func = match &f.tok {
+            Tok::Name(n) if ["sqrt", "cbrt", "root"].contains(&n.as_str()) => n.clone(),
+            _ => {
+                return Err(Error::new(
+                    ErrorKind::BadConstant,
+                    f.span,
+                    format!(
+                        "expected `sqrt(N)`, `cbrt(N)` or `root(K, N)` with positive integers, found {}",
+                        describe(&f.tok)
+                    ),
+                ))
+            }
+        };
+        self.bump();
+        self.expect_sym('(', "`(` after the root function")?;
+        let mut args = Vec::new();
+        loop {
+            let a = self.peek().clone();
+            let q = match a.tok {
+                Tok::Int(n) => Q::from_integer(n.into()),
+                Tok::Num(q) => q,
+                Tok::Sym('-') => {
+                    return Err(Error::new(
+                        ErrorKind::BadConstant,
+                        a.span,
+                        "a negative argument: expected a positive integer",
+                    ))
+                }
+                _ => return Err(self.err("a positive integer argument")),
+            };
+            self.bump();
+            args.push((q, a.span));
+            if self.peek().tok == Tok::Sym(',') {
+                self.bump();
+                continue;
+            }
+            break;
+        }
+        let close = self.expect_sym(')', "`)` or `,` after the argument")?;
+        Ok(Item::Const { name, span: t.span, func, args, call_span: join(f.span, close) })
     }
 
     fn expr(&mut self) -> Result<Expr, Error> {
@@ -571,6 +646,17 @@ impl Parser {
                     self.bump();
                     return Ok(Expr { kind: ExprKind::Hist(n, k), span: join(t.span, d.span) });
                 }
+                if self.peek().tok == Tok::Sym('\'') {
+                    let prime = self.bump().span;
+                    if self.peek().tok == Tok::Sym('@') {
+                        return Err(Error::new(
+                            ErrorKind::BadPrime,
+                            join(t.span, self.peek().span),
+                            format!("`{n}'@` primes a history read: expected either `{n}'` (the end-of-step unknown) or `{n}@k` (a past value), not both"),
+                        ));
+                    }
+                    return Ok(Expr { kind: ExprKind::Primed(n), span: join(t.span, prime) });
+                }
                 Ok(Expr { kind: ExprKind::Name(n), span: t.span })
             }
             Tok::Sym('(') => {
@@ -632,11 +718,11 @@ fn to_poly(e: &Expr) -> Result<crate::Poly, Error> {
     Ok(match &e.kind {
         ExprKind::Num(q) => Poly::constant(q.clone()),
         ExprKind::Name(n) => Poly::var(n),
-        ExprKind::Hist(..) => {
+        ExprKind::Hist(..) | ExprKind::Primed(_) => {
             return Err(Error::new(
                 ErrorKind::Syntax,
                 e.span,
-                "expected a polynomial, found a history read `@`",
+                "expected a polynomial, found a history read `@` or a primed name",
             ))
         }
         ExprKind::Neg(x) => -to_poly(x)?,

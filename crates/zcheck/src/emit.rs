@@ -73,12 +73,16 @@ fn lit(x: f64) -> String {
 /// Φ_max as text, with the parameters other than Φ at `values`.
 fn phi_max_text(method: &Method, values: &[(Sym, Q)]) -> String {
     let map = values.iter().filter(|(s, _)| s.name() != "Phi").cloned().collect();
-    let Ok(chi) = poly::charpoly(method) else { return "not derived".to_owned() };
-    let chi = chi.eval_partial(&map);
-    if chi.symbols().iter().any(|s| s.name() != "Phi" && s.name() != "z") {
+    let Ok(derivation) = poly::derive(method) else { return "not derived".to_owned() };
+    let chi = derivation.charpoly.eval_partial(&map);
+    if chi
+        .symbols()
+        .iter()
+        .any(|&s| s.name() != "Phi" && s.name() != "z" && poly::field::generator_of(s).is_none())
+    {
         return "depends on the parameters other than Phi".to_owned();
     }
-    match poly::stability::analyze(&chi) {
+    match poly::stability::analyze_derivation(&derivation, &map) {
         Ok(r) if r.bounded_for_all() => "none: stable for every Phi > 0".to_owned(),
         Ok(r) => match r.phi_max() {
             Some(m) => format!(
@@ -140,6 +144,15 @@ pub fn emit(method: &Method, lang: Lang, binding: &Binding) -> Result<String, Em
             })
         }
     };
+    if method.is_implicit() && matches!(binding, Binding::Parametric) {
+        let names: Vec<&str> = method.unknowns().iter().map(|u| u.name.as_str()).collect();
+        return Err(EmitError(format!(
+            "{} is implicit: each step solves a linear system for {}, whose solution depends on \
+             Phi; give --phi (and every --param) to fold that solve into the emitted step",
+            method.name(),
+            names.join(", ")
+        )));
+    }
     let step = Step::compile(method, &params)?;
     let listing = step.listing();
     let n = listing.n_slots;
@@ -173,7 +186,23 @@ pub fn emit(method: &Method, lang: Lang, binding: &Binding) -> Result<String, Em
     for (i, name) in slot_names.iter().enumerate() {
         writeln!(body, "    {} = s[{i}];", decl(name)).expect("string");
     }
+    let n_assign = method.assigns().len();
     for ins in &listing.instrs {
+        // An implicit step's unknowns come first: each a fixed combination
+        // of the slots (A⁻¹E at the folded values), named after the unknown.
+        if ins.dst >= n + n_assign {
+            let u = &method.unknowns()[ins.dst - n - n_assign];
+            let terms: Vec<String> =
+                ins.terms.iter().map(|t| format!("{} * {}", lit(t.coef), reg[t.src])).collect();
+            n_mul += terms.len();
+            n_add += terms.len().saturating_sub(1) + usize::from(ins.accumulate);
+            let expr = if terms.is_empty() { lit(0.0) } else { terms.join(" + ") };
+            let expr = if ins.accumulate { format!("{} + {expr}", reg[ins.dst]) } else { expr };
+            let name = fresh(ident(&u.name.replace('\'', "_next")));
+            writeln!(body, "    {} = {expr};", decl(&name)).expect("string");
+            reg[ins.dst] = name;
+            continue;
+        }
         let assign = method.assigns()[ins.dst - n].clone();
         let mut terms: Vec<String> = Vec::new();
         for (i, t) in ins.terms.iter().enumerate() {
@@ -293,6 +322,28 @@ pub fn emit(method: &Method, lang: Lang, binding: &Binding) -> Result<String, Em
             }
             writeln!(out, "static void {fn_name}(double s[{n}]{}) {{", args.concat())
                 .expect("string")
+        }
+    }
+    // Exact constants (cbrt(2), sqrt(3)) read by a coefficient: the value the
+    // interpreter uses, as a literal.
+    if !coef_locals.is_empty() {
+        let mut generators: Vec<Sym> = method
+            .assigns()
+            .iter()
+            .flat_map(|a| a.terms.iter().flat_map(|(_, c)| c.symbols()))
+            .filter(|&s| poly::field::generator_of(s).is_some())
+            .collect();
+        generators.sort();
+        generators.dedup();
+        for g in generators {
+            let value = poly::field::generator_value(g).expect("a generator has a value");
+            let name = ident(&g.name().to_lowercase());
+            let typed = match lang {
+                Lang::Rust => format!("let {name}: f64"),
+                Lang::C => format!("double {name}"),
+            };
+            writeln!(out, "    {typed} = {};", lit(check::numeric::q_to_f64(&value)))
+                .expect("string");
         }
     }
     for (name, expr) in &coef_locals {

@@ -126,7 +126,12 @@ impl ExactCharpoly {
             params: d.method.params().to_vec(),
             charpoly: d.charpoly.clone(),
             coeffs: d.coeffs(),
-            pq: d.p_q().map(|(p, q)| PqPolys::new(p, q)),
+            // The exact p, q path needs rational coefficients; a χ with
+            // exact constants (Forest–Ruth's cbrt(2)) takes the general path.
+            pq: d
+                .p_q()
+                .filter(|(p, q)| !poly::field::has_generators(p) && !poly::field::has_generators(q))
+                .map(|(p, q)| PqPolys::new(p, q)),
         }
     }
 
@@ -163,6 +168,20 @@ impl ExactCharpoly {
         let coeffs: Vec<f64> = self.coeffs.iter().map(|c| q_to_f64(&exact_eval(c, &map))).collect();
         match &self.pq {
             Some(pq) => Ok(second_order_form(pq, &map, coeffs)),
+            // An implicit second-order χ = a z² + b z + c (a = det A): p and
+            // q taken exactly at this point, then the same cancellation-free
+            // forms as for z² − 2p z + q.
+            None if self.coeffs.len() == 3 => {
+                let v: Vec<Q> = self.coeffs.iter().map(|c| exact_eval(c, &map)).collect();
+                if v[0].is_zero() {
+                    return Err(Error::singular(&self.method, params.phi_value()));
+                }
+                let two = Q::from_integer(2.into());
+                let p = -(&v[1] / (&two * &v[0]));
+                let q = &v[2] / &v[0];
+                let pq = PqPolys::new(Poly::constant(p), Poly::constant(q));
+                Ok(second_order_form(&pq, &HashMap::new(), coeffs))
+            }
             None => {
                 let mut roots = polynomial_roots(&coeffs)?;
                 sort_roots(&mut roots);
@@ -184,7 +203,17 @@ impl ExactCharpoly {
 }
 
 fn exact_eval(p: &Poly, map: &HashMap<Sym, Q>) -> Q {
-    p.eval(map).expect("every parameter has a value")
+    let v = p.eval_partial(map);
+    match v.as_constant() {
+        Some(q) => q,
+        // What remains is an exact constant (sqrt(3), cbrt(2)): its value
+        // to within 2^-100, far below f64 resolution.
+        None if v.symbols().iter().all(|&s| poly::field::generator_of(s).is_some()) => {
+            let w = poly::q(1, 1 << 50);
+            poly::field::approx(&v, &(&w * &w))
+        }
+        None => panic!("every parameter has a value: {v}"),
+    }
 }
 
 fn sign(x: &Q) -> std::cmp::Ordering {

@@ -17,7 +17,7 @@ fn params() -> Params {
 #[test]
 fn sweep_boundaries_of_every_builtin() {
     let mut s = String::new();
-    for name in poly::builtin_names() {
+    for name in poly::paper_builtin_names() {
         let sw = sweep(&poly::builtin(name).unwrap(), &params(), &default_grid()).unwrap();
         write!(s, "{name}: {}", sw.first.1).unwrap();
         for b in &sw.boundaries {
@@ -34,7 +34,7 @@ fn sweep_boundaries_of_every_builtin() {
 #[test]
 fn verify_summary_of_every_builtin() {
     let mut s = String::new();
-    for name in poly::builtin_names() {
+    for name in poly::paper_builtin_names() {
         let w = Witnesses::new(&poly::builtin(name).unwrap()).unwrap();
         writeln!(s, "{name}").unwrap();
         for phi in [1e-6, 0.1, 0.5, 1.0, 1.5, 1.9] {
@@ -52,4 +52,28 @@ fn verify_summary_of_every_builtin() {
     }
     crate::snapshot::in_dir("check")
         .bind(|| insta::assert_snapshot!("verify_summary_of_every_builtin", s));
+}
+
+/// The verify table of the implicit and algebraic built-ins, as above.
+#[test]
+fn verify_summary_of_the_implicit_builtins() {
+    let mut s = String::new();
+    for name in poly::IMPLICIT_METHODS {
+        let w = Witnesses::new(&poly::builtin(name).unwrap()).unwrap();
+        writeln!(s, "{name}").unwrap();
+        for phi in [1e-6, 0.1, 0.5, 1.0, 1.5, 1.9, 3.0] {
+            let r = w.at(&params().with("Phi", phi), 5000).unwrap();
+            writeln!(
+                s,
+                "  phi {phi:<8} {:<22} rho {:.6} psi {:.6} agree {}",
+                r.exact.class.name(),
+                r.exact.spectral_radius,
+                r.exact.psi,
+                r.agree()
+            )
+            .unwrap();
+        }
+    }
+    crate::snapshot::in_dir("check")
+        .bind(|| insta::assert_snapshot!("verify_summary_of_the_implicit_builtins", s));
 }

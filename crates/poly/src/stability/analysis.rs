@@ -64,6 +64,10 @@ pub(crate) fn class_at_point(chi: &Charpoly, phi: &Algebraic) -> Option<RootClas
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 pub fn analyze(charpoly: &Poly) -> Result<StabilityReport, Error> {
+    // Exact constants (sqrt(3), cbrt(2)): the norm-based layer.
+    if crate::field::has_generators(charpoly) {
+        return crate::field_stability::analyze(charpoly);
+    }
     let chi = Charpoly::new(charpoly)?;
     Ok(run(&chi, None, Some(charpoly)))
 }
@@ -77,6 +81,11 @@ pub fn analyze_derivation(
     params: &HashMap<Sym, Q>,
 ) -> Result<StabilityReport, Error> {
     let charpoly = d.charpoly.eval_partial(params);
+    // Exact constants: the norm-based layer on χ alone (second order, so a
+    // repeated root on the circle is decided from χ).
+    if crate::field::has_generators(&charpoly) {
+        return crate::field_stability::analyze(&charpoly);
+    }
     let chi = Charpoly::new(&charpoly)?;
     let phi = Sym::phi();
     let p = &d.transition_matrix;
@@ -98,7 +107,21 @@ pub fn analyze_derivation(
         }
         rows.push(row);
     }
-    Ok(run(&chi, Some(&rows), Some(&charpoly)))
+    let denominator = d.p_denominator.eval_partial(params).to_upoly(phi).ok_or_else(|| {
+        Error::analysis(
+            ErrorKind::ExtraSymbol,
+            "the step's determinant det A still contains a parameter; expected a polynomial in Phi only (give it a value)".to_owned(),
+        )
+    })?;
+    Ok(run(&chi, Some(StepMatrix { numerator: &rows, denominator: &denominator }), Some(&charpoly)))
+}
+
+/// The transition matrix P = numerator / denominator, entries polynomials
+/// in Φ (the denominator is det A of an implicit step's system, else 1).
+#[derive(Clone, Copy)]
+struct StepMatrix<'a> {
+    numerator: &'a [Vec<UPoly>],
+    denominator: &'a UPoly,
 }
 
 /// Every positive root of every non-trivial condition, merged exactly.
@@ -127,7 +150,7 @@ fn critical_points(conditions: &[(Condition, UPoly)]) -> Vec<CriticalPoint> {
     points
 }
 
-fn run(chi: &Charpoly, p: Option<&[Vec<UPoly>]>, charpoly: Option<&Poly>) -> StabilityReport {
+fn run(chi: &Charpoly, p: Option<StepMatrix<'_>>, charpoly: Option<&Poly>) -> StabilityReport {
     let conditions = critical_conditions(chi);
     let mut points = critical_points(&conditions);
 
@@ -252,7 +275,7 @@ fn bounded_at(
     alpha: &Algebraic,
     at_class: Option<RootClass>,
     disc: &UPoly,
-    p: Option<&[Vec<UPoly>]>,
+    p: Option<StepMatrix<'_>>,
 ) -> bool {
     match at_class {
         Some(c) if c.is_bounded() => return true,
@@ -283,13 +306,22 @@ fn bounded_at(
     if e.len() < 2 {
         return true;
     }
-    let Some(p) = p else { return false };
+    let Some(StepMatrix { numerator: p, denominator }) = p else { return false };
+    // P = numerator / d (d = det A for an implicit step): a step whose system
+    // is singular at this point is not defined there, so not bounded.
+    let den = field.reduce(denominator);
+    if field.is_zero(&den) {
+        return false;
+    }
+    let den_inv = field.inv(&den);
     // q: the distinct repeated roots on the circle.
     let de = field.derivative(&e);
     let g = field.gcd(&e, &de);
     let q = if g.len() >= 2 { field.div(&e, &g) } else { e };
-    let pm: Vec<Vec<UPoly>> =
-        p.iter().map(|row| row.iter().map(|x| field.reduce(x)).collect()).collect();
+    let pm: Vec<Vec<UPoly>> = p
+        .iter()
+        .map(|row| row.iter().map(|x| field.mul(&field.reduce(x), &den_inv)).collect())
+        .collect();
     let qp = field.poly_at_matrix(&q, &pm);
     let qp2 = field.mat_mul(&qp, &qp);
     field.rank(qp) == field.rank(qp2)

@@ -315,6 +315,10 @@ impl StabilityReport {
 
 /// The root class of χ at a rational Φ, exactly.
 pub fn class_at(charpoly: &Poly, phi: &Q) -> Result<RootClass, Error> {
+    // Exact constants (sqrt(3), cbrt(2)): the norm-based layer.
+    if crate::field::has_generators(charpoly) {
+        return crate::field_stability::class_at(charpoly, phi);
+    }
     let chi = conditions::Charpoly::new(charpoly)?;
     Ok(analysis::class_at_rational(&chi, phi).0)
 }

@@ -13,7 +13,7 @@ const HEAD: &str = "method m\nstate v y\nparam D\n";
 /// the rendered error starts with `bad.zm:line:col:` and puts a caret under
 /// the column.
 #[track_caller]
-fn check(src: &str, kind: ErrorKind, line: u32, col: u32, says: &str) {
+pub(crate) fn check(src: &str, kind: ErrorKind, line: u32, col: u32, says: &str) {
     let err = match Method::parse("bad.zm", src) {
         Ok(m) => panic!("expected an error, parsed:\n{m}\nfrom:\n{src}"),
         Err(e) => e,

@@ -22,6 +22,7 @@ mod cost;
 mod det;
 mod errors;
 mod fuzz_corpus;
+mod implicit;
 mod invariant;
 mod large;
 mod multistep;

@@ -64,7 +64,7 @@ fn p_q(chi: &Poly, order: usize) -> (Series, Series) {
 #[test]
 fn psi_satisfies_cos_psi_equals_p_over_sqrt_q() {
     let order = 16;
-    for name in poly::builtin_names().filter(|n| *n != "damped_euler_d") {
+    for name in poly::paper_builtin_names().filter(|n| *n != "damped_euler_d") {
         let chi = chi_of(name);
         let psi = Series::new(psi_series(&chi, order).unwrap());
         let (s, c) = sin_cos(&psi);

@@ -25,7 +25,15 @@ fn record(name: &str) -> String {
     }
     let slots: Vec<String> =
         m.slots().iter().map(|&(var, lag)| m.operand_name(Operand::Start { var, lag })).collect();
-    s += &format!("\nP on ({}):\n", slots.join(", "));
+    if d.p_denominator.is_one() {
+        s += &format!("\nP on ({}):\n", slots.join(", "));
+    } else {
+        s += &format!(
+            "\nP on ({}), times its denominator d = det A = {}:\n",
+            slots.join(", "),
+            d.p_denominator
+        );
+    }
     for i in 0..d.transition_matrix.rows() {
         let row: Vec<String> = d.transition_matrix.row(i).iter().map(ToString::to_string).collect();
         s += &format!("  [{}]\n", row.join(", "));

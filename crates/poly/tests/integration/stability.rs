@@ -318,7 +318,8 @@ fn degree_four_user_method() {
 #[test]
 fn general_classifier_agrees_with_quadratic_rules() {
     let phis: Vec<Q> = (1..=30).map(|k| q(k, 10)).collect();
-    for name in poly::builtin_names() {
+    // Every built-in whose χ is over Q (constants are analysed elsewhere).
+    for name in poly::builtin_names().filter(|n| poly::builtin(n).unwrap().constants().is_empty()) {
         let chi = chi_of(name, &[("D", q(3, 5))]);
         for phi in &phis {
             let f = chi.subs(Sym::phi(), &Poly::constant(phi.clone())).to_upoly(Sym::z()).unwrap();

@@ -56,7 +56,14 @@ pub fn to_json(d: &Derivation) -> serde_json::Value {
         "charpoly": d.charpoly.to_string(),
         "charpoly_coeffs": d.coeffs().iter().map(ToString::to_string).collect::<Vec<_>>(),
         "routes_agree": true,
+        "gauss_seidel_reads": m.gauss_seidel_reads().iter().map(|r| json!({
+            "line": r.line, "col": r.col, "name": r.name, "updated_on": r.updated_on,
+        })).collect::<Vec<_>>(),
     });
+    if m.is_implicit() {
+        v["unknowns"] = json!(m.unknowns().iter().map(|u| u.name.clone()).collect::<Vec<_>>());
+        v["p_denominator"] = json!(d.p_denominator.to_string());
+    }
     if let Some((p, q)) = d.p_q() {
         v["p"] = json!(p.to_string());
         v["q"] = json!(q.to_string());
@@ -85,7 +92,16 @@ pub fn text(d: &Derivation) -> String {
         .iter()
         .map(|&(v, l)| m.operand_name(poly::Operand::Start { var: v, lag: l }))
         .collect();
-    let _ = writeln!(s, "\nP, on ({}):", slots.join(", "));
+    if d.p_denominator.is_one() {
+        let _ = writeln!(s, "\nP, on ({}):", slots.join(", "));
+    } else {
+        let _ = writeln!(
+            s,
+            "\nP, on ({}), as d*P with d = det A = {} (the step solves A u = E s):",
+            slots.join(", "),
+            d.p_denominator
+        );
+    }
     for i in 0..d.transition_matrix.rows() {
         let row: Vec<String> = d.transition_matrix.row(i).iter().map(ToString::to_string).collect();
         let _ = writeln!(s, "  [{}]", row.join(", "));
@@ -94,7 +110,34 @@ pub fn text(d: &Derivation) -> String {
     if let Some((p, q)) = d.p_q() {
         let _ = writeln!(s, "       = z^2 - 2*p*z + q   with p = {p},  q = {q}");
     }
-    let _ = writeln!(s, "routes agree: z^N det M(1/z) = det(zI - P)");
+    if d.method.is_implicit() {
+        let _ = writeln!(s, "leading coefficient in z: det A = {}", d.p_denominator);
+        let _ = writeln!(s, "routes agree: z^N det M(1/z) = det A * det(zI - P)");
+    } else {
+        let _ = writeln!(s, "routes agree: z^N det M(1/z) = det(zI - P)");
+    }
+    s += &gauss_seidel_text(m);
+    s
+}
+
+/// Every read of a state variable that an earlier line of the same step has
+/// already updated: a transcription meant to use the old values sees at
+/// once that it does not.
+pub fn gauss_seidel_text(m: &poly::Method) -> String {
+    let reads = m.gauss_seidel_reads();
+    if reads.is_empty() {
+        return "\nGauss-Seidel reads: none (every line reads the values the step started from)\n"
+            .into();
+    }
+    let mut s = String::from(
+        "\nGauss-Seidel reads (a value an earlier line of this step already updated):\n",
+    );
+    for r in reads {
+        s += &format!(
+            "  line {}:{}: `{}` reads the value assigned on line {}\n",
+            r.line, r.col, r.name, r.updated_on
+        );
+    }
     s
 }
 

@@ -3,7 +3,7 @@
 
 use std::process::ExitCode;
 
-use anyhow::{bail, Context};
+use anyhow::bail;
 use poly::{Sym, Q};
 use zcheck::emit::{emit, Binding, Lang};
 
@@ -23,8 +23,8 @@ pub struct Args {
     pub lang: Language,
     /// Fold the constants at this Phi (exact: integer, fraction or decimal);
     /// without it Phi, and every other parameter, is an argument.
-    #[arg(long)]
-    pub phi: Option<String>,
+    #[arg(long, allow_hyphen_values = true)]
+    pub phi: Option<super::values::Exact>,
     /// With --phi: a value for another parameter, `NAME=VALUE`; repeatable.
     #[arg(long = "param", value_name = "NAME=VALUE")]
     pub params: Vec<String>,
@@ -44,9 +44,7 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
             Binding::Parametric
         }
         Some(phi) => {
-            let (_, phi) = super::values::parse_param(&format!("Phi={phi}"))
-                .with_context(|| format!("--phi {phi}"))?;
-            let mut given: Vec<(String, Q)> = vec![("Phi".to_owned(), phi)];
+            let mut given: Vec<(String, Q)> = vec![("Phi".to_owned(), phi.value.clone())];
             for p in &args.params {
                 given.push(super::values::parse_param(p)?);
             }

@@ -56,13 +56,57 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
     let report = analyze_derivation(&derivation, &values)
         .with_context(|| format!("method {}", method.name()))?;
     let out = match args.format {
-        Format::Text => text(method.name(), &shown, &chi, &report),
+        Format::Text => text(method.name(), &shown, &chi, &report) + &implicit_text(&method, &chi)?,
         Format::Json => {
-            serde_json::to_string_pretty(&to_json(method.name(), &shown, &chi, &report))? + "\n"
+            let mut v = to_json(method.name(), &shown, &chi, &report);
+            implicit_json(&method, &chi, &mut v)?;
+            serde_json::to_string_pretty(&v)? + "\n"
         }
     };
     output::emit(&out)?;
     Ok(ExitCode::SUCCESS)
+}
+
+/// For an implicit or constant-bearing method: the leading coefficient of
+/// χ in z (det A), the Φ > 0 where the step's system is singular, and what
+/// the roots do as Φ → ∞ (all decided exactly). Explicit methods print
+/// nothing more, so their output is unchanged.
+fn implicit_facts(
+    method: &poly::Method,
+    chi: &poly::Poly,
+) -> anyhow::Result<Option<(String, Vec<Algebraic>, &'static str)>> {
+    if !method.is_implicit() && method.constants().is_empty() {
+        return Ok(None);
+    }
+    let d = poly::derive(method)?;
+    let lead = chi.coeffs_in(Sym::z()).last().cloned().unwrap_or_default();
+    let singular = poly::singular_points(&d);
+    let limit = poly::field_stability::limit_at_infinity(chi)?;
+    Ok(Some((lead.to_string(), singular, limit.name())))
+}
+
+fn implicit_text(method: &poly::Method, chi: &poly::Poly) -> anyhow::Result<String> {
+    let Some((lead, singular, limit)) = implicit_facts(method, chi)? else {
+        return Ok(String::new());
+    };
+    let mut s = format!("\nleading coefficient in z (det A): {lead}\n");
+    if singular.is_empty() {
+        s += "the step's linear system is regular for every Phi > 0\n";
+    } else {
+        let pts: Vec<String> = singular.iter().map(show).collect();
+        let _ = writeln!(s, "the step's linear system is singular at Phi = {}", pts.join(", "));
+    }
+    let _ = writeln!(s, "as Phi -> infinity: {limit}");
+    Ok(s)
+}
+
+fn implicit_json(method: &poly::Method, chi: &poly::Poly, v: &mut Value) -> anyhow::Result<()> {
+    if let Some((lead, singular, limit)) = implicit_facts(method, chi)? {
+        v["leading_coefficient"] = json!(lead);
+        v["singular_points"] = json!(singular.iter().map(number_json).collect::<Vec<_>>());
+        v["phi_to_infinity"] = json!(limit);
+    }
+    Ok(())
 }
 
 /// 1e-15, the width the issue asks isolating intervals to be narrowed to.

@@ -149,9 +149,9 @@ fn builtin(name: &str) -> Result<Method, TradeoffError> {
     poly::builtin(name).map_err(|e| TradeoffError::new(format!("built-in `{name}`: {e}")))
 }
 
-/// Every built-in with no free parameter but Φ, in built-in order.
+/// Every paper built-in with no free parameter but Φ, in built-in order.
 pub fn undamped_family() -> Result<Vec<Candidate>, TradeoffError> {
-    poly::builtin_names()
+    poly::paper_builtin_names()
         .filter(|n| builtin(n).map(|m| m.params().len() == 1).unwrap_or(false))
         .map(|n| Candidate::new(builtin(n)?, Vec::new()))
         .collect()

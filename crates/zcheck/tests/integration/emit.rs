@@ -17,6 +17,8 @@ const D: (i64, i64) = (3, 10);
 /// (case name, method, binding) for every built-in, folded and parametric.
 fn cases() -> Vec<(String, poly::Method, Binding)> {
     let mut out = Vec::new();
+    // An implicit built-in solves a linear system each step: emitted only
+    // folded, with the solve A⁻¹E precomputed at the given values.
     for name in poly::builtin_names() {
         let m = poly::builtin(name).unwrap();
         let values: Vec<(Sym, Q)> = m
@@ -25,7 +27,9 @@ fn cases() -> Vec<(String, poly::Method, Binding)> {
             .map(|s| (*s, if s.name() == "Phi" { q(PHI.0, PHI.1) } else { q(D.0, D.1) }))
             .collect();
         out.push((format!("{name}_folded"), m.clone(), Binding::Folded(values)));
-        out.push((format!("{name}_param"), m, Binding::Parametric));
+        if !m.is_implicit() {
+            out.push((format!("{name}_param"), m, Binding::Parametric));
+        }
     }
     out
 }
@@ -151,4 +155,19 @@ fn header_states_the_limit_and_the_count() {
     let code = emit(&m, Lang::Rust, &Binding::Folded(vec![(Sym::new("Phi"), q(1, 10))])).unwrap();
     assert!(code.contains("Phi_max = 2 (exact)"), "{code}");
     assert!(code.contains("2 mul + 2 add as emitted"), "{code}");
+}
+
+/// Without --phi an implicit method cannot be emitted: the solve depends on
+/// Φ. The error names the unknowns and the flag.
+#[test]
+fn implicit_methods_need_folded_values() {
+    for name in poly::IMPLICIT_METHODS {
+        let m = poly::builtin(name).unwrap();
+        if !m.is_implicit() {
+            continue;
+        }
+        let e = emit(&m, Lang::Rust, &Binding::Parametric).unwrap_err().to_string();
+        assert!(e.contains("is implicit") && e.contains("--phi"), "{name}: {e}");
+        assert!(e.contains(&m.unknowns()[0].name), "{name}: {e}");
+    }
 }

@@ -78,6 +78,8 @@ fn bad_input_exits_2() {
 /// exactly), symmetric in kind, and "shares χ" is exactly χ_a = χ_b.
 #[test]
 fn every_pair_of_builtins_against_the_oracle() {
+    // Every built-in, implicit ones included: their P is (d·P)/d, so the
+    // oracle compares fractions by cross-multiplying the denominators.
     let names: Vec<&str> = poly::builtin_names().collect();
     let derive = |n: &str| poly::derive(&poly::builtin(n).expect("built-in")).expect("derives");
     let mut identities = 0;
@@ -85,9 +87,12 @@ fn every_pair_of_builtins_against_the_oracle() {
         for b in &names {
             let (da, db) = (derive(a), derive(b));
             let r = equiv::relate(&da, &db);
-            assert_eq!(r.shares_charpoly(), da.charpoly == db.charpoly, "{a} {b}");
+            let (dena, denb) = (&da.p_denominator, &db.p_denominator);
+            let same_chi = &da.charpoly * denb == &db.charpoly * dena;
+            assert_eq!(r.shares_charpoly(), same_chi, "{a} {b}");
             assert_eq!(r.name(), equiv::relate(&db, &da).name(), "{a} {b}: not symmetric");
-            let (pa, pb) = (&da.transition_matrix, &db.transition_matrix);
+            let (pa, pb) =
+                (&da.transition_matrix.map(|e| e * denb), &db.transition_matrix.map(|e| e * dena));
             let n = pa.rows();
             let one = poly::q(1, 1);
             let (perm, scale): (Vec<usize>, Vec<poly::Q>) = match &r {
@@ -108,5 +113,22 @@ fn every_pair_of_builtins_against_the_oracle() {
     }
     // The twins (6 pairs, both ways), each method with itself (14), and
     // Damped Euler with False Euler and its twin (4 pairs, both ways).
-    assert!(identities >= 14 + 12 + 8, "{identities}");
+    assert!(identities >= names.len() + 12 + 8, "{identities}");
+}
+
+/// Backward Euler's P is (numerator)/(1 + Φ²): never equal to Standard
+/// Euler's, whose P is its numerator's shape without the denominator.
+#[test]
+fn implicit_p_is_compared_as_a_fraction() {
+    let derive = |n: &str| poly::derive(&poly::builtin(n).expect("built-in")).expect("derives");
+    let (be, se) = (derive("backward_euler"), derive("standard_euler"));
+    assert!(!be.p_denominator.is_one());
+    assert!(
+        !matches!(equiv::relate(&be, &se), Relation::Equal),
+        "{}",
+        equiv::relate(&be, &se).name()
+    );
+    // Trapezoidal and implicit midpoint share χ on the oscillator.
+    let (tr, mp) = (derive("trapezoidal"), derive("implicit_midpoint"));
+    assert!(equiv::relate(&tr, &mp).shares_charpoly());
 }

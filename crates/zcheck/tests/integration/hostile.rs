@@ -139,6 +139,12 @@ fn parameters() {
         case(&["plot", "yt", "--out", "{dir}", "--phi", "-1"], b"", 2, "--phi -1: expected a positive number", ""),
         case(&["scene", "three_body_euler", "--eps", "-0.01", "--steps", "10"], b"", 0, "radius", ""),
         case(&["tradeoff", "--periods", "-1"], b"", 2, "--periods -1: expected a finite number > 0", ""),
+        case(&["emit", "false_euler", "--lang", "rust", "--phi", "1/10"], b"", 0, "Phi = 1/10", ""),
+        case(&["emit", "false_euler", "--lang", "c", "--phi", "-0.5"], b"", 0, "Phi = -1/2", ""),
+        case(&["emit", "false_euler", "--lang", "rust", "--phi", "0.1.2"], b"", 2, "malformed number `0.1.2`", ""),
+        case(&["emit", "damped_euler_d", "--lang", "rust", "--phi", "1"], b"", 2, "needs --param D=VALUE", ""),
+        case(&["emit", "backward_euler", "--lang", "rust"], b"", 2, "backward_euler is implicit", ""),
+        case(&["emit", "backward_euler", "--lang", "rust", "--phi", "1/10"], b"", 0, "let v_next = ", ""),
     ]);
 }
 

@@ -125,7 +125,7 @@ pub fn start_sym(m: &Method, op: Operand) -> Poly {
     match op {
         Operand::Start { var, lag: 0 } => Poly::var(&m.state()[var]),
         Operand::Start { var, lag } => Poly::var(&format!("{}_lag{lag}", m.state()[var])),
-        Operand::Stmt(_) => Poly::var(&m.operand_name(op)),
+        Operand::Stmt(_) | Operand::Unknown(_) => Poly::var(&m.operand_name(op)),
     }
 }
 

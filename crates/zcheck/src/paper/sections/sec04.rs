@@ -51,7 +51,7 @@ fn euler_transition(s: &mut Section) {
 
 fn characteristic_equation(s: &mut Section) {
     // derive() fails when the z-domain determinant and det(zI − P) differ.
-    let agree: Vec<(&str, bool)> = poly::builtin_names()
+    let agree: Vec<(&str, bool)> = poly::paper_builtin_names()
         .map(|name| (name, poly::derive(&poly::builtin(name).expect("built-in")).is_ok()))
         .collect();
     let total = agree.len();
@@ -414,7 +414,7 @@ fn delay_operator(s: &mut Section) {
 /// not state.
 fn method_identities(s: &mut Section) {
     use poly::equiv::{self, Relation};
-    let names: Vec<&str> = poly::builtin_names().collect();
+    let names: Vec<&str> = poly::paper_builtin_names().collect();
     let mut found: Vec<(&str, &str, Relation)> = Vec::new();
     for (i, a) in names.iter().enumerate() {
         for b in &names[i + 1..] {

@@ -1,0 +1,421 @@
+//! Stability of a characteristic polynomial whose coefficients hold exact
+//! constants (elements of the field F of `field.rs`), and the behaviour of
+//! any χ as Φ → ∞.
+//!
+//! This is the thin layer between a constant-bearing χ and the rational
+//! engine in `stability.rs`: the conditions under which a root of χ can meet
+//! the unit circle or change class (leading and constant coefficients, χ(±1),
+//! the discriminant, |z|² = 1) are polynomials in Φ over F. Their norms over
+//! Q (products of all conjugates, `field::norm`) are polynomials over Q whose
+//! positive real roots include every critical Φ of χ itself; they are
+//! isolated as exact [`Algebraic`] numbers. Between consecutive candidates
+//! the class of χ is constant and is decided at a rational sample by exact
+//! sign decisions in F (`field::sign`). A candidate that belongs only to a
+//! conjugate of χ changes nothing and is merged away, so Φ_max is the first
+//! candidate at which χ's own class becomes unbounded: an exact algebraic
+//! number with its defining polynomial over Q.
+//!
+//! Scope: second-order χ (the oscillator with two state variables), which is
+//! every constant-bearing built-in; higher degrees with constants are
+//! rejected with a clear error rather than answered by floats.
+
+use std::cmp::Ordering;
+
+use crate::error::{Error, ErrorKind};
+use crate::stability::{
+    Boundary, ClassChange, ClassInterval, Condition, Counts, CriticalPoint, Stability,
+    StabilityReport, StableInterval,
+};
+use crate::{field, Algebraic, Poly, RootClass, Sym, UPoly, Q};
+
+/// Coefficients of χ in z (lowest first), each a polynomial in Φ over F.
+fn z_coeffs(chi: &Poly) -> Result<Vec<Poly>, Error> {
+    let (z, phi) = (Sym::z(), Sym::phi());
+    if let Some(s) =
+        chi.symbols().into_iter().find(|&s| s != z && s != phi && field::generator_of(s).is_none())
+    {
+        return Err(Error::analysis(
+            ErrorKind::ExtraSymbol,
+            format!("characteristic polynomial {chi} still contains the parameter {s}; expected a polynomial in z and Phi only (give {s} a value)"),
+        ));
+    }
+    let a = chi.coeffs_in(z);
+    if a.len() < 2 {
+        return Err(Error::analysis(
+            ErrorKind::NoRoots,
+            format!("characteristic polynomial {chi} does not depend on z"),
+        ));
+    }
+    Ok(a)
+}
+
+/// The class of c + b z + a z² (elements of F) from exact signs; the same
+/// rules as the rational engine's quadratic classifier.
+pub fn classify_quadratic(c: &Poly, b: &Poly, a: &Poly) -> RootClass {
+    let sgn = |p: &Poly| field::sign(&field::reduce(p));
+    let sa = sgn(a);
+    let two = Poly::int(2);
+    if sa == Ordering::Equal {
+        let sb = sgn(b);
+        if sb == Ordering::Equal {
+            return RootClass::Deadbeat;
+        }
+        let by_b = |o: Ordering| if sb == Ordering::Greater { o } else { o.reverse() };
+        let r = by_b(sgn(&-c));
+        let r_minus_one = by_b(sgn(&-&(c + b)));
+        let r_plus_one = by_b(sgn(&(b - c)));
+        return match r {
+            Ordering::Equal => RootClass::Deadbeat,
+            Ordering::Greater => match r_minus_one {
+                Ordering::Less => RootClass::MonotonicStable,
+                Ordering::Equal => RootClass::Constant,
+                Ordering::Greater => RootClass::MonotonicUnstable,
+            },
+            Ordering::Less => match r_plus_one {
+                Ordering::Greater => RootClass::AlternatingStable,
+                Ordering::Equal => RootClass::Alternating,
+                Ordering::Less => RootClass::AlternatingUnstable,
+            },
+        };
+    }
+    let by_a = |o: Ordering| if sa == Ordering::Greater { o } else { o.reverse() };
+    let disc = sgn(&(&(b * b) - &(&Poly::int(4) * &(a * c))));
+    let two_a = &two * a;
+    if disc == Ordering::Less {
+        return match by_a(sgn(&(c - a))) {
+            Ordering::Less => RootClass::DampedOscillation,
+            Ordering::Equal => RootClass::Harmonic,
+            Ordering::Greater => RootClass::UnstableOscillation,
+        };
+    }
+    match by_a(sgn(&-b)) {
+        Ordering::Equal => {
+            if by_a(sgn(c)) == Ordering::Equal {
+                return RootClass::Deadbeat;
+            }
+            match by_a(sgn(&-&(c + a))) {
+                Ordering::Less => RootClass::AlternatingStable,
+                Ordering::Equal => RootClass::Alternating,
+                Ordering::Greater => RootClass::AlternatingUnstable,
+            }
+        }
+        Ordering::Greater => {
+            let p_minus_one = by_a(sgn(&-&(b + &two_a)));
+            if disc == Ordering::Equal {
+                return match p_minus_one {
+                    Ordering::Less => RootClass::MonotonicStable,
+                    Ordering::Equal => RootClass::DoubleRootOnCircle,
+                    Ordering::Greater => RootClass::MonotonicUnstable,
+                };
+            }
+            match (by_a(sgn(&(&(a + b) + c))), p_minus_one) {
+                (Ordering::Less, _) | (Ordering::Equal | Ordering::Greater, Ordering::Greater) => {
+                    RootClass::MonotonicUnstable
+                }
+                (Ordering::Equal, _) => RootClass::Constant,
+                (Ordering::Greater, _) => RootClass::MonotonicStable,
+            }
+        }
+        Ordering::Less => {
+            let p_plus_one = by_a(sgn(&(&two_a - b)));
+            if disc == Ordering::Equal {
+                return match p_plus_one {
+                    Ordering::Greater => RootClass::AlternatingStable,
+                    Ordering::Equal => RootClass::DoubleRootOnCircle,
+                    Ordering::Less => RootClass::AlternatingUnstable,
+                };
+            }
+            match (by_a(sgn(&(&(a - b) + c))), p_plus_one) {
+                (Ordering::Less, _) | (Ordering::Equal | Ordering::Greater, Ordering::Less) => {
+                    RootClass::AlternatingUnstable
+                }
+                (Ordering::Equal, _) => RootClass::Alternating,
+                (Ordering::Greater, _) => RootClass::AlternatingStable,
+            }
+        }
+    }
+}
+
+/// The class of a constant-bearing second-order χ at a rational Φ, exactly.
+pub fn class_at(chi: &Poly, phi: &Q) -> Result<RootClass, Error> {
+    let a = z_coeffs(chi)?;
+    if a.len() != 3 {
+        return Err(degree_error(a.len() - 1));
+    }
+    let at = |p: &Poly| field::reduce(&p.subs(Sym::phi(), &Poly::constant(phi.clone())));
+    Ok(classify_quadratic(&at(&a[0]), &at(&a[1]), &at(&a[2])))
+}
+
+fn degree_error(n: usize) -> Error {
+    Error::analysis(
+        ErrorKind::NoRoots,
+        format!("characteristic polynomial of degree {n} with exact irrational constants: expected degree 2 (only second-order constant-bearing methods are analysed exactly so far)"),
+    )
+}
+
+/// A rational strictly between two distinct algebraic numbers.
+fn between(lo: &Algebraic, hi: &Algebraic) -> Q {
+    let mut w = Q::new(1.into(), 8.into());
+    loop {
+        let (l, h) = (lo.refine(&w), hi.refine(&w));
+        let (_, lu) = l.interval();
+        let (hl, _) = h.interval();
+        if lu < hl {
+            return (lu + hl) / Q::from_integer(2.into());
+        }
+        w /= Q::from_integer(16.into());
+    }
+}
+
+/// The exact stability analysis of a second-order χ over F; see the module
+/// notes.
+pub fn analyze(chi: &Poly) -> Result<StabilityReport, Error> {
+    let a = z_coeffs(chi)?;
+    if a.len() != 3 {
+        return Err(degree_error(a.len() - 1));
+    }
+    let (c, b, lead) = (&a[0], &a[1], &a[2]);
+    // |z|^2 = 1 for a complex pair is c = a; p = 0 is the tie between
+    // the moduli of the two real roots z and −z.
+    let conditions: Vec<(Condition, Poly)> = vec![
+        (Condition::LeadingCoefficient, lead.clone()),
+        (Condition::ConstantCoefficient, c.clone()),
+        (Condition::ChiAtOne, &(lead + b) + c),
+        (Condition::ChiAtMinusOne, &(lead - b) + c),
+        (Condition::Discriminant, &(b * b) - &(&Poly::int(4) * &(lead * c))),
+        (Condition::UnitCircle, c - lead),
+        (Condition::ModulusTie, b.clone()),
+    ];
+    let mut points: Vec<CriticalPoint> = Vec::new();
+    for (name, cond) in &conditions {
+        let n = field::norm(&field::reduce(cond));
+        let Some(u) = n.to_upoly(Sym::phi()) else { continue };
+        if u.degree().unwrap_or(0) == 0 {
+            continue;
+        }
+        for root in Algebraic::positive_roots(&u.squarefree()) {
+            match points.iter_mut().find(|p| p.at == root) {
+                Some(p) if p.conditions.contains(name) => {}
+                Some(p) => p.conditions.push(*name),
+                None => {
+                    points.push(CriticalPoint { at: root, conditions: vec![*name], bounded: None })
+                }
+            }
+        }
+    }
+    points.sort_by(|x, y| x.at.cmp(&y.at));
+    let width = Q::new(1.into(), 1024.into());
+    for p in &mut points {
+        p.at = p.at.refine(&width);
+    }
+    let zero = Algebraic::zero();
+    let mut samples = Vec::with_capacity(points.len() + 1);
+    for k in 0..=points.len() {
+        let lo = if k == 0 { &zero } else { &points[k - 1].at };
+        samples.push(match points.get(k) {
+            Some(hi) => between(lo, &hi.at),
+            None => lo.interval().1.floor() + Q::from_integer(1.into()),
+        });
+    }
+    let classes: Vec<RootClass> =
+        samples.iter().map(|s| class_at(chi, s)).collect::<Result<_, _>>()?;
+    let counts: Vec<Counts> = samples.iter().map(|s| counts_at(&a, s)).collect();
+    let mut intervals = vec![ClassInterval {
+        lo: zero.clone(),
+        hi: None,
+        class: classes[0],
+        sample: samples[0].clone(),
+        counts: counts[0],
+    }];
+    let mut class_changes = Vec::new();
+    let mut phi_max = None;
+    let mut boundary = None;
+    let mut bounded_for_all = classes[0].is_bounded();
+    for (k, point) in points.iter().enumerate() {
+        let (from, to) = (classes[k], classes[k + 1]);
+        if from == to {
+            continue;
+        }
+        class_changes.push(ClassChange { at: point.at.clone(), from, to, at_class: None });
+        intervals.last_mut().expect("one interval at least").hi = Some(point.at.clone());
+        intervals.push(ClassInterval {
+            lo: point.at.clone(),
+            hi: None,
+            class: to,
+            sample: samples[k + 1].clone(),
+            counts: counts[k + 1],
+        });
+        if bounded_for_all && !to.is_bounded() {
+            bounded_for_all = false;
+            phi_max = Some(point.at.clone());
+            boundary = Some(boundary_between(from, to));
+        }
+    }
+    let stability = match (phi_max, boundary) {
+        (Some(phi_max), Some(boundary)) => {
+            Stability::Limited { phi_max, bounded_at_phi_max: bounded_at_limit(boundary), boundary }
+        }
+        _ if bounded_for_all => Stability::BoundedForAllPhi,
+        _ => Stability::UnboundedForAllPhi,
+    };
+    // The bounded runs: from Φ = 0 up to the limit (the classes are
+    // merged, so a bounded interval is followed by an unbounded one).
+    let stable_intervals: Vec<StableInterval> = match &stability {
+        Stability::BoundedForAllPhi => {
+            vec![StableInterval { lo: zero.clone(), lo_closed: false, hi: None, hi_closed: false }]
+        }
+        Stability::Limited { phi_max, bounded_at_phi_max, .. } => vec![StableInterval {
+            lo: zero.clone(),
+            lo_closed: false,
+            hi: Some(phi_max.clone()),
+            hi_closed: *bounded_at_phi_max,
+        }],
+        Stability::UnboundedForAllPhi => Vec::new(),
+    };
+    Ok(StabilityReport {
+        degree: 2,
+        stability,
+        from_transition_matrix: false,
+        class_changes,
+        intervals,
+        stable_intervals,
+        critical_points: points,
+        marginal: None,
+    })
+}
+
+/// Whether χ is bounded exactly at the limit, from what happens there: a
+/// double root on the circle is unbounded (χ alone), a simple root at ±1
+/// or a pair of distinct roots on the circle is bounded.
+fn bounded_at_limit(boundary: Boundary) -> bool {
+    matches!(
+        boundary,
+        Boundary::RootThroughPlusOne
+            | Boundary::RootThroughMinusOne
+            | Boundary::ComplexPairLeavesCircle
+    )
+}
+
+/// The counts of roots of c + b z + a z² (over F, Φ = `phi`) inside, on and
+/// outside the unit circle, from exact signs.
+fn counts_at(coeffs: &[Poly], phi: &Q) -> Counts {
+    let at = |p: &Poly| field::reduce(&p.subs(Sym::phi(), &Poly::constant(phi.clone())));
+    let (c, b, a) = (at(&coeffs[0]), at(&coeffs[1]), at(&coeffs[2]));
+    let sgn = |p: &Poly| field::sign(&field::reduce(p));
+    let counts = |inside, on, outside| Counts { inside, on, outside };
+    let sa = sgn(&a);
+    if sa == Ordering::Equal {
+        // b z + c: one root −c/b (or none).
+        if sgn(&b) == Ordering::Equal {
+            return counts(0, 0, 0);
+        }
+        return match sgn(&(&(&b * &b) - &(&c * &c))) {
+            Ordering::Greater => counts(1, 0, 0),
+            Ordering::Equal => counts(0, 1, 0),
+            Ordering::Less => counts(0, 0, 1),
+        };
+    }
+    let by_a = |o: Ordering| if sa == Ordering::Greater { o } else { o.reverse() };
+    // |c/a| against 1: the product of the roots.
+    let product = sgn(&(&(&c * &c) - &(&a * &a)));
+    let disc = sgn(&(&(&b * &b) - &(&Poly::int(4) * &(&a * &c))));
+    if disc == Ordering::Less {
+        return match product {
+            Ordering::Less => counts(2, 0, 0),
+            Ordering::Equal => counts(0, 2, 0),
+            Ordering::Greater => counts(0, 0, 2),
+        };
+    }
+    let at_one = by_a(sgn(&(&(&a + &b) + &c)));
+    let at_minus_one = by_a(sgn(&(&(&a - &b) + &c)));
+    match (at_one, at_minus_one) {
+        (Ordering::Equal, Ordering::Equal) => counts(0, 2, 0),
+        (Ordering::Equal, _) | (_, Ordering::Equal) => match product {
+            Ordering::Less => counts(1, 1, 0),
+            Ordering::Equal => counts(0, 2, 0),
+            Ordering::Greater => counts(0, 1, 1),
+        },
+        (Ordering::Greater, Ordering::Greater) => match product {
+            Ordering::Less => counts(2, 0, 0),
+            _ => counts(0, 0, 2),
+        },
+        (Ordering::Less, Ordering::Less) => counts(0, 0, 2),
+        _ => counts(1, 0, 1),
+    }
+}
+
+/// What happens at a limit, by continuity from the exact classes on either
+/// side: a pair on or inside the circle that becomes two real roots, one
+/// beyond −1, met on the real axis at a point of modulus 1, so at −1.
+fn boundary_between(from: RootClass, to: RootClass) -> Boundary {
+    use RootClass::*;
+    let complex = matches!(from, DampedOscillation | Harmonic);
+    match to {
+        UnstableOscillation => Boundary::ComplexPairLeavesCircle,
+        AlternatingUnstable if complex => Boundary::DoubleRootAtMinusOne,
+        AlternatingUnstable => Boundary::RootThroughMinusOne,
+        MonotonicUnstable if complex => Boundary::DoubleRootAtPlusOne,
+        MonotonicUnstable => Boundary::RootThroughPlusOne,
+        _ => Boundary::Other,
+    }
+}
+
+/// What the roots of χ do as Φ → ∞, decided exactly.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LimitAtInfinity {
+    /// Every root tends to 0 (L-stable-like on the oscillator: backward
+    /// Euler, Radau IIA, SDIRK2).
+    ToZero,
+    /// The largest modulus tends to a value in (0, 1).
+    InsideCircle,
+    /// The largest modulus tends to 1 (the trapezoidal rule, Gauss–Legendre).
+    ToCircle,
+    /// The largest modulus tends to a value above 1, or a root to ∞.
+    Outside,
+}
+
+impl LimitAtInfinity {
+    /// The snake_case name used in JSON and reports.
+    pub fn name(self) -> &'static str {
+        match self {
+            LimitAtInfinity::ToZero => "modulus_to_zero",
+            LimitAtInfinity::InsideCircle => "modulus_to_below_one",
+            LimitAtInfinity::ToCircle => "modulus_to_one",
+            LimitAtInfinity::Outside => "modulus_above_one",
+        }
+    }
+}
+
+/// The limit of χ's roots as Φ → ∞: the roots of the polynomial formed by
+/// the coefficients of the highest power of Φ present in any z-coefficient
+/// (a root escapes to ∞ when that polynomial loses degree in z).
+pub fn limit_at_infinity(chi: &Poly) -> Result<LimitAtInfinity, Error> {
+    let a = z_coeffs(chi)?;
+    let phi = Sym::phi();
+    let top = a.iter().map(|c| c.degree_in(phi)).max().unwrap_or(0);
+    let lim: Vec<Poly> =
+        a.iter().map(|c| c.coeffs_in(phi).get(top as usize).cloned().unwrap_or_default()).collect();
+    let n = a.len() - 1;
+    if lim[n].is_zero() {
+        return Ok(LimitAtInfinity::Outside);
+    }
+    if lim[..n].iter().all(Poly::is_zero) {
+        return Ok(LimitAtInfinity::ToZero);
+    }
+    let class = if lim.iter().any(field::has_generators) {
+        if n != 2 {
+            return Err(degree_error(n));
+        }
+        classify_quadratic(&lim[0], &lim[1], &lim[2])
+    } else {
+        let u = UPoly::new(lim.iter().map(|c| c.as_constant().unwrap_or_default()).collect());
+        crate::stability::classify(&u)
+    };
+    use RootClass::*;
+    Ok(match class {
+        Deadbeat => LimitAtInfinity::ToZero,
+        DampedOscillation | MonotonicStable | AlternatingStable => LimitAtInfinity::InsideCircle,
+        Harmonic | Constant | Alternating | DoubleRootOnCircle => LimitAtInfinity::ToCircle,
+        _ => LimitAtInfinity::Outside,
+    })
+}

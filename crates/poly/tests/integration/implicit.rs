@@ -1,0 +1,398 @@
+//! Implicit programs and exact constants: every located error of the
+//! extension, the two routes on implicit steps, exact arithmetic in the
+//! field of the constants, and the known facts of the implicit built-ins.
+
+use std::cmp::Ordering;
+
+use num_traits::One;
+
+use poly::field::{self, Radical};
+use poly::stability::{analyze, Boundary};
+use poly::{ErrorKind, Method, Poly, Sym, Q};
+
+use crate::errors::check;
+
+const HEAD: &str = "method m\nstate v y\nparam D\n";
+
+fn q(n: i64, d: i64) -> Q {
+    poly::q(n, d)
+}
+
+#[test]
+fn an_unknown_needs_exactly_one_equation() {
+    check(
+        "method m\nstate v y\nunknown k\nv = v - Phi*k\n",
+        ErrorKind::Equation,
+        3,
+        9,
+        "unknown `k` has no equation",
+    );
+    check(
+        "method m\nstate v y\nunknown k\nk = -y\nk = v\nv = v + Phi*k\n",
+        ErrorKind::Equation,
+        5,
+        1,
+        "a second equation for `k` (the first is on line 4)",
+    );
+    check(
+        &format!("{HEAD}v' = v - Phi*y\nv' = v\n"),
+        ErrorKind::Equation,
+        5,
+        1,
+        "a second equation for `v'`",
+    );
+    // A primed state read without its equation.
+    check(&format!("{HEAD}v = v - Phi*y'\n"), ErrorKind::Equation, 4, 13, "`y` has no equation");
+}
+
+#[test]
+fn a_prime_only_on_state_variables() {
+    check(&format!("{HEAD}t = v\nv' = v - Phi*t'\n"), ErrorKind::BadPrime, 5, 14, "a temporary");
+    check(&format!("{HEAD}v' = v - D'*y\n"), ErrorKind::BadPrime, 4, 10, "a parameter");
+    check(&format!("{HEAD}v' = v - Phi'*y\n"), ErrorKind::BadPrime, 4, 10, "a parameter");
+    check(
+        &format!("{HEAD}v' = v - Phi*y'@1\ny' = y\n"),
+        ErrorKind::BadPrime,
+        4,
+        14,
+        "primes a history read",
+    );
+    check(
+        "method m\nstate v y\nconst c = sqrt(2)\nv' = v - c'*y\n",
+        ErrorKind::BadPrime,
+        4,
+        10,
+        "a constant",
+    );
+    check(
+        "method m\nstate v y\nunknown k\nk' = v\nv = v + k\n",
+        ErrorKind::BadPrime,
+        4,
+        1,
+        "an unknown",
+    );
+}
+
+#[test]
+fn an_equation_for_an_undeclared_name() {
+    check(&format!("{HEAD}q' = v\n"), ErrorKind::Equation, 4, 1, "`q` is not declared");
+    // A state variable may be assigned before its equation, never after.
+    check(
+        &format!("{HEAD}v' = v - Phi*y\nv = v\n"),
+        ErrorKind::Equation,
+        5,
+        1,
+        "assigned after its equation",
+    );
+}
+
+#[test]
+fn a_nonlinear_system_is_an_error() {
+    check(
+        &format!("{HEAD}v' = v - v'*y'\ny' = y + Phi*v\n"),
+        ErrorKind::Nonlinear,
+        4,
+        10,
+        "nonlinear term",
+    );
+    check(
+        &format!("{HEAD}v = v\nunknown k\nk = v\n"),
+        ErrorKind::Declaration,
+        5,
+        1,
+        "after an assignment",
+    );
+    check(
+        "method m\nstate v y\nunknown k\nk = v/k\nv = v + k\n",
+        ErrorKind::BadDivision,
+        4,
+        7,
+        "state-dependent",
+    );
+}
+
+#[test]
+fn a_system_singular_for_every_phi_is_an_error() {
+    check(
+        &format!("{HEAD}v' = v' + y\n"),
+        ErrorKind::Singular,
+        4,
+        1,
+        "singular for every Phi: its determinant",
+    );
+    check(
+        "method m\nstate v y\nunknown a b\na = 2*b + v\nb = a/2 + Phi*y\nv = v + a\n",
+        ErrorKind::Singular,
+        4,
+        1,
+        "is 0",
+    );
+}
+
+#[test]
+fn a_system_singular_at_isolated_phi_is_not_an_error() {
+    // v' = v − Φ y', y' = y − Φ v': det A = 1 − Φ², singular at Φ = 1 only.
+    let m = Method::parse("s.zm", "method s\nstate v y\nv' = v - Phi*y'\ny' = y - Phi*v'\n")
+        .expect("parses");
+    let d = poly::derive(&m).expect("derives");
+    assert_eq!(d.p_denominator, Poly::parse("1 - Phi^2").unwrap());
+    let pts = poly::singular_points(&d);
+    assert_eq!(pts.len(), 1);
+    assert_eq!(pts[0].as_rational(), Some(&Q::one()));
+}
+
+#[test]
+fn constants_must_be_roots_of_positive_integers() {
+    let c = |rhs: &str| format!("method m\nstate v y\nconst c = {rhs}\nv = v - c*y\n");
+    check(&c("sqrt(0)"), ErrorKind::BadConstant, 3, 16, "not a positive integer");
+    check(&c("sqrt(1/2)"), ErrorKind::Syntax, 3, 17, "expected");
+    check(&c("sqrt(0.5)"), ErrorKind::BadConstant, 3, 16, "not a positive integer");
+    check(&c("exp(2)"), ErrorKind::BadConstant, 3, 11, "expected `sqrt(N)`");
+    check(&c("root(1, 5)"), ErrorKind::BadConstant, 3, 16, "root index 1");
+    check(&c("sqrt(2, 3)"), ErrorKind::BadConstant, 3, 11, "2 argument(s)");
+    check(&c("cbrt(-2)"), ErrorKind::BadConstant, 3, 16, "negative");
+    check(
+        "method m\nstate v y\nconst c = sqrt(2)\nc = v\nv = v - c*y\n",
+        ErrorKind::Declaration,
+        4,
+        1,
+        "is a constant",
+    );
+}
+
+#[test]
+fn division_by_a_constant_expression_is_exact() {
+    let m = Method::parse(
+        "d.zm",
+        "method d\nstate v y\nconst c = cbrt(2)\nv = v - 1/(2 - c)*Phi*y\ny = y + Phi*v\n",
+    )
+    .expect("parses");
+    let theta = &m.assigns()[0]
+        .terms
+        .iter()
+        .find(|(op, _)| op.ne(&poly::Operand::Start { var: 0, lag: 0 }))
+        .unwrap()
+        .1;
+    // θ·(2 − c) = 1 exactly: −θ·Φ⁻¹ times (2 − c) is −1.
+    let c = Poly::sym(field::generator(2, 3));
+    let prod = field::reduce(&(theta * &(&Poly::int(2) - &c)));
+    assert_eq!(prod, -&Poly::sym(Sym::phi()));
+    check(
+        "method m\nstate v y\nconst c = sqrt(4)\nv = v - 1/(2 - c)*y\n",
+        ErrorKind::BadDivision,
+        4,
+        11,
+        "division by zero",
+    );
+}
+
+/// Exact field arithmetic against an obvious oracle: x^K − N has the
+/// radical as a root, and reduction keeps every exponent below the index.
+#[test]
+fn radicals_and_their_minimal_polynomials() {
+    for (k, n, coeff, parts) in [
+        (2, 12, 2, vec![(3, 1, 2)]),
+        (2, 8, 2, vec![(2, 1, 2)]),
+        (3, 16, 2, vec![(2, 1, 3)]),
+        (4, 9, 1, vec![(3, 1, 2)]),
+        (6, 64, 2, vec![]),
+        (2, 6, 1, vec![(2, 1, 2), (3, 1, 2)]),
+    ] {
+        let r = Radical::root(k, n);
+        assert_eq!(r.coeff, Q::from_integer(coeff.into()), "root({k}, {n})");
+        assert_eq!(r.parts, parts, "root({k}, {n})");
+        // value^deg is the rational N' of the minimal polynomial x^deg − N'.
+        let idx = field::generator_indices([&r]);
+        let (deg, nn) = r.minimal_polynomial();
+        let v = r.to_poly(&idx);
+        assert_eq!(field::reduce(&v.pow(deg)), Poly::constant(nn.clone()));
+        // No lower power is rational (the degree is minimal).
+        for j in 1..deg {
+            assert!(field::reduce(&v.pow(j)).as_constant().is_none(), "root({k}, {n})^{j}");
+        }
+    }
+}
+
+#[test]
+fn field_inverse_sign_and_norm() {
+    let idx = field::generator_indices([&Radical::root(2, 2), &Radical::root(2, 3)]);
+    let s2 = Radical::root(2, 2).to_poly(&idx);
+    let s3 = Radical::root(2, 3).to_poly(&idx);
+    let x = &(&s2 + &s3) - &Poly::constant(q(3, 1));
+    let inv = field::inverse(&x).unwrap();
+    assert!(field::reduce(&(&x * &inv)).is_one());
+    // √2 + √3 − 3 ≈ 0.146: above 0, below 1/6.
+    assert_eq!(field::sign(&x), Ordering::Greater);
+    assert_eq!(field::sign(&(&x - &Poly::constant(q(1, 6)))), Ordering::Less);
+    // √2 + √3 has minimal polynomial x⁴ − 10x² + 1: its norm is 1.
+    let n = field::norm(&(&s2 + &s3));
+    assert_eq!(n, Poly::one());
+    assert!(field::norm(&Poly::zero()).is_zero());
+}
+
+fn chi(name: &str) -> Poly {
+    poly::derive(&poly::builtin(name).unwrap()).unwrap().charpoly
+}
+
+/// Both routes run on every implicit built-in (derive refuses to answer when
+/// they disagree), and reading the routes separately gives the same χ.
+#[test]
+fn both_routes_agree_on_every_implicit_builtin() {
+    for name in poly::IMPLICIT_METHODS {
+        let m = poly::builtin(name).unwrap();
+        let d = poly::derive(&m).unwrap_or_else(|e| panic!("{e}"));
+        let z = poly::charpoly_z_route(&m).unwrap();
+        assert_eq!(z, d.charpoly, "{name}");
+        // The leading coefficient is det A (1 for the explicit Forest–Ruth).
+        assert_eq!(d.coeffs()[0], d.p_denominator, "{name}");
+    }
+}
+
+/// The trapezoidal rule and implicit midpoint: |z|² = c/a = 1 and
+/// cos Ψ = −b/(2a) = cos(2·atan(Φ/2)) = (1 − Φ²/4)/(1 + Φ²/4), identically.
+#[test]
+fn trapezoidal_and_midpoint_stay_on_the_circle() {
+    for name in ["trapezoidal", "implicit_midpoint", "newmark_average"] {
+        let c = chi(name).coeffs_in(Sym::z());
+        assert_eq!(c[0], c[2], "{name}: |z|^2 = 1");
+        let t2 = Poly::parse("Phi^2/4").unwrap();
+        let lhs = &(-&c[1]) * &(&Poly::one() + &t2);
+        let rhs = &(&Poly::int(2) * &c[2]) * &(&Poly::one() - &t2);
+        if name == "newmark_average" {
+            continue;
+        }
+        assert_eq!(lhs, rhs, "{name}: Psi = 2 atan(Phi/2)");
+        let r = analyze(&chi(name)).unwrap();
+        assert!(r.bounded_for_all());
+        assert!(r.intervals.iter().all(|i| i.class == poly::RootClass::Harmonic));
+    }
+}
+
+#[test]
+fn backward_euler_and_the_soft_spring_damp() {
+    for name in ["backward_euler", "soft_spring", "bdf2", "radau_iia_2", "sdirk2"] {
+        let r = analyze(&chi(name)).unwrap();
+        assert!(r.bounded_for_all(), "{name}");
+        assert!(r.phi_max().is_none(), "{name}");
+        assert!(
+            r.intervals.iter().all(|i| !matches!(i.class, poly::RootClass::Harmonic)),
+            "{name} damps"
+        );
+        assert_eq!(
+            poly::field_stability::limit_at_infinity(&chi(name)).unwrap(),
+            poly::field_stability::LimitAtInfinity::ToZero,
+            "{name}"
+        );
+    }
+    for name in ["trapezoidal", "implicit_midpoint", "gauss_legendre_2", "newmark_average"] {
+        assert_eq!(
+            poly::field_stability::limit_at_infinity(&chi(name)).unwrap(),
+            poly::field_stability::LimitAtInfinity::ToCircle,
+            "{name}"
+        );
+    }
+}
+
+#[test]
+fn newmark_linear_is_stable_below_two_sqrt_three() {
+    let r = analyze(&chi("newmark_linear")).unwrap();
+    let m = r.phi_max().expect("limited");
+    assert!(m.is_root_of(&poly::UPoly::from_ints(&[-12, 0, 1])));
+    assert_eq!(m.closed_form().as_deref(), Some("2*sqrt(3)"));
+}
+
+/// Gauss–Legendre's stability function is the (2,2) Padé approximant
+/// R = P/Q, P(w) = 1 + w/2 + w²/12, Q(w) = P(−w): on the oscillator's
+/// eigenvalues w = ±iΦ, χ = (Q(iΦ) z − P(iΦ))(Q(−iΦ) z − P(−iΦ))
+/// = |Q|² z² − 2 Re(P·conj Q) z + |P|², with conj Q(iΦ) = P(iΦ).
+#[test]
+fn gauss_legendre_is_the_two_two_pade_approximant() {
+    let re = Poly::parse("1 - Phi^2/12").unwrap();
+    let im = Poly::parse("Phi/2").unwrap();
+    let mod2 = &(&re * &re) + &(&im * &im);
+    let re_p2 = &(&re * &re) - &(&im * &im);
+    let z = Poly::sym(Sym::z());
+    let expected = &(&(&mod2 * &z.pow(2)) - &(&(&Poly::int(2) * &re_p2) * &z)) + &mod2;
+    assert_eq!(chi("gauss_legendre_2"), expected);
+}
+
+#[test]
+fn forest_ruth_has_an_exact_algebraic_limit() {
+    let r = analyze(&chi("forest_ruth")).unwrap();
+    let m = r.phi_max().expect("limited");
+    let approx = m.approx(&q(1, 1_000_000));
+    assert!(approx > q(15733, 10000) && approx < q(15735, 10000), "{}", m.to_decimal(8));
+    // Symplectic: q = 1, the pair stays on the circle until it meets at +1
+    // (p = cos Ψ returns to 1), decided from the exact classes either side.
+    assert_eq!(r.boundary(), Some(Boundary::DoubleRootAtPlusOne));
+    // Its defining polynomial is over Q and has it as a root.
+    assert!(m.is_root_of(&m.defining_poly()));
+    assert!(r.intervals[0].class == poly::RootClass::Harmonic);
+}
+
+#[test]
+fn sdirk2_keeps_sqrt_two_and_is_bounded_for_all_phi() {
+    let c = chi("sdirk2");
+    assert!(c.symbols().contains(&field::generator(2, 2)));
+    let r = analyze(&c).unwrap();
+    assert!(r.bounded_for_all());
+}
+
+/// `derive` lists every read of a value an earlier line already updated.
+#[test]
+fn gauss_seidel_reads_are_listed() {
+    let reads = |name: &str| {
+        poly::builtin(name)
+            .unwrap()
+            .gauss_seidel_reads()
+            .iter()
+            .map(|r| (r.line, r.name.clone(), r.updated_on))
+            .collect::<Vec<_>>()
+    };
+    // soft_spring: `y = y + Phi*v` (line 10) reads v from line 9.
+    assert_eq!(reads("soft_spring"), vec![(10, "v".to_owned(), 9)]);
+    // Standard Euler keeps the old v in a temporary: no such read.
+    assert_eq!(reads("standard_euler"), vec![]);
+    // The trapezoidal rule reads only start values and unknowns.
+    assert_eq!(reads("trapezoidal"), vec![]);
+}
+
+fn report_of(source: &str) -> poly::stability::StabilityReport {
+    let d = poly::derive_source("test.zm", source).unwrap();
+    poly::stability::analyze_derivation(&d, &Default::default()).unwrap()
+}
+
+/// At Φ = 2√3 Gauss–Legendre's P is exactly −I: a double root at −1 that is
+/// semisimple, so the step stays bounded and the method is bounded for all
+/// Φ, although χ alone (a double root on the circle) cannot tell.
+#[test]
+fn gauss_legendre_is_bounded_through_its_double_root() {
+    let src = poly::builtin_source("gauss_legendre_2").unwrap();
+    let r = report_of(src);
+    assert!(r.bounded_for_all(), "{:?}", r.stability);
+    assert!(!analyze(&chi("gauss_legendre_2")).unwrap().bounded_for_all());
+}
+
+/// Boundedness at a repeated root is decided from P = numerator / det A,
+/// never from the numerator alone. False Euler written implicitly, with
+/// both equations multiplied through by 1 + Φ², has False Euler's P, and so
+/// its defective double root at −1 at Φ = 2 (unbounded there); the
+/// numerator (1 + Φ²)·P would look semisimple.
+#[test]
+fn boundedness_at_a_double_root_reads_p_not_its_numerator() {
+    let scaled = "method fe_scaled\nstate v y\n\
+                  v' = (1 + Phi^2)*(v - Phi*y) - Phi^2*v'\n\
+                  y' = (1 + Phi^2)*(y + Phi*v') - Phi^2*y'\n";
+    let d = poly::derive_source("scaled.zm", scaled).unwrap();
+    assert!(!d.p_denominator.is_one(), "{}", d.p_denominator);
+    let (implicit, explicit) =
+        (report_of(scaled), report_of(poly::builtin_source("false_euler").unwrap()));
+    assert_eq!(implicit.phi_max().map(|m| m.to_string()), Some("2".to_owned()));
+    assert_eq!(
+        implicit.phi_max().map(|m| m.to_string()),
+        explicit.phi_max().map(|m| m.to_string())
+    );
+    assert_eq!(implicit.boundary(), Some(Boundary::DoubleRootAtMinusOne));
+    assert_eq!(implicit.bounded_at_phi_max(), explicit.bounded_at_phi_max());
+    assert_eq!(implicit.bounded_at_phi_max(), Some(false));
+}
