@@ -18,4 +18,5 @@ pub mod overview;
 pub mod paper;
 pub mod plot;
 pub mod scene;
+pub mod tableau;
 pub mod tradeoff;

@@ -49,6 +49,8 @@ enum Command {
     Drift(cli::drift::Args),
     /// Print a method's step as a Rust or C function.
     Emit(cli::emit::Args),
+    /// Write the .zm program of a Runge-Kutta method from its Butcher tableau (TOML).
+    FromTableau(cli::from_tableau::Args),
 }
 
 /// The most bytes of an error message printed: enough for any real error,
@@ -77,6 +79,7 @@ fn main() -> ExitCode {
         Command::Map(a) => cli::map::run(a),
         Command::Drift(a) => cli::drift::run(a),
         Command::Emit(a) => cli::emit::run(a),
+        Command::FromTableau(a) => cli::from_tableau::run(a),
     };
     match result {
         Ok(code) => code,

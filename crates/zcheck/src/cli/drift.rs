@@ -181,7 +181,7 @@ fn study<T: Real>(
     threads: usize,
     stop: &AtomicBool,
 ) -> anyhow::Result<Report> {
-    let method = check::load::load_method(name)?;
+    let method = zcheck::tableau::load_method(name)?;
     let mut exact: HashMap<Sym, Q> = HashMap::new();
     let mut params = Params::new();
     for sym in method.params() {

@@ -31,7 +31,7 @@ pub struct Args {
 }
 
 pub fn run(args: Args) -> anyhow::Result<ExitCode> {
-    let method = check::load::load_method(&args.method)?;
+    let method = zcheck::tableau::load_method(&args.method)?;
     let lang = match args.lang {
         Language::Rust => Lang::Rust,
         Language::C => Lang::C,

@@ -58,7 +58,7 @@ pub fn parse_range(flag: &str, s: &str) -> anyhow::Result<(Q, Q)> {
 }
 
 pub fn run(args: Args) -> anyhow::Result<ExitCode> {
-    let method = check::load::load_method(&args.method)?;
+    let method = zcheck::tableau::load_method(&args.method)?;
     let phi = parse_range("--phi", &args.phi)?;
     if phi.0 < Q::from_integer(0.into()) {
         bail!("--phi {}: expected Phi >= 0", args.phi);

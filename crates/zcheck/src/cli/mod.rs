@@ -5,6 +5,7 @@ pub mod derive;
 pub mod drift;
 pub mod emit;
 pub mod equiv;
+pub mod from_tableau;
 pub mod map;
 pub mod methods;
 pub mod output;

@@ -29,7 +29,7 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
     } else {
         args.methods
             .iter()
-            .map(|m| Ok(zcheck::overview::summarize(&check::load::load_method(m)?, args.order)?))
+            .map(|m| Ok(zcheck::overview::summarize(&zcheck::tableau::load_method(m)?, args.order)?))
             .collect::<anyhow::Result<Vec<_>>>()?
     };
     match args.format {

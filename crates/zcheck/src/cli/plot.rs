@@ -53,7 +53,7 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
         args.methods.clone()
     };
     let methods =
-        names.iter().map(|n| check::load::load_method(n)).collect::<Result<Vec<_>, _>>()?;
+        names.iter().map(|n| zcheck::tableau::load_method(n)).collect::<Result<Vec<_>, _>>()?;
     std::fs::create_dir_all(&args.out)
         .with_context(|| format!("{}: cannot create", args.out.display()))?;
     let params = Params::new().try_with("Phi", args.phi)?;

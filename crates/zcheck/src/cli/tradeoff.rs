@@ -127,7 +127,7 @@ fn user_candidates(
         if family.iter().chain(&out).any(|c| &c.display == arg) {
             bail!("--method {arg}: already in the comparison");
         }
-        let method = check::load::load_method(arg)?;
+        let method = zcheck::tableau::load_method(arg)?;
         let mut values = Vec::new();
         for sym in method.params().iter().filter(|s| s.name() != "Phi") {
             let Some((_, q)) = parsed.iter().find(|(n, _)| n == sym.name()) else {

@@ -98,7 +98,7 @@ impl MethodSpec {
                 hand_kernel: Some(hand),
             });
         }
-        let method = check::load::load_method(arg)?;
+        let method = crate::tableau::load_method_with(arg, true)?;
         Ok(MethodSpec { display: arg.to_owned(), method, kernel: None, hand_kernel: None })
     }
 

@@ -15,5 +15,6 @@ mod scene_cli;
 #[path = "../../../../tests/support/snapshot.rs"]
 mod snapshot;
 mod stability_cli;
+mod tableau;
 mod tradeoff;
 mod verify_cli;

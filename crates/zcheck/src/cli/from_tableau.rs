@@ -1,0 +1,29 @@
+//! `zcheck from-tableau`: a Butcher tableau (TOML) as the `.zm` program of
+//! its Runge–Kutta method on the oscillator (`zcheck::tableau`).
+
+use std::process::ExitCode;
+
+use zcheck::tableau::Tableau;
+
+/// Arguments of `zcheck from-tableau`.
+#[derive(clap::Args)]
+pub struct Args {
+    /// A TOML file with `A`, `b` (and optionally `c`, `name`); entries are
+    /// integers or strings of exact numbers and constant expressions, such
+    /// as "1/4 - sqrt(3)/6".
+    pub file: String,
+    /// Write the program for the damped oscillator (`param D`).
+    #[arg(long)]
+    pub damped: bool,
+}
+
+pub fn run(args: Args) -> anyhow::Result<ExitCode> {
+    let tableau = Tableau::load(std::path::Path::new(&args.file))?;
+    let src = tableau.to_zm(args.damped);
+    // The program parses (and derives) before it is printed.
+    poly::Method::parse(&args.file, &src).map_err(|e| {
+        anyhow::anyhow!("{}: the generated program does not parse: {}", args.file, e.message())
+    })?;
+    print!("{src}");
+    Ok(ExitCode::SUCCESS)
+}
