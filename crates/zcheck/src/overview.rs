@@ -38,6 +38,11 @@ pub struct MethodSummary {
     pub mul: u32,
     /// Additions and subtractions per step.
     pub add: u32,
+    /// Unknowns of an implicit step's linear system (0 when explicit).
+    pub unknowns: usize,
+    /// The part of `mul`/`add` that applies the solve, A⁻¹E times the slots,
+    /// with the factorisation done once per Φ: `(mul, add)`.
+    pub solve: (u32, u32),
 }
 
 /// Why a row could not be computed.
@@ -77,7 +82,9 @@ fn leading(t: Option<LeadingTerm>) -> String {
 pub fn summarize(method: &poly::Method, order: usize) -> Result<MethodSummary, OverviewError> {
     let d = poly::derive(method).map_err(err)?;
     let chi = &d.charpoly;
-    let report = poly::stability::analyze(chi).map_err(err)?;
+    // From the derivation: a repeated root on the circle is decided from P
+    // (Gauss–Legendre's P is −I at Φ = 2√3: bounded through it).
+    let report = poly::stability::analyze_derivation(&d, &Default::default()).map_err(err)?;
     let (phi_max_exact, phi_max) = match report.phi_max() {
         Some(a) => {
             let exact = a.closed_form().unwrap_or_else(|| a.describe("Phi"));
@@ -87,7 +94,13 @@ pub fn summarize(method: &poly::Method, order: usize) -> Result<MethodSummary, O
         None if report.bounded_for_all() => ("none: bounded for every Phi > 0".to_owned(), None),
         None => ("none: unbounded for every Phi > 0".to_owned(), None),
     };
+    // The series are computed over Q: a χ that keeps an exact constant
+    // (sqrt(2) in SDIRK's) says so instead of failing on it.
+    let constants = poly::field::has_generators(chi);
+    let over_q =
+        || ("n/a (χ keeps an exact constant: series over Q only)".to_owned(), "n/a".to_owned());
     let (psi_series, phase_error) = match series::psi_series_scaled(chi, order) {
+        _ if constants => over_q(),
         Ok((d, c)) if d == Q::from_integer(1.into()) => {
             (series_text(&c, ""), leading(series::dispersion_order(chi).map_err(err)?))
         }
@@ -95,6 +108,7 @@ pub fn summarize(method: &poly::Method, order: usize) -> Result<MethodSummary, O
         Err(e) => (format!("n/a ({e})"), "n/a".to_owned()),
     };
     let (modulus_sq_series, amplitude_error) = match series::modulus_sq_series(chi, order) {
+        _ if constants => over_q(),
         // For a conjugate pair of a second-order χ, |z|² = z1·z2 = q exactly:
         // a polynomial, not a truncated series.
         Ok(_) if d.p_q().is_some_and(|(_, q)| (q.degree_in(poly::Sym::phi()) as usize) < order) => {
@@ -117,6 +131,8 @@ pub fn summarize(method: &poly::Method, order: usize) -> Result<MethodSummary, O
         amplitude_error,
         mul: cost.program.mul,
         add: cost.program.add,
+        unknowns: method.unknowns().len(),
+        solve: (cost.solve.mul, cost.solve.add),
     })
 }
 
@@ -128,16 +144,21 @@ pub fn paper_overview(order: usize) -> Result<Vec<MethodSummary>, OverviewError>
         .collect()
 }
 
-/// The overview as a Markdown table (numbers rounded to 4 decimals).
+/// The overview as a Markdown table (numbers rounded to 4 decimals). When
+/// a row is implicit, a column says what its mul/add include: the solve,
+/// applied as A⁻¹E with the LU factorisation once per Φ.
 pub fn to_markdown(rows: &[MethodSummary]) -> String {
+    let implicit = rows.iter().any(|r| r.unknowns > 0);
     let mut s = String::from(
-        "| method | Φ_max (exact) | Φ_max | steps/period at Φ_max | Ψ(Φ) | \\|z\\|² | phase error Ψ−Φ | amplitude error \\|z\\|²−1 | mul | add |\n\
-         |---|---|---:|---:|---|---|---|---|---:|---:|\n",
+        "| method | Φ_max (exact) | Φ_max | steps/period at Φ_max | Ψ(Φ) | \\|z\\|² | phase error Ψ−Φ | amplitude error \\|z\\|²−1 | mul | add |",
     );
+    s.push_str(if implicit { " of which the solve |\n" } else { "\n" });
+    s.push_str("|---|---|---:|---:|---|---|---|---|---:|---:|");
+    s.push_str(if implicit { "---|\n" } else { "\n" });
     for r in rows {
         let f = |x: Option<f64>| x.map_or("–".to_owned(), |v| format!("{v:.4}"));
         s.push_str(&format!(
-            "| {} | {} | {} | {} | `{}` | `{}` | `{}` | `{}` | {} | {} |\n",
+            "| {} | {} | {} | {} | `{}` | `{}` | `{}` | `{}` | {} | {} |",
             r.method,
             r.phi_max_exact,
             f(r.phi_max),
@@ -149,6 +170,20 @@ pub fn to_markdown(rows: &[MethodSummary]) -> String {
             r.mul,
             r.add
         ));
+        if implicit {
+            if r.unknowns == 0 {
+                s.push_str(" – |");
+            } else {
+                s.push_str(&format!(
+                    " {} mul + {} add ({} unknown{}; LU once per Φ) |",
+                    r.solve.0,
+                    r.solve.1,
+                    r.unknowns,
+                    if r.unknowns == 1 { "" } else { "s" }
+                ));
+            }
+        }
+        s.push('\n');
     }
     s
 }

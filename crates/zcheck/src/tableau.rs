@@ -317,7 +317,8 @@ impl Tableau {
         w(
             &mut out,
             if damped {
-                "# Test equation v' = -w0 (2 D v + y), y' = w0 v; stage slopes k{i}v, k{i}y.".to_owned()
+                "# Test equation v' = -w0 (2 D v + y), y' = w0 v; stage slopes k{i}v, k{i}y."
+                    .to_owned()
             } else {
                 "# Test equation v' = -w0 y, y' = w0 v; stage slopes k{i}v, k{i}y.".to_owned()
             },

@@ -20,18 +20,30 @@ pub struct Args {
     pub order: usize,
     #[arg(long, value_enum, default_value = "markdown")]
     pub format: Format,
+    /// Also every implicit and algebraic built-in (trapezoidal, backward
+    /// Euler, BDF2, Newmark, Gauss-Legendre, Radau IIA, SDIRK, Forest-Ruth,
+    /// soft spring) after the methods given or the paper's seven.
+    #[arg(long)]
+    pub implicit: bool,
 }
 
 pub fn run(args: Args) -> anyhow::Result<ExitCode> {
     anyhow::ensure!(args.order <= 64, "--order {} is too large: expected at most 64", args.order);
-    let rows = if args.methods.is_empty() {
+    let mut rows = if args.methods.is_empty() {
         zcheck::overview::paper_overview(args.order)?
     } else {
         args.methods
             .iter()
-            .map(|m| Ok(zcheck::overview::summarize(&zcheck::tableau::load_method(m)?, args.order)?))
+            .map(|m| {
+                Ok(zcheck::overview::summarize(&zcheck::tableau::load_method(m)?, args.order)?)
+            })
             .collect::<anyhow::Result<Vec<_>>>()?
     };
+    if args.implicit {
+        for name in poly::IMPLICIT_METHODS {
+            rows.push(zcheck::overview::summarize(&poly::builtin(name)?, args.order)?);
+        }
+    }
     match args.format {
         Format::Markdown => super::output::emit(&zcheck::overview::to_markdown(&rows))?,
         Format::Json => super::output::emitln(&serde_json::to_string_pretty(&rows)?)?,

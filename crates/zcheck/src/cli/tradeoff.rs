@@ -41,6 +41,11 @@ pub struct Args {
     /// (exact: integer, fraction or decimal); repeatable.
     #[arg(long = "param", value_name = "NAME=VALUE")]
     pub params: Vec<String>,
+    /// Also rank every implicit and algebraic built-in whose χ is of
+    /// second order (all but BDF2): trapezoidal, backward Euler, Newmark,
+    /// Gauss-Legendre, Radau IIA, SDIRK, Forest-Ruth, soft spring.
+    #[arg(long)]
+    pub implicit: bool,
     /// Also draw the work-precision figure (SVG) of the seven direct methods here.
     #[arg(long)]
     pub svg: Option<PathBuf>,
@@ -58,7 +63,18 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
     let budget = Duration::from_millis(args.budget_ms.max(1));
     let mut candidates = family::undamped_family()?;
     let n_builtin = candidates.len();
-    candidates.extend(user_candidates(&args.methods, &args.params, &candidates)?);
+    let mut wanted = args.methods.clone();
+    if args.implicit {
+        for name in poly::IMPLICIT_METHODS {
+            // BDF2 is a two-step method (χ of degree 4): no principal pair
+            // model, so it is left to `zcheck overview` and `stability`.
+            let second_order = poly::builtin(name)?.order() == 2;
+            if second_order && !wanted.iter().any(|w| w == name) {
+                wanted.push(name.to_owned());
+            }
+        }
+    }
+    candidates.extend(user_candidates(&wanted, &args.params, &candidates)?);
     let mut ns = Vec::with_capacity(candidates.len());
     let mut hand = Vec::with_capacity(candidates.len());
     for (i, c) in candidates.iter().enumerate() {

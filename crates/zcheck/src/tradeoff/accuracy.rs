@@ -35,11 +35,28 @@ pub const PHI_MIN: f64 = 1e-5;
 struct PhiPoly(Vec<f64>);
 
 impl PhiPoly {
+    /// The f64 coefficients of an exact polynomial in Φ. An exact constant
+    /// (sqrt(2), cbrt(2)) in a coefficient is evaluated there, once, from
+    /// its exact value; any other symbol is an error.
     fn from_exact(p: &Poly) -> Result<PhiPoly, TradeoffError> {
-        let u = p.to_upoly(Sym::phi()).ok_or_else(|| {
+        let extra = || {
             TradeoffError::new(format!("coefficient {p} depends on more than Phi: expected every other parameter to have a value"))
-        })?;
-        Ok(PhiPoly(u.coeffs().iter().map(|c| c.to_f64().unwrap_or(f64::NAN)).collect()))
+        };
+        if let Some(u) = p.to_upoly(Sym::phi()) {
+            return Ok(PhiPoly(
+                u.coeffs().iter().map(|c| c.to_f64().unwrap_or(f64::NAN)).collect(),
+            ));
+        }
+        let mut out = Vec::new();
+        for c in p.coeffs_in(Sym::phi()) {
+            if c.symbols().iter().any(|&s| poly::field::generator_of(s).is_none()) {
+                return Err(extra());
+            }
+            let v = check::numeric::eval_poly(&c, &check::numeric::Params::default())
+                .map_err(|_| extra())?;
+            out.push(v);
+        }
+        Ok(PhiPoly(out))
     }
 
     fn eval(&self, phi: f64) -> f64 {
@@ -86,12 +103,20 @@ impl Target {
     pub const DEFAULT: Target = Target { phase_tol: 0.1, amp_tol: 0.01, periods: 10.0 };
 }
 
-/// One method's second-order model: p(Φ), q(Φ) − 1 and Δ(Φ) = q − p².
+/// One method's second-order model, χ = a·z² + b·z + c with a, b, c
+/// polynomials in Φ (a = 1 for an explicit method, det A for an implicit
+/// one): p = −b/2a, q − 1 = (c − a)/a and Δ = q − p² = (4ac − b²)/4a², each
+/// numerator exact before it is rounded.
 #[derive(Clone, Debug)]
 pub struct SecondOrder {
+    /// −b/2, the numerator of p.
     p: PhiPoly,
+    /// c − a, the numerator of q − 1.
     q_minus_one: PhiPoly,
+    /// 4ac − b², the numerator of 4a²Δ.
     disc: PhiPoly,
+    /// a, the leading coefficient (`None` when it is 1).
+    lead: Option<PhiPoly>,
 }
 
 /// The principal root and its errors at one Φ.
@@ -156,35 +181,43 @@ impl SecondOrder {
         let values: HashMap<Sym, Q> = params.iter().cloned().collect();
         let chi = charpoly.eval_partial(&values);
         let c = chi.coeffs_in(Sym::z());
-        if c.len() != 3 || !c[2].is_one() {
+        if c.len() != 3 {
             return Err(TradeoffError::new(format!(
-                "characteristic polynomial {chi} is not monic of degree 2 in z: expected a second-order method"
+                "characteristic polynomial {chi} is not of degree 2 in z: expected a second-order method"
             )));
         }
+        let a = &c[2];
         let p = &c[1] * &Poly::constant(poly::q(-1, 2));
-        let q = c[0].clone();
-        let disc = &q - &(&p * &p);
-        let q_minus_one = &q - &Poly::one();
+        let q_minus_one = &c[0] - a;
+        // 4a²Δ = 4ac − b² = 4(ac − p²).
+        let disc = &(&(a * &c[0]) - &(&p * &p)) * &Poly::int(4);
         Ok(SecondOrder {
             p: PhiPoly::from_exact(&p)?,
             q_minus_one: PhiPoly::from_exact(&q_minus_one)?,
             disc: PhiPoly::from_exact(&disc)?,
+            lead: if a.is_one() { None } else { Some(PhiPoly::from_exact(a)?) },
         })
+    }
+
+    /// a(Φ), or 1.
+    fn a(&self, phi: f64) -> f64 {
+        self.lead.as_ref().map_or(1.0, |a| a.eval(phi))
     }
 
     /// p(Φ), the real part of the complex pair.
     pub fn p(&self, phi: f64) -> f64 {
-        self.p.eval(phi)
+        self.p.eval(phi) / self.a(phi)
     }
 
     /// The principal root's angle and log modulus at Φ: `(psi, ln_r,
     /// oscillating)`. For real roots, the root of largest modulus, at angle
     /// 0 or π.
     pub fn principal_root(&self, phi: f64) -> (f64, f64, bool) {
-        let p = self.p.eval(phi);
-        let disc = self.disc.eval(phi);
+        let a = self.a(phi);
+        let p = self.p.eval(phi) / a;
+        let disc = self.disc.eval(phi) / (4.0 * a * a);
         if disc > 0.0 {
-            let ln_r = 0.5 * self.q_minus_one.eval(phi).ln_1p();
+            let ln_r = 0.5 * (self.q_minus_one.eval(phi) / a).ln_1p();
             (disc.sqrt().atan2(p), ln_r, true)
         } else {
             let s = (-disc).sqrt();

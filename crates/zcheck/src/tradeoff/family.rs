@@ -118,11 +118,13 @@ impl Candidate {
     /// Builds a candidate: derive, count, model and analyse exactly.
     pub fn new(method: Method, params: Vec<(Sym, Q)>) -> Result<Candidate, TradeoffError> {
         let name = method.name().to_owned();
-        let full = poly::charpoly(&method)
+        let derivation = poly::derive(&method)
             .map_err(|e| TradeoffError::new(format!("method `{name}`: {e}")))?;
         let values: HashMap<Sym, Q> = params.iter().cloned().collect();
-        let charpoly = full.eval_partial(&values);
-        let report = poly::stability::analyze(&charpoly)
+        let charpoly = derivation.charpoly.eval_partial(&values);
+        // From the derivation, so a repeated root on the circle is decided
+        // from P (Gauss–Legendre stays bounded through Φ = 2√3).
+        let report = poly::stability::analyze_derivation(&derivation, &values)
             .map_err(|e| TradeoffError::new(format!("method `{name}`: stability: {e}")))?;
         let limit =
             Limit { phi_max: report.phi_max().cloned(), bounded_for_all: report.bounded_for_all() };

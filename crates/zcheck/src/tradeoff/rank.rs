@@ -66,7 +66,7 @@ pub struct TradeRow {
     /// The exact stability limit as a number (`None`: see `phi_max_exact`).
     pub phi_max: Option<f64>,
     /// The exact limit as text ("2", "sqrt(2)", ...), "none" when unbounded
-    /// at every Φ > 0, "unbounded above" when bounded for every Φ.
+    /// at every Φ > 0, "every phi" when bounded for every Φ > 0.
     pub phi_max_exact: String,
     /// The largest admissible Φ (never at or beyond Φ_max).
     pub admissible_phi: Option<f64>,
@@ -88,7 +88,7 @@ pub struct TradeRow {
 /// Describes an exact limit for text and JSON.
 pub fn limit_text(c: &Candidate) -> String {
     match (&c.limit.phi_max, c.limit.bounded_for_all) {
-        (_, true) => "unbounded above".to_owned(),
+        (_, true) => "every phi".to_owned(),
         (Some(m), _) => m.closed_form().unwrap_or_else(|| m.to_decimal(15)),
         (None, false) => "none".to_owned(),
     }

@@ -53,8 +53,7 @@ fn damped_programs_reduce_to_the_oscillator_at_zero_damping() {
         let damped = chi_of(&t.to_zm(true));
         let d = poly::Sym::new("D");
         assert!(damped.symbols().contains(&d), "{name}");
-        let at_zero =
-            damped.eval_partial(&[(d, poly::q(0, 1))].into_iter().collect());
+        let at_zero = damped.eval_partial(&[(d, poly::q(0, 1))].into_iter().collect());
         assert_eq!(at_zero, chi_of(&t.to_zm(false)), "{name}");
     }
 }

@@ -148,6 +148,50 @@ fn accuracy_matches_numeric_eigenvalues() {
     }
 }
 
+/// Implicit and algebraic second-order built-ins: the model of χ = a z² +
+/// b z + c (a = det A, constants such as sqrt(2) evaluated once) agrees with
+/// the eigenvalues of the compiled step (an LU solve per Φ), and with the
+/// closed forms: trapezoidal Ψ = 2·atan(Φ/2), |z| = 1; backward Euler
+/// Ψ = atan Φ, |z|² = 1/(1 + Φ²).
+#[test]
+fn accuracy_of_implicit_methods_matches_eigenvalues_and_closed_forms() {
+    for name in poly::IMPLICIT_METHODS {
+        let m = poly::builtin(name).unwrap();
+        if m.order() != 2 {
+            continue;
+        }
+        let c = Candidate::new(m, Vec::new()).expect("second order");
+        for phi in [0.05, 0.3, 0.9, 1.3, 2.5] {
+            let acc = c.model.accuracy(phi, Spring::UNDAMPED);
+            let step = Step::compile(&c.method, &Params::phi(phi)).unwrap();
+            let eig = witness::eigenvalues_nalgebra(&step.transition_matrix()).unwrap();
+            let top = eig.iter().copied().max_by(|a, b| a.norm().total_cmp(&b.norm())).unwrap();
+            let tol = 1024.0 * EPS * (1.0 + phi * phi);
+            if acc.oscillating {
+                let top = eig.iter().copied().max_by(|a, b| a.im.total_cmp(&b.im)).unwrap();
+                assert!((top.arg() - acc.psi).abs() <= tol, "{name} at {phi}: psi");
+            }
+            assert!(
+                (top.norm().ln() - acc.ln_growth_per_step).abs() <= tol,
+                "{name} at {phi}: ln r {} vs {}",
+                top.norm().ln(),
+                acc.ln_growth_per_step
+            );
+        }
+    }
+    let trap = Candidate::new(poly::builtin("trapezoidal").unwrap(), Vec::new()).unwrap();
+    let be = Candidate::new(poly::builtin("backward_euler").unwrap(), Vec::new()).unwrap();
+    for phi in [1e-3, 0.1, 1.0, 3.0, 10.0] {
+        let t = trap.model.accuracy(phi, Spring::UNDAMPED);
+        assert!((t.psi - 2.0 * (phi / 2.0).atan()).abs() <= 4.0 * EPS * t.psi, "{phi}");
+        assert!(t.ln_growth_per_step.abs() <= 4.0 * EPS, "{phi}: {}", t.ln_growth_per_step);
+        let b = be.model.accuracy(phi, Spring::UNDAMPED);
+        assert!((b.psi - phi.atan()).abs() <= 4.0 * EPS * b.psi, "{phi}");
+        let ln_r = -0.5 * (phi * phi).ln_1p();
+        assert!((b.ln_growth_per_step - ln_r).abs() <= 8.0 * EPS * ln_r.abs(), "{phi}");
+    }
+}
+
 /// Every hand-written kernel does one step of its method's exact transition
 /// matrix (evaluated exactly at Φ and D, then rounded), to a few ulps.
 #[test]
@@ -432,4 +476,34 @@ fn model_errors() {
     let free_d = poly::Poly::parse("z^2 - 2*z + D*Phi + 1").unwrap();
     let err = SecondOrder::new(&free_d, &[]).unwrap_err().to_string();
     assert!(err.contains("expected every other parameter to have a value"), "{err}");
+}
+
+/// `zcheck overview --implicit` rows carry the literature's facts: the
+/// A-stable methods are bounded for every Φ (Gauss–Legendre included,
+/// through its double root at −1 where P = −I), Newmark's linear-
+/// acceleration method stops at 2√3, Forest–Ruth near 1.5734, and each
+/// implicit row says what its cost includes.
+#[test]
+fn overview_of_the_implicit_builtins() {
+    for name in poly::IMPLICIT_METHODS {
+        let row = zcheck::overview::summarize(&poly::builtin(name).unwrap(), 5).unwrap();
+        match name {
+            "newmark_linear" => assert_eq!(row.phi_max_exact, "2*sqrt(3)"),
+            "forest_ruth" => {
+                assert!((row.phi_max.unwrap() - 1.5734).abs() < 1e-4, "{:?}", row.phi_max)
+            }
+            _ => assert_eq!(row.phi_max_exact, "none: bounded for every Phi > 0", "{name}"),
+        }
+        let m = poly::builtin(name).unwrap();
+        assert_eq!(row.unknowns, m.unknowns().len(), "{name}");
+        if m.is_implicit() {
+            assert!(row.solve.0 > 0 && row.solve.0 <= row.mul, "{name}: {:?}", row.solve);
+        }
+    }
+    let text = zcheck::overview::to_markdown(&[zcheck::overview::summarize(
+        &poly::builtin("gauss_legendre_2").unwrap(),
+        5,
+    )
+    .unwrap()]);
+    assert!(text.contains("(4 unknowns; LU once per Φ)"), "{text}");
 }
