@@ -37,7 +37,7 @@ pub struct Args {
     #[arg(long, value_enum, requires = "scene")]
     pub sweep: Option<SweepArg>,
     /// Skip the simulation that checks the prediction.
-    #[arg(long, requires = "scene")]
+    #[arg(long)]
     pub no_simulate: bool,
     /// How long the scene must stay within tolerance, seconds.
     #[arg(long, default_value_t = Scene::DEFAULT_DURATION_S)]
@@ -105,11 +105,110 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
     for (m, c) in advice.methods.iter_mut().zip(&cands) {
         m.ns_per_step_hand = kernels::time_hand_kernel(c.kernel_name(), d, budget);
     }
+    // The same spring as a one-mode scene, through the scene advisor: its
+    // modes, candidates (with the simulation that checks the prediction)
+    // and recommendation, in the scene JSON's keys.
+    let one_mode = zcheck::scene::file::SceneFile::one_mode(
+        freq_hz,
+        d,
+        tick_hz,
+        args.duration,
+        args.phase_tol,
+        args.amp_tol,
+    );
+    let as_scene = scene_advice(&one_mode, &[], !args.no_simulate, false)?;
     match args.format {
-        Format::Json => super::output::emitln(&serde_json::to_string_pretty(&advice)?)?,
-        Format::Text => super::output::emit(&text(&advice))?,
+        Format::Json => {
+            let out = OneSpring {
+                advice: &advice,
+                modes: &as_scene.modes,
+                candidates: &as_scene.candidates,
+                recommended: &as_scene.recommended,
+            };
+            super::output::emitln(&serde_json::to_string_pretty(&out)?)?
+        }
+        Format::Text => {
+            let mut t = text(&advice);
+            t += &format!(
+                "as a one-mode scene (zcheck advise --scene): {}\n",
+                match &as_scene.recommended {
+                    Some(r) => format!("{} with {} substeps per tick", r.method, r.substeps),
+                    None => "none meets the target".to_owned(),
+                }
+            );
+            for c in &as_scene.candidates {
+                if c.simulated.as_ref().is_some_and(|s| !s.agree) {
+                    t += &format!("WARNING: {}: prediction and simulation disagree\n", c.method);
+                }
+            }
+            super::output::emit(&t)?
+        }
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// `zcheck advise --freq --tick` as JSON: the one-spring advice, plus the
+/// scene advisor's keys for the same spring as a one-mode scene.
+#[derive(serde::Serialize)]
+struct OneSpring<'a> {
+    #[serde(flatten)]
+    advice: &'a Advice,
+    modes: &'a [zcheck::scene::advisor::ModeReport],
+    candidates: &'a [zcheck::scene::advisor::CandidateAdvice],
+    recommended: &'a Option<zcheck::scene::advisor::Recommended>,
+}
+
+/// The scene advisor on `scene` with `methods` (default: the seven direct
+/// methods on the damped spring).
+fn scene_advice(
+    scene: &zcheck::scene::file::SceneFile,
+    methods: &[String],
+    simulate: bool,
+    gauss_seidel: bool,
+) -> anyhow::Result<zcheck::scene::advisor::SceneAdvice> {
+    use zcheck::scene::advisor::{self, MethodSpec, Options};
+    let shapes = if simulate {
+        zcheck::scene::modal::Shapes::Compute
+    } else {
+        zcheck::scene::modal::Shapes::WhenNeeded
+    };
+    let modal = zcheck::scene::modal::reduce_with(scene, shapes)?;
+    let specs = if methods.is_empty() {
+        MethodSpec::builtins()?
+    } else {
+        methods.iter().map(|m| MethodSpec::load(m)).collect::<anyhow::Result<_>>()?
+    };
+    Ok(advisor::advise(scene, &modal, specs, Options { simulate, gauss_seidel })?)
+}
+
+/// Rows under a header, each column as wide as its widest cell (phi_max
+/// can be a nested root): the first column left-aligned, the rest right.
+fn table(header: &[String; 7], rows: &[[String; 7]]) -> String {
+    let widths: Vec<usize> = (0..7)
+        .map(|c| {
+            std::iter::once(header).chain(rows).map(|r| r[c].chars().count()).max().unwrap_or(0)
+        })
+        .collect();
+    let mut out = String::new();
+    for row in std::iter::once(header).chain(rows) {
+        let cells: Vec<String> = row
+            .iter()
+            .zip(&widths)
+            .enumerate()
+            .map(
+                |(c, (cell, &w))| {
+                    if c == 0 {
+                        format!("{cell:<w$}")
+                    } else {
+                        format!("{cell:>w$}")
+                    }
+                },
+            )
+            .collect();
+        out += &cells.join("  ");
+        out.push('\n');
+    }
+    out
 }
 
 /// The advice as a table and a sentence.
@@ -163,30 +262,7 @@ pub fn text(a: &Advice) -> String {
             ]
         })
         .collect();
-    // Columns as wide as their widest cell: phi_max can be a nested root.
-    let widths: Vec<usize> = (0..7)
-        .map(|c| {
-            std::iter::once(&header).chain(&rows).map(|r| r[c].chars().count()).max().unwrap_or(0)
-        })
-        .collect();
-    for row in std::iter::once(&header).chain(&rows) {
-        let cells: Vec<String> = row
-            .iter()
-            .zip(&widths)
-            .enumerate()
-            .map(
-                |(c, (cell, &w))| {
-                    if c == 0 {
-                        format!("{cell:<w$}")
-                    } else {
-                        format!("{cell:>w$}")
-                    }
-                },
-            )
-            .collect();
-        out += &cells.join("  ");
-        out.push('\n');
-    }
+    out += &table(&header, &rows);
     let stable: Vec<&str> =
         a.methods.iter().filter(|m| m.stable_at_phi).map(|m| m.method.as_str()).collect();
     out += &format!(
@@ -208,7 +284,6 @@ pub fn text(a: &Advice) -> String {
 
 /// `zcheck advise --scene FILE`.
 fn run_scene(path: &std::path::Path, args: &Args) -> anyhow::Result<ExitCode> {
-    use zcheck::scene::advisor::{self, MethodSpec, Options};
     use zcheck::scene::file::SceneFile;
     let scene = SceneFile::load(path)?;
     if args.duration != Scene::DEFAULT_DURATION_S
@@ -217,19 +292,7 @@ fn run_scene(path: &std::path::Path, args: &Args) -> anyhow::Result<ExitCode> {
     {
         anyhow::bail!("--duration, --phase-tol and --amp-tol belong in the scene file with --scene (duration_s, [accuracy])");
     }
-    let shapes = if args.no_simulate {
-        zcheck::scene::modal::Shapes::WhenNeeded
-    } else {
-        zcheck::scene::modal::Shapes::Compute
-    };
-    let modal = zcheck::scene::modal::reduce_with(&scene, shapes)?;
-    let specs = if args.methods.is_empty() {
-        MethodSpec::builtins()?
-    } else {
-        args.methods.iter().map(|m| MethodSpec::load(m)).collect::<anyhow::Result<_>>()?
-    };
-    let options = Options { simulate: !args.no_simulate, gauss_seidel: args.sweep.is_some() };
-    let advice = advisor::advise(&scene, &modal, specs, options)?;
+    let advice = scene_advice(&scene, &args.methods, !args.no_simulate, args.sweep.is_some())?;
     match args.format {
         Format::Json => super::output::emitln(&serde_json::to_string_pretty(&advice)?)?,
         Format::Text => super::output::emit(&scene_text(&path.display().to_string(), &advice))?,
@@ -302,29 +365,7 @@ pub fn scene_text(name: &str, a: &zcheck::scene::advisor::SceneAdvice) -> String
             ]
         })
         .collect();
-    let widths: Vec<usize> = (0..7)
-        .map(|c| {
-            std::iter::once(&header).chain(&rows).map(|r| r[c].chars().count()).max().unwrap_or(0)
-        })
-        .collect();
-    for row in std::iter::once(&header).chain(&rows) {
-        let cells: Vec<String> = row
-            .iter()
-            .zip(&widths)
-            .enumerate()
-            .map(
-                |(c, (cell, &w))| {
-                    if c == 0 {
-                        format!("{cell:<w$}")
-                    } else {
-                        format!("{cell:>w$}")
-                    }
-                },
-            )
-            .collect();
-        out += &cells.join("  ");
-        out.push('\n');
-    }
+    out += &table(&header, &rows);
     out += &format!(
         "\nagreement: simulated within {} of the target (plus 1e-9) of the prediction\n",
         zcheck::scene::advisor::AGREE_FRACTION

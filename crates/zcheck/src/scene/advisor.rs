@@ -7,8 +7,11 @@
 //! - `substeps_stable`: the smallest n putting every mode inside the exact
 //!   (Φ, D) region of the method. A float estimate of each mode's n picks
 //!   the limiting modes; the answer is then decided exactly: every mode is
-//!   checked inside the region at n by `poly::region` (exact class at the
-//!   rational (Φ, ζ)), and the limiting mode outside at n − 1. A mode whose
+//!   checked inside the region at n, and the limiting mode outside at
+//!   n − 1. A mode whose f64 spectral radius clears 1 by 10⁻⁶ is decided by
+//!   it (that margin is 10⁹ times the rounding error of a simple root);
+//!   every other is decided exactly against the stable intervals of
+//!   χ(·, ζ) from `poly::region` and `poly::stability`, analysed once per ζ. A mode whose
 //!   float estimate runs away is settled by the exact Φ_max(ζ) (`Never`:
 //!   unbounded at every small Φ). The stable set at fixed ζ is taken to be
 //!   the interval (0, Φ_max) below the first boundary.
@@ -269,9 +272,17 @@ struct Analysed {
     /// p, q − 1 and q − p² when χ is monic of degree 2.
     second: Option<[BiPoly; 3]>,
     exact_limits: HashMap<u64, PhiLimit>,
-    /// χ with D substituted, by the bits of D.
-    at_param: std::cell::RefCell<HashMap<u64, Poly>>,
+    /// χ with D substituted and its exact stable intervals (None when the
+    /// analysis failed), by the bits of D.
+    at_param: std::cell::RefCell<HashMap<u64, AtParam>>,
 }
+
+/// χ(·, D) at one D, and its exact stable Φ-intervals when analysed.
+type AtParam = (Poly, Option<Vec<poly::stability::StableInterval>>);
+
+/// How far the f64 spectral radius must clear 1 for the float to decide
+/// membership of the stable region (see [`Analysed::inside`]).
+const FLOAT_MARGIN: f64 = 1e-6;
 
 impl Analysed {
     fn new(spec: MethodSpec) -> anyhow::Result<Analysed> {
@@ -325,12 +336,51 @@ impl Analysed {
         }
     }
 
-    /// Exact: is (Φ, D) inside the stable region?
+    /// Is (Φ, D) inside the stable region? Decided by the f64 spectral
+    /// radius only where it clears 1 by [`FLOAT_MARGIN`] (10⁹ times the
+    /// rounding error of a simple root, 10² times that of a double one);
+    /// otherwise exactly, against the stable intervals of χ(·, D), computed
+    /// once per D (a scene's undamped modes share one analysis), or by the
+    /// exact class at Φ when that analysis fails.
     fn inside(&self, phi: f64, d: f64) -> bool {
+        let rho = self.rho(phi, d);
+        if rho < 1.0 - FLOAT_MARGIN {
+            return true;
+        }
+        if rho > 1.0 + FLOAT_MARGIN && rho.is_finite() {
+            return false;
+        }
+        self.inside_exact(phi, d)
+    }
+
+    /// Exact membership of (Φ, D), with no float deciding.
+    fn inside_exact(&self, phi: f64, d: f64) -> bool {
         let (Some(p), Some(dq)) = (f64_to_q(phi), f64_to_q(d)) else { return false };
         let mut cache = self.at_param.borrow_mut();
-        let chi = cache.entry(d.to_bits()).or_insert_with(|| self.region.at_param(&dq));
-        poly::stability::class_at(chi, &p).is_ok_and(|c| c.is_bounded())
+        let (chi, intervals) = cache.entry(d.to_bits()).or_insert_with(|| {
+            let chi = self.region.at_param(&dq);
+            let intervals = poly::stability::analyze(&chi).ok().map(|r| r.stable_intervals);
+            (chi, intervals)
+        });
+        match intervals {
+            Some(intervals) => intervals.iter().any(|iv| {
+                let above_lo = match iv.lo.cmp_rational(&p) {
+                    std::cmp::Ordering::Less => true,
+                    std::cmp::Ordering::Equal => iv.lo_closed,
+                    std::cmp::Ordering::Greater => false,
+                };
+                let below_hi = match &iv.hi {
+                    None => true,
+                    Some(hi) => match hi.cmp_rational(&p) {
+                        std::cmp::Ordering::Greater => true,
+                        std::cmp::Ordering::Equal => iv.hi_closed,
+                        std::cmp::Ordering::Less => false,
+                    },
+                };
+                above_lo && below_hi
+            }),
+            None => poly::stability::class_at(chi, &p).is_ok_and(|c| c.is_bounded()),
+        }
     }
 
     /// The exact Φ_max at ζ (cached by the bits of ζ).
@@ -584,10 +634,16 @@ fn advise_one(
             mode_stable[i] = Some(e);
             continue;
         }
-        let exact = match a.limit(m.ratio) {
-            Some(PhiLimit::Never) => None,
-            Some(PhiLimit::Every) => Some(1),
-            _ => a.exact_stable(m.omega / tick, m.ratio, estimates[i].unwrap_or(1)),
+        // A float estimate is confirmed exactly from there; only a runaway
+        // estimate needs the exact Φ_max(ζ) (an analysis per ζ, costly when
+        // every mode has its own ratio, as under Rayleigh damping).
+        let exact = match estimates[i] {
+            Some(guess) => a.exact_stable(m.omega / tick, m.ratio, guess),
+            None => match a.limit(m.ratio) {
+                Some(PhiLimit::Never) => None,
+                Some(PhiLimit::Every) => Some(1),
+                _ => a.exact_stable(m.omega / tick, m.ratio, 1),
+            },
         };
         if exact.is_none() {
             never = true;
@@ -1186,4 +1242,34 @@ fn sweep_report(
         witnesses_agree: r.is_some_and(|(x, y)| (x - y).abs() <= 1e-9 * x.max(1.0)),
         limit_ratio: ratio,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The float filter of `inside` never contradicts the exact decision:
+    /// every damped built-in on a grid of (Φ, D) across its boundary,
+    /// including points within 10⁻⁹ of the exact limit.
+    #[test]
+    fn the_float_filter_agrees_with_the_exact_membership() {
+        for spec in MethodSpec::builtins().unwrap() {
+            let a = Analysed::new(spec).unwrap();
+            for d in [0.0, 0.05, 0.3, 0.9] {
+                let mut phis: Vec<f64> = (1..=40).map(|k| k as f64 * 0.1).collect();
+                if let Ok(PhiLimit::Below(m)) = a.region.phi_max(&f64_to_q(d).unwrap()) {
+                    let m: f64 = m.to_decimal(17).parse().unwrap();
+                    phis.extend([m * (1.0 - 1e-9), m * (1.0 + 1e-9), m * 0.999, m * 1.001]);
+                }
+                for phi in phis {
+                    assert_eq!(
+                        a.inside(phi, d),
+                        a.inside_exact(phi, d),
+                        "{} at Phi = {phi}, D = {d}",
+                        a.spec.display
+                    );
+                }
+            }
+        }
+    }
 }

@@ -131,3 +131,38 @@ fn bad_input_is_an_error() {
     );
     check(&["tradeoff", "--periods=-1"], "--periods -1: expected a finite number > 0");
 }
+
+/// `--freq/--tick/--damping` is a one-mode scene: the JSON carries the
+/// scene advisor's `modes`, `candidates` and `recommended` for the same
+/// spring, and the two independent computations agree on every method's
+/// stabilising substeps (exact limit in the one-spring path, the (Φ, D)
+/// region in the scene path). The recommendation's simulation agrees.
+#[test]
+fn one_spring_is_a_one_mode_scene() {
+    for (freq, tick, damping) in
+        [("120", "60", None), ("19", "60", None), ("9", "60", Some("0.25"))]
+    {
+        let mut args = vec!["advise", "--freq", freq, "--tick", tick, "--format", "json"];
+        if let Some(d) = damping {
+            args.extend(["--damping", d]);
+        }
+        let v = json(&args);
+        let modes = v["modes"].as_array().expect("modes");
+        assert_eq!(modes.len(), 1, "{v}");
+        let hz: f64 = freq.parse().unwrap();
+        assert!((modes[0]["hz"].as_f64().unwrap() - hz).abs() <= 1e-9 * hz, "{v}");
+        let candidates = v["candidates"].as_array().expect("candidates");
+        for m in v["methods"].as_array().expect("methods") {
+            let name = m["method"].as_str().unwrap();
+            let c = candidates
+                .iter()
+                .find(|c| c["method"] == name)
+                .unwrap_or_else(|| panic!("{name} not among the scene candidates: {v}"));
+            assert_eq!(m["substeps_stable"], c["substeps_stable"], "{freq} Hz, {name}");
+            if let Some(sim) = c["simulated"].as_object() {
+                assert_eq!(sim["agree"], true, "{freq} Hz, {name}: {v}");
+            }
+        }
+        assert!(v["recommended"].is_object(), "{v}");
+    }
+}

@@ -1,0 +1,52 @@
+//! The bodies of the fuzz targets that read the application's TOML files:
+//! the scene reader and the Butcher-tableau reader. Separate from `lib.rs`
+//! because they need the `zcheck` crate, which `poly`'s tests (which
+//! replay `lib.rs`'s targets) cannot depend on; `zcheck`'s integration
+//! tests include this file and replay its corpora.
+
+/// The largest error text any input may produce, in bytes.
+const MAX_ERROR_BYTES: usize = 4000;
+
+/// A rendered error: bounded, located in `fuzz.toml`, no control character.
+fn check_error(shown: &str, line: usize, col: usize) {
+    assert!(shown.len() <= MAX_ERROR_BYTES, "error of {} bytes", shown.len());
+    assert!(!shown.chars().any(|c| c.is_control()), "control character in error: {shown:?}");
+    assert!(line >= 1 && col >= 1, "no location: {shown}");
+    assert!(shown.starts_with(&format!("fuzz.toml:{line}:{col}: ")), "{shown}");
+}
+
+/// The TOML scene reader: every input parses to a scene or gives a located,
+/// bounded error; a scene that parses has at least one degree of freedom.
+pub fn scene_toml(data: &[u8]) {
+    let Ok(text) = std::str::from_utf8(data) else { return };
+    match zcheck::scene::file::SceneFile::parse("fuzz.toml", text) {
+        Ok(scene) => assert!(scene.dof() >= 1, "a scene without a degree of freedom"),
+        Err(e) => check_error(&e.to_string(), e.line(), e.col()),
+    }
+}
+
+/// The tableau reader: every input gives a tableau or a located, bounded
+/// error; every tableau's generated programs (undamped and damped) parse
+/// and derive with their two routes agreeing.
+pub fn tableau(data: &[u8]) {
+    let Ok(text) = std::str::from_utf8(data) else { return };
+    match zcheck::tableau::Tableau::parse("fuzz.toml", "fuzz", text) {
+        Ok(t) => {
+            // Bounded work: derivation of a large implicit tableau is cubic.
+            if t.stages() > 6 {
+                return;
+            }
+            for damped in [false, true] {
+                let src = t.to_zm(damped);
+                let m = poly::Method::parse("generated.zm", &src)
+                    .unwrap_or_else(|e| panic!("generated program does not parse: {e}\n{src}"));
+                if let Err(e) = poly::derive(&m) {
+                    // A singular system for every Φ is a real property of
+                    // some tableaux (and a clear error), never a panic.
+                    assert!(e.to_string().len() <= MAX_ERROR_BYTES, "{e}");
+                }
+            }
+        }
+        Err(e) => check_error(&e.to_string(), e.line(), e.col()),
+    }
+}
