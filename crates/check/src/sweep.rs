@@ -51,10 +51,23 @@ pub struct HornerPoly {
 }
 
 impl HornerPoly {
-    /// Rounds the exact univariate polynomial `p` (in `phi` only).
+    /// Rounds the exact univariate polynomial `p` (in `phi` only). An
+    /// exact constant in a coefficient (`sqrt(2)`, `cbrt(2)`) is evaluated
+    /// there, once; any other symbol gives `None`.
     pub fn new(p: &Poly, phi: Sym) -> Option<HornerPoly> {
-        let u = p.to_upoly(phi)?;
-        let coeffs: Vec<f64> = u.coeffs().iter().map(q_to_f64).collect();
+        let coeffs: Vec<f64> = match p.to_upoly(phi) {
+            Some(u) => u.coeffs().iter().map(q_to_f64).collect(),
+            None => {
+                let mut out = Vec::new();
+                for c in p.coeffs_in(phi) {
+                    if c.symbols().iter().any(|&s| poly::field::generator_of(s).is_none()) {
+                        return None;
+                    }
+                    out.push(crate::numeric::eval_poly(&c, &Params::default()).ok()?);
+                }
+                out
+            }
+        };
         let abs = coeffs.iter().map(|c| c.abs()).collect();
         let d = coeffs.len().max(1) as f64;
         Some(HornerPoly { coeffs, abs, gamma: (2.0 * d + 2.0) * f64::EPSILON })
@@ -71,6 +84,12 @@ impl HornerPoly {
             a = a * ax + ca;
         }
         (v, self.gamma * a)
+    }
+
+    /// The value at `x` alone.
+    #[inline]
+    pub fn value(&self, x: f64) -> f64 {
+        self.coeffs.iter().rev().fold(0.0, |acc, c| acc * x + c)
     }
 }
 

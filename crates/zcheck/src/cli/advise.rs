@@ -178,7 +178,7 @@ fn scene_advice(
     } else {
         methods.iter().map(|m| MethodSpec::load(m)).collect::<anyhow::Result<_>>()?
     };
-    Ok(advisor::advise(scene, &modal, specs, Options { simulate, gauss_seidel })?)
+    advisor::advise(scene, &modal, specs, Options { simulate, gauss_seidel })
 }
 
 /// Rows under a header, each column as wide as its widest cell (phi_max

@@ -22,7 +22,6 @@
 use std::collections::HashMap;
 use std::f64::consts::PI;
 
-use num_traits::ToPrimitive;
 use poly::{Poly, Sym, Q};
 
 use super::TradeoffError;
@@ -30,37 +29,19 @@ use super::TradeoffError;
 /// The smallest step the admissible-Φ search considers.
 pub const PHI_MIN: f64 = 1e-5;
 
-/// A polynomial in Φ with f64 coefficients, lowest power first.
+/// A polynomial in Φ with f64 coefficients: `check`'s one evaluator.
 #[derive(Clone, Debug)]
-struct PhiPoly(Vec<f64>);
+struct PhiPoly(check::sweep::HornerPoly);
 
 impl PhiPoly {
-    /// The f64 coefficients of an exact polynomial in Φ. An exact constant
-    /// (sqrt(2), cbrt(2)) in a coefficient is evaluated there, once, from
-    /// its exact value; any other symbol is an error.
     fn from_exact(p: &Poly) -> Result<PhiPoly, TradeoffError> {
-        let extra = || {
+        check::sweep::HornerPoly::new(p, Sym::phi()).map(PhiPoly).ok_or_else(|| {
             TradeoffError::new(format!("coefficient {p} depends on more than Phi: expected every other parameter to have a value"))
-        };
-        if let Some(u) = p.to_upoly(Sym::phi()) {
-            return Ok(PhiPoly(
-                u.coeffs().iter().map(|c| c.to_f64().unwrap_or(f64::NAN)).collect(),
-            ));
-        }
-        let mut out = Vec::new();
-        for c in p.coeffs_in(Sym::phi()) {
-            if c.symbols().iter().any(|&s| poly::field::generator_of(s).is_none()) {
-                return Err(extra());
-            }
-            let v = check::numeric::eval_poly(&c, &check::numeric::Params::default())
-                .map_err(|_| extra())?;
-            out.push(v);
-        }
-        Ok(PhiPoly(out))
+        })
     }
 
     fn eval(&self, phi: f64) -> f64 {
-        self.0.iter().rev().fold(0.0, |acc, c| acc * phi + c)
+        self.0.value(phi)
     }
 }
 

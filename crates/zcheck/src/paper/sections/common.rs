@@ -335,12 +335,7 @@ fn f64_coeffs(p: &Poly) -> Vec<f64> {
 
 /// A polynomial in Φ evaluated in floating point (Horner).
 pub fn eval_f64(p: &Poly, phi: f64) -> f64 {
-    use num_traits::ToPrimitive;
-    p.coeffs_in(Sym::phi())
-        .iter()
-        .rev()
-        .map(|c| c.as_constant().and_then(|c| c.to_f64()).expect("a polynomial in Phi only"))
-        .fold(0.0, |acc, c| acc * phi + c)
+    check::sweep::HornerPoly::new(p, Sym::phi()).expect("a polynomial in Phi only").value(phi)
 }
 
 /// The canonical test oscillator of section 5 (v̇ = −ω0 y, ẏ = ω0 v) as the
