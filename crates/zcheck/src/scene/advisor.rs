@@ -852,7 +852,9 @@ fn simulate_check(
     let stride: Vec<u64> =
         checked.iter().map(|&i| ((0.5 / (modes[i].omega * t)).round() as u64).max(1)).collect();
     let wanted = stride.iter().map(|m| m * FIT_SAMPLES as u64).max().unwrap_or(1);
-    let steps = total_steps.min(wanted).min((SIM_WORK / dim as f64) as u64).max(1);
+    // Enough steps for the fit, even past a short duration: the fitted
+    // per-step root is extrapolated to the duration either way.
+    let steps = wanted.min((SIM_WORK / dim as f64) as u64).max(1);
     let mut seqs: Vec<Vec<f64>> = vec![Vec::with_capacity(FIT_SAMPLES); checked.len()];
     let how;
     match a.spec.kernel {

@@ -43,8 +43,17 @@ impl Limit {
     }
 
     /// Φ_max to f64 precision (`None` when there is none).
+    ///
+    /// To relative precision: an absolute 10⁻¹⁸ is only 10⁻¹¹ relative at
+    /// Φ_max ≈ 10⁻⁷ (a tiny damping ratio), and [`Limit::search_cap`] would
+    /// then step down thousands of ulps one exact comparison at a time.
     pub fn phi_max_f64(&self) -> Option<f64> {
-        self.phi_max.as_ref().map(|m| q_to_f64(&m.approx(&poly::q(1, 1_000_000_000_000_000))))
+        let m = self.phi_max.as_ref()?;
+        let coarse = q_to_f64(&m.approx(&poly::q(1, 1_000_000_000_000_000)));
+        let width = f64_to_q(coarse.abs() * 2f64.powi(-60))
+            .filter(|w| *w > Q::from_integer(0.into()))
+            .unwrap_or_else(|| poly::q(1, 1_000_000_000_000_000));
+        Some(q_to_f64(&m.approx(&width)))
     }
 
     /// The largest step a search may try: the largest `f64` strictly below

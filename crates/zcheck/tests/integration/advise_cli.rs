@@ -139,9 +139,16 @@ fn bad_input_is_an_error() {
 /// region in the scene path). The recommendation's simulation agrees.
 #[test]
 fn one_spring_is_a_one_mode_scene() {
-    for (freq, tick, damping) in
-        [("120", "60", None), ("19", "60", None), ("9", "60", Some("0.25"))]
-    {
+    // 1 Hz on a 10 Hz tick over the default 1 s: a duration shorter than
+    // the simulation's fit needs (it once left every mode unchecked); and a
+    // damping ratio of 1e-20, exact, whose limits are 1e-7 wide.
+    for (freq, tick, damping) in [
+        ("120", "60", None),
+        ("19", "60", None),
+        ("9", "60", Some("0.25")),
+        ("1", "10", None),
+        ("1", "10", Some("1e-20")),
+    ] {
         let mut args = vec!["advise", "--freq", freq, "--tick", tick, "--format", "json"];
         if let Some(d) = damping {
             args.extend(["--damping", d]);
@@ -161,6 +168,7 @@ fn one_spring_is_a_one_mode_scene() {
             assert_eq!(m["substeps_stable"], c["substeps_stable"], "{freq} Hz, {name}");
             if let Some(sim) = c["simulated"].as_object() {
                 assert_eq!(sim["agree"], true, "{freq} Hz, {name}: {v}");
+                assert!(sim["modes_checked"].as_u64() >= Some(1), "{freq} Hz, {name}: {v}");
             }
         }
         assert!(v["recommended"].is_object(), "{v}");
