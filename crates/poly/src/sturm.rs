@@ -76,6 +76,45 @@ impl IntPoly {
     }
 }
 
+impl IntPoly {
+    /// The sign of the polynomial on the whole closed interval [lo, hi]
+    /// (lo ≤ hi) when interval Horner evaluation proves it constant and
+    /// non-zero; `None` when the enclosure contains zero (the polynomial may
+    /// or may not vanish there). Exact: integers throughout, the interval
+    /// written over a common denominator q > 0 and the polynomial in its
+    /// homogeneous form Σ c_k X^k q^(n−k).
+    pub(crate) fn sign_on(&self, lo: &Q, hi: &Q) -> Option<Ordering> {
+        let n = self.degree()?;
+        let q = lo.denom().lcm(hi.denom());
+        let a = lo.numer() * (&q / lo.denom());
+        let b = hi.numer() * (&q / hi.denom());
+        let (mut l, mut u) = (self.c[n].clone(), self.c[n].clone());
+        let mut qk = BigInt::one();
+        for c in self.c[..n].iter().rev() {
+            qk *= &q;
+            let p = [&l * &a, &l * &b, &u * &a, &u * &b];
+            let (mut min, mut max) = (&p[0], &p[0]);
+            for x in &p[1..] {
+                if x < min {
+                    min = x;
+                }
+                if x > max {
+                    max = x;
+                }
+            }
+            let t = c * &qk;
+            (l, u) = (min + &t, max + &t);
+        }
+        if l.is_positive() {
+            Some(Ordering::Greater)
+        } else if u.is_negative() {
+            Some(Ordering::Less)
+        } else {
+            None
+        }
+    }
+}
+
 trait CmpZero {
     fn cmp_zero(self) -> Ordering;
 }
@@ -126,23 +165,6 @@ fn chain(p: &UPoly) -> Vec<IntPoly> {
         b = crate::upoly::primitive(next);
     }
     seq
-}
-
-/// A Sturm chain kept for repeated counts.
-pub(crate) struct Chain(Vec<IntPoly>);
-
-impl Chain {
-    pub(crate) fn new(p: &UPoly) -> Chain {
-        Chain(chain(p))
-    }
-
-    /// Distinct real roots in (lo, hi].
-    pub(crate) fn count(&self, lo: &Q, hi: &Q) -> usize {
-        if hi <= lo || self.0.is_empty() {
-            return 0;
-        }
-        count_with(&self.0, lo, hi)
-    }
 }
 
 /// Sign changes of the sequence at `x`, zeros skipped.
@@ -305,12 +327,20 @@ fn beside(sf: &IntPoly, seq: &[IntPoly], toward: &Q, r: &Q) -> Q {
 /// [`isolate_real_roots`]) of a square-free `p` by bisection until its width
 /// is at most `width`. A rational root hit exactly becomes `(r, r)`.
 pub fn refine_interval(p: &UPoly, lo: &Q, hi: &Q, width: &Q) -> (Q, Q) {
+    if lo == hi {
+        return (lo.clone(), hi.clone());
+    }
+    refine_int(&IntPoly::new(p), lo, hi, width)
+}
+
+/// [`refine_interval`] with the integer form of the polynomial given (the
+/// same bisection, the same result).
+pub(crate) fn refine_int(ip: &IntPoly, lo: &Q, hi: &Q, width: &Q) -> (Q, Q) {
     let (mut lo, mut hi) = (lo.clone(), hi.clone());
     if lo == hi {
         return (lo, hi);
     }
     let two = Q::from_integer(2.into());
-    let ip = IntPoly::new(p);
     let s_lo = ip.sign_at(&lo);
     while &hi - &lo > *width {
         let mid = (&lo + &hi) / &two;

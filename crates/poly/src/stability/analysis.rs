@@ -175,7 +175,11 @@ fn run(chi: &Charpoly, p: Option<StepMatrix<'_>>, charpoly: Option<&Poly>) -> St
         points.iter().map(|pt| class_at_point(chi, &pt.at)).collect();
 
     // Boundedness exactly at every point next to a bounded interval.
-    let disc = discriminant(&chi.a);
+    // The discriminant is one of the conditions already (computed once).
+    let disc = conditions
+        .iter()
+        .find(|(name, _)| *name == Condition::Discriminant)
+        .map_or_else(|| discriminant(&chi.a), |(_, d)| d.clone());
     for (k, point) in points.iter_mut().enumerate() {
         if classes[k].is_bounded() || classes[k + 1].is_bounded() {
             point.bounded = Some(bounded_at(chi, &point.at, at_classes[k], &disc, p));
