@@ -19,7 +19,9 @@ use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
 
-use crate::sturm::{count_real_roots, isolate_real_roots, refine_int, sign, IntPoly};
+use crate::sturm::{
+    count_real_roots, isolate_real_roots, refine_int, refine_quadratic, sign, IntPoly,
+};
 use crate::{UPoly, Q};
 
 /// A real algebraic number, exact.
@@ -204,11 +206,13 @@ impl Algebraic {
     pub fn to_decimal(&self, digits: usize) -> String {
         match &self.repr {
             Repr::Rational(q) => round_decimal(q, digits),
-            Repr::Root { .. } => {
+            Repr::Root { ip, lo, hi, .. } => {
+                // Any interval around the number will do (the rounding is a
+                // property of the number), so refine quadratically.
                 let ten = Q::from_integer(10.into());
                 let mut width = Q::one() / num_traits::pow(ten.clone(), digits + 2);
                 loop {
-                    let (lo, hi) = self.refine(&width).interval();
+                    let (lo, hi) = refine_quadratic(ip, lo, hi, &width);
                     let (a, b) = (round_decimal(&lo, digits), round_decimal(&hi, digits));
                     if a == b {
                         return a;
@@ -370,7 +374,8 @@ fn sign_at_root(poly: &UPoly, ip: &IntPoly, lo: &Q, hi: &Q, g: &UPoly) -> Orderi
     // (The enclosure shrinks with the interval, so this ends.)
     let gi = IntPoly::new(g);
     let (mut lo, mut hi) = (lo.clone(), hi.clone());
-    let four = Q::from_integer(4.into());
+    // Widths w/4, w/16, w/256, …: the bits asked for double each round.
+    let mut shift = 2u32;
     loop {
         if let Some(s) = gi.sign_on(&lo, &hi) {
             return s;
@@ -378,8 +383,9 @@ fn sign_at_root(poly: &UPoly, ip: &IntPoly, lo: &Q, hi: &Q, g: &UPoly) -> Orderi
         if lo == hi {
             return gi.sign_at(&lo);
         }
-        let width = (&hi - &lo) / &four;
-        (lo, hi) = refine_int(ip, &lo, &hi, &width);
+        let width = (&hi - &lo) / Q::from_integer(BigInt::one() << shift);
+        (lo, hi) = refine_quadratic(ip, &lo, &hi, &width);
+        shift = shift.saturating_mul(2).min(1 << 16);
     }
 }
 
@@ -491,7 +497,7 @@ fn rational_roots(f: &UPoly, intervals: &[(Q, Q)]) -> Vec<Option<Q>> {
         if out[k].is_some() {
             continue;
         }
-        let (a, b) = refine_int(&ip, lo, hi, &width);
+        let (a, b) = refine_quadratic(&ip, lo, hi, &width);
         let c = if a == b { a } else { simplest_between(&a, &b) };
         if ip.sign_at(&c).is_eq() {
             out[k] = Some(c);
@@ -517,7 +523,7 @@ fn rational_roots(f: &UPoly, intervals: &[(Q, Q)]) -> Vec<Option<Q>> {
 fn rational_root_in(f: &UPoly, ip: &IntPoly, lo: &Q, hi: &Q) -> Option<Q> {
     let lead = integer_leading(f);
     let width = Q::new(BigInt::one(), lead.clone()) / Q::from_integer(2.into());
-    let (lo, hi) = refine_int(ip, lo, hi, &width);
+    let (lo, hi) = refine_quadratic(ip, lo, hi, &width);
     if lo == hi {
         return Some(lo);
     }

@@ -77,6 +77,20 @@ impl IntPoly {
 }
 
 impl IntPoly {
+    /// Σ c_k p^k q^(n−k) for x = p/q (q > 0): the value at x times q^n, an
+    /// integer of the value's sign.
+    fn scaled_value(&self, x: &Q) -> BigInt {
+        let Some(n) = self.degree() else { return BigInt::zero() };
+        let (p, q) = (x.numer(), x.denom());
+        let mut acc = self.c[n].clone();
+        let mut qk = BigInt::one();
+        for c in self.c[..n].iter().rev() {
+            qk *= q;
+            acc = acc * p + c * &qk;
+        }
+        acc
+    }
+
     /// The sign of the polynomial on the whole closed interval [lo, hi]
     /// (lo ≤ hi) when interval Horner evaluation proves it constant and
     /// non-zero; `None` when the enclosure contains zero (the polynomial may
@@ -321,6 +335,96 @@ fn beside(sf: &IntPoly, seq: &[IntPoly], toward: &Q, r: &Q) -> Q {
         }
         step /= &two;
     }
+}
+
+/// Narrows an interval `(lo, hi)` on which the polynomial `ip` changes
+/// sign (non-zero at both ends) to a sub-interval of width at most `width`
+/// on which it still changes sign, or to `(r, r)` for a root `r` met
+/// exactly. Quadratic interval refinement (Abbott): split the interval into
+/// N equal parts, guess the part holding the root from the secant through
+/// the ends, and check the guess with two signs; a right guess squares N
+/// (the number of correct bits doubles, as with Newton's method), a wrong
+/// one halves log N, down to plain bisection. Exact: every point is a
+/// rational and every decision a sign. The result is *not* the bisection
+/// result of [`refine_interval`]; use it where only the number matters.
+pub(crate) fn refine_quadratic(ip: &IntPoly, lo: &Q, hi: &Q, width: &Q) -> (Q, Q) {
+    let (mut a, mut b) = (lo.clone(), hi.clone());
+    if a == b {
+        return (a, b);
+    }
+    // Values kept as (scaled integer value, denominator^n): same sign.
+    let value = |x: &Q| (ip.scaled_value(x), num_traits::pow(x.denom().clone(), n_of(ip)));
+    let sign = |v: &(BigInt, BigInt)| v.0.sign().cmp_zero();
+    let mut fa = value(&a);
+    let mut fb = value(&b);
+    let s_a = sign(&fa);
+    debug_assert!(s_a != Ordering::Equal && s_a != sign(&fb), "a sign change");
+    // N = 2^k parts.
+    let mut k: u32 = 2;
+    while &b - &a > *width {
+        if k < 2 {
+            let mid = (&a + &b) / Q::from_integer(2.into());
+            let fm = value(&mid);
+            match sign(&fm) {
+                Ordering::Equal => return (mid.clone(), mid),
+                s if s == s_a => (a, fa) = (mid, fm),
+                _ => (b, fb) = (mid, fm),
+            }
+            k = 2;
+            continue;
+        }
+        // No finer grid than the target needs: 2^k ≤ 2(b − a)/width.
+        let ratio = (&b - &a) / width;
+        let need = ratio.numer().bits().saturating_sub(ratio.denom().bits()) + 2;
+        k = k.min(u32::try_from(need).unwrap_or(u32::MAX)).max(2);
+        let parts = BigInt::one() << k;
+        let w = (&b - &a) / Q::from_integer(parts.clone());
+        // The secant's zero a + t(b − a), t = fa / (fa − fb) in (0, 1),
+        // rounded to the nearest inner grid point.
+        // t = A·db / (A·db − B·da) for fa = A/da, fb = B/db; round(t·N).
+        let num = &fa.0 * &fb.1;
+        let mut den = &num - &fb.0 * &fa.1;
+        let mut num2 = (&num * &parts) << 1u32;
+        if den.is_negative() {
+            den = -den;
+            num2 = -num2;
+        }
+        let i = (num2 + &den).div_floor(&(&den << 1u32));
+        let i = i.clamp(BigInt::one(), &parts - BigInt::one());
+        let x = &a + &w * Q::from_integer(i);
+        let fx = value(&x);
+        let sx = sign(&fx);
+        if sx == Ordering::Equal {
+            return (x.clone(), x);
+        }
+        // The neighbouring grid point on the side of the root.
+        let y = if sx == s_a { &x + &w } else { &x - &w };
+        let fy = value(&y);
+        let sy = sign(&fy);
+        if sy == Ordering::Equal {
+            return (y.clone(), y);
+        }
+        if sx == s_a && sy != s_a {
+            (a, fa, b, fb) = (x, fx, y, fy);
+            k = k.saturating_mul(2).min(1 << 20);
+        } else if sx != s_a && sy == s_a {
+            (a, fa, b, fb) = (y, fy, x, fx);
+            k = k.saturating_mul(2).min(1 << 20);
+        } else {
+            // Wrong guess: keep the side of x that holds the root.
+            if sx == s_a {
+                (a, fa) = (y, fy);
+            } else {
+                (b, fb) = (y, fy);
+            }
+            k /= 2;
+        }
+    }
+    (a, b)
+}
+
+fn n_of(ip: &IntPoly) -> usize {
+    ip.degree().unwrap_or(0)
 }
 
 /// Narrows an isolating interval `(lo, hi)` (as returned by

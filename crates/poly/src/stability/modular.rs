@@ -55,8 +55,72 @@ fn powmod(mut a: u64, mut e: u64, p: u64) -> u64 {
     r
 }
 
+/// 1/a mod p by the extended Euclidean algorithm (a ≢ 0, p prime).
 fn inv(a: u64, p: u64) -> u64 {
-    powmod(a, p - 2, p)
+    let (mut r0, mut r1) = (p as i128, (a % p) as i128);
+    let (mut t0, mut t1) = (0i128, 1i128);
+    while r1 != 0 {
+        let q = r0 / r1;
+        (r0, r1) = (r1, r0 - q * r1);
+        (t0, t1) = (t1, t0 - q * t1);
+    }
+    debug_assert_eq!(r0, 1, "invertible");
+    t0.rem_euclid(p as i128) as u64
+}
+
+fn addmod(a: u64, b: u64, p: u64) -> u64 {
+    let s = a + b;
+    if s >= p {
+        s - p
+    } else {
+        s
+    }
+}
+
+fn submod(a: u64, b: u64, p: u64) -> u64 {
+    if a >= b {
+        a - b
+    } else {
+        a + p - b
+    }
+}
+
+/// Montgomery multiplication modulo an odd p < 2^62 with R = 2^64, used
+/// one-sided: `mul(a, b·R mod p) = a·b mod p` with a plain a, so a factor
+/// reused across a loop is converted once ([`Mont::form`]) and every product
+/// in the loop avoids a 128-bit division.
+struct Mont {
+    p: u64,
+    /// −p⁻¹ mod 2^64.
+    neg_inv: u64,
+}
+
+impl Mont {
+    fn new(p: u64) -> Mont {
+        // Newton's iteration for p⁻¹ mod 2^64 (p odd: p·p ≡ 1 mod 8).
+        let mut x = p;
+        for _ in 0..5 {
+            x = x.wrapping_mul(2u64.wrapping_sub(p.wrapping_mul(x)));
+        }
+        Mont { p, neg_inv: x.wrapping_neg() }
+    }
+
+    /// b·R mod p.
+    fn form(&self, b: u64) -> u64 {
+        (((b as u128) << 64) % self.p as u128) as u64
+    }
+
+    /// a·b·R⁻¹ mod p, for a, b < p.
+    fn mul(&self, a: u64, b: u64) -> u64 {
+        let t = a as u128 * b as u128;
+        let m = (t as u64).wrapping_mul(self.neg_inv);
+        let u = ((t + m as u128 * self.p as u128) >> 64) as u64;
+        if u >= self.p {
+            u - self.p
+        } else {
+            u
+        }
+    }
 }
 
 /// Deterministic Miller–Rabin for 64-bit integers.
@@ -112,7 +176,9 @@ fn reduce(c: &[BigInt], p: u64) -> Vec<u64> {
 }
 
 fn eval_mod(c: &[u64], x: u64, p: u64) -> u64 {
-    c.iter().rev().fold(0, |acc, &a| (mulmod(acc, x, p) + a) % p)
+    let mont = Mont::new(p);
+    let xm = mont.form(x);
+    c.iter().rev().fold(0, |acc, &a| addmod(mont.mul(acc, xm), a, p))
 }
 
 /// Newton interpolation over F_p; coefficients lowest power first. The
@@ -132,23 +198,25 @@ fn interpolate(xs: &[u64], ys: &[u64], p: u64) -> Vec<u64> {
         let r = (p % d as u64) as usize;
         inv_table[d] = (p - mulmod(q, inv_table[r], p)) % p;
     }
+    let mont = Mont::new(p);
+    let inv_table: Vec<u64> = inv_table.into_iter().map(|v| mont.form(v)).collect();
     let mut dd = ys.to_vec();
     for j in 1..n {
         for i in (j..n).rev() {
-            let num = (dd[i] + p - dd[i - 1]) % p;
-            dd[i] = mulmod(num, inv_table[(xs[i] - xs[i - j]) as usize], p);
+            let num = submod(dd[i], dd[i - 1], p);
+            dd[i] = mont.mul(num, inv_table[(xs[i] - xs[i - j]) as usize]);
         }
     }
     // Horner on the Newton form: c ← c·(x − x_k) + dd[k].
     let mut c: Vec<u64> = Vec::with_capacity(n);
     for k in (0..n).rev() {
-        let xk = xs[k];
+        let xk = mont.form(xs[k] % p);
         c.push(0);
         for i in (1..c.len()).rev() {
-            c[i] = (c[i - 1] + p - mulmod(c[i], xk, p)) % p;
+            c[i] = submod(c[i - 1], mont.mul(c[i], xk), p);
         }
-        c[0] = (p - mulmod(c[0], xk, p)) % p;
-        c[0] = (c[0] + dd[k]) % p;
+        c[0] = submod(0, mont.mul(c[0], xk), p);
+        c[0] = addmod(c[0], dd[k], p);
     }
     c
 }
@@ -227,6 +295,7 @@ pub(crate) fn det(m: &[Vec<UPoly>]) -> UPoly {
 
 fn det_mod(a: &mut [Vec<u64>], p: u64) -> u64 {
     let n = a.len();
+    let mont = Mont::new(p);
     let mut d = 1u64;
     for k in 0..n {
         let Some(piv) = (k..n).find(|&i| a[i][k] != 0) else { return 0 };
@@ -235,16 +304,16 @@ fn det_mod(a: &mut [Vec<u64>], p: u64) -> u64 {
             d = (p - d) % p;
         }
         d = mulmod(d, a[k][k], p);
-        let iv = inv(a[k][k], p);
+        // (1/a_kk)·R², so that mul(x, ·) = x/a_kk·R, the Montgomery form.
+        let iv = mont.form(mont.form(inv(a[k][k], p)));
         for i in k + 1..n {
             if a[i][k] == 0 {
                 continue;
             }
-            let f = mulmod(a[i][k], iv, p);
+            let f = mont.mul(a[i][k], iv);
             let (top, bottom) = a.split_at_mut(i);
             for (x, &y) in bottom[0][k..].iter_mut().zip(&top[k][k..]) {
-                let s = mulmod(f, y, p);
-                *x = (*x + p - s) % p;
+                *x = submod(*x, mont.mul(y, f), p);
             }
         }
     }
@@ -264,6 +333,7 @@ fn res_mod(mut f: Vec<u64>, mut g: Vec<u64>, p: u64) -> u64 {
     if f.is_empty() || g.is_empty() {
         return 0;
     }
+    let mont = Mont::new(p);
     let mut acc = 1u64;
     loop {
         let (m, n) = (f.len() - 1, g.len() - 1);
@@ -275,13 +345,14 @@ fn res_mod(mut f: Vec<u64>, mut g: Vec<u64>, p: u64) -> u64 {
         }
         // r = f mod g
         let mut r = f.clone();
-        let lg_inv = inv(g[n], p);
+        // (1/lc(g))·R²: mul(x, ·) is x/lc(g) in Montgomery form.
+        let lg_inv = mont.form(mont.form(inv(g[n], p)));
         if r.len() > n {
             for k in (0..r.len() - n).rev() {
-                let c = mulmod(r[k + n], lg_inv, p);
+                let c = mont.mul(r[k + n], lg_inv);
                 if c != 0 {
                     for (j, &gj) in g.iter().enumerate() {
-                        r[k + j] = (r[k + j] + p - mulmod(c, gj, p)) % p;
+                        r[k + j] = submod(r[k + j], mont.mul(gj, c), p);
                     }
                 }
             }
