@@ -317,17 +317,50 @@ impl Algebraic {
     /// The simplest rational strictly between `lo < hi` (smallest
     /// denominator, then numerator), found by refining both numbers until
     /// their intervals separate.
+    ///
+    /// Round m quarters both intervals (two bisection steps each), so its
+    /// state is the start refined to width w₀/4^m in one go; the first
+    /// separating round is found by doubling m and then bisecting on m
+    /// (separation only improves with m), with the same result as walking
+    /// m = 0, 1, 2, … .
     pub fn rational_between(lo: &Algebraic, hi: &Algebraic) -> Q {
-        let (mut a, mut b) = (lo.clone(), hi.clone());
-        let four = Q::from_integer(4.into());
-        loop {
-            let ((alo, ahi), (blo, bhi)) = (a.interval(), b.interval());
-            if ahi < blo {
-                return simplest_between(&ahi, &blo);
-            }
-            a = a.refine(&((&ahi - &alo) / &four));
-            b = b.refine(&((&bhi - &blo) / &four));
+        let (wa, wb) = (lo.width(), hi.width());
+        let at = |m: u64| -> (Q, Q) {
+            let scale = Q::from_integer(BigInt::one() << (2 * m));
+            let (_, ahi) = lo.refine(&(&wa / &scale)).interval();
+            let (blo, _) = hi.refine(&(&wb / &scale)).interval();
+            (ahi, blo)
+        };
+        let separated = |m: u64| {
+            let (ahi, blo) = at(m);
+            ahi < blo
+        };
+        if separated(0) {
+            let (ahi, blo) = at(0);
+            return simplest_between(&ahi, &blo);
         }
+        // separated(bad) is false, separated(good) true.
+        let (mut bad, mut good) = (0u64, 1u64);
+        while !separated(good) {
+            bad = good;
+            good *= 2;
+        }
+        while good - bad > 1 {
+            let mid = bad + (good - bad) / 2;
+            if separated(mid) {
+                good = mid;
+            } else {
+                bad = mid;
+            }
+        }
+        let (ahi, blo) = at(good);
+        simplest_between(&ahi, &blo)
+    }
+
+    /// The width of the isolating interval (zero for a rational).
+    fn width(&self) -> Q {
+        let (lo, hi) = self.interval();
+        hi - lo
     }
 
     /// Like `Display`, but writes a defining polynomial in the variable `var`.
@@ -665,18 +698,25 @@ impl Ord for Algebraic {
                         return Ordering::Equal;
                     }
                 }
-                let (mut a, mut b) = (self.clone(), other.clone());
+                // Distinct: refine both quadratically (on copies, so any
+                // intervals will do), asking for twice the bits each round.
+                let (ip1, ip2) = match (&self.repr, &other.repr) {
+                    (Repr::Root { ip: a, .. }, Repr::Root { ip: b, .. }) => (a, b),
+                    _ => unreachable!("both irrational here"),
+                };
+                let ((mut alo, mut ahi), (mut blo, mut bhi)) = (self.interval(), other.interval());
+                let mut shift = 2u32;
                 loop {
-                    let ((alo, ahi), (blo, bhi)) = (a.interval(), b.interval());
                     if ahi <= blo {
                         return Ordering::Less;
                     }
                     if bhi <= alo {
                         return Ordering::Greater;
                     }
-                    let four = Q::from_integer(4.into());
-                    a = a.refine(&((&ahi - &alo) / &four));
-                    b = b.refine(&((&bhi - &blo) / &four));
+                    let scale = Q::from_integer(BigInt::one() << shift);
+                    (alo, ahi) = refine_quadratic(ip1, &alo, &ahi, &((&ahi - &alo) / &scale));
+                    (blo, bhi) = refine_quadratic(ip2, &blo, &bhi, &((&bhi - &blo) / &scale));
+                    shift = shift.saturating_mul(2).min(1 << 16);
                 }
             }
         }
