@@ -77,11 +77,10 @@ impl IntPoly {
 }
 
 impl IntPoly {
-    /// Σ c_k p^k q^(n−k) for x = p/q (q > 0): the value at x times q^n, an
-    /// integer of the value's sign.
-    fn scaled_value(&self, x: &Q) -> BigInt {
+    /// Σ c_k p^k q^(n−k) for x = p/q (q > 0, not necessarily in lowest
+    /// terms): the value at x times q^n, an integer of the value's sign.
+    fn scaled_value_parts(&self, p: &BigInt, q: &BigInt) -> BigInt {
         let Some(n) = self.degree() else { return BigInt::zero() };
-        let (p, q) = (x.numer(), x.denom());
         let mut acc = self.c[n].clone();
         let mut qk = BigInt::one();
         for c in self.c[..n].iter().rev() {
@@ -348,79 +347,87 @@ fn beside(sf: &IntPoly, seq: &[IntPoly], toward: &Q, r: &Q) -> Q {
 /// rational and every decision a sign. The result is *not* the bisection
 /// result of [`refine_interval`]; use it where only the number matters.
 pub(crate) fn refine_quadratic(ip: &IntPoly, lo: &Q, hi: &Q, width: &Q) -> (Q, Q) {
-    let (mut a, mut b) = (lo.clone(), hi.clone());
-    if a == b {
-        return (a, b);
+    if lo == hi {
+        return (lo.clone(), hi.clone());
     }
-    // Values kept as (scaled integer value, denominator^n): same sign.
-    let value = |x: &Q| (ip.scaled_value(x), num_traits::pow(x.denom().clone(), n_of(ip)));
-    let sign = |v: &(BigInt, BigInt)| v.0.sign().cmp_zero();
-    let mut fa = value(&a);
-    let mut fb = value(&b);
-    let s_a = sign(&fa);
-    debug_assert!(s_a != Ordering::Equal && s_a != sign(&fb), "a sign change");
+    // Integers throughout: a = A/E, b = B/E over one denominator E > 0, and
+    // values f(x)·E^n (the same positive factor at every point).
+    let mut e = lo.denom().lcm(hi.denom());
+    let mut a = lo.numer() * (&e / lo.denom());
+    let mut b = hi.numer() * (&e / hi.denom());
+    let value = |x: &BigInt, e: &BigInt| ip.scaled_value_parts(x, e);
+    let sgn = |v: &BigInt| v.sign().cmp_zero();
+    let mut fa = value(&a, &e);
+    let mut fb = value(&b, &e);
+    let s_a = sgn(&fa);
+    debug_assert!(s_a != Ordering::Equal && s_a != sgn(&fb), "a sign change");
+    let (wn, wd) = (width.numer(), width.denom());
+    // Whether (b − a)/e > width.
+    let wide = |a: &BigInt, b: &BigInt, e: &BigInt| (b - a) * wd > wn * e;
     // N = 2^k parts.
     let mut k: u32 = 2;
-    while &b - &a > *width {
-        if k < 2 {
-            let mid = (&a + &b) / Q::from_integer(2.into());
-            let fm = value(&mid);
-            match sign(&fm) {
-                Ordering::Equal => return (mid.clone(), mid),
-                s if s == s_a => (a, fa) = (mid, fm),
-                _ => (b, fb) = (mid, fm),
+    while wide(&a, &b, &e) {
+        // No finer grid than the target needs: 2^k ≤ 2(b − a)/width.
+        let ratio_bits = ((&b - &a) * wd).bits().saturating_sub((wn * &e).bits()) + 2;
+        k = k.min(u32::try_from(ratio_bits).unwrap_or(u32::MAX)).max(1);
+        let parts = BigInt::one() << k;
+        // Refine the grid: denominators times 2^k.
+        let (a2, b2, e2) = (&a << k, &b << k, &e << k);
+        let step = &b - &a; // (b2 − a2)/2^k
+        let (fa2, fb2) = (&fa << (k as usize * n_of(ip)), &fb << (k as usize * n_of(ip)));
+        let i = if k == 1 {
+            BigInt::one()
+        } else {
+            // The secant's zero a + t(b − a), t = fa/(fa − fb) ∈ (0, 1),
+            // rounded to the nearest inner grid point.
+            let mut den = &fa - &fb;
+            let mut num2 = (&fa * &parts) << 1u32;
+            if den.is_negative() {
+                den = -den;
+                num2 = -num2;
             }
+            let i = (num2 + &den).div_floor(&(&den << 1u32));
+            i.clamp(BigInt::one(), &parts - BigInt::one())
+        };
+        let x = &a2 + &step * &i;
+        let fx = value(&x, &e2);
+        let sx = sgn(&fx);
+        if sx == Ordering::Equal {
+            let r = Q::new(x, e2);
+            return (r.clone(), r);
+        }
+        if k == 1 {
+            // Plain bisection.
+            (a, fa, b, fb, e) = if sx == s_a { (x, fx, b2, fb2, e2) } else { (a2, fa2, x, fx, e2) };
             k = 2;
             continue;
         }
-        // No finer grid than the target needs: 2^k ≤ 2(b − a)/width.
-        let ratio = (&b - &a) / width;
-        let need = ratio.numer().bits().saturating_sub(ratio.denom().bits()) + 2;
-        k = k.min(u32::try_from(need).unwrap_or(u32::MAX)).max(2);
-        let parts = BigInt::one() << k;
-        let w = (&b - &a) / Q::from_integer(parts.clone());
-        // The secant's zero a + t(b − a), t = fa / (fa − fb) in (0, 1),
-        // rounded to the nearest inner grid point.
-        // t = A·db / (A·db − B·da) for fa = A/da, fb = B/db; round(t·N).
-        let num = &fa.0 * &fb.1;
-        let mut den = &num - &fb.0 * &fa.1;
-        let mut num2 = (&num * &parts) << 1u32;
-        if den.is_negative() {
-            den = -den;
-            num2 = -num2;
-        }
-        let i = (num2 + &den).div_floor(&(&den << 1u32));
-        let i = i.clamp(BigInt::one(), &parts - BigInt::one());
-        let x = &a + &w * Q::from_integer(i);
-        let fx = value(&x);
-        let sx = sign(&fx);
-        if sx == Ordering::Equal {
-            return (x.clone(), x);
-        }
         // The neighbouring grid point on the side of the root.
-        let y = if sx == s_a { &x + &w } else { &x - &w };
-        let fy = value(&y);
-        let sy = sign(&fy);
+        let y = if sx == s_a { &x + &step } else { &x - &step };
+        let fy = value(&y, &e2);
+        let sy = sgn(&fy);
         if sy == Ordering::Equal {
-            return (y.clone(), y);
+            let r = Q::new(y, e2);
+            return (r.clone(), r);
         }
+        e = e2;
         if sx == s_a && sy != s_a {
             (a, fa, b, fb) = (x, fx, y, fy);
-            k = k.saturating_mul(2).min(1 << 20);
+            k = k.saturating_mul(2);
         } else if sx != s_a && sy == s_a {
             (a, fa, b, fb) = (y, fy, x, fx);
-            k = k.saturating_mul(2).min(1 << 20);
+            k = k.saturating_mul(2);
         } else {
             // Wrong guess: keep the side of x that holds the root.
             if sx == s_a {
-                (a, fa) = (y, fy);
+                (a, fa, b, fb) = (y, fy, b2, fb2);
             } else {
-                (b, fb) = (y, fy);
+                (a, fa, b, fb) = (a2, fa2, y, fy);
             }
             k /= 2;
         }
     }
-    (a, b)
+    (Q::new(a, e.clone()), Q::new(b, e))
 }
 
 fn n_of(ip: &IntPoly) -> usize {
