@@ -37,7 +37,7 @@ impl IntPoly {
         }
         let mut c: Vec<BigInt> =
             p.coeffs().iter().map(|q| q.numer() * (&den / q.denom())).collect();
-        let g = c.iter().fold(BigInt::zero(), |g, x| g.gcd(x));
+        let g = crate::upoly::content(&c);
         if !g.is_zero() && !g.is_one() {
             for x in &mut c {
                 *x /= &g;
