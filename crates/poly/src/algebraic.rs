@@ -20,7 +20,7 @@ use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
 
 use crate::sturm::{
-    count_real_roots, isolate_real_roots, refine_int, refine_quadratic, sign, IntPoly,
+    count_real_roots, isolate_squarefree, refine_int, refine_quadratic, sign, IntPoly,
 };
 use crate::{UPoly, Q};
 
@@ -68,7 +68,7 @@ impl Algebraic {
     /// the zero polynomial).
     pub fn real_roots(p: &UPoly) -> Vec<Algebraic> {
         let sf = p.squarefree();
-        let intervals = isolate_real_roots(&sf);
+        let intervals = isolate_squarefree(&sf);
         // Find the rational roots once, then reduce the irrational ones with
         // the polynomial already freed of them.
         let rational = rational_roots(&sf, &intervals);
@@ -453,7 +453,7 @@ fn reduce(f: UPoly, lo: Q, hi: Q) -> Algebraic {
     let mut f = f;
     // Drop the other rational roots: they are not ours and would only hide
     // a closed form.
-    let intervals = isolate_real_roots(&f);
+    let intervals = isolate_squarefree(&f);
     for r in rational_roots(&f, &intervals).into_iter().flatten() {
         f = f.div_rem(&UPoly::new(vec![-r, Q::one()])).0;
     }
@@ -476,7 +476,7 @@ fn even_rational_factors(f: &UPoly) -> Vec<UPoly> {
         return Vec::new();
     }
     let big_f = UPoly::new(f.coeffs().iter().step_by(2).cloned().collect()).squarefree();
-    let intervals = isolate_real_roots(&big_f);
+    let intervals = isolate_squarefree(&big_f);
     rational_roots(&big_f, &intervals)
         .into_iter()
         .flatten()

@@ -161,8 +161,11 @@ fn chain(p: &UPoly) -> Vec<IntPoly> {
     if p.is_zero() {
         return Vec::new();
     }
-    let sf = p.squarefree();
-    let a = crate::upoly::int_primitive(&sf);
+    chain_squarefree(&p.squarefree())
+}
+
+fn chain_squarefree(sf: &UPoly) -> Vec<IntPoly> {
+    let a = crate::upoly::int_primitive(sf);
     let mut b = crate::upoly::int_primitive(&sf.derivative());
     let mut seq = vec![IntPoly { c: a.clone() }];
     let mut a = a;
@@ -276,9 +279,18 @@ pub fn isolate_real_roots(p: &UPoly) -> Vec<(Q, Q)> {
     if p.degree().unwrap_or(0) == 0 {
         return Vec::new();
     }
-    let sf = p.squarefree();
-    let seq = chain(&sf);
-    let b = root_bound(&sf);
+    isolate_squarefree(&p.squarefree())
+}
+
+/// [`isolate_real_roots`] for a polynomial already square-free (its own
+/// square-free part up to a constant factor): the same intervals, without
+/// recomputing the square-free part.
+pub(crate) fn isolate_squarefree(sf: &UPoly) -> Vec<(Q, Q)> {
+    if sf.degree().unwrap_or(0) == 0 {
+        return Vec::new();
+    }
+    let seq = chain_squarefree(sf);
+    let b = root_bound(sf);
     let mut out = Vec::new();
     let lo = -b.clone();
     let n = count_with(&seq, &lo, &b);

@@ -406,12 +406,14 @@ pub(crate) fn coprime_mod_p(a: &[BigInt], b: &[BigInt]) -> bool {
 fn rem_mod(mut a: Vec<u64>, b: &[u64], p: u64) -> Vec<u64> {
     trim(&mut a);
     let n = b.len() - 1;
-    let li = inv(b[n], p);
+    let mont = Mont::new(p);
+    // (1/lc(b))·R²: mul(x, ·) is x/lc(b) in Montgomery form.
+    let li = mont.form(mont.form(inv(b[n], p)));
     while a.len() > n {
-        let c = mulmod(a[a.len() - 1], li, p);
+        let c = mont.mul(a[a.len() - 1], li);
         let s = a.len() - 1 - n;
         for (j, &bj) in b.iter().enumerate() {
-            a[s + j] = (a[s + j] + p - mulmod(c, bj, p)) % p;
+            a[s + j] = submod(a[s + j], mont.mul(bj, c), p);
         }
         trim(&mut a);
     }
@@ -433,13 +435,15 @@ fn mul_mod_poly(a: &[u64], b: &[u64], p: u64) -> Vec<u64> {
     if a.is_empty() || b.is_empty() {
         return Vec::new();
     }
+    let mont = Mont::new(p);
     let mut c = vec![0u64; a.len() + b.len() - 1];
     for (i, &x) in a.iter().enumerate() {
         if x == 0 {
             continue;
         }
+        let xm = mont.form(x);
         for (j, &y) in b.iter().enumerate() {
-            c[i + j] = (c[i + j] + mulmod(x, y, p)) % p;
+            c[i + j] = addmod(c[i + j], mont.mul(y, xm), p);
         }
     }
     c
