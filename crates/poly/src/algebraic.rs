@@ -509,7 +509,14 @@ fn reduce_irrational_with(mut f: UPoly, factors: &[UPoly], lo: Q, hi: Q) -> Alge
 fn rational_roots(f: &UPoly, intervals: &[(Q, Q)]) -> Vec<Option<Q>> {
     let mut out: Vec<Option<Q>> =
         intervals.iter().map(|(lo, hi)| (lo == hi).then(|| lo.clone())).collect();
-    // Roots at zero are found by bisection (0 is a dyadic point).
+    // A root at zero is usually met by bisection (0 is a dyadic point), but
+    // not when it is alone in the first interval (−B, B): mark it here.
+    if f.coeffs().first().is_some_and(Zero::is_zero) {
+        let zero = Q::zero();
+        if let Some(k) = intervals.iter().position(|(lo, hi)| *lo <= zero && zero <= *hi) {
+            out[k] = Some(zero);
+        }
+    }
     let zero_free = {
         let lowest = f.coeffs().iter().position(|c| !c.is_zero()).unwrap_or(0);
         UPoly::new(f.coeffs()[lowest..].to_vec())
