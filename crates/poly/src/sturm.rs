@@ -142,10 +142,6 @@ impl CmpZero for num_bigint::Sign {
     }
 }
 
-/// The sign of `p(x)`, exactly, without fractions.
-pub(crate) fn sign_at(p: &UPoly, x: &Q) -> Ordering {
-    IntPoly::new(p).sign_at(x)
-}
 
 /// The Sturm sequence of `p` (of its square-free part, so that counts see
 /// each distinct root once), each term scaled by a positive rational to

@@ -44,6 +44,9 @@ use super::Condition;
 pub(crate) struct Charpoly {
     /// a[k] multiplies z^k; the last is non-zero.
     pub a: Vec<UPoly>,
+    /// For degree 2: the sign polynomials of the quadratic rules, formed on
+    /// first use and reused at every sample and point.
+    quad: std::sync::OnceLock<super::point::QuadPolys>,
 }
 
 impl Charpoly {
@@ -75,11 +78,16 @@ impl Charpoly {
         while a.last().is_some_and(UPoly::is_zero) {
             a.pop();
         }
-        Charpoly { a: integer_scaled(&a) }
+        Charpoly { a: integer_scaled(&a), quad: std::sync::OnceLock::new() }
     }
 
     pub fn degree(&self) -> usize {
         self.a.len() - 1
+    }
+
+    /// The sign polynomials of a second-order χ (degree 2 only).
+    pub fn quad(&self) -> &super::point::QuadPolys {
+        self.quad.get_or_init(|| super::point::QuadPolys::new(&self.a))
     }
 
     /// χ at a rational Φ, as a polynomial in z.
@@ -449,7 +457,7 @@ mod tests {
         let rev: Vec<UPoly> = a.iter().rev().cloned().collect();
         let r = modular::resultant(&a, &rev);
         let s = unit_circle_condition(&a);
-        let chi = Charpoly { a: a.clone() };
+        let chi = Charpoly::from_coeffs(a.clone());
         let p1 = chi.value_at_z(&Q::one());
         let m1 = chi.value_at_z(&-Q::one());
         let rhs = &(&(&p1 * &m1) * &s) * &s;
