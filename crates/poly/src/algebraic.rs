@@ -476,6 +476,15 @@ fn even_rational_factors(f: &UPoly) -> Vec<UPoly> {
         return Vec::new();
     }
     let big_f = UPoly::new(f.coeffs().iter().step_by(2).cloned().collect()).squarefree();
+    // No root modulo a good prime: no rational root, nothing to isolate.
+    let nonzero_constant = big_f.coeffs().first().is_some_and(|c| !c.is_zero());
+    if nonzero_constant
+        && big_f.degree().unwrap_or(0) > 0
+        && crate::stability::modular::rational_root_bound(&crate::upoly::int_primitive(&big_f))
+            == Some(0)
+    {
+        return Vec::new();
+    }
     let intervals = isolate_squarefree(&big_f);
     rational_roots(&big_f, &intervals)
         .into_iter()
