@@ -6,7 +6,7 @@
 //! |ρ − 1| is well above rounding. The exact half (Jury's test at the
 //! rational samples) is in `poly`'s tests.
 
-use check::witness::eigenvalues_nalgebra;
+use check::witness::{eigenvalues_faer, eigenvalues_nalgebra};
 use check::{Params, ParamsF64};
 use poly::stability::{analyze, Stability};
 use poly::{Method, Q};
@@ -76,7 +76,11 @@ proptest! {
                 continue;
             }
             let step = check::numeric::Step::compile(&m, &Params::phi(phi)).unwrap();
-            let eig = eigenvalues_nalgebra(&step.transition_matrix()).unwrap();
+            let p = step.transition_matrix();
+            // Either eigen-solver; when neither converges the point says nothing.
+            let Ok(eig) = eigenvalues_nalgebra(&p).or_else(|_| eigenvalues_faer(&p)) else {
+                continue;
+            };
             let rho = eig.iter().map(|z| z.norm()).fold(0.0, f64::max);
             if (rho - 1.0).abs() < INCONCLUSIVE {
                 continue;

@@ -122,3 +122,15 @@ proptest! {
         }
     }
 }
+
+/// Found by the eigenvalue scan: a double root fixed at +1 for every Φ
+/// (χ(1) ≡ 0) hid the third root's crossing of +1 at Φ = √3.
+#[test]
+fn a_root_fixed_at_one_does_not_hide_another_crossing_it() {
+    let src = "method gen\nstate x0 x1 x2\nx0 = x0 + 1*x1\nx1 = x1 + 1*x2\nx2 = x2 + -1*x2 + 1/3*Phi^2*x2\n";
+    let chi = poly::charpoly(&Method::parse("gen.zm", src).unwrap()).unwrap();
+    let r = analyze(&chi).unwrap();
+    assert!(r.critical_points.iter().any(|p| p.at.to_string() == "sqrt(3)"), "{r:#?}");
+    let above = r.intervals.last().unwrap();
+    assert!(above.counts.outside > 0, "{r:#?}");
+}
