@@ -142,7 +142,6 @@ impl CmpZero for num_bigint::Sign {
     }
 }
 
-
 /// The Sturm sequence of `p` (of its square-free part, so that counts see
 /// each distinct root once), each term scaled by a positive rational to
 /// primitive integer coefficients. Empty for the zero polynomial.

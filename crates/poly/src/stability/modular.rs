@@ -558,7 +558,10 @@ mod tests {
                     assert_eq!(inv(a, p), powmod(a, p - 2, p));
                 }
                 assert_eq!(addmod(a, b, p), ((a as u128 + b as u128) % p as u128) as u64);
-                assert_eq!(submod(a, b, p), ((a as u128 + p as u128 - b as u128) % p as u128) as u64);
+                assert_eq!(
+                    submod(a, b, p),
+                    ((a as u128 + p as u128 - b as u128) % p as u128) as u64
+                );
             }
         }
     }

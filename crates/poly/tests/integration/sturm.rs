@@ -400,7 +400,7 @@ proptest! {
                         if count_real_roots(&g, &lo, &hi) == 0 && !g.eval(&lo).is_zero_q() {
                             break g.eval(&hi).cmp(&Q::default());
                         }
-                        w = w / q(16, 1);
+                        w /= q(16, 1);
                     }
                 }
             };
