@@ -13,12 +13,15 @@
 
 use std::cmp::Ordering;
 use std::fmt;
+use std::sync::Arc;
 
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
 
-use crate::sturm::{count_real_roots, isolate_real_roots, refine_interval, sign, sign_at, IntPoly};
+use crate::sturm::{
+    count_real_roots, isolate_squarefree, refine_int, refine_quadratic, sign, IntPoly,
+};
 use crate::{UPoly, Q};
 
 /// A real algebraic number, exact.
@@ -32,12 +35,22 @@ enum Repr {
     Rational(Q),
     /// An irrational root: `poly` monic, square-free, degree ≥ 2, without
     /// rational roots; exactly one root in (lo, hi); poly(lo), poly(hi)
-    /// non-zero with opposite signs.
+    /// non-zero with opposite signs. `ip` is poly's primitive integer form,
+    /// kept so that signs at rationals (comparisons, refinement) cost one
+    /// evaluation.
     Root {
         poly: UPoly,
+        ip: Arc<IntPoly>,
         lo: Q,
         hi: Q,
     },
+}
+
+/// The irrational root of `poly` in (lo, hi) (the invariants of
+/// [`Repr::Root`] hold).
+fn root(poly: UPoly, lo: Q, hi: Q) -> Algebraic {
+    let ip = Arc::new(IntPoly::new(&poly));
+    Algebraic { repr: Repr::Root { poly, ip, lo, hi } }
 }
 
 impl Algebraic {
@@ -55,7 +68,7 @@ impl Algebraic {
     /// the zero polynomial).
     pub fn real_roots(p: &UPoly) -> Vec<Algebraic> {
         let sf = p.squarefree();
-        let intervals = isolate_real_roots(&sf);
+        let intervals = isolate_squarefree(&sf);
         // Find the rational roots once, then reduce the irrational ones with
         // the polynomial already freed of them.
         let rational = rational_roots(&sf, &intervals);
@@ -133,10 +146,10 @@ impl Algebraic {
     pub fn refine(&self, width: &Q) -> Algebraic {
         match &self.repr {
             Repr::Rational(_) => self.clone(),
-            Repr::Root { poly, lo, hi } => {
-                let (lo, hi) = refine_interval(poly, lo, hi, width);
+            Repr::Root { poly, ip, lo, hi } => {
+                let (lo, hi) = refine_int(ip, lo, hi, width);
                 debug_assert!(lo != hi, "an irrational root was hit exactly");
-                Algebraic { repr: Repr::Root { poly: poly.clone(), lo, hi } }
+                Algebraic { repr: Repr::Root { poly: poly.clone(), ip: ip.clone(), lo, hi } }
             }
         }
     }
@@ -157,12 +170,12 @@ impl Algebraic {
     pub fn cmp_rational(&self, r: &Q) -> Ordering {
         match &self.repr {
             Repr::Rational(q) => q.cmp(r),
-            Repr::Root { poly, lo, hi } => {
+            Repr::Root { ip, lo, hi, .. } => {
                 if r <= lo {
                     Ordering::Greater
                 } else if r >= hi {
                     Ordering::Less
-                } else if sign_at(poly, r) == sign_at(poly, lo) {
+                } else if ip.sign_at(r) == ip.sign_at(lo) {
                     // No sign change in (lo, r], so the root lies above r
                     // (poly(r) is non-zero: poly has no rational roots).
                     Ordering::Greater
@@ -177,7 +190,7 @@ impl Algebraic {
     pub fn sign_of(&self, g: &UPoly) -> Ordering {
         match &self.repr {
             Repr::Rational(q) => sign(&g.eval(q)),
-            Repr::Root { poly, lo, hi } => sign_at_root(poly, lo, hi, g),
+            Repr::Root { poly, ip, lo, hi } => sign_at_root(poly, ip, lo, hi, g),
         }
     }
 
@@ -193,11 +206,13 @@ impl Algebraic {
     pub fn to_decimal(&self, digits: usize) -> String {
         match &self.repr {
             Repr::Rational(q) => round_decimal(q, digits),
-            Repr::Root { .. } => {
+            Repr::Root { ip, lo, hi, .. } => {
+                // Any interval around the number will do (the rounding is a
+                // property of the number), so refine quadratically.
                 let ten = Q::from_integer(10.into());
                 let mut width = Q::one() / num_traits::pow(ten.clone(), digits + 2);
                 loop {
-                    let (lo, hi) = self.refine(&width).interval();
+                    let (lo, hi) = refine_quadratic(ip, lo, hi, &width);
                     let (a, b) = (round_decimal(&lo, digits), round_decimal(&hi, digits));
                     if a == b {
                         return a;
@@ -212,9 +227,9 @@ impl Algebraic {
     /// ("2", "-1/3"), roots of quadratics ("sqrt(2)", "2*sqrt(5) - 2") and of
     /// biquadratics x⁴ + b x² + c ("sqrt(2*sqrt(5) - 2)").
     pub fn closed_form(&self) -> Option<String> {
-        let (poly, lo, hi) = match &self.repr {
+        let (poly, ip, lo, hi) = match &self.repr {
             Repr::Rational(q) => return Some(q.to_string()),
-            Repr::Root { poly, lo, hi } => (poly, lo, hi),
+            Repr::Root { poly, ip, lo, hi } => (poly, ip, lo, hi),
         };
         let c = poly.coeffs();
         match poly.degree() {
@@ -230,7 +245,7 @@ impl Algebraic {
                 let centre = -&c[2] / Q::from_integer(2.into());
                 let radicand = &centre * &centre - &c[0];
                 let shifted = UPoly::new(vec![-centre.clone(), Q::zero(), Q::one()]);
-                let plus = sign_at_root(poly, lo, hi, &shifted) == Ordering::Greater;
+                let plus = sign_at_root(poly, ip, lo, hi, &shifted) == Ordering::Greater;
                 let inner = quadratic_form(&centre, &radicand, plus);
                 let negative = self.sign() == Ordering::Less;
                 Some(format!("{}sqrt({inner})", if negative { "-" } else { "" }))
@@ -243,9 +258,9 @@ impl Algebraic {
     /// f(x) = E(x²) + x·O(x²): every square of a root of f is a root of
     /// E(y)² − y·O(y)².
     pub fn square(&self) -> Algebraic {
-        let (poly, mut lo, mut hi) = match &self.repr {
+        let (poly, ip, mut lo, mut hi) = match &self.repr {
             Repr::Rational(q) => return Algebraic::from_rational(q * q),
-            Repr::Root { poly, lo, hi } => (poly.clone(), lo.clone(), hi.clone()),
+            Repr::Root { poly, ip, lo, hi } => (poly.clone(), ip.clone(), lo.clone(), hi.clone()),
         };
         let even = UPoly::new(poly.coeffs().iter().step_by(2).cloned().collect());
         let odd = UPoly::new(poly.coeffs().iter().skip(1).step_by(2).cloned().collect());
@@ -264,7 +279,7 @@ impl Algebraic {
                 }
             }
             let width = (&hi - &lo) / &four;
-            (lo, hi) = refine_interval(&poly, &lo, &hi, &width);
+            (lo, hi) = refine_int(&ip, &lo, &hi, &width);
         }
     }
 
@@ -284,13 +299,9 @@ impl Algebraic {
     pub fn neg(&self) -> Algebraic {
         match &self.repr {
             Repr::Rational(q) => Algebraic::from_rational(-q.clone()),
-            Repr::Root { poly, lo, hi } => Algebraic {
-                repr: Repr::Root {
-                    poly: poly.negate_x().monic(),
-                    lo: -hi.clone(),
-                    hi: -lo.clone(),
-                },
-            },
+            Repr::Root { poly, lo, hi, .. } => {
+                root(poly.negate_x().monic(), -hi.clone(), -lo.clone())
+            }
         }
     }
 
@@ -306,17 +317,50 @@ impl Algebraic {
     /// The simplest rational strictly between `lo < hi` (smallest
     /// denominator, then numerator), found by refining both numbers until
     /// their intervals separate.
+    ///
+    /// Round m quarters both intervals (two bisection steps each), so its
+    /// state is the start refined to width w₀/4^m in one go; the first
+    /// separating round is found by doubling m and then bisecting on m
+    /// (separation only improves with m), with the same result as walking
+    /// m = 0, 1, 2, … .
     pub fn rational_between(lo: &Algebraic, hi: &Algebraic) -> Q {
-        let (mut a, mut b) = (lo.clone(), hi.clone());
-        let four = Q::from_integer(4.into());
-        loop {
-            let ((alo, ahi), (blo, bhi)) = (a.interval(), b.interval());
-            if ahi < blo {
-                return simplest_between(&ahi, &blo);
-            }
-            a = a.refine(&((&ahi - &alo) / &four));
-            b = b.refine(&((&bhi - &blo) / &four));
+        let (wa, wb) = (lo.width(), hi.width());
+        let at = |m: u64| -> (Q, Q) {
+            let scale = Q::from_integer(BigInt::one() << (2 * m));
+            let (_, ahi) = lo.refine(&(&wa / &scale)).interval();
+            let (blo, _) = hi.refine(&(&wb / &scale)).interval();
+            (ahi, blo)
+        };
+        let separated = |m: u64| {
+            let (ahi, blo) = at(m);
+            ahi < blo
+        };
+        if separated(0) {
+            let (ahi, blo) = at(0);
+            return simplest_between(&ahi, &blo);
         }
+        // separated(bad) is false, separated(good) true.
+        let (mut bad, mut good) = (0u64, 1u64);
+        while !separated(good) {
+            bad = good;
+            good *= 2;
+        }
+        while good - bad > 1 {
+            let mid = bad + (good - bad) / 2;
+            if separated(mid) {
+                good = mid;
+            } else {
+                bad = mid;
+            }
+        }
+        let (ahi, blo) = at(good);
+        simplest_between(&ahi, &blo)
+    }
+
+    /// The width of the isolating interval (zero for a rational).
+    fn width(&self) -> Q {
+        let (lo, hi) = self.interval();
+        hi - lo
     }
 
     /// Like `Display`, but writes a defining polynomial in the variable `var`.
@@ -346,32 +390,51 @@ pub(crate) fn simplest_between(l: &Q, r: &Q) -> Q {
     fl + Q::one() / simplest_between(&(Q::one() / frac_r), &(Q::one() / frac_l))
 }
 
-/// The sign of `g` at the unique root of `poly` in (lo, hi).
-fn sign_at_root(poly: &UPoly, lo: &Q, hi: &Q, g: &UPoly) -> Ordering {
+/// The sign of `g` at the unique root of `poly` in (lo, hi) (`ip` the
+/// integer form of `poly`; `poly` square-free, non-zero at lo and hi).
+fn sign_at_root(poly: &UPoly, ip: &IntPoly, lo: &Q, hi: &Q, g: &UPoly) -> Ordering {
     if g.is_zero() {
         return Ordering::Equal;
     }
     if g.degree() == Some(0) {
         return sign(&g.coeff(0));
     }
-    let h = poly.gcd(g);
-    // h divides poly, so its only possible root in (lo, hi) is our number;
-    // hi is not a root of poly, hence not of h.
-    if h.degree().unwrap_or(0) > 0 && count_real_roots(&h, lo, hi) > 0 {
+    if vanishes_at_root(poly, lo, hi, g) {
         return Ordering::Equal;
     }
-    // g does not vanish at the number: narrow the interval until g has no
-    // root in [lo, hi], then g's sign anywhere there is the answer.
+    // g does not vanish at the number: narrow the interval until interval
+    // evaluation of g over [lo, hi] excludes zero; that sign is the answer.
+    // (The enclosure shrinks with the interval, so this ends.)
     let gi = IntPoly::new(g);
-    let chain = crate::sturm::Chain::new(g);
     let (mut lo, mut hi) = (lo.clone(), hi.clone());
-    let four = Q::from_integer(4.into());
+    // Widths w/4, w/16, w/256, …: the bits asked for double each round.
+    let mut shift = 2u32;
     loop {
-        if chain.count(&lo, &hi) == 0 && !gi.sign_at(&lo).is_eq() {
-            return gi.sign_at(&hi);
+        if let Some(s) = gi.sign_on(&lo, &hi) {
+            return s;
         }
-        let width = (&hi - &lo) / &four;
-        (lo, hi) = refine_interval(poly, &lo, &hi, &width);
+        if lo == hi {
+            return gi.sign_at(&lo);
+        }
+        let width = (&hi - &lo) / Q::from_integer(BigInt::one() << shift);
+        (lo, hi) = refine_quadratic(ip, &lo, &hi, &width);
+        shift = shift.saturating_mul(2).min(1 << 16);
+    }
+}
+
+/// Whether `g` vanishes at the unique root of the square-free `poly` in
+/// (lo, hi), where poly(lo), poly(hi) ≠ 0: h = gcd(poly, g) divides poly,
+/// so its roots are simple and at most one lies in (lo, hi), and h is
+/// non-zero at lo and hi; it has that root exactly when it changes sign.
+fn vanishes_at_root(poly: &UPoly, lo: &Q, hi: &Q, g: &UPoly) -> bool {
+    let h = poly.gcd(g);
+    match h.degree() {
+        None | Some(0) => false,
+        Some(d) if Some(d) == poly.degree() => true,
+        Some(_) => {
+            let hi_poly = IntPoly::new(&h);
+            hi_poly.sign_at(lo) != hi_poly.sign_at(hi)
+        }
     }
 }
 
@@ -390,7 +453,7 @@ fn reduce(f: UPoly, lo: Q, hi: Q) -> Algebraic {
     let mut f = f;
     // Drop the other rational roots: they are not ours and would only hide
     // a closed form.
-    let intervals = isolate_real_roots(&f);
+    let intervals = isolate_squarefree(&f);
     for r in rational_roots(&f, &intervals).into_iter().flatten() {
         f = f.div_rem(&UPoly::new(vec![-r, Q::one()])).0;
     }
@@ -413,7 +476,16 @@ fn even_rational_factors(f: &UPoly) -> Vec<UPoly> {
         return Vec::new();
     }
     let big_f = UPoly::new(f.coeffs().iter().step_by(2).cloned().collect()).squarefree();
-    let intervals = isolate_real_roots(&big_f);
+    // No root modulo a good prime: no rational root, nothing to isolate.
+    let nonzero_constant = big_f.coeffs().first().is_some_and(|c| !c.is_zero());
+    if nonzero_constant
+        && big_f.degree().unwrap_or(0) > 0
+        && crate::stability::modular::rational_root_bound(&crate::upoly::int_primitive(&big_f))
+            == Some(0)
+    {
+        return Vec::new();
+    }
+    let intervals = isolate_squarefree(&big_f);
     rational_roots(&big_f, &intervals)
         .into_iter()
         .flatten()
@@ -426,7 +498,7 @@ fn even_rational_factors(f: &UPoly) -> Vec<UPoly> {
 /// square root of a rational) or it goes.
 fn reduce_irrational_with(mut f: UPoly, factors: &[UPoly], lo: Q, hi: Q) -> Algebraic {
     for factor in factors {
-        if sign_at_root(&f, &lo, &hi, factor) == Ordering::Equal {
+        if vanishes_at_root(&f, &lo, &hi, factor) {
             f = factor.clone();
             break;
         }
@@ -435,7 +507,7 @@ fn reduce_irrational_with(mut f: UPoly, factors: &[UPoly], lo: Q, hi: Q) -> Alge
             f = quotient;
         }
     }
-    Algebraic { repr: Repr::Root { poly: f.monic(), lo, hi } }
+    root(f.monic(), lo, hi)
 }
 
 /// The rational root in each isolating interval of the square-free `f`, if
@@ -446,7 +518,14 @@ fn reduce_irrational_with(mut f: UPoly, factors: &[UPoly], lo: Q, hi: Q) -> Alge
 fn rational_roots(f: &UPoly, intervals: &[(Q, Q)]) -> Vec<Option<Q>> {
     let mut out: Vec<Option<Q>> =
         intervals.iter().map(|(lo, hi)| (lo == hi).then(|| lo.clone())).collect();
-    // Roots at zero are found by bisection (0 is a dyadic point).
+    // A root at zero is usually met by bisection (0 is a dyadic point), but
+    // not when it is alone in the first interval (−B, B): mark it here.
+    if f.coeffs().first().is_some_and(Zero::is_zero) {
+        let zero = Q::zero();
+        if let Some(k) = intervals.iter().position(|(lo, hi)| *lo <= zero && zero <= *hi) {
+            out[k] = Some(zero);
+        }
+    }
     let zero_free = {
         let lowest = f.coeffs().iter().position(|c| !c.is_zero()).unwrap_or(0);
         UPoly::new(f.coeffs()[lowest..].to_vec())
@@ -462,13 +541,14 @@ fn rational_roots(f: &UPoly, intervals: &[(Q, Q)]) -> Vec<Option<Q>> {
     }
     let width = Q::new(BigInt::one(), BigInt::one() << 48);
     let mut found = found_nonzero;
+    let ip = IntPoly::new(f);
     for (k, (lo, hi)) in intervals.iter().enumerate() {
         if out[k].is_some() {
             continue;
         }
-        let (a, b) = refine_interval(f, lo, hi, &width);
+        let (a, b) = refine_quadratic(&ip, lo, hi, &width);
         let c = if a == b { a } else { simplest_between(&a, &b) };
-        if sign_at(f, &c).is_eq() {
+        if ip.sign_at(&c).is_eq() {
             out[k] = Some(c);
             found += 1;
         }
@@ -478,7 +558,7 @@ fn rational_roots(f: &UPoly, intervals: &[(Q, Q)]) -> Vec<Option<Q>> {
     }
     for (k, (lo, hi)) in intervals.iter().enumerate() {
         if out[k].is_none() {
-            out[k] = rational_root_in(f, lo, hi);
+            out[k] = rational_root_in(f, &ip, lo, hi);
         }
     }
     out
@@ -489,10 +569,10 @@ fn rational_roots(f: &UPoly, intervals: &[(Q, Q)]) -> Vec<Option<Q>> {
 /// primitive integer form with leading coefficient a_n is j / a_n for an
 /// integer j, so once the interval is narrower than 1/|a_n| one candidate
 /// remains.
-fn rational_root_in(f: &UPoly, lo: &Q, hi: &Q) -> Option<Q> {
+fn rational_root_in(f: &UPoly, ip: &IntPoly, lo: &Q, hi: &Q) -> Option<Q> {
     let lead = integer_leading(f);
     let width = Q::new(BigInt::one(), lead.clone()) / Q::from_integer(2.into());
-    let (lo, hi) = refine_interval(f, lo, hi, &width);
+    let (lo, hi) = refine_quadratic(ip, lo, hi, &width);
     if lo == hi {
         return Some(lo);
     }
@@ -500,7 +580,7 @@ fn rational_root_in(f: &UPoly, lo: &Q, hi: &Q) -> Option<Q> {
     // The smallest j with j / a_n > lo; at most one such candidate fits.
     let j = (&lo * &lead_q).floor().to_integer() + BigInt::one();
     let candidate = Q::new(j, lead);
-    (candidate < hi && sign_at(f, &candidate).is_eq()).then_some(candidate)
+    (candidate < hi && ip.sign_at(&candidate).is_eq()).then_some(candidate)
 }
 
 /// |a_n| of the primitive integer polynomial proportional to `f`.
@@ -612,8 +692,8 @@ impl Ord for Algebraic {
             (_, Repr::Rational(b)) => self.cmp_rational(b),
             (Repr::Rational(a), _) => other.cmp_rational(a).reverse(),
             (
-                Repr::Root { poly: p1, lo: lo1, hi: hi1 },
-                Repr::Root { poly: p2, lo: lo2, hi: hi2 },
+                Repr::Root { poly: p1, lo: lo1, hi: hi1, .. },
+                Repr::Root { poly: p2, lo: lo2, hi: hi2, .. },
             ) => {
                 if hi1 <= lo2 {
                     return Ordering::Less;
@@ -624,21 +704,35 @@ impl Ord for Algebraic {
                 let g = p1.gcd(p2);
                 let lo = lo1.max(lo2);
                 let hi = hi1.min(hi2);
-                if g.degree().unwrap_or(0) > 0 && lo < hi && count_real_roots(&g, lo, hi) > 0 {
-                    return Ordering::Equal;
+                // g divides both square-free polynomials, so it has at most
+                // one root in (lo, hi), a simple one, and none at lo or hi
+                // (each is an end of an isolating interval of p1 or p2): it
+                // has one exactly when it changes sign.
+                if g.degree().unwrap_or(0) > 0 && lo < hi {
+                    let gi = IntPoly::new(&g);
+                    if gi.sign_at(lo) != gi.sign_at(hi) {
+                        return Ordering::Equal;
+                    }
                 }
-                let (mut a, mut b) = (self.clone(), other.clone());
+                // Distinct: refine both quadratically (on copies, so any
+                // intervals will do), asking for twice the bits each round.
+                let (ip1, ip2) = match (&self.repr, &other.repr) {
+                    (Repr::Root { ip: a, .. }, Repr::Root { ip: b, .. }) => (a, b),
+                    _ => unreachable!("both irrational here"),
+                };
+                let ((mut alo, mut ahi), (mut blo, mut bhi)) = (self.interval(), other.interval());
+                let mut shift = 2u32;
                 loop {
-                    let ((alo, ahi), (blo, bhi)) = (a.interval(), b.interval());
                     if ahi <= blo {
                         return Ordering::Less;
                     }
                     if bhi <= alo {
                         return Ordering::Greater;
                     }
-                    let four = Q::from_integer(4.into());
-                    a = a.refine(&((&ahi - &alo) / &four));
-                    b = b.refine(&((&bhi - &blo) / &four));
+                    let scale = Q::from_integer(BigInt::one() << shift);
+                    (alo, ahi) = refine_quadratic(ip1, &alo, &ahi, &((&ahi - &alo) / &scale));
+                    (blo, bhi) = refine_quadratic(ip2, &blo, &bhi, &((&bhi - &blo) / &scale));
+                    shift = shift.saturating_mul(2).min(1 << 16);
                 }
             }
         }

@@ -37,7 +37,7 @@ impl IntPoly {
         }
         let mut c: Vec<BigInt> =
             p.coeffs().iter().map(|q| q.numer() * (&den / q.denom())).collect();
-        let g = c.iter().fold(BigInt::zero(), |g, x| g.gcd(x));
+        let g = crate::upoly::content(&c);
         if !g.is_zero() && !g.is_one() {
             for x in &mut c {
                 *x /= &g;
@@ -76,6 +76,58 @@ impl IntPoly {
     }
 }
 
+impl IntPoly {
+    /// Σ c_k p^k q^(n−k) for x = p/q (q > 0, not necessarily in lowest
+    /// terms): the value at x times q^n, an integer of the value's sign.
+    fn scaled_value_parts(&self, p: &BigInt, q: &BigInt) -> BigInt {
+        let Some(n) = self.degree() else { return BigInt::zero() };
+        let mut acc = self.c[n].clone();
+        let mut qk = BigInt::one();
+        for c in self.c[..n].iter().rev() {
+            qk *= q;
+            acc = acc * p + c * &qk;
+        }
+        acc
+    }
+
+    /// The sign of the polynomial on the whole closed interval [lo, hi]
+    /// (lo ≤ hi) when interval Horner evaluation proves it constant and
+    /// non-zero; `None` when the enclosure contains zero (the polynomial may
+    /// or may not vanish there). Exact: integers throughout, the interval
+    /// written over a common denominator q > 0 and the polynomial in its
+    /// homogeneous form Σ c_k X^k q^(n−k).
+    pub(crate) fn sign_on(&self, lo: &Q, hi: &Q) -> Option<Ordering> {
+        let n = self.degree()?;
+        let q = lo.denom().lcm(hi.denom());
+        let a = lo.numer() * (&q / lo.denom());
+        let b = hi.numer() * (&q / hi.denom());
+        let (mut l, mut u) = (self.c[n].clone(), self.c[n].clone());
+        let mut qk = BigInt::one();
+        for c in self.c[..n].iter().rev() {
+            qk *= &q;
+            let p = [&l * &a, &l * &b, &u * &a, &u * &b];
+            let (mut min, mut max) = (&p[0], &p[0]);
+            for x in &p[1..] {
+                if x < min {
+                    min = x;
+                }
+                if x > max {
+                    max = x;
+                }
+            }
+            let t = c * &qk;
+            (l, u) = (min + &t, max + &t);
+        }
+        if l.is_positive() {
+            Some(Ordering::Greater)
+        } else if u.is_negative() {
+            Some(Ordering::Less)
+        } else {
+            None
+        }
+    }
+}
+
 trait CmpZero {
     fn cmp_zero(self) -> Ordering;
 }
@@ -88,11 +140,6 @@ impl CmpZero for num_bigint::Sign {
             num_bigint::Sign::Plus => Ordering::Greater,
         }
     }
-}
-
-/// The sign of `p(x)`, exactly, without fractions.
-pub(crate) fn sign_at(p: &UPoly, x: &Q) -> Ordering {
-    IntPoly::new(p).sign_at(x)
 }
 
 /// The Sturm sequence of `p` (of its square-free part, so that counts see
@@ -109,8 +156,11 @@ fn chain(p: &UPoly) -> Vec<IntPoly> {
     if p.is_zero() {
         return Vec::new();
     }
-    let sf = p.squarefree();
-    let a = crate::upoly::int_primitive(&sf);
+    chain_squarefree(&p.squarefree())
+}
+
+fn chain_squarefree(sf: &UPoly) -> Vec<IntPoly> {
+    let a = crate::upoly::int_primitive(sf);
     let mut b = crate::upoly::int_primitive(&sf.derivative());
     let mut seq = vec![IntPoly { c: a.clone() }];
     let mut a = a;
@@ -126,23 +176,6 @@ fn chain(p: &UPoly) -> Vec<IntPoly> {
         b = crate::upoly::primitive(next);
     }
     seq
-}
-
-/// A Sturm chain kept for repeated counts.
-pub(crate) struct Chain(Vec<IntPoly>);
-
-impl Chain {
-    pub(crate) fn new(p: &UPoly) -> Chain {
-        Chain(chain(p))
-    }
-
-    /// Distinct real roots in (lo, hi].
-    pub(crate) fn count(&self, lo: &Q, hi: &Q) -> usize {
-        if hi <= lo || self.0.is_empty() {
-            return 0;
-        }
-        count_with(&self.0, lo, hi)
-    }
 }
 
 /// Sign changes of the sequence at `x`, zeros skipped.
@@ -241,9 +274,18 @@ pub fn isolate_real_roots(p: &UPoly) -> Vec<(Q, Q)> {
     if p.degree().unwrap_or(0) == 0 {
         return Vec::new();
     }
-    let sf = p.squarefree();
-    let seq = chain(&sf);
-    let b = root_bound(&sf);
+    isolate_squarefree(&p.squarefree())
+}
+
+/// [`isolate_real_roots`] for a polynomial already square-free (its own
+/// square-free part up to a constant factor): the same intervals, without
+/// recomputing the square-free part.
+pub(crate) fn isolate_squarefree(sf: &UPoly) -> Vec<(Q, Q)> {
+    if sf.degree().unwrap_or(0) == 0 {
+        return Vec::new();
+    }
+    let seq = chain_squarefree(sf);
+    let b = root_bound(sf);
     let mut out = Vec::new();
     let lo = -b.clone();
     let n = count_with(&seq, &lo, &b);
@@ -301,16 +343,164 @@ fn beside(sf: &IntPoly, seq: &[IntPoly], toward: &Q, r: &Q) -> Q {
     }
 }
 
+/// Narrows an interval `(lo, hi)` on which the polynomial `ip` changes
+/// sign (non-zero at both ends) to a sub-interval of width at most `width`
+/// on which it still changes sign, or to `(r, r)` for a root `r` met
+/// exactly. Quadratic interval refinement (Abbott): split the interval into
+/// N equal parts, guess the part holding the root from the secant through
+/// the ends, and check the guess with two signs; a right guess squares N
+/// (the number of correct bits doubles, as with Newton's method), a wrong
+/// one halves log N, down to plain bisection. Exact: every point is a
+/// rational and every decision a sign. The result is *not* the bisection
+/// result of [`refine_interval`]; use it where only the number matters.
+pub(crate) fn refine_quadratic(ip: &IntPoly, lo: &Q, hi: &Q, width: &Q) -> (Q, Q) {
+    if lo == hi {
+        return (lo.clone(), hi.clone());
+    }
+    // Integers throughout: a = A/E, b = B/E over one denominator E > 0, and
+    // values f(x)·E^n (the same positive factor at every point).
+    let mut e = lo.denom().lcm(hi.denom());
+    let mut a = lo.numer() * (&e / lo.denom());
+    let mut b = hi.numer() * (&e / hi.denom());
+    let value = |x: &BigInt, e: &BigInt| ip.scaled_value_parts(x, e);
+    let sgn = |v: &BigInt| v.sign().cmp_zero();
+    let mut fa = value(&a, &e);
+    let mut fb = value(&b, &e);
+    let s_a = sgn(&fa);
+    debug_assert!(s_a != Ordering::Equal && s_a != sgn(&fb), "a sign change");
+    let (wn, wd) = (width.numer(), width.denom());
+    // Whether (b − a)/e > width.
+    let wide = |a: &BigInt, b: &BigInt, e: &BigInt| (b - a) * wd > wn * e;
+    // N = 2^k parts.
+    let mut k: u32 = 2;
+    while wide(&a, &b, &e) {
+        // No finer grid than the target needs: 2^k ≤ 2(b − a)/width.
+        let ratio_bits = ((&b - &a) * wd).bits().saturating_sub((wn * &e).bits()) + 2;
+        k = k.min(u32::try_from(ratio_bits).unwrap_or(u32::MAX)).max(1);
+        let parts = BigInt::one() << k;
+        // Refine the grid: denominators times 2^k.
+        let (a2, b2, e2) = (&a << k, &b << k, &e << k);
+        let step = &b - &a; // (b2 − a2)/2^k
+        let (fa2, fb2) = (&fa << (k as usize * n_of(ip)), &fb << (k as usize * n_of(ip)));
+        let i = if k == 1 {
+            BigInt::one()
+        } else {
+            // The secant's zero a + t(b − a), t = fa/(fa − fb) ∈ (0, 1),
+            // rounded to the nearest inner grid point.
+            let mut den = &fa - &fb;
+            let mut num2 = (&fa * &parts) << 1u32;
+            if den.is_negative() {
+                den = -den;
+                num2 = -num2;
+            }
+            let i = (num2 + &den).div_floor(&(&den << 1u32));
+            i.clamp(BigInt::one(), &parts - BigInt::one())
+        };
+        let x = &a2 + &step * &i;
+        let fx = value(&x, &e2);
+        let sx = sgn(&fx);
+        if sx == Ordering::Equal {
+            let r = Q::new(x, e2);
+            return (r.clone(), r);
+        }
+        if k == 1 {
+            // Plain bisection.
+            (a, fa, b, fb, e) = if sx == s_a { (x, fx, b2, fb2, e2) } else { (a2, fa2, x, fx, e2) };
+            k = 2;
+            continue;
+        }
+        // The neighbouring grid point on the side of the root.
+        let y = if sx == s_a { &x + &step } else { &x - &step };
+        let fy = value(&y, &e2);
+        let sy = sgn(&fy);
+        if sy == Ordering::Equal {
+            let r = Q::new(y, e2);
+            return (r.clone(), r);
+        }
+        e = e2;
+        if sx == s_a && sy != s_a {
+            (a, fa, b, fb) = (x, fx, y, fy);
+            k = k.saturating_mul(2);
+        } else if sx != s_a && sy == s_a {
+            (a, fa, b, fb) = (y, fy, x, fx);
+            k = k.saturating_mul(2);
+        } else {
+            // Wrong guess: keep the side of x that holds the root.
+            if sx == s_a {
+                (a, fa, b, fb) = (y, fy, b2, fb2);
+            } else {
+                (a, fa, b, fb) = (a2, fa2, y, fy);
+            }
+            k /= 2;
+        }
+    }
+    (Q::new(a, e.clone()), Q::new(b, e))
+}
+
+fn n_of(ip: &IntPoly) -> usize {
+    ip.degree().unwrap_or(0)
+}
+
 /// Narrows an isolating interval `(lo, hi)` (as returned by
 /// [`isolate_real_roots`]) of a square-free `p` by bisection until its width
 /// is at most `width`. A rational root hit exactly becomes `(r, r)`.
 pub fn refine_interval(p: &UPoly, lo: &Q, hi: &Q, width: &Q) -> (Q, Q) {
-    let (mut lo, mut hi) = (lo.clone(), hi.clone());
     if lo == hi {
-        return (lo, hi);
+        return (lo.clone(), hi.clone());
     }
+    refine_int(&IntPoly::new(p), lo, hi, width)
+}
+
+/// [`refine_interval`] with the integer form of the polynomial given: the
+/// same result as bisection, computed faster when many halvings are due.
+///
+/// After k halvings bisection stops on the cell lo + [j, j + 1)·h,
+/// h = (hi − lo)/2^k, that holds the root, or on a grid point lo + j·h
+/// that is the root (met as a midpoint, where it returns `(r, r)`). So the
+/// root is located by quadratic refinement to within one cell, and at most
+/// one grid point then needs a sign; the result is identical.
+pub(crate) fn refine_int(ip: &IntPoly, lo: &Q, hi: &Q, width: &Q) -> (Q, Q) {
+    if lo == hi || &(hi - lo) <= width {
+        return (lo.clone(), hi.clone());
+    }
+    let ratio = (hi - lo) / width;
+    let ceil_bits = (ratio.ceil().to_integer() - BigInt::one()).bits();
+    if ceil_bits <= 8 {
+        return bisect_int(ip, lo, hi, width);
+    }
+    // k = ⌈log2((hi − lo)/width)⌉ halvings: the least k with 2^k ≥ ratio.
+    let k = ceil_bits;
+    let h = (hi - lo) / Q::from_integer(BigInt::one() << k);
+    let (a, b) = refine_quadratic(ip, lo, hi, &h);
+    let cell = |x: &Q| ((x - lo) / &h).floor().to_integer();
+    let at = |j: &BigInt| lo + &h * Q::from_integer(j.clone());
+    if a == b {
+        // A rational root: bisection meets it exactly when it is a grid
+        // point, and otherwise ends on the cell around it.
+        let j = cell(&a);
+        if at(&j) == a {
+            return (a.clone(), a);
+        }
+        return (at(&j), at(&(j + BigInt::one())));
+    }
+    let (ja, jb) = (cell(&a), cell(&b));
+    if ja == jb || at(&jb) == b {
+        // (a, b) inside one cell (b may be that cell's upper end).
+        return (at(&ja), at(&(ja + BigInt::one())));
+    }
+    // b − a ≤ h: one grid point g = at(jb) strictly inside (a, b).
+    let g = at(&jb);
+    match ip.sign_at(&g) {
+        Ordering::Equal => (g.clone(), g),
+        s if s == ip.sign_at(&a) => (g, at(&(jb + BigInt::one()))),
+        _ => (at(&ja), g),
+    }
+}
+
+/// Plain bisection of a sign-changing interval down to `width`.
+fn bisect_int(ip: &IntPoly, lo: &Q, hi: &Q, width: &Q) -> (Q, Q) {
+    let (mut lo, mut hi) = (lo.clone(), hi.clone());
     let two = Q::from_integer(2.into());
-    let ip = IntPoly::new(p);
     let s_lo = ip.sign_at(&lo);
     while &hi - &lo > *width {
         let mid = (&lo + &hi) / &two;

@@ -167,7 +167,10 @@ impl UPoly {
         if g.degree() == Some(0) {
             return self.monic();
         }
-        self.div_rem(&g).0.monic()
+        // g divides p; over Z (Gauss) the quotient of the primitive forms is
+        // exact, so divide without fractions.
+        let q = exact_div_int(&int_primitive(self), &int_primitive(&g));
+        UPoly::new(q.into_iter().map(Q::from_integer).collect()).monic()
     }
 
     /// `p(q(x))`.
@@ -300,12 +303,56 @@ pub(crate) fn int_primitive(p: &UPoly) -> Vec<BigInt> {
     primitive(p.coeffs().iter().map(|q| q.numer() * (&den / q.denom())).collect())
 }
 
+/// a / b for integer polynomials (lowest power first) when b divides a in
+/// Z[x]; every division of coefficients is exact.
+pub(crate) fn exact_div_int(a: &[BigInt], b: &[BigInt]) -> Vec<BigInt> {
+    let n = b.len() - 1;
+    let lb = &b[n];
+    let mut r = a.to_vec();
+    if r.len() <= n {
+        return Vec::new();
+    }
+    let mut q = vec![BigInt::zero(); r.len() - n];
+    for k in (0..q.len()).rev() {
+        let c = &r[k + n] / lb;
+        debug_assert!((&c * lb) == r[k + n], "exact division");
+        if !c.is_zero() {
+            for (j, bj) in b.iter().enumerate() {
+                r[k + j] -= &c * bj;
+            }
+        }
+        q[k] = c;
+    }
+    debug_assert!(r.iter().all(Zero::is_zero), "b divides a");
+    q
+}
+
+/// The non-negative gcd of the integers, with the running gcd reduced into
+/// each next number first (a cheap remainder when the gcd is small, which
+/// binary gcd on a long number is not), stopping at 1.
+pub(crate) fn content<'a>(xs: impl IntoIterator<Item = &'a BigInt>) -> BigInt {
+    let mut g = BigInt::zero();
+    for x in xs {
+        if x.is_zero() {
+            continue;
+        }
+        g = if g.is_zero() { x.abs() } else { g.gcd(&(x % &g)) };
+        if g.is_one() {
+            break;
+        }
+    }
+    g
+}
+
 /// Divides by the (positive) gcd of the coefficients; trailing zeros dropped.
 pub(crate) fn primitive(mut c: Vec<BigInt>) -> Vec<BigInt> {
     while c.last().is_some_and(Zero::is_zero) {
         c.pop();
     }
-    let g = c.iter().fold(BigInt::zero(), |g, x| g.gcd(x));
+    // Smallest first: the running gcd is small from the start.
+    let mut order: Vec<&BigInt> = c.iter().filter(|x| !x.is_zero()).collect();
+    order.sort_by_key(|x| x.bits());
+    let g = content(order);
     if !g.is_zero() && !g.is_one() {
         for x in &mut c {
             *x /= &g;

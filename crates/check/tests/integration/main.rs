@@ -11,4 +11,5 @@ mod numeric;
 #[path = "../../../../tests/support/snapshot.rs"]
 mod snapshot;
 mod snapshots;
+mod stability_scan;
 mod witness;

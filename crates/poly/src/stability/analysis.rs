@@ -13,7 +13,7 @@ use crate::{Derivation, Poly, RootClass, Sym, UPoly, Q};
 use super::conditions::{critical_conditions, discriminant, Charpoly};
 use super::field::{FPoly, Field};
 use super::point::{
-    circle_counts, class_of_single_root, classify_quadratic, classify_with_counts, Counts,
+    circle_counts, class_of_single_root, classify_quadratic_by, classify_with_counts, Counts,
 };
 use super::{
     Boundary, ClassChange, ClassInterval, Condition, CriticalPoint, Marginal, Stability,
@@ -24,7 +24,8 @@ use super::{
 pub(crate) fn class_at_rational(chi: &Charpoly, phi: &Q) -> (RootClass, Counts) {
     let f = chi.at(phi);
     if chi.degree() == 2 {
-        let class = classify_quadratic(&chi.a, |p| crate::sturm::sign_at(p, phi));
+        let q = chi.quad();
+        let class = classify_quadratic_by(|k| q.ints[k].sign_at(phi));
         let counts = if f.is_zero() { Counts::default() } else { circle_counts(&f) };
         return (class, counts);
     }
@@ -38,7 +39,10 @@ pub(crate) fn class_at_point(chi: &Charpoly, phi: &Algebraic) -> Option<RootClas
         return Some(class_at_rational(chi, q).0);
     }
     match chi.degree() {
-        2 => Some(classify_quadratic(&chi.a, |p| phi.sign_of(p))),
+        2 => {
+            let q = chi.quad();
+            Some(classify_quadratic_by(|k| phi.sign_of(&q.polys[k])))
+        }
         1 => {
             // One root r = −a0/a1: signs of r, r − 1, r + 1 from polynomials.
             let (a0, a1) = (&chi.a[0], &chi.a[1]);
@@ -175,7 +179,11 @@ fn run(chi: &Charpoly, p: Option<StepMatrix<'_>>, charpoly: Option<&Poly>) -> St
         points.iter().map(|pt| class_at_point(chi, &pt.at)).collect();
 
     // Boundedness exactly at every point next to a bounded interval.
-    let disc = discriminant(&chi.a);
+    // The discriminant is one of the conditions already (computed once).
+    let disc = conditions
+        .iter()
+        .find(|(name, _)| *name == Condition::Discriminant)
+        .map_or_else(|| discriminant(&chi.a), |(_, d)| d.clone());
     for (k, point) in points.iter_mut().enumerate() {
         if classes[k].is_bounded() || classes[k + 1].is_bounded() {
             point.bounded = Some(bounded_at(chi, &point.at, at_classes[k], &disc, p));

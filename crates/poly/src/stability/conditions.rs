@@ -44,6 +44,9 @@ use super::Condition;
 pub(crate) struct Charpoly {
     /// a[k] multiplies z^k; the last is non-zero.
     pub a: Vec<UPoly>,
+    /// For degree 2: the sign polynomials of the quadratic rules, formed on
+    /// first use and reused at every sample and point.
+    quad: std::sync::OnceLock<super::point::QuadPolys>,
 }
 
 impl Charpoly {
@@ -75,11 +78,16 @@ impl Charpoly {
         while a.last().is_some_and(UPoly::is_zero) {
             a.pop();
         }
-        Charpoly { a: integer_scaled(&a) }
+        Charpoly { a: integer_scaled(&a), quad: std::sync::OnceLock::new() }
     }
 
     pub fn degree(&self) -> usize {
         self.a.len() - 1
+    }
+
+    /// The sign polynomials of a second-order χ (degree 2 only).
+    pub fn quad(&self) -> &super::point::QuadPolys {
+        self.quad.get_or_init(|| super::point::QuadPolys::new(&self.a))
     }
 
     /// χ at a rational Φ, as a polynomial in z.
@@ -365,8 +373,8 @@ pub(crate) fn critical_conditions(chi: &Charpoly) -> Vec<(Condition, UPoly)> {
     let mut out = vec![
         (Condition::LeadingCoefficient, a[n].clone()),
         (Condition::ConstantCoefficient, a[0].clone()),
-        (Condition::ChiAtOne, chi.value_at_z(&one)),
-        (Condition::ChiAtMinusOne, chi.value_at_z(&-one.clone())),
+        (Condition::ChiAtOne, deflated_value_at_z(a, &one)),
+        (Condition::ChiAtMinusOne, deflated_value_at_z(a, &-one.clone())),
     ];
     if n >= 2 {
         let circle = unit_circle_condition(a);
@@ -384,6 +392,28 @@ pub(crate) fn critical_conditions(chi: &Charpoly) -> Vec<(Condition, UPoly)> {
         out.push((Condition::ModulusTie, t));
     }
     out
+}
+
+/// χ(s) as a polynomial in Φ after dividing out every factor z − s that
+/// divides χ identically in Φ: when χ(s) ≡ 0 (a root fixed at s for every
+/// Φ), the other roots still cross s where (χ/(z − s)^m)(s) vanishes, and
+/// χ(s) itself would hide that.
+fn deflated_value_at_z(a: &[UPoly], s: &Q) -> UPoly {
+    let mut a = a.to_vec();
+    loop {
+        let value = a.iter().rev().fold(UPoly::zero(), |acc, c| &acc.scale(s) + c);
+        if !value.is_zero() || a.len() < 2 {
+            return value;
+        }
+        // Synthetic division by z − s (exact: the remainder χ(s) is zero).
+        let n = a.len() - 1;
+        let mut b = vec![UPoly::zero(); n];
+        b[n - 1] = a[n].clone();
+        for k in (1..n).rev() {
+            b[k - 1] = &a[k] + &b[k].scale(s);
+        }
+        a = b;
+    }
 }
 
 /// χ has a self-reciprocal factor g = gcd(χ, χ*) over Q(Φ): conditions of g
@@ -449,7 +479,7 @@ mod tests {
         let rev: Vec<UPoly> = a.iter().rev().cloned().collect();
         let r = modular::resultant(&a, &rev);
         let s = unit_circle_condition(&a);
-        let chi = Charpoly { a: a.clone() };
+        let chi = Charpoly::from_coeffs(a.clone());
         let p1 = chi.value_at_z(&Q::one());
         let m1 = chi.value_at_z(&-Q::one());
         let rhs = &(&(&p1 * &m1) * &s) * &s;

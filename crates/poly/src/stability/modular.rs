@@ -55,8 +55,72 @@ fn powmod(mut a: u64, mut e: u64, p: u64) -> u64 {
     r
 }
 
+/// 1/a mod p by the extended Euclidean algorithm (a ≢ 0, p prime).
 fn inv(a: u64, p: u64) -> u64 {
-    powmod(a, p - 2, p)
+    let (mut r0, mut r1) = (p as i128, (a % p) as i128);
+    let (mut t0, mut t1) = (0i128, 1i128);
+    while r1 != 0 {
+        let q = r0 / r1;
+        (r0, r1) = (r1, r0 - q * r1);
+        (t0, t1) = (t1, t0 - q * t1);
+    }
+    debug_assert_eq!(r0, 1, "invertible");
+    t0.rem_euclid(p as i128) as u64
+}
+
+fn addmod(a: u64, b: u64, p: u64) -> u64 {
+    let s = a + b;
+    if s >= p {
+        s - p
+    } else {
+        s
+    }
+}
+
+fn submod(a: u64, b: u64, p: u64) -> u64 {
+    if a >= b {
+        a - b
+    } else {
+        a + p - b
+    }
+}
+
+/// Montgomery multiplication modulo an odd p < 2^62 with R = 2^64, used
+/// one-sided: `mul(a, b·R mod p) = a·b mod p` with a plain a, so a factor
+/// reused across a loop is converted once ([`Mont::form`]) and every product
+/// in the loop avoids a 128-bit division.
+struct Mont {
+    p: u64,
+    /// −p⁻¹ mod 2^64.
+    neg_inv: u64,
+}
+
+impl Mont {
+    fn new(p: u64) -> Mont {
+        // Newton's iteration for p⁻¹ mod 2^64 (p odd: p·p ≡ 1 mod 8).
+        let mut x = p;
+        for _ in 0..5 {
+            x = x.wrapping_mul(2u64.wrapping_sub(p.wrapping_mul(x)));
+        }
+        Mont { p, neg_inv: x.wrapping_neg() }
+    }
+
+    /// b·R mod p.
+    fn form(&self, b: u64) -> u64 {
+        (((b as u128) << 64) % self.p as u128) as u64
+    }
+
+    /// a·b·R⁻¹ mod p, for a, b < p.
+    fn mul(&self, a: u64, b: u64) -> u64 {
+        let t = a as u128 * b as u128;
+        let m = (t as u64).wrapping_mul(self.neg_inv);
+        let u = ((t + m as u128 * self.p as u128) >> 64) as u64;
+        if u >= self.p {
+            u - self.p
+        } else {
+            u
+        }
+    }
 }
 
 /// Deterministic Miller–Rabin for 64-bit integers.
@@ -112,7 +176,9 @@ fn reduce(c: &[BigInt], p: u64) -> Vec<u64> {
 }
 
 fn eval_mod(c: &[u64], x: u64, p: u64) -> u64 {
-    c.iter().rev().fold(0, |acc, &a| (mulmod(acc, x, p) + a) % p)
+    let mont = Mont::new(p);
+    let xm = mont.form(x);
+    c.iter().rev().fold(0, |acc, &a| addmod(mont.mul(acc, xm), a, p))
 }
 
 /// Newton interpolation over F_p; coefficients lowest power first. The
@@ -132,23 +198,25 @@ fn interpolate(xs: &[u64], ys: &[u64], p: u64) -> Vec<u64> {
         let r = (p % d as u64) as usize;
         inv_table[d] = (p - mulmod(q, inv_table[r], p)) % p;
     }
+    let mont = Mont::new(p);
+    let inv_table: Vec<u64> = inv_table.into_iter().map(|v| mont.form(v)).collect();
     let mut dd = ys.to_vec();
     for j in 1..n {
         for i in (j..n).rev() {
-            let num = (dd[i] + p - dd[i - 1]) % p;
-            dd[i] = mulmod(num, inv_table[(xs[i] - xs[i - j]) as usize], p);
+            let num = submod(dd[i], dd[i - 1], p);
+            dd[i] = mont.mul(num, inv_table[(xs[i] - xs[i - j]) as usize]);
         }
     }
     // Horner on the Newton form: c ← c·(x − x_k) + dd[k].
     let mut c: Vec<u64> = Vec::with_capacity(n);
     for k in (0..n).rev() {
-        let xk = xs[k];
+        let xk = mont.form(xs[k] % p);
         c.push(0);
         for i in (1..c.len()).rev() {
-            c[i] = (c[i - 1] + p - mulmod(c[i], xk, p)) % p;
+            c[i] = submod(c[i - 1], mont.mul(c[i], xk), p);
         }
-        c[0] = (p - mulmod(c[0], xk, p)) % p;
-        c[0] = (c[0] + dd[k]) % p;
+        c[0] = submod(0, mont.mul(c[0], xk), p);
+        c[0] = addmod(c[0], dd[k], p);
     }
     c
 }
@@ -227,6 +295,7 @@ pub(crate) fn det(m: &[Vec<UPoly>]) -> UPoly {
 
 fn det_mod(a: &mut [Vec<u64>], p: u64) -> u64 {
     let n = a.len();
+    let mont = Mont::new(p);
     let mut d = 1u64;
     for k in 0..n {
         let Some(piv) = (k..n).find(|&i| a[i][k] != 0) else { return 0 };
@@ -235,16 +304,16 @@ fn det_mod(a: &mut [Vec<u64>], p: u64) -> u64 {
             d = (p - d) % p;
         }
         d = mulmod(d, a[k][k], p);
-        let iv = inv(a[k][k], p);
+        // (1/a_kk)·R², so that mul(x, ·) = x/a_kk·R, the Montgomery form.
+        let iv = mont.form(mont.form(inv(a[k][k], p)));
         for i in k + 1..n {
             if a[i][k] == 0 {
                 continue;
             }
-            let f = mulmod(a[i][k], iv, p);
+            let f = mont.mul(a[i][k], iv);
             let (top, bottom) = a.split_at_mut(i);
             for (x, &y) in bottom[0][k..].iter_mut().zip(&top[k][k..]) {
-                let s = mulmod(f, y, p);
-                *x = (*x + p - s) % p;
+                *x = submod(*x, mont.mul(y, f), p);
             }
         }
     }
@@ -264,6 +333,7 @@ fn res_mod(mut f: Vec<u64>, mut g: Vec<u64>, p: u64) -> u64 {
     if f.is_empty() || g.is_empty() {
         return 0;
     }
+    let mont = Mont::new(p);
     let mut acc = 1u64;
     loop {
         let (m, n) = (f.len() - 1, g.len() - 1);
@@ -275,13 +345,14 @@ fn res_mod(mut f: Vec<u64>, mut g: Vec<u64>, p: u64) -> u64 {
         }
         // r = f mod g
         let mut r = f.clone();
-        let lg_inv = inv(g[n], p);
+        // (1/lc(g))·R²: mul(x, ·) is x/lc(g) in Montgomery form.
+        let lg_inv = mont.form(mont.form(inv(g[n], p)));
         if r.len() > n {
             for k in (0..r.len() - n).rev() {
-                let c = mulmod(r[k + n], lg_inv, p);
+                let c = mont.mul(r[k + n], lg_inv);
                 if c != 0 {
                     for (j, &gj) in g.iter().enumerate() {
-                        r[k + j] = (r[k + j] + p - mulmod(c, gj, p)) % p;
+                        r[k + j] = submod(r[k + j], mont.mul(gj, c), p);
                     }
                 }
             }
@@ -335,12 +406,14 @@ pub(crate) fn coprime_mod_p(a: &[BigInt], b: &[BigInt]) -> bool {
 fn rem_mod(mut a: Vec<u64>, b: &[u64], p: u64) -> Vec<u64> {
     trim(&mut a);
     let n = b.len() - 1;
-    let li = inv(b[n], p);
+    let mont = Mont::new(p);
+    // (1/lc(b))·R²: mul(x, ·) is x/lc(b) in Montgomery form.
+    let li = mont.form(mont.form(inv(b[n], p)));
     while a.len() > n {
-        let c = mulmod(a[a.len() - 1], li, p);
+        let c = mont.mul(a[a.len() - 1], li);
         let s = a.len() - 1 - n;
         for (j, &bj) in b.iter().enumerate() {
-            a[s + j] = (a[s + j] + p - mulmod(c, bj, p)) % p;
+            a[s + j] = submod(a[s + j], mont.mul(bj, c), p);
         }
         trim(&mut a);
     }
@@ -362,13 +435,15 @@ fn mul_mod_poly(a: &[u64], b: &[u64], p: u64) -> Vec<u64> {
     if a.is_empty() || b.is_empty() {
         return Vec::new();
     }
+    let mont = Mont::new(p);
     let mut c = vec![0u64; a.len() + b.len() - 1];
     for (i, &x) in a.iter().enumerate() {
         if x == 0 {
             continue;
         }
+        let xm = mont.form(x);
         for (j, &y) in b.iter().enumerate() {
-            c[i + j] = (c[i + j] + mulmod(x, y, p)) % p;
+            c[i + j] = addmod(c[i + j], mont.mul(y, xm), p);
         }
     }
     c
@@ -466,6 +541,100 @@ mod tests {
         // [[x, 1], [2, x]] → x² − 2
         let m = vec![vec![up(&[0, 1]), up(&[1])], vec![up(&[2]), up(&[0, 1])]];
         assert_eq!(det(&m), up(&[-2, 0, 1]));
+    }
+
+    #[test]
+    fn fast_field_operations_match_the_obvious_ones() {
+        // Oracles: Fermat's inverse a^(p−2) and the 128-bit remainder.
+        let mut x = 0x9e37_79b9_7f4a_7c15u64;
+        for p in primes(3) {
+            let mont = Mont::new(p);
+            for _ in 0..200 {
+                x = x.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+                let a = x % p;
+                let b = x.rotate_left(17) % p;
+                assert_eq!(mont.mul(a, mont.form(b)), mulmod(a, b, p));
+                if a != 0 {
+                    assert_eq!(inv(a, p), powmod(a, p - 2, p));
+                }
+                assert_eq!(addmod(a, b, p), ((a as u128 + b as u128) % p as u128) as u64);
+                assert_eq!(
+                    submod(a, b, p),
+                    ((a as u128 + p as u128 - b as u128) % p as u128) as u64
+                );
+            }
+        }
+    }
+
+    /// The Sylvester determinant over Z by Bareiss' fraction-free
+    /// elimination: the textbook resultant, the oracle.
+    fn sylvester_resultant(f: &[i64], g: &[i64]) -> BigInt {
+        let (m, n) = (f.len() - 1, g.len() - 1);
+        let size = m + n;
+        let mut a = vec![vec![BigInt::zero(); size]; size];
+        for i in 0..n {
+            for (j, &c) in f.iter().rev().enumerate() {
+                a[i][i + j] = BigInt::from(c);
+            }
+        }
+        for i in 0..m {
+            for (j, &c) in g.iter().rev().enumerate() {
+                a[n + i][i + j] = BigInt::from(c);
+            }
+        }
+        let mut sign = BigInt::one();
+        let mut prev = BigInt::one();
+        for k in 0..size {
+            let Some(piv) = (k..size).find(|&i| !a[i][k].is_zero()) else { return BigInt::zero() };
+            if piv != k {
+                a.swap(piv, k);
+                sign = -sign;
+            }
+            for i in k + 1..size {
+                for j in k + 1..size {
+                    let v = &a[i][j] * &a[k][k] - &a[i][k] * &a[k][j];
+                    a[i][j] = v / &prev;
+                }
+                a[i][k] = BigInt::zero();
+            }
+            prev = a[k][k].clone();
+        }
+        sign * &a[size - 1][size - 1]
+    }
+
+    #[test]
+    fn resultant_matches_sylvester_at_points() {
+        // Random f, g in Z[Φ][z] with constant leading coefficients; the
+        // modular resultant at Φ = t equals Sylvester's determinant of f(t),
+        // g(t).
+        let mut x = 12345u64;
+        let mut next = |m: i64| {
+            x = x.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            ((x >> 33) as i64).rem_euclid(2 * m + 1) - m
+        };
+        for _ in 0..12 {
+            let (m, n) = (2 + next(1).unsigned_abs() as usize, 1 + next(1).unsigned_abs() as usize);
+            let mut coeffs = |deg: usize| -> Vec<UPoly> {
+                let mut c: Vec<UPoly> =
+                    (0..deg).map(|_| up(&[next(5), next(5), next(3)])).collect();
+                let mut lead = next(4);
+                if lead == 0 {
+                    lead = 3;
+                }
+                c.push(up(&[lead]));
+                c
+            };
+            let (f, g) = (coeffs(m), coeffs(n));
+            let r = resultant(&f, &g);
+            for t in -3i64..=3 {
+                let tq = Q::from_integer(t.into());
+                let at = |v: &[UPoly]| -> Vec<i64> {
+                    v.iter().map(|c| c.eval(&tq).to_integer().to_i64().unwrap()).collect()
+                };
+                let expected = sylvester_resultant(&at(&f), &at(&g));
+                assert_eq!(r.eval(&tq), Q::from_integer(expected), "f = {f:?}, g = {g:?}, t = {t}");
+            }
+        }
     }
 
     #[test]

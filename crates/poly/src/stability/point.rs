@@ -440,33 +440,82 @@ pub(crate) fn class_of_single_root(
     }
 }
 
+/// The polynomials in Φ whose signs decide a second-order χ = c + b z + a z²
+/// (see [`classify_quadratic_by`]), formed once per χ, with their integer
+/// forms for signs at rationals.
+#[derive(Clone, Debug)]
+pub(crate) struct QuadPolys {
+    pub polys: Vec<UPoly>,
+    pub ints: Vec<crate::sturm::IntPoly>,
+}
+
+const Q_A: usize = 0;
+const Q_B: usize = 1;
+const Q_NEG_C: usize = 2;
+const Q_NEG_C_PLUS_B: usize = 3;
+const Q_B_MINUS_C: usize = 4;
+const Q_DISC: usize = 5;
+const Q_NEG_B: usize = 6;
+const Q_NEG_B_PLUS_2A: usize = 7;
+const Q_2A_MINUS_B: usize = 8;
+const Q_C_MINUS_A: usize = 9;
+const Q_C_PLUS_A: usize = 10;
+const Q_CHI_1: usize = 11;
+const Q_CHI_MINUS_1: usize = 12;
+
+impl QuadPolys {
+    pub(crate) fn new(a: &[UPoly]) -> QuadPolys {
+        let (c, b, a) = (&a[0], &a[1], &a[2]);
+        let two_a = a.scale(&Q::from_integer(2.into()));
+        let polys = vec![
+            a.clone(),
+            b.clone(),
+            -c,
+            -&(c + b),
+            b - c,
+            &(b * b) - &(a * c).scale(&Q::from_integer(4.into())),
+            -b,
+            -&(b + &two_a),
+            &two_a - b,
+            c - a,
+            c + a,
+            &(a + b) + c,
+            &(a - b) + c,
+        ];
+        let ints = polys.iter().map(crate::sturm::IntPoly::new).collect();
+        QuadPolys { polys, ints }
+    }
+}
+
 /// The class of a z² + b z + c (coefficients polynomials in Φ) from signs;
-/// `sgn` gives the sign of a polynomial in Φ at the point of interest, so
-/// this is exact at algebraic Φ too. With p = −b/(2a), q = c/a each shifted
-/// value's sign is the sign of a polynomial times the sign of a.
-pub(crate) fn classify_quadratic(a: &[UPoly], sgn: impl Fn(&UPoly) -> Ordering) -> RootClass {
-    let (c, b, a) = (&a[0], &a[1], &a[2]);
-    let sa = sgn(a);
+/// `sgn(k)` gives the sign of [`QuadPolys`]' entry k at the point of
+/// interest, so this is exact at algebraic Φ too. With p = −b/(2a), q = c/a
+/// each shifted value's sign is the sign of a polynomial times the sign of a.
+pub(crate) fn classify_quadratic_by(sgn: impl Fn(usize) -> Ordering) -> RootClass {
+    let sa = sgn(Q_A);
     if sa == Ordering::Equal {
-        let sb = sgn(b);
+        let sb = sgn(Q_B);
         if sb == Ordering::Equal {
             return RootClass::Deadbeat;
         }
         // The one root r = −c/b: r − 1 = −(c + b)/b, r + 1 = (b − c)/b.
         let by_b = |o: Ordering| if sb == Ordering::Greater { o } else { o.reverse() };
-        return class_of_single_root(by_b(sgn(&-c)), by_b(sgn(&-&(c + b))), by_b(sgn(&(b - c))));
+        return class_of_single_root(
+            by_b(sgn(Q_NEG_C)),
+            by_b(sgn(Q_NEG_C_PLUS_B)),
+            by_b(sgn(Q_B_MINUS_C)),
+        );
     }
     let by_a = |o: Ordering| if sa == Ordering::Greater { o } else { o.reverse() };
-    let two_a = a.scale(&Q::from_integer(2.into()));
     let s = PqSigns {
-        disc: sgn(&(&(b * b) - &(a * c).scale(&Q::from_integer(4.into())))),
-        p: by_a(sgn(&-b)),
-        p_minus_1: by_a(sgn(&-&(b + &two_a))),
-        p_plus_1: by_a(sgn(&(&two_a - b))),
-        q_minus_1: by_a(sgn(&(c - a))),
-        q_plus_1: by_a(sgn(&(c + a))),
-        chi_1: by_a(sgn(&(&(a + b) + c))),
-        chi_minus_1: by_a(sgn(&(&(a - b) + c))),
+        disc: sgn(Q_DISC),
+        p: by_a(sgn(Q_NEG_B)),
+        p_minus_1: by_a(sgn(Q_NEG_B_PLUS_2A)),
+        p_plus_1: by_a(sgn(Q_2A_MINUS_B)),
+        q_minus_1: by_a(sgn(Q_C_MINUS_A)),
+        q_plus_1: by_a(sgn(Q_C_PLUS_A)),
+        chi_1: by_a(sgn(Q_CHI_1)),
+        chi_minus_1: by_a(sgn(Q_CHI_MINUS_1)),
     };
     classify_pq(&s)
 }

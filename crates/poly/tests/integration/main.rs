@@ -27,6 +27,7 @@ mod invariant;
 mod large;
 mod multistep;
 mod parser;
+mod random_programs;
 mod region;
 mod routes;
 mod series;

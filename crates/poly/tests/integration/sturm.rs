@@ -238,3 +238,195 @@ fn refinement_narrows() {
     assert!(&hi - &lo <= w);
     assert_eq!(r, a);
 }
+
+// ---- Fast paths against slow, obvious oracles (issue 10) ----
+//
+// Refinement by quadratic interval refinement plus one grid-point test,
+// comparisons of close algebraic numbers, `rational_between` by doubling and
+// signs at a root by interval evaluation are each checked against the plain
+// algorithm they replace.
+
+/// A square-free-or-not integer polynomial with known structure: rational
+/// roots times x² − k factors (irrational roots when k is not a square).
+fn mixed_poly(rational: &[(i64, i64)], squares: &[i64]) -> UPoly {
+    let mut p = from_roots(&qs(rational));
+    for &k in squares {
+        p = &p * &UPoly::from_ints(&[-k, 0, 1]);
+    }
+    p
+}
+
+/// Plain bisection, the obvious algorithm: halve until the width is at most
+/// `width`, returning (m, m) for a root met as a midpoint.
+fn bisect_oracle(p: &UPoly, lo: &Q, hi: &Q, width: &Q) -> (Q, Q) {
+    let (mut lo, mut hi) = (lo.clone(), hi.clone());
+    if lo == hi {
+        return (lo, hi);
+    }
+    let s_lo = p.eval(&lo).cmp(&Q::default());
+    while &hi - &lo > *width {
+        let mid = (&lo + &hi) / q(2, 1);
+        let s = p.eval(&mid).cmp(&Q::default());
+        if s == Ordering::Equal {
+            return (mid.clone(), mid);
+        }
+        if s == s_lo {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    (lo, hi)
+}
+
+/// The old `rational_between`: quarter both intervals until they separate.
+fn rational_between_oracle(a: &Algebraic, b: &Algebraic) -> Q {
+    let (mut a, mut b) = (a.clone(), b.clone());
+    loop {
+        let ((alo, ahi), (blo, bhi)) = (a.interval(), b.interval());
+        if ahi < blo {
+            return simplest_between_oracle(&ahi, &blo);
+        }
+        a = a.refine(&((&ahi - &alo) / q(4, 1)));
+        b = b.refine(&((&bhi - &blo) / q(4, 1)));
+    }
+}
+
+/// The simplest rational in (l, r) by continued fractions (the library's
+/// rule, unchanged by the fast path; the oracle here is for the rounds).
+fn simplest_between_oracle(l: &Q, r: &Q) -> Q {
+    let fl = l.floor();
+    if &fl + q(1, 1) < *r {
+        return fl + q(1, 1);
+    }
+    let (frac_l, frac_r) = (l - &fl, r - &fl);
+    if frac_l == Q::default() {
+        let k = (q(1, 1) / &frac_r).floor() + q(1, 1);
+        return fl + q(1, 1) / k;
+    }
+    fl + q(1, 1) / simplest_between_oracle(&(q(1, 1) / frac_r), &(q(1, 1) / frac_l))
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(48))]
+
+    /// `refine_interval` (quadratic refinement + one grid point) returns the
+    /// bisection result exactly, for any width.
+    #[test]
+    fn refinement_equals_bisection(
+        rational in proptest::collection::vec((-30i64..30, 1i64..7), 0..4),
+        squares in proptest::collection::vec(2i64..40, 0..3),
+        bits in 0u32..70,
+        decimal in proptest::bool::ANY,
+    ) {
+        let p = mixed_poly(&rational, &squares);
+        prop_assume!(p.degree().unwrap_or(0) > 0);
+        let sf = p.squarefree();
+        let width = if decimal {
+            Q::new(1.into(), num_bigint::BigInt::from(10).pow(bits / 3))
+        } else {
+            Q::new(1.into(), num_bigint::BigInt::from(1) << bits)
+        };
+        for (lo, hi) in isolate_real_roots(&p) {
+            let fast = poly::sturm::refine_interval(&sf, &lo, &hi, &width);
+            prop_assert_eq!(fast, bisect_oracle(&sf, &lo, &hi, &width));
+        }
+    }
+
+    /// Comparisons across different polynomials agree with isolating the
+    /// product: the merged, deduplicated roots of p and q are the roots of
+    /// p·q, in the same order.
+    #[test]
+    fn comparisons_agree_with_isolating_the_product(
+        r1 in proptest::collection::vec((-12i64..12, 1i64..4), 0..3),
+        s1 in proptest::collection::vec(2i64..30, 0..3),
+        r2 in proptest::collection::vec((-12i64..12, 1i64..4), 0..3),
+        s2 in proptest::collection::vec(2i64..30, 0..3),
+        shift in -3i64..3,
+    ) {
+        let p = mixed_poly(&r1, &s1);
+        // q: another polynomial, sometimes sharing roots with p, sometimes
+        // with roots very close to p's (x² − k against (x − shift/10⁹)² − k).
+        let mut q_poly = mixed_poly(&r2, &s2);
+        if shift != 0 && !s1.is_empty() {
+            let e = q(shift, 1_000_000_000);
+            let x_minus_e = UPoly::new(vec![-e, q(1, 1)]);
+            let sq = &x_minus_e * &x_minus_e;
+            q_poly = &q_poly * &(&sq - &UPoly::constant(Q::from_integer(s1[0].into())));
+        }
+        let mut merged: Vec<Algebraic> = Algebraic::real_roots(&p);
+        merged.extend(Algebraic::real_roots(&q_poly));
+        merged.sort();
+        merged.dedup();
+        let product = Algebraic::real_roots(&(&p * &q_poly));
+        prop_assert_eq!(merged.len(), product.len());
+        for (a, b) in merged.iter().zip(&product) {
+            prop_assert_eq!(a.cmp(b), Ordering::Equal, "{:?} vs {:?}", a, b);
+        }
+        for w in product.windows(2) {
+            prop_assert_eq!(w[0].cmp(&w[1]), Ordering::Less);
+            prop_assert_eq!(w[1].cmp(&w[0]), Ordering::Greater);
+            prop_assert_eq!(Algebraic::rational_between(&w[0], &w[1]), rational_between_oracle(&w[0], &w[1]));
+        }
+    }
+
+    /// The sign of g at an algebraic number agrees with a Sturm-certified
+    /// oracle: narrow the interval until g has no root in it, then evaluate.
+    #[test]
+    fn signs_at_roots_agree_with_sturm(
+        squares in proptest::collection::vec(2i64..30, 1..3),
+        g in proptest::collection::vec(-9i64..9, 1..6),
+        share in proptest::bool::ANY,
+    ) {
+        let p = mixed_poly(&[], &squares);
+        let mut g = UPoly::from_ints(&g);
+        if share {
+            g = &g * &UPoly::from_ints(&[-squares[0], 0, 1]);
+        }
+        for a in Algebraic::real_roots(&p) {
+            let fast = a.sign_of(&g);
+            let expected = if g.is_zero() {
+                Ordering::Equal
+            } else {
+                let gsf = g.squarefree();
+                let on_g = g.degree().unwrap_or(0) > 0
+                    && Algebraic::real_roots(&gsf).iter().any(|r| r == &a);
+                if on_g {
+                    Ordering::Equal
+                } else {
+                    let mut w = q(1, 4);
+                    loop {
+                        let (lo, hi) = a.refine(&w).interval();
+                        if count_real_roots(&g, &lo, &hi) == 0 && !g.eval(&lo).is_zero_q() {
+                            break g.eval(&hi).cmp(&Q::default());
+                        }
+                        w /= q(16, 1);
+                    }
+                }
+            };
+            prop_assert_eq!(fast, expected, "g = {:?} at {:?}", g, a);
+        }
+    }
+
+    /// Decimals are correctly rounded: |a − d| ≤ ½·10^−digits.
+    #[test]
+    fn decimals_are_correctly_rounded(
+        squares in proptest::collection::vec(2i64..300, 1..3),
+        digits in 0usize..25,
+    ) {
+        let p = mixed_poly(&[(1, 3)], &squares);
+        for a in Algebraic::real_roots(&p) {
+            let d: Q = {
+                let s = a.to_decimal(digits);
+                let (int, frac) = s.split_once('.').unwrap_or((&s, ""));
+                let neg = int.starts_with('-');
+                let n: num_bigint::BigInt = format!("{}{}", int.trim_start_matches('-'), frac).parse().unwrap();
+                let v = Q::new(n, num_bigint::BigInt::from(10).pow(frac.len() as u32));
+                if neg { -v } else { v }
+            };
+            let half = Q::new(1.into(), num_bigint::BigInt::from(10).pow(digits as u32) * 2);
+            prop_assert!(a.cmp_rational(&(&d - &half)) != Ordering::Less);
+            prop_assert!(a.cmp_rational(&(&d + &half)) != Ordering::Greater);
+        }
+    }
+}
