@@ -852,9 +852,11 @@ fn simulate_check(
     let stride: Vec<u64> =
         checked.iter().map(|&i| ((0.5 / (modes[i].omega * t)).round() as u64).max(1)).collect();
     let wanted = stride.iter().map(|m| m * FIT_SAMPLES as u64).max().unwrap_or(1);
-    // Enough steps for the fit, even past a short duration: the fitted
-    // per-step root is extrapolated to the duration either way.
-    let steps = wanted.min((SIM_WORK / dim as f64) as u64).max(1);
+    // The duration, but at least enough steps for a fit of 32 samples of
+    // every checked mode (past a short duration: the fitted per-step root
+    // is extrapolated to the duration either way).
+    let enough = stride.iter().max().copied().unwrap_or(1).saturating_mul(32);
+    let steps = wanted.min(total_steps.max(enough)).min((SIM_WORK / dim as f64) as u64).max(1);
     let mut seqs: Vec<Vec<f64>> = vec![Vec::with_capacity(FIT_SAMPLES); checked.len()];
     let how;
     match a.spec.kernel {
