@@ -13,6 +13,7 @@
 
 pub mod drift_figure;
 pub mod emit;
+pub mod located;
 pub mod map;
 pub mod overview;
 pub mod paper;

@@ -25,7 +25,7 @@
 //! any other `A` (diagonally or fully implicit) declares every stage an
 //! `unknown`, one linear system solved exactly.
 
-use std::fmt::{self, Write as _};
+use std::fmt::Write as _;
 use std::ops::Range;
 use std::path::Path;
 
@@ -37,38 +37,7 @@ use toml::Spanned;
 pub const MAX_STAGES: usize = 64;
 
 /// A mistake in a tableau file, with its location.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct TableauError {
-    path: String,
-    line: usize,
-    col: usize,
-    message: String,
-}
-
-impl TableauError {
-    /// The 1-based line.
-    pub fn line(&self) -> usize {
-        self.line
-    }
-
-    /// The 1-based column.
-    pub fn col(&self) -> usize {
-        self.col
-    }
-
-    /// The message alone.
-    pub fn message(&self) -> &str {
-        &self.message
-    }
-}
-
-impl fmt::Display for TableauError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}:{}:{}: {}", self.path, self.line, self.col, self.message)
-    }
-}
-
-impl std::error::Error for TableauError {}
+pub type TableauError = crate::located::FileError;
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -102,14 +71,7 @@ pub struct Tableau {
     constants: Vec<(String, String)>,
 }
 
-/// The 1-based line and column (in characters) of a byte offset.
-fn line_col(text: &str, offset: usize) -> (usize, usize) {
-    let offset = offset.min(text.len());
-    let before = &text[..offset];
-    let line = before.matches('\n').count() + 1;
-    let col = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
-    (line, col)
-}
+use crate::located::line_col;
 
 /// A name fit for a `.zm` method: letters, digits and `_`, not starting
 /// with a digit.

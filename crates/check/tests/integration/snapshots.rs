@@ -29,15 +29,14 @@ fn sweep_boundaries_of_every_builtin() {
         .bind(|| insta::assert_snapshot!("sweep_boundaries_of_every_builtin", s));
 }
 
-/// The verify table at the default Φ list: class, ρ and Ψ to 6 digits, and
+/// The verify table of `names` at `phis`: class, ρ and Ψ to 6 digits, and
 /// whether the four witnesses agree (5000 simulated steps).
-#[test]
-fn verify_summary_of_every_builtin() {
+fn verify_summary<'a>(names: impl IntoIterator<Item = &'a str>, phis: &[f64]) -> String {
     let mut s = String::new();
-    for name in poly::paper_builtin_names() {
+    for name in names {
         let w = Witnesses::new(&poly::builtin(name).unwrap()).unwrap();
         writeln!(s, "{name}").unwrap();
-        for phi in [1e-6, 0.1, 0.5, 1.0, 1.5, 1.9] {
+        for &phi in phis {
             let r = w.at(&params().with("Phi", phi), 5000).unwrap();
             writeln!(
                 s,
@@ -50,30 +49,21 @@ fn verify_summary_of_every_builtin() {
             .unwrap();
         }
     }
+    s
+}
+
+/// The verify table at the default Φ list.
+#[test]
+fn verify_summary_of_every_builtin() {
+    let s = verify_summary(poly::paper_builtin_names(), &[1e-6, 0.1, 0.5, 1.0, 1.5, 1.9]);
     crate::snapshot::in_dir("check")
         .bind(|| insta::assert_snapshot!("verify_summary_of_every_builtin", s));
 }
 
-/// The verify table of the implicit and algebraic built-ins, as above.
+/// The verify table of the implicit and algebraic built-ins, up to Φ = 3.
 #[test]
 fn verify_summary_of_the_implicit_builtins() {
-    let mut s = String::new();
-    for name in poly::IMPLICIT_METHODS {
-        let w = Witnesses::new(&poly::builtin(name).unwrap()).unwrap();
-        writeln!(s, "{name}").unwrap();
-        for phi in [1e-6, 0.1, 0.5, 1.0, 1.5, 1.9, 3.0] {
-            let r = w.at(&params().with("Phi", phi), 5000).unwrap();
-            writeln!(
-                s,
-                "  phi {phi:<8} {:<22} rho {:.6} psi {:.6} agree {}",
-                r.exact.class.name(),
-                r.exact.spectral_radius,
-                r.exact.psi,
-                r.agree()
-            )
-            .unwrap();
-        }
-    }
+    let s = verify_summary(poly::IMPLICIT_METHODS, &[1e-6, 0.1, 0.5, 1.0, 1.5, 1.9, 3.0]);
     crate::snapshot::in_dir("check")
         .bind(|| insta::assert_snapshot!("verify_summary_of_the_implicit_builtins", s));
 }

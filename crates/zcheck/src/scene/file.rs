@@ -22,7 +22,6 @@
 //! and column the TOML parser gives for the offending value.
 
 use std::collections::HashMap;
-use std::fmt;
 use std::ops::Range;
 use std::path::Path;
 
@@ -93,38 +92,7 @@ pub struct ModeSpec {
 }
 
 /// A mistake in a scene file, with its location.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct SceneFileError {
-    path: String,
-    line: usize,
-    col: usize,
-    message: String,
-}
-
-impl SceneFileError {
-    /// The 1-based line.
-    pub fn line(&self) -> usize {
-        self.line
-    }
-
-    /// The 1-based column.
-    pub fn col(&self) -> usize {
-        self.col
-    }
-
-    /// The message alone.
-    pub fn message(&self) -> &str {
-        &self.message
-    }
-}
-
-impl fmt::Display for SceneFileError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}:{}:{}: {}", self.path, self.line, self.col, self.message)
-    }
-}
-
-impl std::error::Error for SceneFileError {}
+pub type SceneFileError = crate::located::FileError;
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -395,14 +363,7 @@ impl SceneFile {
     }
 }
 
-/// The 1-based line and column (in characters) of a byte offset.
-fn line_col(text: &str, offset: usize) -> (usize, usize) {
-    let offset = offset.min(text.len());
-    let before = &text[..offset];
-    let line = before.matches('\n').count() + 1;
-    let col = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
-    (line, col)
-}
+use crate::located::line_col;
 
 #[cfg(test)]
 mod tests {
