@@ -61,9 +61,15 @@ fn host_isa() -> Result<OwnedTargetIsa, String> {
     static ISA: OnceLock<Result<OwnedTargetIsa, String>> = OnceLock::new();
     ISA.get_or_init(|| {
         let mut flags = settings::builder();
-        for (name, value) in
-            [("opt_level", "speed"), ("use_colocated_libcalls", "false"), ("is_pic", "false")]
-        {
+        // The IR verifier runs in debug builds (the tests); it is a third
+        // of the compile time of a small step.
+        let verify = if cfg!(debug_assertions) { "true" } else { "false" };
+        for (name, value) in [
+            ("opt_level", "speed"),
+            ("enable_verifier", verify),
+            ("use_colocated_libcalls", "false"),
+            ("is_pic", "false"),
+        ] {
             flags.set(name, value).map_err(|e| e.to_string())?;
         }
         let isa = cranelift_native::builder().map_err(|e| format!("unsupported host: {e}"))?;
@@ -151,24 +157,34 @@ fn emit_step(
     for ins in step.instrs() {
         for regs in copies.iter_mut() {
             let get = |r: usize| regs[r].ok_or_else(|| unset(r));
-            let term = |b: &mut FunctionBuilder, i: usize| -> Result<Value, String> {
+            let product = |b: &mut FunctionBuilder, i: usize| -> Result<Value, String> {
                 let x = get(ins.src[i])?;
                 let c = p.constant(b, ty, ins.coef[i]);
                 // x·c, the constant second so it can stay in memory.
                 Ok(b.ins().fmul(x, c))
             };
+            // `v + c·x` for a term after the first: `v + x` when c is 1 and
+            // `v − x` when c is −1 (the same value: 1·x is x, and v + (−x)
+            // is v − x, in IEEE arithmetic), else the product and a sum.
+            let add_term = |b: &mut FunctionBuilder, v: Value, i: usize| -> Result<Value, String> {
+                let c = ins.coef[i];
+                if c == 1.0 || c == -1.0 {
+                    let x = get(ins.src[i])?;
+                    return Ok(if c == 1.0 { b.ins().fadd(v, x) } else { b.ins().fsub(v, x) });
+                }
+                let t = product(b, i)?;
+                Ok(b.ins().fadd(v, t))
+            };
             let v = if ins.accumulate {
                 let mut v = get(ins.dst)?;
                 for i in 0..ins.len as usize {
-                    let t = term(b, i)?;
-                    v = b.ins().fadd(v, t);
+                    v = add_term(b, v, i)?;
                 }
                 v
             } else {
-                let mut v = if ins.unit_first { get(ins.src[0])? } else { term(b, 0)? };
+                let mut v = if ins.unit_first { get(ins.src[0])? } else { product(b, 0)? };
                 for i in 1..ins.len as usize {
-                    let t = term(b, i)?;
-                    v = b.ins().fadd(v, t);
+                    v = add_term(b, v, i)?;
                 }
                 v
             };
@@ -372,6 +388,144 @@ fn build_lanes(
     Ok(())
 }
 
+/// Lanes per block of the streaming batch runner: the block's slots stay in
+/// L1 cache for all its steps.
+const STREAM_BLOCK: i64 = 256;
+
+/// `fn(data, lanes, n_steps)` for a long dependent step: blocks of
+/// [`STREAM_BLOCK`] lanes; for each step, every group of `u` vectors of the
+/// block loads its slots, runs one step and stores them back, so the groups
+/// are independent work the processor overlaps (a long chain per step keeps
+/// the register-resident runner waiting on latency). Needs every carried
+/// register to be a slot (memory holds the state between steps).
+fn build_lanes_streaming(
+    b: &mut FunctionBuilder,
+    step: &Step,
+    p: Prec,
+    carried: &[usize],
+    u: usize,
+    ptr_ty: Type,
+) -> Result<(), String> {
+    let n_slots = step.order();
+    let entry = b.create_block();
+    b.append_block_params_for_function_params(entry);
+    b.switch_to_block(entry);
+    let data = b.block_params(entry)[0];
+    let lanes = b.block_params(entry)[1];
+    let n = b.block_params(entry)[2];
+    let ret = b.create_block();
+    let stride = b.ins().imul_imm_s(lanes, p.size);
+    let zero = b.ins().iconst(ptr_ty, 0);
+    let block_head = b.create_block();
+    let b0 = b.append_block_param(block_head, ptr_ty);
+    b.ins().brif(n, block_head, &args(&[zero]), ret, &[]);
+
+    // Block loop: lanes b0 .. end.
+    b.switch_to_block(block_head);
+    let more = b.ins().icmp(IntCC::UnsignedLessThan, b0, lanes);
+    let block_pre = b.create_block();
+    b.ins().brif(more, block_pre, &[], ret, &[]);
+    b.switch_to_block(block_pre);
+    let wanted = b.ins().iadd_imm_s(b0, STREAM_BLOCK);
+    let end = b.ins().umin(wanted, lanes);
+    let step_head = b.create_block();
+    let k = b.append_block_param(step_head, types::I64);
+    b.ins().jump(step_head, &args(&[n]));
+
+    // Step loop: k steps left; each step sweeps the block's lanes in
+    // groups of u vectors, then one vector, then one lane.
+    b.switch_to_block(step_head);
+    let flags = MemFlagsData::new().with_notrap();
+    let mut groups = vec![(p.vector, u, p.width)];
+    if u > 1 {
+        groups.push((p.vector, 1, p.width));
+    }
+    groups.push((p.scalar, 1, 1));
+    let heads: Vec<Block> = groups
+        .iter()
+        .map(|_| {
+            let h = b.create_block();
+            b.append_block_param(h, ptr_ty);
+            h
+        })
+        .collect();
+    let latch = b.create_block();
+    b.ins().jump(heads[0], &args(&[b0]));
+    for (g, &(ty, u, width)) in groups.iter().enumerate() {
+        let per_group = (u as i64) * width;
+        let head = heads[g];
+        b.switch_to_block(head);
+        let i = b.block_params(head)[0];
+        let group_end = b.ins().iadd_imm_s(i, per_group);
+        let fits = b.ins().icmp(IntCC::UnsignedLessThanOrEqual, group_end, end);
+        let body = b.create_block();
+        if g + 1 < groups.len() {
+            b.ins().brif(fits, body, &[], heads[g + 1], &args(&[i]));
+        } else {
+            b.ins().brif(fits, body, &[], latch, &[]);
+        }
+        b.switch_to_block(body);
+        let offset = b.ins().imul_imm_s(i, p.size);
+        let mut base = b.ins().iadd(data, offset);
+        let mut slot_base = Vec::with_capacity(n_slots);
+        for s in 0..n_slots {
+            if s > 0 {
+                base = b.ins().iadd(base, stride);
+            }
+            slot_base.push(base);
+        }
+        let mut copies: Vec<Regs> = vec![vec![None; step.n_regs()]; u];
+        for (c, regs) in copies.iter_mut().enumerate() {
+            for &r in carried {
+                let at = (c as i64 * width * p.size) as i32;
+                regs[r] = Some(b.ins().load(ty, flags, slot_base[r], at));
+            }
+        }
+        emit_step(b, step, p, ty, &mut copies)?;
+        for (c, regs) in copies.iter().enumerate() {
+            for (s, &addr) in slot_base.iter().enumerate() {
+                let v = regs[s].ok_or_else(|| format!("slot {s} has no final value"))?;
+                b.ins().store(flags, v, addr, (c as i64 * width * p.size) as i32);
+            }
+        }
+        b.ins().jump(head, &args(&[group_end]));
+    }
+    b.switch_to_block(latch);
+    let left = b.ins().iadd_imm_s(k, -1);
+    let next_block = b.create_block();
+    b.ins().brif(left, step_head, &args(&[left]), next_block, &[]);
+    b.switch_to_block(next_block);
+    b.ins().jump(block_head, &args(&[end]));
+
+    b.switch_to_block(ret);
+    b.ins().return_(&[]);
+    Ok(())
+}
+
+/// Instructions per step from which [`BatchRunner::Auto`] streams: a long
+/// dependent chain would leave the register-resident runner waiting on the
+/// latency of each operation.
+const STREAM_FROM: usize = 4;
+
+/// Vectors per group of the streaming runner.
+const STREAM_VECTORS: usize = 2;
+
+/// How [`Jit::advance_lanes`] runs a batch. Both runners perform the same
+/// operations per lane, so they agree bit for bit.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum BatchRunner {
+    /// Registers for a short step, streaming for a long one.
+    #[default]
+    Auto,
+    /// Each group of lanes (several vectors side by side) stays in registers
+    /// for every step, then is stored.
+    Registers,
+    /// Blocks of lanes in L1 cache: each step sweeps the block's lanes,
+    /// loading and storing the slots (falls back to registers for a step
+    /// that carries a scratch register from one step to the next).
+    Streaming,
+}
+
 /// Vectors interleaved per lane group: enough independent chains to hide
 /// the latency of a dependent add, few enough to stay in the 16 vector
 /// registers.
@@ -406,11 +560,12 @@ unsafe impl Sync for Code {}
 
 /// A [`Step`] compiled to native code in precision `T` (see the module
 /// docs): [`JitStep`] for `f64`.
-pub struct Jit<T: Real> {
+pub struct Jit<T> {
     name: String,
     n_slots: usize,
     n_regs: usize,
     interleave: usize,
+    streaming: bool,
     one: unsafe extern "C" fn(*mut T, u64),
     lanes: unsafe extern "C" fn(*mut T, usize, u64),
     _code: Code,
@@ -420,14 +575,15 @@ pub struct Jit<T: Real> {
 /// The native step in `f64`, bit for bit [`Step`].
 pub type JitStep = Jit<f64>;
 
-impl<T: Real> fmt::Debug for Jit<T> {
+impl<T> fmt::Debug for Jit<T> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.debug_struct("Jit")
             .field("name", &self.name)
-            .field("precision", &T::NAME)
+            .field("precision", &std::any::type_name::<T>())
             .field("n_slots", &self.n_slots)
             .field("n_regs", &self.n_regs)
             .field("interleave", &self.interleave)
+            .field("streaming", &self.streaming)
             .finish_non_exhaustive()
     }
 }
@@ -438,12 +594,25 @@ impl<T: Real> Jit<T> {
     /// Errors (kind [`crate::ErrorKind::Jit`]) when the host has no
     /// cranelift back end or code generation fails.
     pub fn compile(step: &Step) -> Result<Jit<T>, Error> {
+        Jit::compile_with(step, BatchRunner::Auto)
+    }
+
+    /// [`Jit::compile`] with a choice of batch runner.
+    pub fn compile_with(step: &Step, runner: BatchRunner) -> Result<Jit<T>, Error> {
         let fail = |e: String| Error::jit(step.name(), &e);
         let isa = host_isa().map_err(fail)?;
         let mut module = JITModule::new(JITBuilder::with_isa(isa, default_libcall_names()));
         let p = prec::<T>();
         let carried = carried(step);
         let interleave = interleave_for(carried.len());
+        // Memory holds the state between steps when streaming, so every
+        // carried register must be a slot.
+        let streaming = carried.iter().all(|&r| r < step.order())
+            && match runner {
+                BatchRunner::Auto => step.instrs().len() >= STREAM_FROM,
+                BatchRunner::Registers => false,
+                BatchRunner::Streaming => true,
+            };
         let ptr_ty = module.target_config().pointer_type();
         let mut ctx = module.make_context();
         let mut fctx = FunctionBuilderContext::new();
@@ -475,7 +644,11 @@ impl<T: Real> Jit<T> {
         })
         .map_err(fail)?;
         let lanes = define(&mut module, "step_lanes", &[ptr_ty, ptr_ty, types::I64], &|b| {
-            build_lanes(b, step, p, &carried, interleave, ptr_ty)
+            if streaming {
+                build_lanes_streaming(b, step, p, &carried, STREAM_VECTORS, ptr_ty)
+            } else {
+                build_lanes(b, step, p, &carried, interleave, ptr_ty)
+            }
         })
         .map_err(fail)?;
         module.finalize_definitions().map_err(|e| fail(e.to_string()))?;
@@ -498,6 +671,7 @@ impl<T: Real> Jit<T> {
             n_slots: step.order(),
             n_regs: step.n_regs(),
             interleave,
+            streaming,
             one,
             lanes,
             _code: Code(Some(module)),
@@ -515,9 +689,17 @@ impl<T: Real> Jit<T> {
         self.n_slots
     }
 
-    /// Vectors run side by side per group of lanes.
+    /// Vectors run side by side per group of lanes (register-resident
+    /// batch runner).
     pub fn interleave(&self) -> usize {
         self.interleave
+    }
+
+    /// Whether batches stream through L1 blocks one step at a time
+    /// ([`BatchRunner::Streaming`]) rather than keep each group of lanes in
+    /// registers for all steps.
+    pub fn streaming(&self) -> bool {
+        self.streaming
     }
 
     /// Advances the register file of one state (the slots first, then the

@@ -4,7 +4,7 @@
 //! register, not just the slots) and batches of odd widths; the `f32` step
 //! against the `f32` kernel.
 
-use check::jit::{Jit, JitStep};
+use check::jit::{BatchRunner, Jit, JitStep};
 use check::kernel::Kernel;
 use check::numeric::{Batch, Params, ParamsF64, Step};
 use proptest::prelude::*;
@@ -13,6 +13,15 @@ use super::kernel::{program, start};
 
 fn bits(x: &[f64]) -> Vec<u64> {
     x.iter().map(|v| v.to_bits()).collect()
+}
+
+/// Both batch runners of a step (and the automatic choice, the one `compile`
+/// makes).
+fn both_runners(step: &Step) -> Vec<JitStep> {
+    [BatchRunner::Auto, BatchRunner::Registers, BatchRunner::Streaming]
+        .into_iter()
+        .map(|r| JitStep::compile_with(step, r).unwrap())
+        .collect()
 }
 
 /// One state and a batch of `lanes`, `n_steps` steps: the native step
@@ -65,10 +74,11 @@ fn jit_equals_interpreter_on_every_builtin() {
                 Err(e) if e.kind() == check::ErrorKind::NotFinite => continue,
                 Err(e) => panic!("{name}: {e}"),
             };
-            let jit = JitStep::compile(&step).unwrap();
-            for n_steps in [0, 1, 2, 3, 7, 100] {
-                for lanes in [1, 2, 3, 5, 7, 8, 9, 15, 17, 33, 131] {
-                    check_same(&step, &jit, n_steps, lanes);
+            for jit in both_runners(&step) {
+                for n_steps in [0, 1, 2, 3, 7, 100] {
+                    for lanes in [1, 2, 3, 5, 7, 8, 9, 15, 17, 33, 131, 300] {
+                        check_same(&step, &jit, n_steps, lanes);
+                    }
                 }
             }
         }
@@ -90,8 +100,9 @@ fn implicit_builtins_are_compiled() {
 fn jit_equals_interpreter_over_a_long_run() {
     for name in ["false_euler", "verlet", "standard_heun", "bdf2", "gauss_legendre_2"] {
         let step = Step::compile(&poly::builtin(name).unwrap(), &Params::phi(0.3)).unwrap();
-        let jit = JitStep::compile(&step).unwrap();
-        check_same(&step, &jit, 20_000, 13);
+        for jit in both_runners(&step) {
+            check_same(&step, &jit, 20_000, 13);
+        }
     }
 }
 
@@ -118,8 +129,12 @@ fn f32_jit_equals_f32_kernel() {
     for name in ["false_euler", "verlet", "false_heun", "bdf2", "standard_heun_matrix"] {
         let step = Step::compile(&poly::builtin(name).unwrap(), &Params::phi(0.1)).unwrap();
         let kernel = Kernel::<f32>::new(&step);
-        let jit = Jit::<f32>::compile(&step).unwrap();
-        for lanes in [1, 3, 4, 5, 11, 37] {
+        let registers = Jit::<f32>::compile_with(&step, BatchRunner::Registers).unwrap();
+        let streaming = Jit::<f32>::compile_with(&step, BatchRunner::Streaming).unwrap();
+        for (jit, lanes) in [&registers, &streaming]
+            .into_iter()
+            .flat_map(|j| [1, 3, 4, 5, 11, 37, 300].map(|l| (j, l)))
+        {
             let mut a: Vec<f32> =
                 (0..lanes * step.order()).map(|i| ((i * 5 + 1) as f32 * 0.3).sin()).collect();
             let mut b = a.clone();
@@ -184,18 +199,19 @@ proptest! {
     /// the interpreter bit for bit.
     #[test]
     fn jit_equals_interpreter_on_generated_programs(
-        src in program(), phi in 0.01f64..2.0, n_steps in 0u64..40, lanes in 1usize..40,
+        src in program(), phi in 0.01f64..2.0, n_steps in 0u64..40, lanes in 1usize..300,
     ) {
         let m = poly::Method::parse("gen.zm", &src).map_err(|e| TestCaseError::fail(format!("{e}\n{src}")))?;
         let step = Step::compile(&m, &Params::phi(phi)).unwrap();
-        let jit = JitStep::compile(&step).unwrap();
-        check_same(&step, &jit, n_steps, lanes);
+        for jit in both_runners(&step) {
+            check_same(&step, &jit, n_steps, lanes);
+        }
     }
 
     /// Generated implicit programs (where the system is regular at Φ).
     #[test]
     fn jit_equals_interpreter_on_generated_implicit_programs(
-        src in implicit_program(), phi in 0.01f64..2.0, n_steps in 0u64..40, lanes in 1usize..40,
+        src in implicit_program(), phi in 0.01f64..2.0, n_steps in 0u64..40, lanes in 1usize..300,
     ) {
         let m = match poly::Method::parse("gen.zm", &src) {
             Ok(m) => m,
@@ -209,7 +225,19 @@ proptest! {
         let step = Step::compile(&m, &Params::phi(phi));
         prop_assume!(step.is_ok());
         let step = step.unwrap();
-        let jit = JitStep::compile(&step).unwrap();
-        check_same(&step, &jit, n_steps, lanes);
+        for jit in both_runners(&step) {
+            check_same(&step, &jit, n_steps, lanes);
+        }
     }
+}
+
+/// The automatic choice keeps a short step in registers and streams a long
+/// one (so both runners are the ones users get, not only test variants).
+#[test]
+fn auto_runner_depends_on_the_step_length() {
+    let short = Step::compile(&poly::builtin("false_euler").unwrap(), &Params::phi(0.1)).unwrap();
+    let long = Step::compile(&poly::builtin("false_heun").unwrap(), &Params::phi(0.1)).unwrap();
+    assert!(!JitStep::compile(&short).unwrap().streaming());
+    assert!(JitStep::compile(&long).unwrap().streaming());
+    assert!(!JitStep::compile_with(&long, BatchRunner::Registers).unwrap().streaming());
 }
