@@ -165,7 +165,8 @@ fn emit_step(
             };
             // `v + c·x` for a term after the first: `v + x` when c is 1 and
             // `v − x` when c is −1 (the same value: 1·x is x, and v + (−x)
-            // is v − x, in IEEE arithmetic), else the product and a sum.
+            // is v − x, in IEEE arithmetic, for every number; a NaN stays a
+            // NaN), else the product and a sum.
             let add_term = |b: &mut FunctionBuilder, v: Value, i: usize| -> Result<Value, String> {
                 let c = ins.coef[i];
                 if c == 1.0 || c == -1.0 {
