@@ -95,6 +95,9 @@ pub struct Checkpoint {
 #[derive(Clone, Debug)]
 pub struct Study<T> {
     kernel: Kernel<T>,
+    /// The native step that runs the lanes instead (feature `jit`).
+    #[cfg(feature = "jit")]
+    native: Option<std::sync::Arc<crate::jit::Jit<T>>>,
     form: Vec<Vec<Q>>,
     starts: Vec<Vec<T>>,
     q0: Vec<Q>,
@@ -146,7 +149,25 @@ impl<T: Real> Study<T> {
                     .collect()
             })
             .collect();
-        Study { kernel, form, starts, q0: Vec::new() }
+        Study {
+            kernel,
+            form,
+            starts,
+            q0: Vec::new(),
+            #[cfg(feature = "jit")]
+            native: None,
+        }
+    }
+
+    /// Runs the lanes with the native step compiled from `step`, the step
+    /// the kernel was made from (feature `jit`): bit for bit the kernel's
+    /// operations, so the results are the same, only sooner.
+    #[cfg(feature = "jit")]
+    #[track_caller]
+    pub fn with_native(mut self, step: &crate::numeric::Step) -> Result<Study<T>, crate::Error> {
+        assert_eq!(step.order(), self.kernel.order(), "the kernel's own step");
+        self.native = Some(std::sync::Arc::new(crate::jit::Jit::compile(step)?));
+        Ok(self)
     }
 
     /// The exact conserved form of the step as it runs.
@@ -250,8 +271,16 @@ impl<T: Real> Study<T> {
                 std::thread::scope(|scope| {
                     for (d, r) in blocks.iter_mut().zip(&groups) {
                         let kernel = &self.kernel;
+                        #[cfg(feature = "jit")]
+                        let native = self.native.as_deref();
                         let w = r.len();
-                        scope.spawn(move || kernel.advance_lanes(d, w, k));
+                        scope.spawn(move || {
+                            #[cfg(feature = "jit")]
+                            if let Some(native) = native {
+                                return native.advance_lanes(d, w, k);
+                            }
+                            kernel.advance_lanes(d, w, k)
+                        });
                     }
                 });
                 done += k;

@@ -27,6 +27,8 @@ pub enum ErrorKind {
     /// A value is finite but beyond what the `f64` witnesses can work with
     /// (they square magnitudes): `f64` cannot represent the question.
     OutOfRange,
+    /// The native compiler (feature `jit`) could not compile a step.
+    Jit,
 }
 
 /// Why numeric work on a method, or loading it, failed.
@@ -84,6 +86,11 @@ impl Error {
             ErrorKind::OutOfRange,
             format!("{what}: f64 cannot represent this question (expected magnitudes below 1e100)"),
         )
+    }
+
+    #[cfg(feature = "jit")]
+    pub(crate) fn jit(method: &str, what: &str) -> Error {
+        Error::new(ErrorKind::Jit, format!("method `{method}`: the native compiler failed: {what}"))
     }
 
     /// A path that is no readable `.zm` file: `what` says why.

@@ -47,6 +47,8 @@
 pub mod classify;
 pub mod drift;
 mod error;
+#[cfg(feature = "jit")]
+pub mod jit;
 pub mod kernel;
 pub mod load;
 pub mod numeric;

@@ -710,6 +710,12 @@ impl State {
     pub fn slots_mut(&mut self) -> &mut [f64] {
         &mut self.regs[..self.n_slots]
     }
+
+    /// Every register, writable (for the native compiler's runner).
+    #[cfg(feature = "jit")]
+    pub(crate) fn regs_mut(&mut self) -> &mut [f64] {
+        &mut self.regs
+    }
 }
 
 /// Many states of one compiled method, stored struct-of-arrays: slot `s` of
@@ -754,6 +760,13 @@ impl Batch {
     /// Every slot of lane `lane`.
     pub fn lane(&self, lane: usize) -> Vec<f64> {
         (0..self.n_slots).map(|s| self.data[s * self.lanes + lane]).collect()
+    }
+
+    /// The slots of every lane (`data[s * lanes + l]`) and the slot count,
+    /// writable (for the native compiler's runner).
+    #[cfg(feature = "jit")]
+    pub(crate) fn data_mut(&mut self) -> (&mut [f64], usize) {
+        (&mut self.data, self.n_slots)
     }
 }
 

@@ -7,7 +7,7 @@ use check::numeric::{Batch, Params, ParamsF64, Step};
 use proptest::prelude::*;
 
 /// A start that differs per slot and lane.
-fn start(order: usize, lane: usize) -> Vec<f64> {
+pub(crate) fn start(order: usize, lane: usize) -> Vec<f64> {
     (0..order).map(|s| ((lane * 7 + s * 3 + 1) as f64 * 0.37).sin()).collect()
 }
 
@@ -87,7 +87,7 @@ fn f32_kernel_matches_hand_f32_loop() {
 /// A random linear `.zm` program: 1–3 state variables (some with history),
 /// temporaries, sums of 1–7 terms (longer than one instruction holds), and
 /// coefficients that are constants, Φ or products.
-fn program() -> impl Strategy<Value = String> {
+pub(crate) fn program() -> impl Strategy<Value = String> {
     (
         1usize..=3,
         prop::collection::vec((0u8..=1, prop::collection::vec((0u32..64, 0u32..6), 1..8)), 1..7),

@@ -220,6 +220,9 @@ fn study<T: Real>(
             "the exact Phi's: the rounded coefficients conserve no form, their rounding drifts too",
         ),
     };
+    // The native step (feature `jit`) runs the lanes: the same operations.
+    #[cfg(feature = "jit")]
+    let study = study.with_native(&step)?;
     let one_step = study.one_step();
     let bar = indicatif::ProgressBar::new(args.steps);
     bar.set_style(

@@ -5,7 +5,9 @@
 //! ([`check::kernel::Kernel`]); the specialised step is what is timed, on one
 //! state, with the same brief timer as the hand-written kernels
 //! ([`super::kernels::time_ns_per_step`]). The hand kernels stay as a
-//! baseline column beside it.
+//! baseline column beside it. Built with the feature `jit`, the step timed
+//! is the native one ([`check::jit::JitStep`]), bit for bit the same
+//! operations compiled to machine code.
 //!
 //! The state is renormalised between chunks of steps, so an unstable method
 //! at a large Φ never reaches infinities or subnormal numbers (which would
@@ -14,6 +16,7 @@
 use std::hint::black_box;
 use std::time::Duration;
 
+#[cfg(not(feature = "jit"))]
 use check::kernel::Kernel;
 use check::numeric::{Params, Step};
 use check::Error;
@@ -49,8 +52,16 @@ pub fn measure_ns_per_step_within(
     budget: Duration,
 ) -> Result<f64, Error> {
     let step = Step::compile(method, params)?;
+    // The native step (feature `jit`), else the specialised interpreter:
+    // bit for bit the same operations.
+    #[cfg(feature = "jit")]
+    let kernel = check::jit::JitStep::compile(&step)?;
+    #[cfg(not(feature = "jit"))]
     let kernel = Kernel::<f64>::new(&step);
     let ones = vec![1.0; step.order()];
+    #[cfg(feature = "jit")]
+    let mut state = step.state(&ones);
+    #[cfg(not(feature = "jit"))]
     let mut state = kernel.state(&ones);
     Ok(time_ns_per_step(
         |n| {
