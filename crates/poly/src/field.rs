@@ -299,19 +299,20 @@ pub fn inverse(a: &Poly) -> Option<Poly> {
     Some(Poly::from_terms(b.into_iter().zip(rows).map(|(m, r)| (r[n].clone(), m))))
 }
 
-/// A rational interval of width below `width` around p^(1/L).
+/// A rational interval of width below `width` around p^(1/L): with
+/// 2^-k < width, r = ⌊(p·2^(kL))^(1/L)⌋ = ⌊p^(1/L)·2^k⌋ by one integer root,
+/// so r/2^k ≤ p^(1/L) < (r + 1)/2^k.
 fn enclose(p: u64, l: u32, width: &Q) -> (Q, Q) {
-    let target = Q::from_integer(p.into());
-    let (mut lo, mut hi) = (Q::one(), target.clone().max(Q::one()));
-    while &hi - &lo >= *width {
-        let mid = (&lo + &hi) / Q::from_integer(2.into());
-        if num_traits::pow(mid.clone(), l as usize) <= target {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
+    // 2^-k < width ⇔ 2^k·numer > denom (width > 0).
+    let (n, d) = (width.numer().magnitude(), width.denom().magnitude());
+    let mut k = d.bits().saturating_sub(n.bits());
+    while (n << k) <= *d {
+        k += 1;
     }
-    (lo, hi)
+    let scaled = num_bigint::BigUint::from(p) << (k * u64::from(l));
+    let r = BigInt::from(scaled.nth_root(l));
+    let unit = BigInt::one() << k;
+    (Q::new(r.clone(), unit.clone()), Q::new(r + 1, unit))
 }
 
 /// A rational interval holding the real value of `a`, a polynomial in
@@ -394,6 +395,23 @@ pub(crate) fn radicand(n: &Q) -> Option<u64> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The integer-root enclosure holds the root (checked by raising the
+    /// ends to the L-th power exactly) and is narrower than asked.
+    #[test]
+    fn enclosures_hold_the_root() {
+        for (p, l) in [(2u64, 2u32), (3, 2), (2, 3), (5, 5), (7, 2), (1, 2), (4, 2), (1_000_003, 3)]
+        {
+            for bits in [1u32, 7, 52, 100, 300] {
+                let width = Q::new(3.into(), BigInt::one() << bits);
+                let (lo, hi) = enclose(p, l, &width);
+                let target = Q::from_integer(p.into());
+                assert!(num_traits::pow(lo.clone(), l as usize) <= target, "{p}^(1/{l})");
+                assert!(num_traits::pow(hi.clone(), l as usize) > target, "{p}^(1/{l})");
+                assert!(&hi - &lo < width, "{p}^(1/{l}) at 2^-{bits}");
+            }
+        }
+    }
 
     #[test]
     fn radicals_normalise() {

@@ -125,7 +125,7 @@ impl ExactCharpoly {
             method: d.method.name().to_owned(),
             params: d.method.params().to_vec(),
             charpoly: d.charpoly.clone(),
-            coeffs: d.coeffs(),
+            coeffs: d.coeffs().iter().map(with_constants_approximated).collect(),
             // The exact p, q path needs rational coefficients; a χ with
             // exact constants (Forest–Ruth's cbrt(2)) takes the general path.
             pq: d
@@ -199,6 +199,25 @@ impl ExactCharpoly {
                 })
             }
         }
+    }
+}
+
+/// `p` with each exact constant (sqrt(2), cbrt(2)) replaced by a rational
+/// within 2^-256 of it, once, so that evaluating a coefficient at a point is
+/// rational arithmetic only: the error this leaves in a coefficient's value
+/// is about 2^-250 of its terms' size, far below f64 resolution.
+fn with_constants_approximated(p: &Poly) -> Poly {
+    let width = num_traits::pow(Q::new(1.into(), 2.into()), 256);
+    let values: HashMap<Sym, Q> = p
+        .symbols()
+        .into_iter()
+        .filter(|&s| poly::field::generator_of(s).is_some())
+        .map(|s| (s, poly::field::approx(&Poly::sym(s), &width)))
+        .collect();
+    if values.is_empty() {
+        p.clone()
+    } else {
+        p.eval_partial(&values)
     }
 }
 
