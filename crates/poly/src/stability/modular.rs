@@ -257,8 +257,38 @@ fn primes_for(bound_sq: &BigInt) -> Vec<u64> {
     primes(count.max(1))
 }
 
-/// The determinant of a square matrix of integer polynomials in Φ.
+/// Whether every polynomial is even (no odd power of Φ).
+fn all_even<'a>(mut ps: impl Iterator<Item = &'a UPoly>) -> bool {
+    ps.all(|p| p.coeffs().iter().skip(1).step_by(2).all(Zero::is_zero))
+}
+
+/// c(Φ) = h(Φ²) ↦ h, for an even c.
+fn halve(p: &UPoly) -> UPoly {
+    UPoly::new(p.coeffs().iter().step_by(2).cloned().collect())
+}
+
+/// h ↦ h(Φ²).
+fn unhalve(h: &UPoly) -> UPoly {
+    let mut c = vec![Q::zero(); (2 * h.coeffs().len()).saturating_sub(1)];
+    for (k, v) in h.coeffs().iter().enumerate() {
+        c[2 * k] = v.clone();
+    }
+    UPoly::new(c)
+}
+
+/// The determinant of a square matrix of integer polynomials in Φ. When
+/// every entry is even in Φ (the oscillator's χ usually is: P(−Φ) is P(Φ)
+/// conjugated by diag(1, −1)), so is the determinant: it is computed in
+/// u = Φ², with half the interpolation points, each evaluation half as long.
 pub(crate) fn det(m: &[Vec<UPoly>]) -> UPoly {
+    if all_even(m.iter().flatten()) && m.iter().flatten().any(|e| e.degree().unwrap_or(0) > 0) {
+        let half: Vec<Vec<UPoly>> = m.iter().map(|row| row.iter().map(halve).collect()).collect();
+        return unhalve(&det_direct(&half));
+    }
+    det_direct(m)
+}
+
+fn det_direct(m: &[Vec<UPoly>]) -> UPoly {
     let n = m.len();
     if n == 0 {
         return UPoly::constant(Q::one());
@@ -403,50 +433,93 @@ pub(crate) fn coprime_mod_p(a: &[BigInt], b: &[BigInt]) -> bool {
     false
 }
 
-fn rem_mod(mut a: Vec<u64>, b: &[u64], p: u64) -> Vec<u64> {
-    trim(&mut a);
-    let n = b.len() - 1;
-    let mont = Mont::new(p);
-    // (1/lc(b))·R²: mul(x, ·) is x/lc(b) in Montgomery form.
-    let li = mont.form(mont.form(inv(b[n], p)));
-    while a.len() > n {
-        let c = mont.mul(a[a.len() - 1], li);
-        let s = a.len() - 1 - n;
-        for (j, &bj) in b.iter().enumerate() {
-            a[s + j] = submod(a[s + j], mont.mul(bj, c), p);
+/// Six primes below 2^31 (decreasing): small enough that a product of two
+/// residues fits a u64, so the root count below needs no 128-bit division
+/// and only 31 squarings for x^p.
+const SMALL_PRIMES: [u64; 6] =
+    [2_147_483_647, 2_147_483_629, 2_147_483_587, 2_147_483_579, 2_147_483_563, 2_147_483_549];
+
+/// Polynomial arithmetic over F_p for p < 2^31 (coefficients lowest first).
+mod small {
+    pub(super) fn trim(v: &mut Vec<u64>) {
+        while v.last() == Some(&0) {
+            v.pop();
         }
+    }
+
+    fn inv(a: u64, p: u64) -> u64 {
+        let (mut r, mut b, mut e) = (1u64, a % p, p - 2);
+        while e > 0 {
+            if e & 1 == 1 {
+                r = r * b % p;
+            }
+            b = b * b % p;
+            e >>= 1;
+        }
+        r
+    }
+
+    pub(super) fn rem(mut a: Vec<u64>, b: &[u64], p: u64) -> Vec<u64> {
         trim(&mut a);
-    }
-    a
-}
-
-fn gcd_mod(mut a: Vec<u64>, mut b: Vec<u64>, p: u64) -> Vec<u64> {
-    trim(&mut a);
-    trim(&mut b);
-    while !b.is_empty() {
-        let r = rem_mod(a, &b, p);
-        a = b;
-        b = r;
-    }
-    a
-}
-
-fn mul_mod_poly(a: &[u64], b: &[u64], p: u64) -> Vec<u64> {
-    if a.is_empty() || b.is_empty() {
-        return Vec::new();
-    }
-    let mont = Mont::new(p);
-    let mut c = vec![0u64; a.len() + b.len() - 1];
-    for (i, &x) in a.iter().enumerate() {
-        if x == 0 {
-            continue;
+        let n = b.len() - 1;
+        let li = inv(b[n], p);
+        while a.len() > n {
+            let c = a[a.len() - 1] * li % p;
+            let s = a.len() - 1 - n;
+            for (j, &bj) in b.iter().enumerate() {
+                a[s + j] = (a[s + j] + p - bj * c % p) % p;
+            }
+            trim(&mut a);
         }
-        let xm = mont.form(x);
-        for (j, &y) in b.iter().enumerate() {
-            c[i + j] = addmod(c[i + j], mont.mul(y, xm), p);
-        }
+        a
     }
-    c
+
+    pub(super) fn gcd(mut a: Vec<u64>, mut b: Vec<u64>, p: u64) -> Vec<u64> {
+        trim(&mut a);
+        trim(&mut b);
+        while !b.is_empty() {
+            let r = rem(a, &b, p);
+            a = b;
+            b = r;
+        }
+        a
+    }
+
+    /// The number of distinct roots in F_p of f (degree ≥ 1, lowest
+    /// coefficient first): deg gcd(x^p − x, f), x^p mod f by repeated squaring.
+    pub(super) fn distinct_roots(f: &[u64], p: u64) -> usize {
+        let mut acc = vec![1u64];
+        let mut base = rem(vec![0, 1], f, p);
+        let mut e = p;
+        while e > 0 {
+            if e & 1 == 1 {
+                acc = mul_rem(&acc, &base, f, p);
+            }
+            base = mul_rem(&base, &base, f, p);
+            e >>= 1;
+        }
+        acc.resize(acc.len().max(2), 0);
+        acc[1] = (acc[1] + p - 1) % p;
+        trim(&mut acc);
+        gcd(acc, f.to_vec(), p).len().saturating_sub(1)
+    }
+
+    /// a·b mod (f, p), for a, b of degree below deg f.
+    pub(super) fn mul_rem(a: &[u64], b: &[u64], f: &[u64], p: u64) -> Vec<u64> {
+        if a.is_empty() || b.is_empty() {
+            return Vec::new();
+        }
+        let mut c = vec![0u64; a.len() + b.len() - 1];
+        for (i, &x) in a.iter().enumerate() {
+            if x == 0 {
+                continue;
+            }
+            for (j, &y) in b.iter().enumerate() {
+                c[i + j] = (c[i + j] + x * y) % p;
+            }
+        }
+        rem(c, f, p)
+    }
 }
 
 /// An upper bound on the number of distinct rational roots of the integer
@@ -458,31 +531,17 @@ fn mul_mod_poly(a: &[u64], b: &[u64], p: u64) -> Vec<u64> {
 pub(crate) fn rational_root_bound(f: &[BigInt]) -> Option<usize> {
     let lead = f.last()?;
     let mut best: Option<usize> = None;
-    for p in primes(6) {
+    for p in SMALL_PRIMES {
         if (lead % BigInt::from(p)).is_zero() {
             continue;
         }
         let fp = reduce(f, p);
         let d: Vec<u64> =
-            fp.iter().enumerate().skip(1).map(|(k, &c)| mulmod(c, k as u64 % p, p)).collect();
-        if gcd_mod(fp.clone(), d, p).len() != 1 {
+            fp.iter().enumerate().skip(1).map(|(k, &c)| c * (k as u64 % p) % p).collect();
+        if small::gcd(fp.clone(), d, p).len() != 1 {
             continue;
         }
-        // x^p mod f by repeated squaring, then gcd(x^p − x, f).
-        let mut acc = vec![1u64];
-        let mut base = rem_mod(vec![0, 1], &fp, p);
-        let mut e = p;
-        while e > 0 {
-            if e & 1 == 1 {
-                acc = rem_mod(mul_mod_poly(&acc, &base, p), &fp, p);
-            }
-            base = rem_mod(mul_mod_poly(&base, &base, p), &fp, p);
-            e >>= 1;
-        }
-        acc.resize(acc.len().max(2), 0);
-        acc[1] = (acc[1] + p - 1) % p;
-        let g = gcd_mod(acc, fp, p);
-        let count = g.len().saturating_sub(1);
+        let count = small::distinct_roots(&fp, p);
         best = Some(best.map_or(count, |b: usize| b.min(count)));
         if count == 0 {
             break;
@@ -492,8 +551,18 @@ pub(crate) fn rational_root_bound(f: &[BigInt]) -> Option<usize> {
 }
 
 /// Res_z(f, g) for f, g in Z[Φ][z] given by their coefficients in z (lowest
-/// first, each an integer polynomial in Φ, the last one non-zero).
+/// first, each an integer polynomial in Φ, the last one non-zero). Computed
+/// in u = Φ² when every coefficient is even in Φ (see [`det`]).
 pub(crate) fn resultant(f: &[UPoly], g: &[UPoly]) -> UPoly {
+    if all_even(f.iter().chain(g)) && f.iter().chain(g).any(|e| e.degree().unwrap_or(0) > 0) {
+        let (fh, gh): (Vec<UPoly>, Vec<UPoly>) =
+            (f.iter().map(halve).collect(), g.iter().map(halve).collect());
+        return unhalve(&resultant_direct(&fh, &gh));
+    }
+    resultant_direct(f, g)
+}
+
+fn resultant_direct(f: &[UPoly], g: &[UPoly]) -> UPoly {
     let (m, n) = (f.len() - 1, g.len() - 1);
     let fi: Vec<Vec<BigInt>> = f.iter().map(ints).collect();
     let gi: Vec<Vec<BigInt>> = g.iter().map(ints).collect();
@@ -541,6 +610,30 @@ mod tests {
         // [[x, 1], [2, x]] → x² − 2
         let m = vec![vec![up(&[0, 1]), up(&[1])], vec![up(&[2]), up(&[0, 1])]];
         assert_eq!(det(&m), up(&[-2, 0, 1]));
+    }
+
+    /// The root count over F_p by x^p − x equals counting by trying every
+    /// element, for small primes and random polynomials.
+    #[test]
+    fn root_count_mod_p_matches_trying_every_element() {
+        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            seed
+        };
+        for p in [2u64, 3, 101, 103, 1009] {
+            for _ in 0..40 {
+                let deg = 1 + (next() % 7) as usize;
+                let mut f: Vec<u64> = (0..deg).map(|_| next() % p).collect();
+                f.push(1 + next() % (p - 1));
+                let brute = (0..p)
+                    .filter(|&x| f.iter().rev().fold(0u64, |acc, &c| (acc * x + c) % p) == 0)
+                    .count();
+                assert_eq!(super::small::distinct_roots(&f, p), brute, "{f:?} mod {p}");
+            }
+        }
     }
 
     #[test]
@@ -612,11 +705,20 @@ mod tests {
             x = x.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
             ((x >> 33) as i64).rem_euclid(2 * m + 1) - m
         };
-        for _ in 0..12 {
+        for round in 0..24 {
+            // Every other round even in Φ: the halved path (u = Φ²).
+            let even = round % 2 == 1;
             let (m, n) = (2 + next(1).unsigned_abs() as usize, 1 + next(1).unsigned_abs() as usize);
             let mut coeffs = |deg: usize| -> Vec<UPoly> {
-                let mut c: Vec<UPoly> =
-                    (0..deg).map(|_| up(&[next(5), next(5), next(3)])).collect();
+                let mut c: Vec<UPoly> = (0..deg)
+                    .map(|_| {
+                        if even {
+                            up(&[next(5), 0, next(5), 0, next(3)])
+                        } else {
+                            up(&[next(5), next(5), next(3)])
+                        }
+                    })
+                    .collect();
                 let mut lead = next(4);
                 if lead == 0 {
                     lead = 3;
@@ -635,6 +737,20 @@ mod tests {
                 assert_eq!(r.eval(&tq), Q::from_integer(expected), "f = {f:?}, g = {g:?}, t = {t}");
             }
         }
+    }
+
+    /// An even matrix's determinant, computed in Φ², equals the direct one.
+    #[test]
+    fn even_determinant_equals_the_direct_one() {
+        let m = vec![
+            vec![up(&[1, 0, -2]), up(&[3]), up(&[0, 0, 0, 0, 1])],
+            vec![up(&[0, 0, 5]), up(&[-1, 0, 1]), up(&[2])],
+            vec![up(&[7]), up(&[0, 0, -3]), up(&[1, 0, 1, 0, 1])],
+        ];
+        assert!(all_even(m.iter().flatten()));
+        let d = det(&m);
+        assert_eq!(d, det_direct(&m));
+        assert!(d.degree().unwrap_or(0) >= 4, "{d:?}");
     }
 
     #[test]
