@@ -1,5 +1,5 @@
 //! Exact stability analysis of multistep and Runge–Kutta methods on the
-//! oscillator (the programs of `tests/methods/`): `analyze` on χ, from the
+//! oscillator (the built-ins of `poly::COMPARISON_BUILTINS`): `analyze` on χ, from the
 //! derived characteristic polynomial to the full report.
 //!
 //! Run: `cargo bench -p poly --bench stability -- --warm-up-time 1
@@ -14,9 +14,7 @@ const METHODS: &[&str] = &[
 ];
 
 fn charpoly(name: &str) -> poly::Poly {
-    let path = format!("{}/tests/methods/{name}.zm", env!("CARGO_MANIFEST_DIR"));
-    let src = std::fs::read_to_string(&path).expect("fixture");
-    poly::charpoly(&poly::Method::parse(&path, &src).expect("parses")).expect("derives")
+    poly::charpoly(&poly::builtin(name).expect("a built-in")).expect("derives")
 }
 
 fn stability(c: &mut Criterion) {

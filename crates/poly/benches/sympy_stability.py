@@ -24,7 +24,7 @@ z, Phi = sp.symbols("z Phi")
 
 
 def charpoly(name):
-    path = os.path.join(HERE, "..", "tests", "methods", name + ".zm")
+    path = os.path.join(HERE, "..", "methods", name + ".zm")
     out = subprocess.run([ZCHECK, "derive", path, "--format", "json"], capture_output=True,
                          text=True, check=True).stdout
     import json

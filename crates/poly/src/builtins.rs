@@ -44,6 +44,33 @@ pub const BUILTINS: &[(&str, &str)] = &[
     ("soft_spring", include_str!("../methods/soft_spring.zm")),
 ];
 
+/// `(name, source)` for the multistep and explicit Runge–Kutta methods that
+/// analysts compare (not from the paper): Adams–Bashforth 2–8, leapfrog
+/// (Nyström 2) and Nyström 3–6, written with history reads (`v@1`), and
+/// RK3, RK4, Merson 4(3) and Ketcheson's SSPRK(10,4). Each file derives its
+/// coefficients in its comments. [`builtin`] finds them; they are not among
+/// [`builtin_names`] (the paper's and the implicit programs), so the
+/// every-built-in sweeps stay the paper's; [`comparison_builtin_names`]
+/// lists them.
+pub const COMPARISON_BUILTINS: &[(&str, &str)] = &[
+    ("ab2", include_str!("../methods/ab2.zm")),
+    ("ab3", include_str!("../methods/ab3.zm")),
+    ("ab4", include_str!("../methods/ab4.zm")),
+    ("ab5", include_str!("../methods/ab5.zm")),
+    ("ab6", include_str!("../methods/ab6.zm")),
+    ("ab7", include_str!("../methods/ab7.zm")),
+    ("ab8", include_str!("../methods/ab8.zm")),
+    ("leapfrog", include_str!("../methods/leapfrog.zm")),
+    ("nystrom3", include_str!("../methods/nystrom3.zm")),
+    ("nystrom4", include_str!("../methods/nystrom4.zm")),
+    ("nystrom5", include_str!("../methods/nystrom5.zm")),
+    ("nystrom6", include_str!("../methods/nystrom6.zm")),
+    ("rk3", include_str!("../methods/rk3.zm")),
+    ("rk4", include_str!("../methods/rk4.zm")),
+    ("merson", include_str!("../methods/merson.zm")),
+    ("ssprk104", include_str!("../methods/ssprk104.zm")),
+];
+
 /// The implicit and algebraic built-ins, beyond the paper's methods.
 pub const IMPLICIT_METHODS: [&str; 11] = [
     "trapezoidal",
@@ -104,9 +131,16 @@ pub fn damped_builtin_names() -> impl Iterator<Item = &'static str> {
     DAMPED_BUILTINS.iter().map(|(n, _)| *n)
 }
 
-/// Every built-in: the paper's programs, then the damped-spring ones.
+/// The names of the multistep and Runge–Kutta built-ins
+/// ([`COMPARISON_BUILTINS`]).
+pub fn comparison_builtin_names() -> impl Iterator<Item = &'static str> {
+    COMPARISON_BUILTINS.iter().map(|(n, _)| *n)
+}
+
+/// Every built-in: the paper's and implicit programs, the damped-spring
+/// ones, then the multistep and Runge–Kutta ones.
 pub fn all_builtin_names() -> impl Iterator<Item = &'static str> {
-    builtin_names().chain(damped_builtin_names())
+    builtin_names().chain(damped_builtin_names()).chain(comparison_builtin_names())
 }
 
 /// The built-ins transcribed from the paper (sections 5–11 and Appendix B):
@@ -115,9 +149,14 @@ pub fn paper_builtin_names() -> impl Iterator<Item = &'static str> {
     builtin_names().filter(|n| !IMPLICIT_METHODS.contains(n))
 }
 
-/// The source text of a built-in method (paper or damped-spring).
+/// The source text of a built-in method (any of the tables).
 pub fn builtin_source(name: &str) -> Option<&'static str> {
-    BUILTINS.iter().chain(DAMPED_BUILTINS).find(|(n, _)| *n == name).map(|(_, s)| *s)
+    BUILTINS
+        .iter()
+        .chain(DAMPED_BUILTINS)
+        .chain(COMPARISON_BUILTINS)
+        .find(|(n, _)| *n == name)
+        .map(|(_, s)| *s)
 }
 
 /// Parses a built-in method; `None` when no built-in has that name.

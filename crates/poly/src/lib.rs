@@ -73,9 +73,9 @@ mod upoly;
 
 pub use crate::algebraic::Algebraic;
 pub use crate::builtins::{
-    all_builtin_names, builtin, builtin_names, builtin_source, damped_builtin_names, direct_twin,
-    paper_builtin_names, BUILTINS, DAMPED_BUILTINS, DAMPED_METHODS, IMPLICIT_METHODS,
-    PAPER_METHODS,
+    all_builtin_names, builtin, builtin_names, builtin_source, comparison_builtin_names,
+    damped_builtin_names, direct_twin, paper_builtin_names, BUILTINS, COMPARISON_BUILTINS,
+    DAMPED_BUILTINS, DAMPED_METHODS, IMPLICIT_METHODS, PAPER_METHODS,
 };
 pub use crate::class::RootClass;
 pub use crate::cost::{step_cost, OpCount, StepCost};

@@ -1,5 +1,6 @@
 //! Stability limits of multistep and Runge–Kutta methods on the oscillator,
-//! written as `.zm` programs with history reads (`tests/methods/*.zm`), with
+//! written as `.zm` programs with history reads (the built-ins of
+//! `poly::COMPARISON_BUILTINS`, `methods/*.zm`), with
 //! classical values derived by hand, and against a slow, obvious oracle:
 //! Schur's recursive test over Q ("every root strictly inside the unit
 //! circle") at rationals just below and above each exact limit.
@@ -7,12 +8,10 @@
 use std::collections::HashMap;
 
 use poly::stability::{analyze, analyze_derivation, Boundary, Stability, StabilityReport};
-use poly::{q, Algebraic, Derivation, Method, Poly, Sym, UPoly, Q};
+use poly::{q, Algebraic, Derivation, Poly, Sym, UPoly, Q};
 
 fn derivation(name: &str) -> Derivation {
-    let path = format!("{}/tests/methods/{name}.zm", env!("CARGO_MANIFEST_DIR"));
-    let src = std::fs::read_to_string(&path).expect("fixture");
-    poly::derive(&Method::parse(&path, &src).expect("parses")).expect("derives")
+    poly::derive(&poly::builtin(name).expect("a built-in")).expect("derives")
 }
 
 fn report(name: &str) -> StabilityReport {
@@ -41,6 +40,10 @@ fn schur_strictly_inside(f: &UPoly) -> bool {
             return false;
         }
         a = (0..n).map(|k| &an * &a[k + 1] - &a0 * &a[n - k - 1]).collect();
+        // Made monic (its leading coefficient a_n² − a_0² > 0), so the sizes
+        // stay linear in the degree rather than doubling at every step.
+        let lead = a[n - 1].clone();
+        a.iter_mut().for_each(|c| *c /= &lead);
     }
 }
 
@@ -97,9 +100,7 @@ fn adams_bashforth_four() {
     check_limit_against_schur("ab4", &r);
 }
 
-/// AB5 and AB6 have no stability interval on the imaginary axis. (AB7 and
-/// AB8, with short intervals, are in the stability bench: too slow for an
-/// unoptimised test build.)
+/// AB5 and AB6 have no stability interval on the imaginary axis.
 #[test]
 fn adams_bashforth_five_and_six() {
     for name in ["ab5", "ab6"] {
@@ -183,4 +184,64 @@ fn merson_limit_is_bounded_from_the_transition_matrix() {
         }
     }
     check_limit_against_schur("merson", &rp);
+}
+
+/// AB7 and AB8 have short intervals again (a pair leaves the circle), each
+/// limit checked by Schur's test on both sides.
+#[test]
+fn adams_bashforth_seven_and_eight() {
+    for name in ["ab7", "ab8"] {
+        let r = analyze_derivation(&derivation(name), &HashMap::new()).unwrap();
+        assert_eq!(r.boundary(), Some(Boundary::ComplexPairLeavesCircle), "{name}");
+        assert_eq!(r.bounded_at_phi_max(), Some(true), "{name}");
+        check_limit_against_schur(name, &r);
+    }
+}
+
+/// Φ_max exactly when its closed form is short, else its degree.
+fn exact(x: &Algebraic) -> String {
+    match x.closed_form() {
+        Some(s) if s.len() <= 40 => s,
+        _ => format!("root of degree {}", x.defining_poly().degree().unwrap_or(0)),
+    }
+}
+
+/// The review table of every multistep and Runge–Kutta built-in: limit
+/// (exact and to 10 places), boundary, boundedness there (from P), the
+/// class changes and the stable intervals (6 places).
+#[test]
+fn comparison_builtins_summary() {
+    let mut out = String::new();
+    for name in poly::comparison_builtin_names() {
+        let d = derivation(name);
+        let r = analyze_derivation(&d, &HashMap::new()).unwrap();
+        out += &format!("{name}: degree {}, {}", r.degree, r.stability.name());
+        if let Some(m) = r.phi_max() {
+            out += &format!(
+                ", Phi_max = {} = {}, {}, bounded there: {}",
+                exact(m),
+                m.to_decimal(10),
+                r.boundary().map_or("-", |b| b.name()),
+                r.bounded_at_phi_max().map_or("undecided".to_owned(), |b| b.to_string())
+            );
+        }
+        out += "\n  class changes:";
+        for c in &r.class_changes {
+            out += &format!(" {}->{} at {};", c.from, c.to, c.at.to_decimal(6));
+        }
+        out += "\n  stable:";
+        for s in &r.stable_intervals {
+            out += &format!(
+                " {}{}, {}{}",
+                if s.lo_closed { "[" } else { "(" },
+                s.lo.to_decimal(6),
+                s.hi.as_ref().map_or("inf".to_owned(), |h| h.to_decimal(6)),
+                if s.hi_closed { "]" } else { ")" }
+            );
+        }
+        out += "\n";
+    }
+    let mut settings = crate::snapshot::in_dir("poly");
+    settings.set_omit_expression(true);
+    settings.bind(|| insta::assert_snapshot!("comparison_builtins_summary", out));
 }

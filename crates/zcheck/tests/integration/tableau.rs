@@ -28,7 +28,7 @@ fn rk4_tableau_matches_the_hand_written_program() {
     assert!(t.is_explicit());
     let src = t.to_zm(false);
     assert!(!src.contains("unknown"), "{src}");
-    let hand = include_str!("../../../poly/tests/methods/rk4.zm");
+    let hand = include_str!("../../../poly/methods/rk4.zm");
     assert_eq!(chi_of(&src), chi_of(hand));
 }
 
