@@ -184,6 +184,8 @@ impl ExactCharpoly {
             }
             None => {
                 let mut roots = polynomial_roots(&coeffs)?;
+                let exact: Vec<Q> = self.coeffs.iter().map(|c| exact_eval(c, &map)).collect();
+                polish_roots(&exact, &mut roots);
                 sort_roots(&mut roots);
                 let tol = poly_tolerances(&coeffs, &roots);
                 let class = classify_roots(&roots, &tol);
@@ -218,6 +220,47 @@ fn with_constants_approximated(p: &Poly) -> Poly {
         p.clone()
     } else {
         p.eval_partial(&values)
+    }
+}
+
+/// χ and χ′ at the complex point x + iy, exactly (coefficients highest
+/// power first), each rounded once to f64 at the end.
+fn eval_exact_at(coeffs: &[Q], z: C64) -> Option<(C64, C64)> {
+    let (x, y) = (crate::numeric::f64_to_q(z.re)?, crate::numeric::f64_to_q(z.im)?);
+    let (mut pr, mut pi, mut dr, mut di) = (Q::zero(), Q::zero(), Q::zero(), Q::zero());
+    for a in coeffs {
+        // d ← d·z + p, then p ← p·z + a.
+        let (ndr, ndi) = (&dr * &x - &di * &y + &pr, &dr * &y + &di * &x + &pi);
+        let (npr, npi) = (&pr * &x - &pi * &y + a, &pr * &y + &pi * &x);
+        (dr, di, pr, pi) = (ndr, ndi, npr, npi);
+    }
+    Some((C64::new(q_to_f64(&pr), q_to_f64(&pi)), C64::new(q_to_f64(&dr), q_to_f64(&di))))
+}
+
+/// Newton steps on each root with χ and χ′ evaluated exactly: roots taken
+/// from rounded coefficients lose accuracy where roots crowd (a multistep
+/// method's principal pair 1 ± iΦ at small Φ: relative error 10⁻⁵ in Ψ at
+/// Φ = 10⁻⁶), the exact values do not. A step is taken only while it stays
+/// within a quarter of the distance to the nearest other root, so a root
+/// never jumps to a neighbour (and an exactly multiple root stays put).
+fn polish_roots(exact: &[Q], roots: &mut [C64]) {
+    for k in 0..roots.len() {
+        let gap = (0..roots.len())
+            .filter(|&j| j != k)
+            .map(|j| (roots[j] - roots[k]).norm())
+            .fold(f64::INFINITY, f64::min);
+        for _ in 0..4 {
+            let Some((v, d)) = eval_exact_at(exact, roots[k]) else { break };
+            let step = v / d;
+            if !step.re.is_finite() || !step.im.is_finite() || step.norm() > 0.25 * gap {
+                break;
+            }
+            let next = roots[k] - step;
+            if next == roots[k] {
+                break;
+            }
+            roots[k] = next;
+        }
     }
 }
 
