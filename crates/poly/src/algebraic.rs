@@ -670,8 +670,32 @@ fn round_decimal(q: &Q, digits: usize) -> String {
 }
 
 impl PartialEq for Algebraic {
+    /// [`Ord::cmp`]'s test for `Equal` without its refinement: an irrational
+    /// number's defining polynomial has no rational root, so it never equals
+    /// a rational; two irrational ones are equal exactly when the gcd of
+    /// their defining polynomials changes sign across the overlap of their
+    /// intervals. Distinct numbers are never refined apart here (merging the
+    /// roots of many conditions compares each with every other).
     fn eq(&self, other: &Algebraic) -> bool {
-        self.cmp(other) == Ordering::Equal
+        match (&self.repr, &other.repr) {
+            (Repr::Rational(a), Repr::Rational(b)) => a == b,
+            (Repr::Rational(_), _) | (_, Repr::Rational(_)) => false,
+            (
+                Repr::Root { poly: p1, lo: lo1, hi: hi1, .. },
+                Repr::Root { poly: p2, lo: lo2, hi: hi2, .. },
+            ) => {
+                if hi1 <= lo2 || hi2 <= lo1 {
+                    return false;
+                }
+                let g = p1.gcd(p2);
+                let (lo, hi) = (lo1.max(lo2), hi1.min(hi2));
+                if g.degree().unwrap_or(0) == 0 || lo >= hi {
+                    return false;
+                }
+                let gi = IntPoly::new(&g);
+                gi.sign_at(lo) != gi.sign_at(hi)
+            }
+        }
     }
 }
 

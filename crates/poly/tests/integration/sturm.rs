@@ -430,3 +430,26 @@ proptest! {
         }
     }
 }
+
+proptest! {
+    /// Equality (no refinement) agrees with the ordering's `Equal` (which
+    /// refines distinct numbers apart), on roots of two polynomials sharing
+    /// a random factor, so that equal roots from different polynomials occur.
+    #[test]
+    fn equality_agrees_with_the_ordering(
+        shared in prop::collection::vec(-9i64..=9, 2..5),
+        a in prop::collection::vec(-9i64..=9, 1..4),
+        b in prop::collection::vec(-9i64..=9, 1..4),
+    ) {
+        let f = UPoly::from_ints(&shared);
+        let p = &f * &UPoly::from_ints(&a);
+        let q = &f * &UPoly::from_ints(&b);
+        prop_assume!(!p.is_zero() && !q.is_zero());
+        let (rp, rq) = (Algebraic::real_roots(&p), Algebraic::real_roots(&q));
+        for x in &rp {
+            for y in &rq {
+                prop_assert_eq!(x == y, x.cmp(y) == Ordering::Equal, "{} vs {}", x, y);
+            }
+        }
+    }
+}
