@@ -264,18 +264,12 @@ fn polish_roots(exact: &[Q], roots: &mut [C64]) {
     }
 }
 
+/// A coefficient's value at the parameters: rational, since its exact
+/// constants were approximated when χ was prepared
+/// ([`with_constants_approximated`]) and `map` gives every parameter.
 fn exact_eval(p: &Poly, map: &HashMap<Sym, Q>) -> Q {
     let v = p.eval_partial(map);
-    match v.as_constant() {
-        Some(q) => q,
-        // What remains is an exact constant (sqrt(3), cbrt(2)): its value
-        // to within 2^-100, far below f64 resolution.
-        None if v.symbols().iter().all(|&s| poly::field::generator_of(s).is_some()) => {
-            let w = poly::q(1, 1 << 50);
-            poly::field::approx(&v, &(&w * &w))
-        }
-        None => panic!("every parameter has a value: {v}"),
-    }
+    v.as_constant().unwrap_or_else(|| panic!("every parameter has a value: {v}"))
 }
 
 fn sign(x: &Q) -> std::cmp::Ordering {
