@@ -29,7 +29,7 @@ pub struct Args {
     /// A scene file (TOML: masses and springs, or modes; see the README).
     #[arg(long, conflicts_with_all = ["freq", "tick", "damping"])]
     pub scene: Option<std::path::PathBuf>,
-    /// Candidate methods for a scene: built-in names or `.zm` files
+    /// Candidate methods for a scene (with --scene only): built-in names or `.zm` files
     /// (comma-separated or repeated); default: the seven direct methods.
     #[arg(long, value_delimiter = ',', requires = "scene")]
     pub methods: Vec<String>,
@@ -82,6 +82,18 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
     let (Some(freq_hz), Some(tick_hz)) = (args.freq, args.tick) else {
         anyhow::bail!("expected --freq and --tick, or --scene FILE");
     };
+    // The one-spring table compares the seven direct methods (with
+    // --damping, each on the damped spring); --methods would be ignored.
+    if !args.methods.is_empty() {
+        anyhow::bail!(
+            "--methods {}: the candidates of a scene (--scene FILE); with --freq and --tick \
+             zcheck advise compares the seven direct methods. Expected --scene FILE (a one-mode \
+             scene is one body and one spring), or zcheck tradeoff --method {} to rank a method \
+             of your own",
+            args.methods.join(","),
+            args.methods[0]
+        );
+    }
     let scene = Scene {
         freq_hz,
         tick_hz,

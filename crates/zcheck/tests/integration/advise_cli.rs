@@ -174,3 +174,14 @@ fn one_spring_is_a_one_mode_scene() {
         assert!(v["recommended"].is_object(), "{v}");
     }
 }
+
+/// `--methods` with `--freq/--tick` was silently ignored (the table showed
+/// the seven direct methods): now it is refused with what to use instead.
+#[test]
+fn methods_without_a_scene_are_refused_not_ignored() {
+    let (code, out, err) = zcheck(&["advise", "--freq", "5", "--tick", "60", "--methods", "rk4"]);
+    assert_eq!(code, 2, "{out}");
+    assert!(out.is_empty(), "{out}");
+    assert!(err.contains("--methods rk4") && err.contains("--scene FILE"), "{err}");
+    assert!(err.contains("zcheck tradeoff --method rk4"), "{err}");
+}
