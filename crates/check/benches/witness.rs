@@ -1,5 +1,6 @@
 //! Criterion benchmarks of the numeric witnesses: a second-order Φ sweep
-//! (spectral radius + class), and the compiled step against hand-written
+//! (spectral radius + class), whole sweeps of implicit built-ins with exact
+//! constants, and the compiled step against hand-written
 //! loops for one state and for a batch of 4096 states.
 
 use check::numeric::ParamsF64;
@@ -30,6 +31,19 @@ fn sweep(c: &mut Criterion) {
                 }
                 acc
             })
+        });
+    }
+    g.finish();
+    // The whole sweep (default grid, boundaries bisected to adjacent
+    // floats) of methods whose χ carries exact constants or a det A
+    // denominator: the general path, which evaluates χ exactly per point.
+    let mut g = c.benchmark_group("full_sweep");
+    g.sample_size(10);
+    for name in ["trapezoidal", "sdirk2", "forest_ruth"] {
+        let m = poly::builtin(name).unwrap();
+        let params = Params::default().with("D", 0.3);
+        g.bench_function(name, |b| {
+            b.iter(|| check::sweep::sweep(&m, &params, &check::sweep::default_grid()).unwrap())
         });
     }
     g.finish();
