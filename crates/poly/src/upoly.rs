@@ -143,6 +143,13 @@ impl UPoly {
         if self.degree() == Some(0) || other.degree() == Some(0) {
             return UPoly::constant(Q::one());
         }
+        // gcd(x^i·p, x^j·q) = x^min(i, j)·gcd(p, q): powers of x are split
+        // off first (a cheap, common factor of the conditions in Φ).
+        let (i, j) = (self.low_order(), other.low_order());
+        if i > 0 || j > 0 {
+            let g = self.shifted_down(i).gcd(&other.shifted_down(j));
+            return g.shifted_up(i.min(j));
+        }
         let (mut a, mut b) = (int_primitive(self), int_primitive(other));
         if crate::stability::modular::coprime_mod_p(&a, &b) {
             return UPoly::constant(Q::one());
@@ -158,10 +165,36 @@ impl UPoly {
         UPoly::new(a.into_iter().map(Q::from_integer).collect()).monic()
     }
 
+    /// The exponent of the largest power of x dividing a non-zero `p`.
+    fn low_order(&self) -> usize {
+        self.c.iter().position(|c| !c.is_zero()).unwrap_or(0)
+    }
+
+    /// `p / x^k`, for x^k dividing `p`.
+    fn shifted_down(&self, k: usize) -> UPoly {
+        UPoly { c: self.c[k..].to_vec() }
+    }
+
+    /// `x^k·p`.
+    fn shifted_up(mut self, k: usize) -> UPoly {
+        if k > 0 && !self.c.is_empty() {
+            self.c.splice(0..0, std::iter::repeat_n(Q::zero(), k));
+        }
+        self
+    }
+
     /// The square-free part `p / gcd(p, p')`, monic.
     pub fn squarefree(&self) -> UPoly {
         if self.degree().unwrap_or(0) == 0 {
             return self.monic();
+        }
+        // A factor x^k (conditions in Φ often carry a high power of Φ, and
+        // with it a gcd of high degree): sf(x^k·q) = x·sf(q) for q(0) ≠ 0,
+        // so the gcd runs on q alone, which is usually coprime to q′ (a
+        // check modulo a prime, no remainder sequence).
+        let low = self.low_order();
+        if low > 0 {
+            return self.shifted_down(low).squarefree().shifted_up(1);
         }
         let g = self.gcd(&self.derivative());
         if g.degree() == Some(0) {
