@@ -587,13 +587,13 @@ fn rational_root_in(f: &UPoly, ip: &IntPoly, lo: &Q, hi: &Q) -> Option<Q> {
 fn integer_leading(f: &UPoly) -> BigInt {
     let mut den = BigInt::one();
     for c in f.coeffs() {
-        den = den.lcm(c.denom());
+        den = crate::intgcd::lcm(&den, c.denom());
     }
     let ints: Vec<BigInt> =
         f.coeffs().iter().map(|c| (c * Q::from_integer(den.clone())).to_integer()).collect();
     let mut g = BigInt::zero();
     for i in &ints {
-        g = g.gcd(i);
+        g = crate::intgcd::gcd(&g, i);
     }
     (ints.last().cloned().unwrap_or_else(BigInt::one) / g).abs()
 }

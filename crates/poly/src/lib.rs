@@ -58,6 +58,7 @@ mod error;
 pub mod field;
 pub mod field_stability;
 mod implicit;
+mod intgcd;
 pub mod invariant;
 mod matrix;
 mod method;

@@ -33,7 +33,7 @@ impl IntPoly {
     pub(crate) fn new(p: &UPoly) -> IntPoly {
         let mut den = BigInt::one();
         for q in p.coeffs() {
-            den = den.lcm(q.denom());
+            den = crate::intgcd::lcm(&den, q.denom());
         }
         let mut c: Vec<BigInt> =
             p.coeffs().iter().map(|q| q.numer() * (&den / q.denom())).collect();
@@ -98,7 +98,7 @@ impl IntPoly {
     /// homogeneous form Σ c_k X^k q^(n−k).
     pub(crate) fn sign_on(&self, lo: &Q, hi: &Q) -> Option<Ordering> {
         let n = self.degree()?;
-        let q = lo.denom().lcm(hi.denom());
+        let q = crate::intgcd::lcm(lo.denom(), hi.denom());
         let a = lo.numer() * (&q / lo.denom());
         let b = hi.numer() * (&q / hi.denom());
         let (mut l, mut u) = (self.c[n].clone(), self.c[n].clone());
@@ -359,7 +359,7 @@ pub(crate) fn refine_quadratic(ip: &IntPoly, lo: &Q, hi: &Q, width: &Q) -> (Q, Q
     }
     // Integers throughout: a = A/E, b = B/E over one denominator E > 0, and
     // values f(x)·E^n (the same positive factor at every point).
-    let mut e = lo.denom().lcm(hi.denom());
+    let mut e = crate::intgcd::lcm(lo.denom(), hi.denom());
     let mut a = lo.numer() * (&e / lo.denom());
     let mut b = hi.numer() * (&e / hi.denom());
     let value = |x: &BigInt, e: &BigInt| ip.scaled_value_parts(x, e);

@@ -9,7 +9,6 @@ use std::fmt;
 use std::ops::{Add, Mul, Neg, Sub};
 
 use num_bigint::BigInt;
-use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
 
 use crate::Q;
@@ -331,7 +330,7 @@ impl Neg for &UPoly {
 pub(crate) fn int_primitive(p: &UPoly) -> Vec<BigInt> {
     let mut den = BigInt::one();
     for q in p.coeffs() {
-        den = den.lcm(q.denom());
+        den = crate::intgcd::lcm(&den, q.denom());
     }
     primitive(p.coeffs().iter().map(|q| q.numer() * (&den / q.denom())).collect())
 }
@@ -369,7 +368,7 @@ pub(crate) fn content<'a>(xs: impl IntoIterator<Item = &'a BigInt>) -> BigInt {
         if x.is_zero() {
             continue;
         }
-        g = if g.is_zero() { x.abs() } else { g.gcd(&(x % &g)) };
+        g = if g.is_zero() { x.abs() } else { crate::intgcd::gcd(&g, &(x % &g)) };
         if g.is_one() {
             break;
         }

@@ -30,7 +30,6 @@
 //! inside an interval would go unlisted (see the module notes).
 
 use num_bigint::BigInt;
-use num_integer::Integer;
 use num_traits::One;
 
 use crate::error::{Error, ErrorKind};
@@ -126,7 +125,7 @@ pub(crate) fn integer_scaled(a: &[UPoly]) -> Vec<UPoly> {
     let mut den = BigInt::one();
     for c in a {
         for q in c.coeffs() {
-            den = den.lcm(q.denom());
+            den = crate::intgcd::lcm(&den, q.denom());
         }
     }
     let s = Q::from_integer(den);

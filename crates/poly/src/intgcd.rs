@@ -1,0 +1,156 @@
+//! Greatest common divisors of big integers by Lehmer's algorithm.
+//!
+//! num-bigint's `Integer::gcd` is Stein's binary algorithm: one shift and
+//! one subtraction of the whole number per bit, so a gcd of two 400-bit
+//! numbers costs hundreds of passes over both. The contents of the
+//! remainder sequences and the denominators of the stability analysis are
+//! such numbers, and that gcd was over a third of the analysis of AB8.
+//! Lehmer's algorithm (Knuth, TAOCP 2, §4.5.2, Algorithm L) runs Euclid on
+//! the leading 63 bits of both numbers, as long as the quotients there are
+//! provably the true ones, and applies the accumulated 2×2 cofactor matrix
+//! to the full numbers once: one pass per ~60 bits instead of one per bit.
+//! When the leading bits decide no quotient, one full division step runs
+//! instead. Below 2^64 the rest is Euclid on machine words.
+//!
+//! Checked against num-bigint's gcd (the slow, obvious oracle) by a property
+//! test.
+
+use num_bigint::{BigInt, BigUint, Sign};
+use num_traits::{Signed, ToPrimitive, Zero};
+
+/// gcd(a, b) ≥ 0 (gcd(0, 0) = 0), as num-integer defines it.
+pub(crate) fn gcd(a: &BigInt, b: &BigInt) -> BigInt {
+    BigInt::from_biguint(Sign::Plus, gcd_nat(a.magnitude(), b.magnitude()))
+}
+
+/// lcm(a, b) ≥ 0 (zero when either is zero).
+pub(crate) fn lcm(a: &BigInt, b: &BigInt) -> BigInt {
+    if a.is_zero() || b.is_zero() {
+        return BigInt::zero();
+    }
+    let g = gcd(a, b);
+    (a / g * b).abs()
+}
+
+fn gcd_nat(a: &BigUint, b: &BigUint) -> BigUint {
+    let (mut a, mut b) = if a >= b { (a.clone(), b.clone()) } else { (b.clone(), a.clone()) };
+    // a ≥ b throughout.
+    while b.bits() > 64 {
+        let n = a.bits();
+        if n - b.bits() >= 32 {
+            // Very different sizes: the first quotient is large, so one
+            // division does what many Lehmer rounds would.
+            let r = &a % &b;
+            a = b;
+            b = r;
+            continue;
+        }
+        // The leading 62 bits of both (the same shift), and the cofactor
+        // matrix of Euclid on them: |x|, |y| and every cofactor stay below
+        // 2^62 (Knuth), so sums fit an i64 and a product whose result fits
+        // is exact in wrapping arithmetic.
+        let shift = n - 62;
+        let mut x = (&a >> shift).to_i64().expect("62 bits");
+        let mut y = (&b >> shift).to_i64().expect("62 bits");
+        let (mut ca, mut cb, mut cc, mut cd) = (1i64, 0i64, 0i64, 1i64);
+        loop {
+            if y + cc == 0 || y + cd == 0 {
+                break;
+            }
+            let q = (x + ca) / (y + cc);
+            if q != (x + cb) / (y + cd) {
+                break;
+            }
+            (ca, cc) = (cc, ca.wrapping_sub(q.wrapping_mul(cc)));
+            (cb, cd) = (cd, cb.wrapping_sub(q.wrapping_mul(cd)));
+            (x, y) = (y, x.wrapping_sub(q.wrapping_mul(y)));
+        }
+        if cb == 0 {
+            let r = &a % &b;
+            a = b;
+            b = r;
+        } else {
+            // (a, b) ← (A·a + B·b, C·a + D·b): both non-negative, and in
+            // each pair of cofactors one is positive and one is not.
+            let na = combine(&a, ca, &b, cb);
+            let nb = combine(&a, cc, &b, cd);
+            a = na;
+            b = nb;
+        }
+    }
+    if b.is_zero() {
+        return a;
+    }
+    let small = b.to_u64().expect("below 2^64");
+    let r = (&a % &b).to_u64().expect("below 2^64");
+    BigUint::from(gcd_u64(small, r))
+}
+
+/// ca·a + cb·b for cofactors of opposite signs (or one zero) whose result
+/// is non-negative.
+fn combine(a: &BigUint, ca: i64, b: &BigUint, cb: i64) -> BigUint {
+    let (pa, pb) = (a * ca.unsigned_abs(), b * cb.unsigned_abs());
+    match (ca >= 0, cb >= 0) {
+        (true, false) => pa - pb,
+        (false, true) => pb - pa,
+        _ => pa + pb,
+    }
+}
+
+fn gcd_u64(mut a: u64, mut b: u64) -> u64 {
+    while b != 0 {
+        (a, b) = (b, a % b);
+    }
+    a
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use num_integer::Integer;
+    use proptest::prelude::*;
+
+    fn big(limbs: &[u64], negative: bool) -> BigInt {
+        let mut x = BigInt::zero();
+        for &l in limbs {
+            x = (x << 64) + BigInt::from(l);
+        }
+        if negative {
+            -x
+        } else {
+            x
+        }
+    }
+
+    proptest! {
+        /// The same gcd and lcm as num-integer's binary algorithm, on
+        /// numbers of 0–8 limbs with a random common factor (so the gcd is
+        /// not always 1) and random signs.
+        #[test]
+        fn lehmer_gcd_matches_binary_gcd(
+            a in proptest::collection::vec(any::<u64>(), 0..6),
+            b in proptest::collection::vec(any::<u64>(), 0..6),
+            f in proptest::collection::vec(any::<u64>(), 0..3),
+            sa in any::<bool>(),
+            sb in any::<bool>(),
+        ) {
+            let f = big(&f, false) + 1;
+            let (a, b) = (big(&a, sa) * &f, big(&b, sb) * &f);
+            prop_assert_eq!(gcd(&a, &b), a.gcd(&b));
+            prop_assert_eq!(lcm(&a, &b), a.lcm(&b));
+        }
+    }
+
+    /// Consecutive Fibonacci numbers: every quotient is 1, the slowest case
+    /// for Euclid, and the cofactors grow as fast as they can.
+    #[test]
+    fn fibonacci_neighbours_are_coprime() {
+        let (mut f0, mut f1) = (BigInt::from(0), BigInt::from(1));
+        for _ in 0..2000 {
+            (f0, f1) = (f1.clone(), f0 + f1);
+        }
+        assert_eq!(gcd(&f0, &f1), BigInt::from(1));
+        let g = BigInt::from(1u64 << 40) + 7;
+        assert_eq!(gcd(&(&f0 * &g), &(&f1 * &g)), g);
+    }
+}
