@@ -162,9 +162,12 @@ fn inertia_by_minors(mut m: Vec<Vec<BigInt>>) -> Option<(usize, usize)> {
             neg += 1;
         }
         last_sign = s;
+        // Each Bareiss step keeps the trailing block symmetric (it is a
+        // Schur complement times a scalar): update the upper triangle only,
+        // reading m[i][k] as m[k][i].
         for i in k + 1..n {
-            for j in k + 1..n {
-                let v = (&d * &m[i][j] - &m[i][k] * &m[k][j]) / &prev;
+            for j in i..n {
+                let v = (&d * &m[i][j] - &m[k][i] * &m[k][j]) / &prev;
                 m[i][j] = v;
             }
         }
