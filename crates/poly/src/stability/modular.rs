@@ -496,15 +496,15 @@ pub(crate) fn coprime_mod_p(a: &[BigInt], b: &[BigInt]) -> bool {
     false
 }
 
-/// Six primes below 2^31 (decreasing): small enough that a product of two
-/// residues fits a u64, so the root count below needs no 128-bit division
-/// and only 31 squarings for x^p.
-const SMALL_PRIMES: [u64; 6] =
-    [2_147_483_647, 2_147_483_629, 2_147_483_587, 2_147_483_579, 2_147_483_563, 2_147_483_549];
+/// Six primes below 2^20 (decreasing): a product of two residues is below
+/// 2^40, so a u64 sums 2^24 of them before one reduction, and x^p needs 20
+/// squarings. (The expected number of roots modulo p of a polynomial without
+/// rational roots does not shrink with a larger p, so nothing is lost.)
+const SMALL_PRIMES: [u64; 6] = [1_048_573, 1_048_571, 1_048_559, 1_048_549, 1_048_517, 1_048_507];
 
-/// Polynomial arithmetic over F_p for p < 2^31 (coefficients lowest first).
+/// Polynomial arithmetic over F_p for p < 2^20 (coefficients lowest first).
 mod small {
-    pub(super) fn trim(v: &mut Vec<u64>) {
+pub(super) fn trim(v: &mut Vec<u64>) {
         while v.last() == Some(&0) {
             v.pop();
         }
@@ -549,39 +549,80 @@ mod small {
     }
 
     /// The number of distinct roots in F_p of f (degree ≥ 1, lowest
-    /// coefficient first): deg gcd(x^p − x, f), x^p mod f by repeated squaring.
+    /// coefficient first, p < 2^20): deg gcd(x^p − x, f), x^p mod f by
+    /// squaring from the top bit of p, a set bit being one multiplication by
+    /// x (a shift and one reduction step).
     pub(super) fn distinct_roots(f: &[u64], p: u64) -> usize {
-        let mut acc = vec![1u64];
-        let mut base = rem(vec![0, 1], f, p);
-        let mut e = p;
-        while e > 0 {
-            if e & 1 == 1 {
-                acc = mul_rem(&acc, &base, f, p);
-            }
-            base = mul_rem(&base, &base, f, p);
-            e >>= 1;
+        debug_assert!(p < 1 << 20);
+        let d = f.len() - 1;
+        // −f / lc(f), so that reducing a top term c·x^(d+s) adds c·neg[j]·x^(s+j).
+        let li = inv(f[d], p);
+        let neg: Vec<u64> = f[..d].iter().map(|&c| (p - c * li % p) % p).collect();
+        let mut acc = vec![0u64; d];
+        if d == 1 {
+            acc[0] = neg[0];
+        } else {
+            acc[1] = 1;
         }
-        acc.resize(acc.len().max(2), 0);
-        acc[1] = (acc[1] + p - 1) % p;
+        for bit in (0..63 - p.leading_zeros()).rev() {
+            acc = square_rem(&acc, &neg, p);
+            if (p >> bit) & 1 == 1 {
+                acc = times_x_rem(acc, &neg, p);
+            }
+        }
+        // x^p − x
+        if d == 1 {
+            acc[0] = (acc[0] + p - neg[0]) % p;
+        } else {
+            acc[1] = (acc[1] + p - 1) % p;
+        }
         trim(&mut acc);
         gcd(acc, f.to_vec(), p).len().saturating_sub(1)
     }
 
-    /// a·b mod (f, p), for a, b of degree below deg f.
-    pub(super) fn mul_rem(a: &[u64], b: &[u64], f: &[u64], p: u64) -> Vec<u64> {
-        if a.is_empty() || b.is_empty() {
-            return Vec::new();
-        }
-        let mut c = vec![0u64; a.len() + b.len() - 1];
+    /// a² mod f for a of degree below d = deg f, f given as `neg` = −f/lc(f)
+    /// without its leading 1. Products are summed unreduced (each below
+    /// 2^40) and reduced once per coefficient.
+    fn square_rem(a: &[u64], neg: &[u64], p: u64) -> Vec<u64> {
+        let d = neg.len();
+        let mut c = vec![0u64; 2 * d - 1];
         for (i, &x) in a.iter().enumerate() {
             if x == 0 {
                 continue;
             }
-            for (j, &y) in b.iter().enumerate() {
-                c[i + j] = (c[i + j] + x * y) % p;
+            for (j, &y) in a.iter().enumerate() {
+                c[i + j] += x * y;
             }
         }
-        rem(c, f, p)
+        reduce_top(c, neg, p)
+    }
+
+    /// x·a mod f for a of degree below d = deg f.
+    fn times_x_rem(a: Vec<u64>, neg: &[u64], p: u64) -> Vec<u64> {
+        let mut c = Vec::with_capacity(a.len() + 1);
+        c.push(0);
+        c.extend(a);
+        reduce_top(c, neg, p)
+    }
+
+    /// c mod f for c with unreduced coefficients (each below 2^63 − 2^40·d)
+    /// of degree below 2d: the top terms are reduced one at a time, each
+    /// adding d products below 2^40 to lower coefficients.
+    fn reduce_top(mut c: Vec<u64>, neg: &[u64], p: u64) -> Vec<u64> {
+        let d = neg.len();
+        for t in (d..c.len()).rev() {
+            let top = c[t] % p;
+            if top != 0 {
+                for (j, &nj) in neg.iter().enumerate() {
+                    c[t - d + j] += top * nj;
+                }
+            }
+        }
+        c.truncate(d);
+        for x in &mut c {
+            *x %= p;
+        }
+        c
     }
 }
 
@@ -736,11 +777,22 @@ mod tests {
             seed ^= seed << 17;
             seed
         };
-        for p in [2u64, 3, 101, 103, 1009] {
-            for _ in 0..40 {
+        for p in [2u64, 3, 101, 103, 1009, SMALL_PRIMES[0], SMALL_PRIMES[5]] {
+            let trials = if p > 10_000 { 3 } else { 40 };
+            for _ in 0..trials {
                 let deg = 1 + (next() % 7) as usize;
                 let mut f: Vec<u64> = (0..deg).map(|_| next() % p).collect();
                 f.push(1 + next() % (p - 1));
+                if p > 10_000 {
+                    // Plant a few roots, so that the count is not always 0 or 1.
+                    for _ in 0..next() % 3 {
+                        let r = next() % p;
+                        f.insert(0, 0);
+                        for k in 0..f.len() - 1 {
+                            f[k] = (f[k] + p - r * f[k + 1] % p) % p;
+                        }
+                    }
+                }
                 let brute = (0..p)
                     .filter(|&x| f.iter().rev().fold(0u64, |acc, &c| (acc * x + c) % p) == 0)
                     .count();
