@@ -376,18 +376,29 @@ impl Algebraic {
 /// The rational with the smallest denominator (then numerator) strictly
 /// inside (l, r), l < r, by continued fractions.
 pub(crate) fn simplest_between(l: &Q, r: &Q) -> Q {
-    let fl = l.floor();
-    if &fl + Q::one() < *r {
-        return fl + Q::one();
+    let (n, d) = simplest_between_int(l.numer(), l.denom(), r.numer(), r.denom());
+    Q::new(n, d)
+}
+
+/// [`simplest_between`] on numerators and positive denominators, in
+/// integers (no fraction is normalised on the way, which cost a gcd per
+/// operation): the continued-fraction recursion
+/// s(l, r) = ⌊l⌋ + 1 if that is below r, ⌊l⌋ + 1/(⌊1/(r − ⌊l⌋)⌋ + 1) if l
+/// is an integer, else ⌊l⌋ + 1/s(1/(r − ⌊l⌋), 1/(l − ⌊l⌋)).
+fn simplest_between_int(ln: &BigInt, ld: &BigInt, rn: &BigInt, rd: &BigInt) -> (BigInt, BigInt) {
+    let fl = ln.div_floor(ld);
+    let next = &fl + BigInt::one();
+    if &next * rd < *rn {
+        return (next, BigInt::one());
     }
-    let frac_l = l - &fl;
-    let frac_r = r - &fl;
+    let frac_l = ln - &fl * ld; // over ld, in [0, ld)
+    let frac_r = rn - &fl * rd; // over rd, in (0, rd]
     if frac_l.is_zero() {
-        // (fl, r) with r ≤ fl + 1: fl + 1/k for the least k with 1/k < frac_r.
-        let k = (Q::one() / &frac_r).floor() + Q::one();
-        return fl + Q::one() / k;
+        let k = rd.div_floor(&frac_r) + BigInt::one();
+        return (&fl * &k + BigInt::one(), k);
     }
-    fl + Q::one() / simplest_between(&(Q::one() / frac_r), &(Q::one() / frac_l))
+    let (sn, sd) = simplest_between_int(rd, &frac_r, ld, &frac_l);
+    (&fl * &sn + sd, sn)
 }
 
 /// The sign of `g` at the unique root of `poly` in (lo, hi) (`ip` the
@@ -781,5 +792,37 @@ impl fmt::Debug for Algebraic {
 impl From<Q> for Algebraic {
     fn from(q: Q) -> Algebraic {
         Algebraic::from_rational(q)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// The obvious search: the least denominator d with a fraction in
+    /// (l, r), and for it the least numerator.
+    fn simplest_by_search(l: &Q, r: &Q) -> Q {
+        let mut d = BigInt::one();
+        loop {
+            let n = (l * Q::from_integer(d.clone())).floor().to_integer() + BigInt::one();
+            let c = Q::new(n, d.clone());
+            if c < *r {
+                return c;
+            }
+            d += 1;
+        }
+    }
+
+    proptest! {
+        #[test]
+        fn simplest_between_is_the_least_denominator(
+            a in -300i64..300, b in 1i64..40, c in -300i64..300, e in 1i64..40,
+        ) {
+            let (x, y) = (Q::new(a.into(), b.into()), Q::new(c.into(), e.into()));
+            prop_assume!(x != y);
+            let (l, r) = if x < y { (x, y) } else { (y, x) };
+            prop_assert_eq!(simplest_between(&l, &r), simplest_by_search(&l, &r));
+        }
     }
 }

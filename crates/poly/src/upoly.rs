@@ -75,16 +75,56 @@ impl UPoly {
 
     /// The value at `x`, by Horner's rule.
     pub fn eval(&self, x: &Q) -> Q {
-        let mut acc = Q::zero();
-        for c in self.c.iter().rev() {
-            acc = acc * x + c;
+        // Over a common denominator d of the coefficients, with x = p/q:
+        // Σ C_k p^k q^(n−k) / (d·q^n), one reduction at the end instead of
+        // one per step of Horner's rule over Q.
+        let Some(n) = self.degree() else { return Q::zero() };
+        let (num, den) = self.common_denominator();
+        let (p, q) = (x.numer(), x.denom());
+        let mut acc = BigInt::zero();
+        let mut qpow = BigInt::one();
+        for (k, c) in num.iter().enumerate().rev() {
+            acc = acc * p + c * &qpow;
+            if k > 0 {
+                qpow *= q;
+            }
         }
-        acc
+        debug_assert_eq!(qpow, num_traits::pow(q.clone(), n));
+        reduced(acc, den * qpow)
+    }
+
+    /// The coefficients as integers over one positive denominator (the lcm
+    /// of theirs).
+    fn common_denominator(&self) -> (Vec<BigInt>, BigInt) {
+        if self.c.iter().all(|c| c.denom().is_one()) {
+            return (self.c.iter().map(|c| c.numer().clone()).collect(), BigInt::one());
+        }
+        let mut den = BigInt::one();
+        for c in &self.c {
+            if !c.denom().is_one() {
+                den = crate::intgcd::lcm(&den, c.denom());
+            }
+        }
+        let num = self.c.iter().map(|c| c.numer() * (&den / c.denom())).collect();
+        (num, den)
+    }
+
+    /// Σ num[k] x^k / den, each coefficient reduced once.
+    fn from_common(num: Vec<BigInt>, den: &BigInt) -> UPoly {
+        if den.is_one() {
+            return UPoly::new(num.into_iter().map(Q::from_integer).collect());
+        }
+        UPoly::new(num.into_iter().map(|c| reduced(c, den.clone())).collect())
     }
 
     /// Multiplies every coefficient by `q`.
     pub fn scale(&self, q: &Q) -> UPoly {
-        UPoly::new(self.c.iter().map(|c| c * q).collect())
+        if q.is_zero() {
+            return UPoly::zero();
+        }
+        let (num, den) = self.common_denominator();
+        let num = num.into_iter().map(|c| c * q.numer()).collect();
+        UPoly::from_common(num, &(den * q.denom()))
     }
 
     /// This polynomial divided by its leading coefficient.
@@ -92,14 +132,16 @@ impl UPoly {
         if self.is_zero() {
             return UPoly::zero();
         }
-        self.scale(&(Q::one() / self.leading()))
+        let (num, _) = self.common_denominator();
+        let lead = num.last().expect("non-zero").clone();
+        UPoly::new(num.into_iter().map(|c| reduced(c, lead.clone())).collect())
     }
 
     /// The derivative.
     pub fn derivative(&self) -> UPoly {
-        UPoly::new(
-            self.c.iter().enumerate().skip(1).map(|(k, c)| c * Q::from_integer(k.into())).collect(),
-        )
+        let (num, den) = self.common_denominator();
+        let num = num.into_iter().enumerate().skip(1).map(|(k, c)| c * BigInt::from(k)).collect();
+        UPoly::from_common(num, &den)
     }
 
     /// Quotient and remainder; panics on division by zero (a programmer error).
@@ -287,16 +329,14 @@ impl fmt::Debug for UPoly {
 impl<'a> Add<&'a UPoly> for &'a UPoly {
     type Output = UPoly;
     fn add(self, rhs: &UPoly) -> UPoly {
-        let n = self.c.len().max(rhs.c.len());
-        UPoly::new((0..n).map(|k| self.coeff(k) + rhs.coeff(k)).collect())
+        combine(self, rhs, false)
     }
 }
 
 impl<'a> Sub<&'a UPoly> for &'a UPoly {
     type Output = UPoly;
     fn sub(self, rhs: &UPoly) -> UPoly {
-        let n = self.c.len().max(rhs.c.len());
-        UPoly::new((0..n).map(|k| self.coeff(k) - rhs.coeff(k)).collect())
+        combine(self, rhs, true)
     }
 }
 
@@ -306,16 +346,60 @@ impl<'a> Mul<&'a UPoly> for &'a UPoly {
         if self.is_zero() || rhs.is_zero() {
             return UPoly::zero();
         }
-        let mut c = vec![Q::zero(); self.c.len() + rhs.c.len() - 1];
-        for (i, a) in self.c.iter().enumerate() {
-            if a.is_zero() {
+        let ((a, da), (b, db)) = (self.common_denominator(), rhs.common_denominator());
+        let mut c = vec![BigInt::zero(); a.len() + b.len() - 1];
+        for (i, x) in a.iter().enumerate() {
+            if x.is_zero() {
                 continue;
             }
-            for (j, b) in rhs.c.iter().enumerate() {
-                c[i + j] += a * b;
+            for (j, y) in b.iter().enumerate() {
+                c[i + j] += x * y;
             }
         }
-        UPoly::new(c)
+        UPoly::from_common(c, &(da * db))
+    }
+}
+
+/// a ± b over the least common denominator, each coefficient reduced once.
+fn combine(a: &UPoly, b: &UPoly, subtract: bool) -> UPoly {
+    let ((mut x, dx), (y, dy)) = (a.common_denominator(), b.common_denominator());
+    let den = if dx == dy { dx.clone() } else { crate::intgcd::lcm(&dx, &dy) };
+    let (fx, fy) = (&den / &dx, &den / &dy);
+    if !fx.is_one() {
+        for c in &mut x {
+            *c *= &fx;
+        }
+    }
+    if x.len() < y.len() {
+        x.resize(y.len(), BigInt::zero());
+    }
+    for (c, d) in x.iter_mut().zip(y) {
+        let d = if fy.is_one() { d } else { d * &fy };
+        if subtract {
+            *c -= d;
+        } else {
+            *c += d;
+        }
+    }
+    UPoly::from_common(x, &den)
+}
+
+/// n/d in lowest terms with d > 0 (d ≠ 0), by Lehmer's gcd (num-rational
+/// reduces with num-bigint's binary gcd, one pass per bit even when d = 1).
+pub(crate) fn reduced(n: BigInt, d: BigInt) -> Q {
+    debug_assert!(!d.is_zero());
+    if n.is_zero() {
+        return Q::zero();
+    }
+    let (n, d) = if d.is_negative() { (-n, -d) } else { (n, d) };
+    if d.is_one() {
+        return Q::from_integer(n);
+    }
+    let g = crate::intgcd::gcd(&n, &d);
+    if g.is_one() {
+        Q::new_raw(n, d)
+    } else {
+        Q::new_raw(n / &g, d / g)
     }
 }
 
@@ -415,4 +499,60 @@ pub(crate) fn prem(a: &[BigInt], b: &[BigInt]) -> (Vec<BigInt>, usize) {
         }
     }
     (r, k)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    fn rational_poly() -> impl Strategy<Value = UPoly> {
+        proptest::collection::vec((-60i64..60, 1i64..13), 0..7).prop_map(|c| {
+            UPoly::new(c.into_iter().map(|(n, d)| Q::new(n.into(), d.into())).collect())
+        })
+    }
+
+    /// The obvious coefficient-wise arithmetic over Q (num-rational).
+    fn coeff(p: &UPoly, k: usize) -> Q {
+        p.c.get(k).cloned().unwrap_or_else(Q::zero)
+    }
+
+    proptest! {
+        /// The common-denominator paths agree with plain rational arithmetic.
+        #[test]
+        fn integer_paths_match_rational_arithmetic(
+            a in rational_poly(), b in rational_poly(), n in -40i64..40, d in 1i64..9,
+        ) {
+            let x = Q::new(n.into(), d.into());
+            let len = a.c.len().max(b.c.len());
+            let sum = UPoly::new((0..len).map(|k| coeff(&a, k) + coeff(&b, k)).collect());
+            let diff = UPoly::new((0..len).map(|k| coeff(&a, k) - coeff(&b, k)).collect());
+            prop_assert_eq!(&a + &b, sum);
+            prop_assert_eq!(&a - &b, diff);
+            let mut prod = vec![Q::zero(); (a.c.len() + b.c.len()).saturating_sub(1)];
+            for (i, u) in a.c.iter().enumerate() {
+                for (j, v) in b.c.iter().enumerate() {
+                    prod[i + j] += u * v;
+                }
+            }
+            prop_assert_eq!(&a * &b, UPoly::new(prod));
+            prop_assert_eq!(a.scale(&x), UPoly::new(a.c.iter().map(|c| c * &x).collect()));
+            let deriv = a.c.iter().enumerate().skip(1).map(|(k, c)| c * Q::from_integer(k.into()));
+            prop_assert_eq!(a.derivative(), UPoly::new(deriv.collect()));
+            let horner = a.c.iter().rev().fold(Q::zero(), |acc, c| acc * &x + c);
+            prop_assert_eq!(a.eval(&x), horner);
+            if !a.is_zero() {
+                let lead = a.leading();
+                prop_assert_eq!(a.monic(), UPoly::new(a.c.iter().map(|c| c / &lead).collect()));
+            }
+            // Canonical form: every coefficient in lowest terms, positive
+            // denominator (what `==` and hashing of Q rely on).
+            let value = a.eval(&x);
+            for c in (&a * &b).c.iter().chain((&a - &b).c.iter()).chain([&value]) {
+                let r = Q::new(c.numer().clone(), c.denom().clone());
+                prop_assert_eq!(r.numer(), c.numer());
+                prop_assert_eq!(r.denom(), c.denom());
+            }
+        }
+    }
 }

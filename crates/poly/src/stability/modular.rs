@@ -125,11 +125,6 @@ impl Mont {
         }
     }
 
-    /// a·b mod p for plain a, b.
-    fn mul_plain(&self, a: u64, b: u64) -> u64 {
-        self.mul(a, self.form(b))
-    }
-
     /// a^e mod p for a plain a < p (square and multiply in Montgomery form).
     fn pow(&self, a: u64, e: u64) -> u64 {
         self.mul(self.pow_form(self.form(a), e), 1)
@@ -819,7 +814,6 @@ mod tests {
                     assert_eq!(mulmod(mont.inv(a), a, p), 1);
                 }
                 assert_eq!(mont.pow(a, b % 1000), powmod(a, b % 1000, p));
-                assert_eq!(mont.mul_plain(a, b), mulmod(a, b, p));
                 assert_eq!(addmod(a, b, p), ((a as u128 + b as u128) % p as u128) as u64);
                 assert_eq!(
                     submod(a, b, p),
