@@ -190,7 +190,16 @@ impl Algebraic {
     pub fn sign_of(&self, g: &UPoly) -> Ordering {
         match &self.repr {
             Repr::Rational(q) => sign(&g.eval(q)),
-            Repr::Root { poly, ip, lo, hi } => sign_at_root(poly, ip, lo, hi, g),
+            Repr::Root { poly, ip, lo, hi } => sign_at_root(poly, ip, lo, hi, g, None),
+        }
+    }
+
+    /// [`Algebraic::sign_of`] with the integer form of `g` given (for a
+    /// polynomial whose sign is asked at many numbers).
+    pub(crate) fn sign_of_with(&self, g: &UPoly, gi: &IntPoly) -> Ordering {
+        match &self.repr {
+            Repr::Rational(q) => gi.sign_at(q),
+            Repr::Root { poly, ip, lo, hi } => sign_at_root(poly, ip, lo, hi, g, Some(gi)),
         }
     }
 
@@ -245,7 +254,7 @@ impl Algebraic {
                 let centre = -&c[2] / Q::from_integer(2.into());
                 let radicand = &centre * &centre - &c[0];
                 let shifted = UPoly::new(vec![-centre.clone(), Q::zero(), Q::one()]);
-                let plus = sign_at_root(poly, ip, lo, hi, &shifted) == Ordering::Greater;
+                let plus = sign_at_root(poly, ip, lo, hi, &shifted, None) == Ordering::Greater;
                 let inner = quadratic_form(&centre, &radicand, plus);
                 let negative = self.sign() == Ordering::Less;
                 Some(format!("{}sqrt({inner})", if negative { "-" } else { "" }))
@@ -403,20 +412,38 @@ fn simplest_between_int(ln: &BigInt, ld: &BigInt, rn: &BigInt, rd: &BigInt) -> (
 
 /// The sign of `g` at the unique root of `poly` in (lo, hi) (`ip` the
 /// integer form of `poly`; `poly` square-free, non-zero at lo and hi).
-fn sign_at_root(poly: &UPoly, ip: &IntPoly, lo: &Q, hi: &Q, g: &UPoly) -> Ordering {
+fn sign_at_root(
+    poly: &UPoly,
+    ip: &IntPoly,
+    lo: &Q,
+    hi: &Q,
+    g: &UPoly,
+    gi: Option<&IntPoly>,
+) -> Ordering {
     if g.is_zero() {
         return Ordering::Equal;
     }
     if g.degree() == Some(0) {
         return sign(&g.coeff(0));
     }
-    if vanishes_at_root(poly, lo, hi, g) {
+    let owned;
+    let gi = match gi {
+        Some(gi) => gi,
+        None => {
+            owned = IntPoly::new(g);
+            &owned
+        }
+    };
+    // Coprime modulo a prime (the usual case): g cannot vanish at a root of
+    // poly, and the gcd over Q is not needed.
+    if !crate::stability::modular::coprime_mod_p(ip.coeffs(), gi.coeffs())
+        && vanishes_at_root(poly, lo, hi, g)
+    {
         return Ordering::Equal;
     }
     // g does not vanish at the number: narrow the interval until interval
     // evaluation of g over [lo, hi] excludes zero; that sign is the answer.
     // (The enclosure shrinks with the interval, so this ends.)
-    let gi = IntPoly::new(g);
     let (mut lo, mut hi) = (lo.clone(), hi.clone());
     // Widths w/4, w/16, w/256, …: the bits asked for double each round.
     let mut shift = 2u32;

@@ -46,6 +46,11 @@ impl IntPoly {
         IntPoly { c }
     }
 
+    /// The integer coefficients, lowest power first.
+    pub(crate) fn coeffs(&self) -> &[BigInt] {
+        &self.c
+    }
+
     pub(crate) fn degree(&self) -> Option<usize> {
         self.c.len().checked_sub(1)
     }

@@ -41,7 +41,7 @@ pub(crate) fn class_at_point(chi: &Charpoly, phi: &Algebraic) -> Option<RootClas
     match chi.degree() {
         2 => {
             let q = chi.quad();
-            Some(classify_quadratic_by(|k| phi.sign_of(&q.polys[k])))
+            Some(classify_quadratic_by(|k| phi.sign_of_with(&q.polys[k], &q.ints[k])))
         }
         1 => {
             // One root r = −a0/a1: signs of r, r − 1, r + 1 from polynomials.
@@ -130,12 +130,19 @@ struct StepMatrix<'a> {
 
 /// Every positive root of every non-trivial condition, merged exactly.
 fn critical_points(conditions: &[(Condition, UPoly)]) -> Vec<CriticalPoint> {
+    // Narrow intervals make the printed "root of ... in [a, b]" readable.
+    // Refined as soon as found (the refined interval depends only on the
+    // isolating one): the merging and sorting below then compare narrow
+    // intervals, which mostly separate at once, instead of refining copies
+    // again in every comparison.
+    let width = Q::new(1.into(), 1024.into());
     let mut points: Vec<CriticalPoint> = Vec::new();
     for (name, cond) in conditions {
         if cond.degree().unwrap_or(0) == 0 {
             continue;
         }
         for root in Algebraic::positive_roots(cond) {
+            let root = root.refine(&width);
             match points.iter_mut().find(|p| p.at == root) {
                 Some(p) if p.conditions.contains(name) => {}
                 Some(p) => p.conditions.push(*name),
@@ -146,11 +153,6 @@ fn critical_points(conditions: &[(Condition, UPoly)]) -> Vec<CriticalPoint> {
         }
     }
     points.sort_by(|x, y| x.at.cmp(&y.at));
-    // Narrow intervals make the printed "root of ... in [a, b]" readable.
-    let width = Q::new(1.into(), 1024.into());
-    for p in &mut points {
-        p.at = p.at.refine(&width);
-    }
     points
 }
 
