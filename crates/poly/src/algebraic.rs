@@ -514,21 +514,25 @@ fn even_rational_factors(f: &UPoly) -> Vec<UPoly> {
         return Vec::new();
     }
     let big_f = UPoly::new(f.coeffs().iter().step_by(2).cloned().collect()).squarefree();
-    // No root modulo a good prime: no rational root, nothing to isolate.
-    let nonzero_constant = big_f.coeffs().first().is_some_and(|c| !c.is_zero());
-    if nonzero_constant
-        && big_f.degree().unwrap_or(0) > 0
-        && crate::stability::modular::rational_root_bound(&crate::upoly::int_primitive(&big_f))
-            == Some(0)
+    // The rational roots y of F, increasing: 0 if F(0) = 0, the others
+    // lifted p-adically from F/y^k (no isolation of F needed).
+    let lowest = big_f.coeffs().iter().position(|c| !c.is_zero()).unwrap_or(0);
+    let zero_free = UPoly::new(big_f.coeffs()[lowest..].to_vec());
+    let mut ys = if zero_free.degree().unwrap_or(0) == 0 {
+        Vec::new()
+    } else if let Some(ys) =
+        crate::rational_roots::rational_roots(&crate::upoly::int_primitive(&zero_free))
     {
-        return Vec::new();
+        ys
+    } else {
+        let intervals = isolate_squarefree(&big_f);
+        rational_roots(&big_f, &intervals).into_iter().flatten().filter(|y| !y.is_zero()).collect()
+    };
+    if lowest > 0 {
+        ys.push(Q::zero());
+        ys.sort();
     }
-    let intervals = isolate_squarefree(&big_f);
-    rational_roots(&big_f, &intervals)
-        .into_iter()
-        .flatten()
-        .map(|y| UPoly::new(vec![-y, Q::zero(), Q::one()]))
-        .collect()
+    ys.into_iter().map(|y| UPoly::new(vec![-y, Q::zero(), Q::one()])).collect()
 }
 
 /// [`reduce`] for an irrational root of a square-free `f` without rational
@@ -568,6 +572,25 @@ fn rational_roots(f: &UPoly, intervals: &[(Q, Q)]) -> Vec<Option<Q>> {
         let lowest = f.coeffs().iter().position(|c| !c.is_zero()).unwrap_or(0);
         UPoly::new(f.coeffs()[lowest..].to_vec())
     };
+    if zero_free.degree().unwrap_or(0) == 0 {
+        return out;
+    }
+    // Every rational root, by p-adic lifting, placed in its interval.
+    if let Some(roots) =
+        crate::rational_roots::rational_roots(&crate::upoly::int_primitive(&zero_free))
+    {
+        for r in roots {
+            // (The intervals may be a subset of the isolation: `reduce`
+            // asks about one.)
+            let k = intervals
+                .iter()
+                .position(|(lo, hi)| (lo == hi && *lo == r) || (*lo < r && r < *hi));
+            if let Some(k) = k {
+                out[k] = Some(r);
+            }
+        }
+        return out;
+    }
     let found_nonzero = out.iter().flatten().filter(|r| !r.is_zero()).count();
     let bound = if zero_free.degree().unwrap_or(0) == 0 {
         Some(0)

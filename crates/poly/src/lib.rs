@@ -64,6 +64,7 @@ mod matrix;
 mod method;
 mod params;
 mod poly;
+mod rational_roots;
 pub mod region;
 pub mod series;
 pub mod stability;

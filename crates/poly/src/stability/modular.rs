@@ -341,8 +341,10 @@ fn det_direct(m: &[Vec<UPoly>]) -> UPoly {
         let ys: Vec<u64> = xs
             .iter()
             .map(|&x| {
-                let mut a: Vec<Vec<u64>> =
-                    red.iter().map(|row| row.iter().map(|e| eval_mod(e, x, &mont)).collect()).collect();
+                let mut a: Vec<Vec<u64>> = red
+                    .iter()
+                    .map(|row| row.iter().map(|e| eval_mod(e, x, &mont)).collect())
+                    .collect();
                 det_mod(&mut a, &mont)
             })
             .collect();
@@ -499,7 +501,7 @@ const SMALL_PRIMES: [u64; 6] = [1_048_573, 1_048_571, 1_048_559, 1_048_549, 1_04
 
 /// Polynomial arithmetic over F_p for p < 2^20 (coefficients lowest first).
 mod small {
-pub(super) fn trim(v: &mut Vec<u64>) {
+    pub(super) fn trim(v: &mut Vec<u64>) {
         while v.last() == Some(&0) {
             v.pop();
         }
@@ -714,7 +716,13 @@ mod tests {
         for (j, e) in m[0].iter().enumerate() {
             let minor: Vec<Vec<UPoly>> = m[1..]
                 .iter()
-                .map(|row| row.iter().enumerate().filter(|(c, _)| *c != j).map(|(_, x)| x.clone()).collect())
+                .map(|row| {
+                    row.iter()
+                        .enumerate()
+                        .filter(|(c, _)| *c != j)
+                        .map(|(_, x)| x.clone())
+                        .collect()
+                })
                 .collect();
             let t = e * &laplace(&minor);
             acc = if j % 2 == 0 { &acc + &t } else { &acc - &t };

@@ -740,7 +740,9 @@ mod tests {
     /// linear, and the counts match the inertia.
     #[test]
     fn schur_transform_counts_on_a_large_case() {
-        let c: Vec<i64> = (0..10).map(|k: i64| (k * 7919 + 104_729).pow(2) % 1_000_000_007 - 500_000_000).collect();
+        let c: Vec<i64> = (0..10)
+            .map(|k: i64| (k * 7919 + 104_729).pow(2) % 1_000_000_007 - 500_000_000)
+            .collect();
         let a: Vec<BigInt> = c.iter().map(|&x| BigInt::from(x)).collect();
         let r = schur_transform_counts(&a).expect("regular");
         assert_eq!(r, by_inertia(&a));

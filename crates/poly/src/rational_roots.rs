@@ -1,0 +1,194 @@
+//! Every rational root of an integer polynomial, by p-adic lifting.
+//!
+//! A rational root a/b (lowest terms) of f = Σ f_k x^k ∈ Z[x] has b | f_n
+//! and a | f_0. For a prime p dividing neither f_n nor the discriminant of
+//! f at a root, a/b reduces to a simple root of f mod p; Newton's iteration
+//! lifts that root uniquely to Z/p^k, and once p^k > 2·|f_0|·|f_n| the lift
+//! determines a/b by rational reconstruction (the half-extended Euclidean
+//! algorithm). Each candidate is then checked by exact evaluation, so the
+//! answer is complete and exact; only the choice of prime is heuristic, and
+//! a prime at which some root is multiple is skipped.
+//!
+//! This replaces, for the stability analysis, an upper bound on the number
+//! of rational roots (roots counted modulo primes) followed, whenever the
+//! bound did not vanish, by a search in each isolating interval narrowed to
+//! the width 1/(2·f_n): conditions with several irreducible factors rarely
+//! have a prime without roots, so the search ran on most of them.
+
+use num_bigint::BigInt;
+use num_integer::Integer;
+use num_traits::{One, Signed, ToPrimitive, Zero};
+
+use crate::Q;
+
+/// Primes near 1000: roots modulo p are found by trying every residue.
+const PRIMES: [u64; 12] = [1009, 1013, 1019, 1021, 1031, 1033, 1039, 1049, 1051, 1061, 1063, 1069];
+
+/// The distinct rational roots of the integer polynomial `f` (lowest
+/// coefficient first, f(0) ≠ 0, degree ≥ 1), increasing. `None` when no
+/// prime tried has every root of f mod p simple (then the caller falls back
+/// to a search).
+pub(crate) fn rational_roots(f: &[BigInt]) -> Option<Vec<Q>> {
+    let (lead, c0) = (f.last()?, &f[0]);
+    debug_assert!(!c0.is_zero() && !lead.is_zero());
+    // p^k > 2·|f_0|·|f_n| lets reconstruction find a/b with |a| ≤ |f_0|,
+    // 0 < b ≤ |f_n|.
+    // No root modulo some prime (the usual case for a condition without
+    // rational roots): none over Q, found without trying every residue.
+    if crate::stability::modular::rational_root_bound(f) == Some(0) {
+        return Some(Vec::new());
+    }
+    let bound = (c0.abs() * lead.abs()) << 1;
+    'prime: for p in PRIMES {
+        let pb = BigInt::from(p);
+        if (lead % &pb).is_zero() {
+            continue;
+        }
+        let fp: Vec<u64> = f.iter().map(|c| c.mod_floor(&pb).to_u64().expect("below p")).collect();
+        let dp: Vec<u64> =
+            fp.iter().enumerate().skip(1).map(|(k, &c)| c * (k as u64 % p) % p).collect();
+        let eval = |c: &[u64], x: u64| c.iter().rev().fold(0u64, |acc, &a| (acc * x + a) % p);
+        let mut roots = Vec::new();
+        for x in 0..p {
+            if eval(&fp, x) == 0 {
+                if eval(&dp, x) == 0 {
+                    continue 'prime;
+                }
+                roots.push(x);
+            }
+        }
+        let mut modulus = pb.clone();
+        let mut lifted: Vec<BigInt> = roots.iter().map(|&r| BigInt::from(r)).collect();
+        while modulus <= bound {
+            modulus = &modulus * &modulus;
+            for r in &mut lifted {
+                *r = newton_step(f, r, &modulus);
+            }
+        }
+        let mut out: Vec<Q> = lifted
+            .iter()
+            .filter_map(|r| reconstruct(r, &modulus, &c0.abs(), &lead.abs()))
+            .filter(|(a, b)| vanishes(f, a, b))
+            .map(|(a, b)| Q::new(a, b))
+            .collect();
+        out.sort();
+        out.dedup();
+        return Some(out);
+    }
+    None
+}
+
+/// r − f(r)/f′(r) mod m, for r a simple root of f modulo √m (so f′(r) is
+/// invertible mod m and the result is the root modulo m).
+fn newton_step(f: &[BigInt], r: &BigInt, m: &BigInt) -> BigInt {
+    let (mut v, mut d) = (BigInt::zero(), BigInt::zero());
+    for c in f.iter().rev() {
+        d = (d * r + &v).mod_floor(m);
+        v = (v * r + c).mod_floor(m);
+    }
+    let inv = d.modinv(m).expect("a simple root: f′(r) is a unit");
+    (r - v * inv).mod_floor(m)
+}
+
+/// The a/b (b > 0, |a| ≤ n_max, b ≤ d_max) with a ≡ b·r (mod m), if any,
+/// by the half-extended Euclidean algorithm (unique when 2·n_max·d_max < m).
+fn reconstruct(r: &BigInt, m: &BigInt, n_max: &BigInt, d_max: &BigInt) -> Option<(BigInt, BigInt)> {
+    let (mut r0, mut r1) = (m.clone(), r.mod_floor(m));
+    let (mut t0, mut t1) = (BigInt::zero(), BigInt::one());
+    while r1 > *n_max {
+        let q = &r0 / &r1;
+        (r0, r1) = (r1.clone(), &r0 - &q * &r1);
+        (t0, t1) = (t1.clone(), &t0 - &q * &t1);
+    }
+    let (a, b) = if t1.is_negative() { (-r1, -t1) } else { (r1, t1) };
+    (!b.is_zero() && b <= *d_max && a.gcd(&b).is_one()).then_some((a, b))
+}
+
+/// Whether f(a/b) = 0: Σ f_k a^k b^(n−k) = 0.
+fn vanishes(f: &[BigInt], a: &BigInt, b: &BigInt) -> bool {
+    let mut acc = BigInt::zero();
+    let mut bpow = BigInt::one();
+    for c in f.iter().rev() {
+        acc = acc * a + c * &bpow;
+        bpow *= b;
+    }
+    acc.is_zero()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// The rational root theorem, tried candidate by candidate: the slow,
+    /// obvious oracle (coefficients kept small so the divisors are few).
+    fn by_candidates(f: &[i64]) -> Vec<Q> {
+        let divisors = |n: i64| (1..=n.abs()).filter(move |d| n % d == 0).collect::<Vec<_>>();
+        let mut out = Vec::new();
+        for a in divisors(f[0]) {
+            for b in divisors(*f.last().unwrap()) {
+                for s in [-1, 1] {
+                    let x = Q::new((s * a).into(), b.into());
+                    let v = f
+                        .iter()
+                        .rev()
+                        .fold(Q::zero(), |acc, &c| acc * &x + Q::from(BigInt::from(c)));
+                    if v.is_zero() {
+                        out.push(x);
+                    }
+                }
+            }
+        }
+        out.sort();
+        out.dedup();
+        out
+    }
+
+    fn mul(a: &[i64], b: &[i64]) -> Vec<i64> {
+        let mut c = vec![0; a.len() + b.len() - 1];
+        for (i, x) in a.iter().enumerate() {
+            for (j, y) in b.iter().enumerate() {
+                c[i + j] += x * y;
+            }
+        }
+        c
+    }
+
+    proptest! {
+        /// Products of linear factors b·x − a and a random cofactor: the
+        /// same roots as trying every candidate, whenever a prime is found.
+        #[test]
+        fn lifted_roots_are_the_candidates_that_vanish(
+            linear in proptest::collection::vec((-9i64..=9, 1i64..=6), 0..4),
+            cofactor in proptest::collection::vec(-5i64..=5, 1..4),
+        ) {
+            let mut f = cofactor.clone();
+            prop_assume!(f[0] != 0 && *f.last().unwrap() != 0);
+            for (a, b) in &linear {
+                prop_assume!(*a != 0);
+                f = mul(&f, &[-a, *b]);
+            }
+            prop_assume!(f.len() >= 2);
+            let big: Vec<BigInt> = f.iter().map(|&c| BigInt::from(c)).collect();
+            let expected = by_candidates(&f);
+            match rational_roots(&big) {
+                Some(got) => prop_assert_eq!(got, expected),
+                // Every prime tried had a multiple root: f has a square factor.
+                None => {
+                    let u = crate::UPoly::from_ints(&f);
+                    prop_assert!(u.gcd(&u.derivative()).degree().unwrap_or(0) > 0);
+                }
+            }
+        }
+    }
+
+    /// Roots with large numerators and denominators (lifting far beyond p).
+    #[test]
+    fn large_rational_roots() {
+        let a = BigInt::parse_bytes(b"123456789012345678901", 10).unwrap();
+        let b = BigInt::parse_bytes(b"98765432109876543", 10).unwrap();
+        // (b x − a)(x² + x + 7)
+        let f = vec![-&a * 7, &b * 7 - &a, &b - &a, b.clone()];
+        assert_eq!(rational_roots(&f), Some(vec![Q::new(a, b)]));
+    }
+}
