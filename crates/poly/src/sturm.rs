@@ -271,6 +271,83 @@ pub fn root_bound(p: &UPoly) -> Q {
     b
 }
 
+/// Whether `p` (p(0) ≠ 0) provably has no root in (0, ∞): Descartes' rule
+/// of signs on (0, B) (B a power of two above every root's modulus) and on
+/// the halves of any part where the rule counts two or more sign changes,
+/// up to `budget` parts. `false` means "not proven": a part with exactly one
+/// sign change holds a root, and a root at a halving point is seen exactly.
+///
+/// A part (a, a + w) is the polynomial g(x) = p(a + w·x) on (0, 1), scaled
+/// to integers; its sign changes are those of (1 + x)^n·g(1/(1 + x)), the
+/// reversed g shifted by one. Halves: 2^n·g(x/2) and that shifted by one.
+pub(crate) fn no_positive_roots(p: &UPoly, budget: usize) -> bool {
+    let Some(n) = p.degree() else { return false };
+    debug_assert!(!p.coeff(0).is_zero());
+    let b = root_bound(p);
+    let e = b.numer().bits() - 1; // B = 2^e
+    debug_assert!(b.denom().is_one() && (BigInt::one() << e) == *b.numer());
+    let c = crate::upoly::int_primitive(p);
+    // Descartes on (0, ∞) itself: no sign change, no positive root; an odd
+    // number, at least one.
+    match sign_changes(&c) {
+        0 => return true,
+        v if v % 2 == 1 => return false,
+        _ => {}
+    }
+    let mut stack: Vec<Vec<BigInt>> =
+        vec![c.into_iter().enumerate().map(|(k, x)| x << (e as usize * k)).collect()];
+    let mut parts = 0;
+    while let Some(g) = stack.pop() {
+        parts += 1;
+        if parts > budget {
+            return false;
+        }
+        let mut rev: Vec<BigInt> = g.iter().rev().cloned().collect();
+        taylor_shift_one(&mut rev);
+        match sign_changes(&rev) {
+            0 => continue,
+            1 => return false,
+            _ => {}
+        }
+        let left: Vec<BigInt> = g.iter().enumerate().map(|(k, x)| x << (n - k)).collect();
+        // left(1) = 2^n·g(1/2): a root exactly at the halving point.
+        if left.iter().fold(BigInt::zero(), |acc, x| acc + x).is_zero() {
+            return false;
+        }
+        let mut right = left.clone();
+        taylor_shift_one(&mut right);
+        stack.push(left);
+        stack.push(right);
+    }
+    true
+}
+
+/// g(x) ↦ g(x + 1) in place (coefficients lowest first), by repeated
+/// synthetic division: n(n+1)/2 additions.
+fn taylor_shift_one(c: &mut [BigInt]) {
+    let n = c.len();
+    for i in 0..n {
+        for j in (i..n - 1).rev() {
+            let t = c[j + 1].clone();
+            c[j] += t;
+        }
+    }
+}
+
+/// Sign changes of a coefficient sequence, zeros skipped.
+fn sign_changes(c: &[BigInt]) -> usize {
+    let mut last = None;
+    let mut count = 0;
+    for x in c.iter().filter(|x| !x.is_zero()) {
+        let s = x.is_positive();
+        if last.is_some_and(|l| l != s) {
+            count += 1;
+        }
+        last = Some(s);
+    }
+    count
+}
+
 /// Disjoint isolating intervals of the distinct real roots of `p`, sorted
 /// increasingly. Each entry is either `(r, r)` for a rational root `r` met
 /// by bisection, or `(lo, hi)` with `lo < hi`, exactly one root strictly
@@ -520,4 +597,44 @@ fn bisect_int(ip: &IntPoly, lo: &Q, hi: &Q, width: &Q) -> (Q, Q) {
         }
     }
     (lo, hi)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        /// The shift agrees with composing with x + 1, and Descartes' proof
+        /// of "no positive root" agrees with the Sturm count.
+        #[test]
+        fn descartes_agrees_with_sturm(c in proptest::collection::vec(-30i64..30, 2..9)) {
+            prop_assume!(c[0] != 0 && *c.last().unwrap() != 0);
+            let p = UPoly::from_ints(&c);
+            let mut shifted: Vec<BigInt> = c.iter().map(|&x| BigInt::from(x)).collect();
+            taylor_shift_one(&mut shifted);
+            let composed = p.compose(&UPoly::from_ints(&[1, 1]));
+            prop_assert_eq!(UPoly::new(shifted.into_iter().map(Q::from_integer).collect()), composed);
+            let sf = p.squarefree();
+            let positive = count_real_roots(&sf, &Q::zero(), &root_bound(&sf));
+            if no_positive_roots(&sf, 32) {
+                prop_assert_eq!(positive, 0);
+            }
+        }
+    }
+
+    /// Every root negative or complex, with four sign changes: proven
+    /// root-free after halvings; and a root exactly at a halving point is
+    /// not mistaken for none.
+    #[test]
+    fn descartes_proves_and_refuses() {
+        // (x² − x + 1)(x² − 2x + 5)(x + 3): no positive root, 4 sign changes.
+        let p = &(&UPoly::from_ints(&[1, -1, 1]) * &UPoly::from_ints(&[5, -2, 1]))
+            * &UPoly::from_ints(&[3, 1]);
+        assert!(no_positive_roots(&p, 32));
+        // (x − 1)(x² + 1)·(x² − x + 1): a root at 1 (B = 4, so 1 is a halving point).
+        let q = &(&UPoly::from_ints(&[-1, 1]) * &UPoly::from_ints(&[1, 0, 1]))
+            * &UPoly::from_ints(&[1, -1, 1]);
+        assert!(!no_positive_roots(&q, 32));
+    }
 }
