@@ -328,8 +328,8 @@ fn taylor_shift_one(c: &mut [BigInt]) {
     let n = c.len();
     for i in 0..n {
         for j in (i..n - 1).rev() {
-            let t = c[j + 1].clone();
-            c[j] += t;
+            let (lo, hi) = c.split_at_mut(j + 1);
+            lo[j] += &hi[0];
         }
     }
 }
