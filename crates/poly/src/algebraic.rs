@@ -564,10 +564,13 @@ fn reduce_irrational_with(mut f: UPoly, factors: &[UPoly], lo: Q, hi: Q) -> Alge
 }
 
 /// The rational root in each isolating interval of the square-free `f`, if
-/// any. Roots met exactly by bisection come first; then, when a prime bound
-/// ([`crate::stability::modular::rational_root_bound`]) allows more, the
-/// simplest rational of a narrowed interval is tried in each; only if that
-/// finds fewer than the bound does the slow, complete search run.
+/// any (the intervals may be a subset of f's). Roots met exactly by
+/// bisection come first; then every rational root, by p-adic lifting
+/// ([`crate::rational_roots::rational_roots`]). Only when no prime suits
+/// the lifting: when a prime bound
+/// ([`crate::stability::modular::rational_root_bound`]) allows more roots,
+/// the simplest rational of a narrowed interval is tried in each, and if
+/// that finds fewer than the bound the slow, complete search runs.
 fn rational_roots(f: &UPoly, intervals: &[(Q, Q)]) -> Vec<Option<Q>> {
     let mut out: Vec<Option<Q>> =
         intervals.iter().map(|(lo, hi)| (lo == hi).then(|| lo.clone())).collect();
