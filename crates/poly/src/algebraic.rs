@@ -878,6 +878,28 @@ mod tests {
         }
     }
 
+    /// Roots 1 and 1 + P, P the product of the lifting's primes: they meet
+    /// modulo every one of them, so the p-adic path declines and the search
+    /// in narrowed intervals (the fallback) must find both.
+    #[test]
+    fn rational_roots_found_when_no_prime_suits_the_lifting() {
+        let mut p = BigInt::one();
+        for q in [1009u64, 1013, 1019, 1021, 1031, 1033, 1039, 1049, 1051, 1061, 1063, 1069] {
+            p *= q;
+        }
+        let (a, b) = (BigInt::one(), BigInt::one() + &p);
+        // (x − a)(x − b)(x² − 2)
+        let quad =
+            UPoly::new(vec![Q::from_integer(&a * &b), Q::from_integer(-(&a + &b)), Q::one()]);
+        let f = &quad * &UPoly::from_ints(&[-2, 0, 1]);
+        let ints = crate::upoly::int_primitive(&f);
+        assert_eq!(crate::rational_roots::rational_roots(&ints), None, "no prime suits");
+        let roots = Algebraic::real_roots(&f);
+        let rational: Vec<Q> = roots.iter().filter_map(|r| r.as_rational().cloned()).collect();
+        assert_eq!(rational, vec![Q::from_integer(a), Q::from_integer(b)]);
+        assert_eq!(roots.len(), 4);
+    }
+
     proptest! {
         #[test]
         fn simplest_between_is_the_least_denominator(
