@@ -606,11 +606,8 @@ fn rational_roots(f: &UPoly, intervals: &[(Q, Q)]) -> Vec<Option<Q>> {
         return out;
     }
     let found_nonzero = out.iter().flatten().filter(|r| !r.is_zero()).count();
-    let bound = if zero_free.degree().unwrap_or(0) == 0 {
-        Some(0)
-    } else {
-        crate::stability::modular::rational_root_bound(&crate::upoly::int_primitive(&zero_free))
-    };
+    let bound =
+        crate::stability::modular::rational_root_bound(&crate::upoly::int_primitive(&zero_free));
     if bound == Some(found_nonzero) {
         return out;
     }

@@ -71,6 +71,8 @@ pub mod stability;
 pub mod sturm;
 mod sym;
 mod syntax;
+#[cfg(test)]
+mod testing;
 mod upoly;
 
 pub use crate::algebraic::Algebraic;

@@ -57,6 +57,7 @@ pub(crate) fn rational_roots(f: &[BigInt]) -> Option<Vec<Q>> {
                 roots.push(x);
             }
         }
+        let ip = crate::sturm::IntPoly::from_ints(f.to_vec());
         let mut modulus = pb.clone();
         let mut lifted: Vec<BigInt> = roots.iter().map(|&r| BigInt::from(r)).collect();
         while modulus <= bound {
@@ -68,8 +69,8 @@ pub(crate) fn rational_roots(f: &[BigInt]) -> Option<Vec<Q>> {
         let mut out: Vec<Q> = lifted
             .iter()
             .filter_map(|r| reconstruct(r, &modulus, &c0.abs(), &lead.abs()))
-            .filter(|(a, b)| vanishes(f, a, b))
             .map(|(a, b)| Q::new(a, b))
+            .filter(|x| ip.sign_at(x).is_eq())
             .collect();
         out.sort();
         out.dedup();
@@ -102,17 +103,6 @@ fn reconstruct(r: &BigInt, m: &BigInt, n_max: &BigInt, d_max: &BigInt) -> Option
     }
     let (a, b) = if t1.is_negative() { (-r1, -t1) } else { (r1, t1) };
     (!b.is_zero() && b <= *d_max && a.gcd(&b).is_one()).then_some((a, b))
-}
-
-/// Whether f(a/b) = 0: Σ f_k a^k b^(n−k) = 0.
-fn vanishes(f: &[BigInt], a: &BigInt, b: &BigInt) -> bool {
-    let mut acc = BigInt::zero();
-    let mut bpow = BigInt::one();
-    for c in f.iter().rev() {
-        acc = acc * a + c * &bpow;
-        bpow *= b;
-    }
-    acc.is_zero()
 }
 
 #[cfg(test)]

@@ -46,6 +46,13 @@ impl IntPoly {
         IntPoly { c }
     }
 
+    /// From integer coefficients (lowest power first, trimmed), taken as
+    /// they are: the signs, not the scale, are what the evaluations give.
+    pub(crate) fn from_ints(c: Vec<BigInt>) -> IntPoly {
+        debug_assert!(c.last().is_none_or(|x| !x.is_zero()));
+        IntPoly { c }
+    }
+
     /// The integer coefficients, lowest power first.
     pub(crate) fn coeffs(&self) -> &[BigInt] {
         &self.c

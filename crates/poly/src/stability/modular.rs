@@ -734,13 +734,7 @@ mod tests {
     /// so pivots vanish at some points and rows are swapped) against Laplace.
     #[test]
     fn det_matches_laplace_expansion() {
-        let mut seed = 0x2545_f491_4f6c_dd1du64;
-        let mut next = move || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            seed
-        };
+        let mut next = crate::testing::xorshift(0x2545_f491_4f6c_dd1d);
         for trial in 0..60 {
             let n = 1 + trial % 5;
             let m: Vec<Vec<UPoly>> = (0..n)
@@ -773,13 +767,7 @@ mod tests {
     /// element, for small primes and random polynomials.
     #[test]
     fn root_count_mod_p_matches_trying_every_element() {
-        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
-        let mut next = move || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            seed
-        };
+        let mut next = crate::testing::xorshift(0x9e37_79b9_7f4a_7c15);
         for p in [2u64, 3, 101, 103, 1009, SMALL_PRIMES[0], SMALL_PRIMES[5]] {
             let trials = if p > 10_000 { 3 } else { 40 };
             for _ in 0..trials {

@@ -5,11 +5,13 @@
 //! g = gcd(f, f*) holds every root on the circle and every reciprocal pair
 //! (w, 1/w); its roots on the circle are the real roots of G in (−2, 2)
 //! (g = z^m G(z + 1/z)) plus ±1, and its other roots split evenly. The
-//! cofactor h has no root on the circle and no reciprocal pair, so its
-//! Schur–Cohn matrix BᵀB − AᵀA (A, B lower triangular Toeplitz of
-//! a_0 … a_{n−1} and a_n … a_1) is non-singular, and its inertia gives the
-//! roots inside (positive eigenvalues) and outside (negative). The inertia
-//! comes from an exact symmetric elimination over Q with 1×1 and 2×2 pivots.
+//! cofactor h has no root on the circle and no reciprocal pair: its roots
+//! inside come from the signs of the Schur transforms' constants (O(n²),
+//! [`schur_transform_counts`]), or, where one vanishes, from the inertia of
+//! its Schur–Cohn matrix BᵀB − AᵀA (A, B lower triangular Toeplitz of
+//! a_0 … a_{n−1} and a_n … a_1; non-singular for h): positive eigenvalues
+//! inside, negative outside, by Jacobi's rule on Bareiss pivots or an exact
+//! symmetric elimination over Q with 1×1 and 2×2 pivots.
 //!
 //! [`classify`] then finds the dominant roots: the real roots are isolated
 //! (Sturm), the largest modulus R among them is bracketed by rationals
@@ -720,7 +722,7 @@ mod tests {
 
     proptest! {
         /// Wherever the transform recursion answers, it agrees with the
-        /// inertia of the Schur–Cohn matrix; and it answers on most inputs.
+        /// inertia of the Schur–Cohn matrix.
         #[test]
         fn schur_transform_counts_match_the_inertia(
             c in proptest::collection::vec(-40i64..40, 2..10),
@@ -734,6 +736,31 @@ mod tests {
                 prop_assert_eq!(r, by_inertia(&a));
             }
         }
+    }
+
+    /// The recursion answers (no vanishing δ_k, every division exact) on
+    /// almost every polynomial, so the fallback is the exception: at least
+    /// 95 of 100 random ones of degree 2–9 with h, h* coprime.
+    #[test]
+    fn schur_transform_counts_answer_on_most_inputs() {
+        let mut next = crate::testing::xorshift(0x1234_5678_9abc_def1);
+        let (mut tried, mut answered) = (0, 0);
+        while tried < 100 {
+            let seed = next();
+            let n = 3 + (seed % 8) as usize;
+            let c: Vec<i64> = (0..n).map(|k| ((seed >> (5 * k)) % 61) as i64 - 30).collect();
+            let f = UPoly::from_ints(&c);
+            if c[0] == 0 || c[n - 1] == 0 || f.gcd(&f.reversed()).degree() != Some(0) {
+                continue;
+            }
+            tried += 1;
+            let a: Vec<BigInt> = c.iter().map(|&x| BigInt::from(x)).collect();
+            if let Some(r) = schur_transform_counts(&a) {
+                assert_eq!(r, by_inertia(&a), "{c:?}");
+                answered += 1;
+            }
+        }
+        assert!(answered >= 95, "answered {answered} of {tried}");
     }
 
     /// Degree 9 with 30-bit coefficients: the divisions keep the sizes
