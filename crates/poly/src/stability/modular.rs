@@ -741,7 +741,7 @@ mod tests {
                 .map(|_| {
                     (0..n)
                         .map(|_| {
-                            if next() % 3 == 0 {
+                            if next().is_multiple_of(3) {
                                 return UPoly::zero();
                             }
                             let len = 1 + (next() % 3) as usize;
