@@ -7,7 +7,7 @@
 //! (g = z^m G(z + 1/z)) plus ±1, and its other roots split evenly. The
 //! cofactor h has no root on the circle and no reciprocal pair: its roots
 //! inside come from the signs of the Schur transforms' constants (O(n²),
-//! [`schur_transform_counts`]), or, where one vanishes, from the inertia of
+//! `schur_transform_counts`), or, where one vanishes, from the inertia of
 //! its Schur–Cohn matrix BᵀB − AᵀA (A, B lower triangular Toeplitz of
 //! a_0 … a_{n−1} and a_n … a_1; non-singular for h): positive eigenvalues
 //! inside, negative outside, by Jacobi's rule on Bareiss pivots or an exact
