@@ -24,6 +24,9 @@ use crate::sturm::{
 };
 use crate::{UPoly, Q};
 
+/// The least and the greatest of some real roots.
+pub(crate) type Ends = (Algebraic, Algebraic);
+
 /// A real algebraic number, exact.
 #[derive(Clone)]
 pub struct Algebraic {
@@ -69,22 +72,10 @@ impl Algebraic {
     pub fn real_roots(p: &UPoly) -> Vec<Algebraic> {
         let sf = p.squarefree();
         let intervals = isolate_squarefree(&sf);
-        // Find the rational roots once, then reduce the irrational ones with
-        // the polynomial already freed of them.
-        let rational = rational_roots(&sf, &intervals);
-        let mut irrational = sf.clone();
-        for r in rational.iter().flatten() {
-            irrational = irrational.div_rem(&UPoly::new(vec![-r.clone(), Q::one()])).0;
-        }
-        let even_factors = even_rational_factors(&irrational);
-        intervals
-            .into_iter()
-            .zip(rational)
-            .map(|((lo, hi), r)| match r {
-                Some(r) => Algebraic::from_rational(r),
-                None => reduce_irrational_with(irrational.clone(), &even_factors, lo, hi),
-            })
-            .collect()
+        let (rational, all) = rational_roots(&sf, &intervals);
+        // With every interval asked about, the rational roots found are all.
+        let all = all.unwrap_or_else(|| rational.iter().flatten().cloned().collect());
+        numbers_of(&sf, intervals, rational, &all)
     }
 
     /// The real roots of `p` in the open interval (0, ∞), increasing.
@@ -100,7 +91,41 @@ impl Algebraic {
                 return Vec::new();
             }
         }
+        // Only the positive roots isolated (the same intervals) and made
+        // numbers, when every rational root is known without the others.
+        let sf = p.squarefree();
+        let budget = crate::isolate::budget(sf.degree().unwrap_or(0));
+        if let Some(intervals) = crate::isolate::isolate(&sf, true, budget) {
+            if let (rational, Some(all)) = rational_roots(&sf, &intervals) {
+                return numbers_of(&sf, intervals, rational, &all);
+            }
+        }
         Algebraic::real_roots(p).into_iter().filter(|a| a.sign() == Ordering::Greater).collect()
+    }
+
+    /// The isolating intervals of the distinct real roots of `p` (those
+    /// of [`crate::sturm::isolate_real_roots`]), with the least and the
+    /// greatest root as numbers (when there is one):
+    /// [`Algebraic::real_roots`] without making numbers of the roots in
+    /// between.
+    pub(crate) fn extreme_real_roots(p: &UPoly) -> (Vec<(Q, Q)>, Option<Ends>) {
+        let sf = p.squarefree();
+        let intervals = isolate_squarefree(&sf);
+        let count = intervals.len();
+        if count == 0 {
+            return (intervals, None);
+        }
+        let mut ends = vec![intervals[0].clone()];
+        if count > 1 {
+            ends.push(intervals[count - 1].clone());
+        }
+        let (rational, all) = rational_roots(&sf, &ends);
+        let roots = match all {
+            Some(all) => numbers_of(&sf, ends, rational, &all),
+            None => Algebraic::real_roots(p),
+        };
+        let (first, last) = (roots[0].clone(), roots[roots.len() - 1].clone());
+        (intervals, Some((first, last)))
     }
 
     /// The unique root of `p` in `(lo, hi]`, or `None` when `(lo, hi]` does
@@ -487,6 +512,39 @@ fn vanishes_at_root(poly: &UPoly, lo: &Q, hi: &Q, g: &UPoly) -> bool {
     }
 }
 
+/// The numbers isolated by `intervals` (some of the isolation of the
+/// square-free `sf`), given the rational root in each (`rational`) and
+/// every rational root of `sf` (`all`): the irrational ones reduced with
+/// `sf` freed of all its rational roots.
+fn numbers_of(
+    sf: &UPoly,
+    intervals: Vec<(Q, Q)>,
+    rational: Vec<Option<Q>>,
+    all: &[Q],
+) -> Vec<Algebraic> {
+    // sf freed of its rational roots, in integers (exact synthetic
+    // division), made monic once; its integer form is shared by every root
+    // that keeps it as defining polynomial.
+    let mut c = crate::upoly::int_primitive(sf);
+    for r in all {
+        c = crate::upoly::divide_linear(&c, r);
+    }
+    let irrational = UPoly::new(c.into_iter().map(Q::from_integer).collect()).monic();
+    let mut shared: Option<Arc<IntPoly>> = None;
+    let even_factors = even_rational_factors(&irrational);
+    intervals
+        .into_iter()
+        .zip(rational)
+        .map(|((lo, hi), r)| match r {
+            Some(r) => Algebraic::from_rational(r),
+            None => {
+                let ip = shared.get_or_insert_with(|| Arc::new(IntPoly::new(&irrational)));
+                reduce_irrational_with(irrational.clone(), Some(ip), &even_factors, lo, hi)
+            }
+        })
+        .collect()
+}
+
 /// Canonical form of the root of the square-free `f` in the isolating
 /// interval (lo, hi) (or the rational `lo` when `lo == hi`).
 fn reduce(f: UPoly, lo: Q, hi: Q) -> Algebraic {
@@ -496,14 +554,18 @@ fn reduce(f: UPoly, lo: Q, hi: Q) -> Algebraic {
     if f.degree() == Some(1) {
         return Algebraic::from_rational(-f.coeff(0) / f.coeff(1));
     }
-    if let Some(r) = rational_roots(&f, &[(lo.clone(), hi.clone())])[0].clone() {
+    let (ours, all) = rational_roots(&f, &[(lo.clone(), hi.clone())]);
+    if let Some(r) = ours[0].clone() {
         return Algebraic::from_rational(r);
     }
-    let mut f = f;
     // Drop the other rational roots: they are not ours and would only hide
     // a closed form.
-    let intervals = isolate_squarefree(&f);
-    for r in rational_roots(&f, &intervals).into_iter().flatten() {
+    let all = all.unwrap_or_else(|| {
+        let intervals = isolate_squarefree(&f);
+        rational_roots(&f, &intervals).0.into_iter().flatten().collect()
+    });
+    let mut f = f;
+    for r in all {
         f = f.div_rem(&UPoly::new(vec![-r, Q::one()])).0;
     }
     reduce_irrational(f, lo, hi)
@@ -513,7 +575,7 @@ fn reduce(f: UPoly, lo: Q, hi: Q) -> Algebraic {
 /// roots.
 fn reduce_irrational(f: UPoly, lo: Q, hi: Q) -> Algebraic {
     let factors = even_rational_factors(&f);
-    reduce_irrational_with(f, &factors, lo, hi)
+    reduce_irrational_with(f, None, &factors, lo, hi)
 }
 
 /// For an even f(x) = F(x²): the factors x² − y for the rational roots y of
@@ -537,7 +599,12 @@ fn even_rational_factors(f: &UPoly) -> Vec<UPoly> {
         ys
     } else {
         let intervals = isolate_squarefree(&big_f);
-        rational_roots(&big_f, &intervals).into_iter().flatten().filter(|y| !y.is_zero()).collect()
+        rational_roots(&big_f, &intervals)
+            .0
+            .into_iter()
+            .flatten()
+            .filter(|y| !y.is_zero())
+            .collect()
     };
     if lowest > 0 {
         ys.push(Q::zero());
@@ -549,18 +616,36 @@ fn even_rational_factors(f: &UPoly) -> Vec<UPoly> {
 /// [`reduce`] for an irrational root of a square-free `f` without rational
 /// roots, given the factors x² − y of an even f: either one is ours (a
 /// square root of a rational) or it goes.
-fn reduce_irrational_with(mut f: UPoly, factors: &[UPoly], lo: Q, hi: Q) -> Algebraic {
+///
+/// `ip`, when given, is the integer form of a monic `f`, used if `f` stays
+/// the defining polynomial.
+fn reduce_irrational_with(
+    mut f: UPoly,
+    ip: Option<&Arc<IntPoly>>,
+    factors: &[UPoly],
+    lo: Q,
+    hi: Q,
+) -> Algebraic {
+    let mut kept = true;
     for factor in factors {
         if vanishes_at_root(&f, &lo, &hi, factor) {
             f = factor.clone();
+            kept = false;
             break;
         }
         let (quotient, rem) = f.div_rem(factor);
         if rem.is_zero() {
             f = quotient;
+            kept = false;
         }
     }
-    root(f.monic(), lo, hi)
+    match ip {
+        Some(ip) if kept => {
+            debug_assert!(f.leading().is_one());
+            Algebraic { repr: Repr::Root { poly: f, ip: Arc::clone(ip), lo, hi } }
+        }
+        _ => root(f.monic(), lo, hi),
+    }
 }
 
 /// The rational root in each isolating interval of the square-free `f`, if
@@ -571,7 +656,7 @@ fn reduce_irrational_with(mut f: UPoly, factors: &[UPoly], lo: Q, hi: Q) -> Alge
 /// ([`crate::stability::modular::rational_root_bound`]) allows more roots,
 /// the simplest rational of a narrowed interval is tried in each, and if
 /// that finds fewer than the bound the slow, complete search runs.
-fn rational_roots(f: &UPoly, intervals: &[(Q, Q)]) -> Vec<Option<Q>> {
+fn rational_roots(f: &UPoly, intervals: &[(Q, Q)]) -> (Vec<Option<Q>>, Option<Vec<Q>>) {
     let mut out: Vec<Option<Q>> =
         intervals.iter().map(|(lo, hi)| (lo == hi).then(|| lo.clone())).collect();
     // A root at zero is usually met by bisection (0 is a dyadic point), but
@@ -586,30 +671,34 @@ fn rational_roots(f: &UPoly, intervals: &[(Q, Q)]) -> Vec<Option<Q>> {
         let lowest = f.coeffs().iter().position(|c| !c.is_zero()).unwrap_or(0);
         UPoly::new(f.coeffs()[lowest..].to_vec())
     };
+    let zero: Vec<Q> =
+        if f.coeffs().first().is_some_and(Zero::is_zero) { vec![Q::zero()] } else { Vec::new() };
     if zero_free.degree().unwrap_or(0) == 0 {
-        return out;
+        return (out, Some(zero));
     }
     // Every rational root, by p-adic lifting, placed in its interval.
     if let Some(roots) =
         crate::rational_roots::rational_roots(&crate::upoly::int_primitive(&zero_free))
     {
-        for r in roots {
+        for r in &roots {
             // (The intervals may be a subset of the isolation: `reduce`
             // asks about one.)
-            let k = intervals
-                .iter()
-                .position(|(lo, hi)| (lo == hi && *lo == r) || (*lo < r && r < *hi));
+            let k =
+                intervals.iter().position(|(lo, hi)| (lo == hi && lo == r) || (lo < r && r < hi));
             if let Some(k) = k {
-                out[k] = Some(r);
+                out[k] = Some(r.clone());
             }
         }
-        return out;
+        let mut all = roots;
+        all.extend(zero);
+        all.sort();
+        return (out, Some(all));
     }
     let found_nonzero = out.iter().flatten().filter(|r| !r.is_zero()).count();
     let bound =
         crate::stability::modular::rational_root_bound(&crate::upoly::int_primitive(&zero_free));
     if bound == Some(found_nonzero) {
-        return out;
+        return (out, None);
     }
     let width = Q::new(BigInt::one(), BigInt::one() << 48);
     let mut found = found_nonzero;
@@ -626,14 +715,14 @@ fn rational_roots(f: &UPoly, intervals: &[(Q, Q)]) -> Vec<Option<Q>> {
         }
     }
     if bound == Some(found) {
-        return out;
+        return (out, None);
     }
     for (k, (lo, hi)) in intervals.iter().enumerate() {
         if out[k].is_none() {
             out[k] = rational_root_in(f, &ip, lo, hi);
         }
     }
-    out
+    (out, None)
 }
 
 /// The rational root of the square-free `f` in (lo, hi), if the root

@@ -60,6 +60,7 @@ pub mod field_stability;
 mod implicit;
 mod intgcd;
 pub mod invariant;
+mod isolate;
 mod matrix;
 mod method;
 mod params;

@@ -262,20 +262,24 @@ pub fn count_all_real_roots(p: &UPoly) -> usize {
 /// A power of two strictly greater than the modulus of every root of `p`
 /// (Cauchy's bound 1 + max |a_k / a_n|, rounded up).
 pub fn root_bound(p: &UPoly) -> Q {
-    let lead = p.leading().abs();
-    let mut m = Q::zero();
-    for c in &p.coeffs()[..p.coeffs().len().saturating_sub(1)] {
-        let r = c.abs() / &lead;
-        if r > m {
-            m = r;
+    // The largest |a_k| by cross-multiplication (no gcd), one division.
+    let c = p.coeffs();
+    let mut largest: Option<&Q> = None;
+    for x in &c[..c.len().saturating_sub(1)] {
+        if x.is_zero() {
+            continue;
+        }
+        let bigger = largest.is_none_or(|m| {
+            (x.numer().abs() * m.denom()).cmp(&(m.numer().abs() * x.denom())) == Ordering::Greater
+        });
+        if bigger {
+            largest = Some(x);
         }
     }
-    let bound = m + Q::one();
-    let mut b = Q::one();
-    while b <= bound {
-        b *= Q::from_integer(2.into());
-    }
-    b
+    let bound = largest.map_or_else(Q::zero, |m| m.abs() / p.leading().abs()) + Q::one();
+    // The least 2^e > bound: 2^e is an integer, so 2^e > ⌊bound⌋ suffices,
+    // e = bits(⌊bound⌋) (bound ≥ 1).
+    Q::from_integer(BigInt::one() << bound.floor().to_integer().bits())
 }
 
 /// Whether `p` (p(0) ≠ 0) provably has no root in (0, ∞): Descartes' rule
@@ -331,7 +335,7 @@ pub(crate) fn no_positive_roots(p: &UPoly, budget: usize) -> bool {
 
 /// g(x) ↦ g(x + 1) in place (coefficients lowest first), by repeated
 /// synthetic division: n(n+1)/2 additions.
-fn taylor_shift_one(c: &mut [BigInt]) {
+pub(crate) fn taylor_shift_one(c: &mut [BigInt]) {
     let n = c.len();
     for i in 0..n {
         for j in (i..n - 1).rev() {
@@ -342,7 +346,7 @@ fn taylor_shift_one(c: &mut [BigInt]) {
 }
 
 /// Sign changes of a coefficient sequence, zeros skipped.
-fn sign_changes(c: &[BigInt]) -> usize {
+pub(crate) fn sign_changes(c: &[BigInt]) -> usize {
     let mut last = None;
     let mut count = 0;
     for x in c.iter().filter(|x| !x.is_zero()) {
@@ -368,8 +372,20 @@ pub fn isolate_real_roots(p: &UPoly) -> Vec<(Q, Q)> {
 
 /// [`isolate_real_roots`] for a polynomial already square-free (its own
 /// square-free part up to a constant factor): the same intervals, without
-/// recomputing the square-free part.
+/// recomputing the square-free part. Computed by Descartes' rule and a
+/// replay of the bisection ([`crate::isolate`]); by the Sturm chain only
+/// when the rational roots elude p-adic lifting.
 pub(crate) fn isolate_squarefree(sf: &UPoly) -> Vec<(Q, Q)> {
+    if sf.degree().unwrap_or(0) == 0 {
+        return Vec::new();
+    }
+    let budget = crate::isolate::budget(sf.degree().unwrap_or(0));
+    crate::isolate::isolate(sf, false, budget).unwrap_or_else(|| isolate_squarefree_sturm(sf))
+}
+
+/// [`isolate_squarefree`] by bisection with the Sturm chain's counts: the
+/// definition of the intervals, and the oracle of [`crate::isolate`].
+pub(crate) fn isolate_squarefree_sturm(sf: &UPoly) -> Vec<(Q, Q)> {
     if sf.degree().unwrap_or(0) == 0 {
         return Vec::new();
     }
@@ -627,6 +643,51 @@ mod tests {
             if no_positive_roots(&sf, 32) {
                 prop_assert_eq!(positive, 0);
             }
+        }
+    }
+
+    /// Cauchy's bound as written: 1 + max |a_k / a_n|, then doubling from
+    /// one until above it. The oracle of [`root_bound`].
+    fn root_bound_slow(p: &UPoly) -> Q {
+        let lead = p.leading().abs();
+        let mut m = Q::zero();
+        for c in &p.coeffs()[..p.coeffs().len() - 1] {
+            m = m.max(c.abs() / &lead);
+        }
+        let bound = m + Q::one();
+        let mut b = Q::one();
+        while b <= bound {
+            b *= Q::from_integer(2.into());
+        }
+        b
+    }
+
+    proptest! {
+        #[test]
+        fn root_bound_matches_cauchy(
+            c in proptest::collection::vec((-300i64..300, 1i64..40), 1..8),
+            scale in 0u32..3,
+        ) {
+            let coeffs: Vec<Q> = c
+                .iter()
+                .map(|&(a, b)| Q::new(BigInt::from(a), BigInt::from(b).pow(scale + 1)))
+                .collect();
+            let p = UPoly::new(coeffs);
+            prop_assume!(p.degree().unwrap_or(0) > 0);
+            prop_assert_eq!(root_bound(&p), root_bound_slow(&p));
+        }
+    }
+
+    /// Exact powers of two at the boundary: 1 + |a_k/a_n| equal to a power
+    /// of two must give the next one (the bound is strict).
+    #[test]
+    fn root_bound_at_powers_of_two() {
+        for (c, expected) in
+            [(vec![3, 1], 8), (vec![-7, 0, 1], 16), (vec![0, 1], 2), (vec![1, 2], 2)]
+        {
+            let p = UPoly::from_ints(&c);
+            assert_eq!(root_bound(&p), Q::from_integer(expected.into()), "{c:?}");
+            assert_eq!(root_bound_slow(&p), root_bound(&p));
         }
     }
 

@@ -411,6 +411,22 @@ impl Neg for &UPoly {
 }
 
 /// The coefficients scaled by a positive rational to primitive integers.
+/// The quotient of the integer polynomial `c` (lowest first) by x − r for
+/// a rational root r = a/b of it: by Gauss's lemma the quotient by b·x − a
+/// has integer coefficients, the same up to the positive factor b.
+/// Synthetic division from the top, each step an exact division by b.
+pub(crate) fn divide_linear(c: &[BigInt], r: &Q) -> Vec<BigInt> {
+    let (a, b) = (r.numer(), r.denom());
+    let m = c.len() - 1;
+    let mut q = vec![BigInt::zero(); m];
+    q[m - 1] = &c[m] / b;
+    for k in (1..m).rev() {
+        q[k - 1] = (&c[k] + a * &q[k]) / b;
+    }
+    debug_assert!((&c[0] + a * &q[0]).is_zero(), "r is a root");
+    q
+}
+
 pub(crate) fn int_primitive(p: &UPoly) -> Vec<BigInt> {
     let mut den = BigInt::one();
     for q in p.coeffs() {

@@ -31,7 +31,7 @@ use num_integer::Integer;
 use num_traits::{One, Zero};
 
 use crate::algebraic::Algebraic;
-use crate::sturm::count_real_roots;
+use crate::sturm::{count_real_roots, IntPoly};
 use crate::{RootClass, UPoly, Q};
 
 /// Distinct roots inside, on and outside the unit circle.
@@ -363,8 +363,8 @@ pub(crate) fn classify_with_counts(f: &UPoly) -> (RootClass, Counts) {
 /// not separate (a tie between a real root and a complex pair).
 fn dominant_kind(sf: &UPoly) -> Option<Kind> {
     let n = sf.degree().expect("non-constant");
-    let reals = Algebraic::real_roots(sf);
-    let (Some(bottom), Some(top)) = (reals.first(), reals.last()) else {
+    let (reals, ends) = Algebraic::extreme_real_roots(sf);
+    let Some((bottom, top)) = ends.as_ref() else {
         return Some(Kind::Complex);
     };
     let neg_mod = (bottom.sign() == Ordering::Less).then(|| bottom.neg());
@@ -391,6 +391,7 @@ fn dominant_kind(sf: &UPoly) -> Option<Kind> {
         let (lo, hi) = r.interval();
         (hi - lo) / Q::from_integer(4.into())
     };
+    let ip = IntPoly::new(sf);
     for _ in 0..24 {
         let (l, u) = r.refine(&width).interval();
         if l <= Q::zero() {
@@ -403,13 +404,32 @@ fn dominant_kind(sf: &UPoly) -> Option<Kind> {
         }
         let cl = counts_squarefree(&scaled(sf, &l));
         let annulus = n - cl.inside - cu.outside;
-        let reals_in = reals.iter().filter(|x| x.abs().cmp_rational(&l) != Ordering::Less).count();
+        let reals_in = reals.iter().filter(|iv| modulus_at_least(&ip, iv, &l)).count();
         if annulus == reals_in {
             return Some(kind);
         }
         width = (&u - &l) / Q::from_integer(64.into());
     }
     None
+}
+
+/// Whether the root of `ip` isolated by `(lo, hi)` (an interval of
+/// [`crate::sturm::isolate_real_roots`]: `(r, r)` for a rational root, or
+/// exactly one root strictly inside and `ip` non-zero of opposite signs at
+/// the ends) has modulus at least `l > 0`.
+fn modulus_at_least(ip: &IntPoly, (lo, hi): &(Q, Q), l: &Q) -> bool {
+    // The root against a point x: `Less` when the root is below it.
+    let cmp = |x: &Q| -> Ordering {
+        if lo == hi || x <= lo || x >= hi {
+            return lo.cmp(x).then(hi.cmp(x));
+        }
+        match ip.sign_at(x) {
+            Ordering::Equal => Ordering::Equal,
+            s if s == ip.sign_at(hi) => Ordering::Less,
+            _ => Ordering::Greater,
+        }
+    };
+    cmp(l) != Ordering::Less || cmp(&-l) != Ordering::Greater
 }
 
 /// The signs of the shifted polynomials of a second-order χ = z² − 2p·z + q

@@ -1,0 +1,546 @@
+//! Real-root isolation by Descartes' rule of signs, returning the very
+//! intervals of Sturm bisection.
+//!
+//! [`crate::sturm`] isolates the real roots of a square-free f by bisecting
+//! (−B, B] (B a power of two above every root) and counting roots in each
+//! half with the Sturm chain, whose remainders grow to numbers of thousands
+//! of bits on the stability conditions. Its intervals are part of every
+//! report (each critical Φ is printed with an interval refined from them),
+//! so a faster isolation must reproduce them exactly. This module does so:
+//!
+//! 1. The positive and negative roots of f located by the
+//!    Vincent–Collins–Akritas bisection: on a dyadic interval (a, a + w),
+//!    Descartes' rule on (1 + x)^n·h(1/(1 + x)), h(x) = f(a + w·x) scaled
+//!    to integers, bounds the number of roots in the open interval; 0 or 1
+//!    sign change is exact. A root at a halving point is seen there
+//!    exactly. Only Taylor shifts by one and shifts of bits: no remainder
+//!    sequence.
+//! 2. Sturm's bisection replayed on the roots now located: its only
+//!    questions are "how many roots in (lo, mid]" and "is mid a root", and a
+//!    located root answers "are you below x" with at most one sign of f,
+//!    narrowing its interval for the next question.
+//!
+//! The result is identical to [`crate::sturm::isolate_squarefree_sturm`]
+//! (a property test holds the two together). Descartes' bisection is slow
+//! where complex roots crowd the real axis; past a budget of parts it gives
+//! up (`None`) and the caller runs the Sturm chain, as it does for low
+//! degrees, where the chain is cheap.
+
+use std::cmp::Ordering;
+
+use num_bigint::BigInt;
+use num_traits::{One, Signed, Zero};
+
+use crate::sturm::{root_bound, sign_changes, taylor_shift_one, IntPoly};
+use crate::{UPoly, Q};
+
+/// A real root of f as the replay sees it.
+enum Root {
+    Rational(Q),
+    /// The one root of the located polynomial P in the open interval
+    /// (lo, hi); `s_hi` is the sign of P on (root, hi). P is f itself, or
+    /// F for an even f(x) = F(x²), and then the root of f is ±√ of P's
+    /// (`neg` for the minus sign).
+    Between {
+        lo: Q,
+        hi: Q,
+        s_hi: Ordering,
+        neg: bool,
+    },
+    /// ±√y for a positive rational y that is not a square.
+    Sqrt {
+        y: Q,
+        neg: bool,
+    },
+}
+
+impl Root {
+    /// The root against `x`: `Less` when the root is below. Narrows the
+    /// interval of a root to the side of `x` that holds it (or makes the
+    /// root rational when it is `x`).
+    fn cmp_point(&mut self, x: &Q, located: &Located) -> Ordering {
+        // Roots ±√y: compare y with x² on the side of zero that x is on.
+        let (t, neg) = match self {
+            Root::Rational(r) => return (*r).cmp(x),
+            Root::Sqrt { neg, .. } | Root::Between { neg, .. } if located.squared => {
+                let neg = *neg;
+                if !neg && !x.is_positive() {
+                    return Ordering::Greater;
+                }
+                if neg && !x.is_negative() {
+                    return Ordering::Less;
+                }
+                (x * x, neg)
+            }
+            _ => (x.clone(), false),
+        };
+        let o = match self {
+            Root::Rational(_) => unreachable!("returned above"),
+            Root::Sqrt { y, .. } => (*y).cmp(&t),
+            Root::Between { lo, hi, s_hi, .. } => {
+                if t <= *lo {
+                    Ordering::Greater
+                } else if t >= *hi {
+                    Ordering::Less
+                } else {
+                    let s = located.poly.sign_at(&t);
+                    if s == Ordering::Equal {
+                        Ordering::Equal
+                    } else if s == *s_hi {
+                        *hi = t;
+                        Ordering::Less
+                    } else {
+                        *lo = t;
+                        Ordering::Greater
+                    }
+                }
+            }
+        };
+        if o == Ordering::Equal {
+            *self = Root::Rational(x.clone());
+        }
+        if neg {
+            o.reverse()
+        } else {
+            o
+        }
+    }
+}
+
+/// The polynomial whose roots the [`Root`]s locate.
+struct Located {
+    poly: IntPoly,
+    /// Whether `poly` is F of an even f(x) = F(x²).
+    squared: bool,
+}
+
+/// The parts Descartes' bisection may take on each side of zero before
+/// [`isolate`] gives up for the Sturm chain: generous for well-separated
+/// roots, cut short where complex roots crowd the axis (SSPRK(10,4)'s
+/// conditions need 100 and more from Cauchy's bound; DESIGN.md).
+pub(crate) fn budget(degree: usize) -> usize {
+    4 * degree + 16
+}
+
+/// Sturm's isolating intervals of the square-free `sf` (degree ≥ 1): all
+/// of them, or with `positive_only` those of the roots in (0, ∞). `None`
+/// when Descartes' bisection needs more than `budget` parts on a side.
+pub(crate) fn isolate(sf: &UPoly, positive_only: bool, budget: usize) -> Option<Vec<(Q, Q)>> {
+    let b = root_bound(sf);
+    let c = crate::upoly::int_primitive(sf);
+    let lowest = c.iter().position(|x| !x.is_zero()).expect("non-zero");
+    // f without its root at zero (square-free: at most a simple one).
+    let g = &c[lowest..];
+    let e = b.numer().bits() - 1; // B = 2^e
+    debug_assert!(b.denom().is_one() && (BigInt::one() << e) == *b.numer());
+    let zero = (lowest > 0).then(|| Root::Rational(Q::zero()));
+    let squared = g.len() > 2 && g.iter().skip(1).step_by(2).all(Zero::is_zero);
+    let mut roots: Vec<Root> = Vec::new();
+    let located = if squared {
+        // g(x) = F(x²): the roots of F in (0, B²), and ±√ of each.
+        let big_f: Vec<BigInt> = g.iter().step_by(2).cloned().collect();
+        let positive: Vec<Root> = descartes_isolate(&big_f, 2 * e, false, budget)?
+            .into_iter()
+            .map(|found| match found {
+                Found::At(y) => match exact_sqrt(&y) {
+                    Some(r) => Root::Rational(r),
+                    None => Root::Sqrt { y, neg: false },
+                },
+                Found::Between { lo, hi, s_hi, .. } => Root::Between { lo, hi, s_hi, neg: false },
+            })
+            .collect();
+        for r in positive.iter().rev() {
+            roots.push(match r {
+                Root::Rational(q) => Root::Rational(-q),
+                Root::Sqrt { y, .. } => Root::Sqrt { y: y.clone(), neg: true },
+                Root::Between { lo, hi, s_hi, .. } => {
+                    Root::Between { lo: lo.clone(), hi: hi.clone(), s_hi: *s_hi, neg: true }
+                }
+            });
+        }
+        roots.extend(zero);
+        roots.extend(positive);
+        Located { poly: IntPoly::from_ints(big_f), squared: true }
+    } else {
+        // The negative roots of g as the positive roots of g(−x) (only the
+        // largest, when only positives are wanted), then its positive roots.
+        if g.len() > 1 {
+            let mirrored: Vec<BigInt> = g
+                .iter()
+                .enumerate()
+                .map(|(k, x)| if k % 2 == 1 { -x } else { x.clone() })
+                .collect();
+            let mut negative = descartes_isolate(&mirrored, e, positive_only, budget)?;
+            negative.reverse();
+            roots.extend(negative.into_iter().map(|found| match found {
+                Found::At(r) => Root::Rational(-r),
+                Found::Between { lo, hi, s_lo, .. } => {
+                    Root::Between { lo: -hi, hi: -lo, s_hi: s_lo, neg: false }
+                }
+            }));
+        }
+        roots.extend(zero);
+        if g.len() > 1 {
+            roots.extend(descartes_isolate(g, e, false, budget)?.into_iter().map(
+                |found| match found {
+                    Found::At(r) => Root::Rational(r),
+                    Found::Between { lo, hi, s_hi, .. } => {
+                        Root::Between { lo, hi, s_hi, neg: false }
+                    }
+                },
+            ));
+        }
+        Located { poly: IntPoly::from_ints(g.to_vec()), squared: false }
+    };
+    let mut out = Vec::new();
+    let mut replay = Replay { f: &located, out: &mut out };
+    let lo = -b.clone();
+    if positive_only {
+        replay.positive(&mut roots, lo, b);
+    } else {
+        replay.isolate_in(&mut roots, lo, b);
+    }
+    Some(out)
+}
+
+/// √y when it is rational (y > 0 in lowest terms: both parts squares).
+fn exact_sqrt(y: &Q) -> Option<Q> {
+    let (a, b) = (y.numer().sqrt(), y.denom().sqrt());
+    (&a * &a == *y.numer() && &b * &b == *y.denom()).then(|| Q::new(a, b))
+}
+
+/// A root in (0, 2^e) found by Descartes' bisection.
+enum Found {
+    /// A root at a halving point.
+    At(Q),
+    /// The one root in the open interval (lo, hi); `s_lo`, `s_hi` the signs
+    /// of the polynomial on (lo, root) and (root, hi).
+    Between { lo: Q, hi: Q, s_lo: Ordering, s_hi: Ordering },
+}
+
+/// The roots of `g` (g(0) ≠ 0) in (0, 2^e), increasing. With `first_only`,
+/// stops after the first. `None` past `budget` parts.
+fn descartes_isolate(g: &[BigInt], e: u64, first_only: bool, budget: usize) -> Option<Vec<Found>> {
+    let n = g.len() - 1;
+    let mut out = Vec::new();
+    // No sign change: no positive root at all.
+    if sign_changes(g) == 0 {
+        return Some(out);
+    }
+    // Cauchy's bound (Sturm's) can be far above the roots; bisect from
+    // Fujiwara's, which is as safe and often much smaller.
+    let e = e.min(fujiwara_exponent(g));
+    // h(x) = g(2^e·x) on (0, 1); a part (h, k, d) stands for the interval
+    // 2^e·(k, k + 1)/2^d, and a point k for 2^e·k/2^d.
+    enum Item {
+        Part(Vec<BigInt>, BigInt, u64),
+        Point(BigInt, u64),
+    }
+    let at = |j: BigInt, d: u64| {
+        if d >= e {
+            Q::new(j, BigInt::one() << (d - e))
+        } else {
+            Q::from_integer(j << (e - d))
+        }
+    };
+    let top: Vec<BigInt> = g.iter().enumerate().map(|(k, x)| x << (e as usize * k)).collect();
+    let mut stack = vec![Item::Part(strip_twos(top), BigInt::zero(), 0u64)];
+    let mut parts = 0;
+    while let Some(item) = stack.pop() {
+        let (h, k, d) = match item {
+            Item::Point(k, d) => {
+                out.push(Found::At(at(k, d)));
+                if first_only {
+                    break;
+                }
+                continue;
+            }
+            Item::Part(h, k, d) => (h, k, d),
+        };
+        parts += 1;
+        if parts > budget {
+            return None;
+        }
+        // Its sign changes bound the roots in (0, 1); zero coefficients
+        // (roots of h at 0 or 1, met as halving points) are skipped.
+        let mut rev: Vec<BigInt> = h.iter().rev().cloned().collect();
+        taylor_shift_one(&mut rev);
+        match sign_changes(&rev) {
+            0 => continue,
+            1 => {
+                // Near x = 1⁻ (y = 0⁺ in rev(1 + y)) and x = 0⁺, h has the
+                // sign of its lowest non-zero coefficient there.
+                let lowest_sign = |c: &[BigInt]| {
+                    c.iter().find(|x| !x.is_zero()).map_or(Ordering::Equal, |x| x.sign_ord())
+                };
+                out.push(Found::Between {
+                    lo: at(k.clone(), d),
+                    hi: at(k + 1, d),
+                    s_lo: lowest_sign(&h),
+                    s_hi: lowest_sign(&rev),
+                });
+                if first_only {
+                    break;
+                }
+                continue;
+            }
+            _ => {}
+        }
+        // Halves: 2^n·h(x/2) on the left, that shifted by one on the right;
+        // left(1) = 2^n·h(1/2) tells a root at the halving point.
+        let left: Vec<BigInt> = h.iter().enumerate().map(|(j, x)| x << (n - j)).collect();
+        let mut right = left.clone();
+        taylor_shift_one(&mut right);
+        let k2: BigInt = k << 1;
+        let mid_is_root = right[0].is_zero();
+        stack.push(Item::Part(strip_twos(right), &k2 + 1, d + 1));
+        if mid_is_root {
+            stack.push(Item::Point(&k2 + 1, d + 1));
+        }
+        stack.push(Item::Part(strip_twos(left), k2, d + 1));
+    }
+    Some(out)
+}
+
+trait SignOrd {
+    fn sign_ord(&self) -> Ordering;
+}
+
+impl SignOrd for BigInt {
+    fn sign_ord(&self) -> Ordering {
+        match self.sign() {
+            num_bigint::Sign::Minus => Ordering::Less,
+            num_bigint::Sign::NoSign => Ordering::Equal,
+            num_bigint::Sign::Plus => Ordering::Greater,
+        }
+    }
+}
+
+/// An e with every root of `g` (degree ≥ 1) below 2^e in modulus, by
+/// Fujiwara's bound 2·max_k |a_{n−k}/a_n|^{1/k} (the last term halved),
+/// each ratio bounded by bit lengths: |a| < 2^bits(a), |a_n| ≥ 2^(bits(a_n) − 1).
+fn fujiwara_exponent(g: &[BigInt]) -> u64 {
+    let n = g.len() - 1;
+    let lead = g[n].bits() as i64;
+    let mut e = i64::MIN;
+    for k in 1..=n {
+        let a = &g[n - k];
+        if a.is_zero() {
+            continue;
+        }
+        // |a_{n−k}/a_n| < 2^t, so its k-th root is below 2^⌈t/k⌉.
+        let t = a.bits() as i64 - lead + 1 - i64::from(k == n);
+        e = e.max(t.div_euclid(k as i64) + i64::from(t.rem_euclid(k as i64) != 0));
+    }
+    // The factor 2, and at least 2^0 (a part of (0, 1) is the least).
+    u64::try_from(e + 1).unwrap_or(0)
+}
+
+/// Divides out the largest power of two common to the coefficients.
+fn strip_twos(mut c: Vec<BigInt>) -> Vec<BigInt> {
+    let t = c.iter().filter_map(|x| x.trailing_zeros()).min().unwrap_or(0);
+    if t > 0 {
+        for x in &mut c {
+            *x >>= t;
+        }
+    }
+    c
+}
+
+/// Sturm's bisection ([`crate::sturm::isolate_squarefree_sturm`]) replayed
+/// on located roots.
+struct Replay<'a> {
+    f: &'a Located,
+    out: &'a mut Vec<(Q, Q)>,
+}
+
+impl Replay<'_> {
+    /// The intervals of the roots in `roots` (increasing, exactly the roots
+    /// in (lo, hi]).
+    fn isolate_in(&mut self, roots: &mut [Root], lo: Q, hi: Q) {
+        match roots.len() {
+            0 => {}
+            1 => {
+                if roots[0].cmp_point(&hi, self.f) == Ordering::Equal {
+                    self.out.push((hi.clone(), hi));
+                } else {
+                    self.out.push((lo, hi));
+                }
+            }
+            _ => {
+                let mid = (&lo + &hi) / Q::from_integer(2.into());
+                let (left, at_mid) = self.split(roots, &mid);
+                if at_mid {
+                    let i = left - 1;
+                    let below = self.beside(roots, i, &lo, &mid);
+                    let above = self.beside(roots, i, &hi, &mid);
+                    let (head, tail) = roots.split_at_mut(i);
+                    self.isolate_in(head, lo, below);
+                    self.out.push((mid.clone(), mid));
+                    self.isolate_in(&mut tail[1..], above, hi);
+                } else {
+                    let (head, tail) = roots.split_at_mut(left);
+                    self.isolate_in(head, lo, mid.clone());
+                    self.isolate_in(tail, mid, hi);
+                }
+            }
+        }
+    }
+
+    /// The top level of the bisection of (lo, hi] = (−B, B], keeping only
+    /// the roots in (0, ∞) (`roots` holds every positive root and, of the
+    /// others, at least the largest when there is one).
+    fn positive(&mut self, roots: &mut [Root], lo: Q, hi: Q) {
+        if roots.len() < 2 {
+            if roots.first_mut().is_some_and(|r| r.cmp_point(&Q::zero(), self.f).is_gt()) {
+                self.isolate_in(roots, lo, hi);
+            }
+            return;
+        }
+        let zero = Q::zero();
+        let (left, at_zero) = self.split(roots, &zero);
+        if at_zero {
+            let i = left - 1;
+            let above = self.beside(roots, i, &hi, &zero);
+            self.isolate_in(&mut roots[left..], above, hi);
+        } else {
+            self.isolate_in(&mut roots[left..], zero, hi);
+        }
+    }
+
+    /// How many of the roots are at most `mid`, and whether `mid` is one.
+    fn split(&self, roots: &mut [Root], mid: &Q) -> (usize, bool) {
+        let mut left = 0;
+        let mut at_mid = false;
+        for r in roots.iter_mut() {
+            match r.cmp_point(mid, self.f) {
+                Ordering::Less => left += 1,
+                Ordering::Equal => {
+                    left += 1;
+                    at_mid = true;
+                    break;
+                }
+                Ordering::Greater => break,
+            }
+        }
+        (left, at_mid)
+    }
+
+    /// Sturm's point beside the rational root `roots[i]` = `r` toward
+    /// `toward`: r + (toward − r)/2^k for the least k ≥ 1 that leaves no
+    /// other root between it and r (nor on it).
+    fn beside(&self, roots: &mut [Root], i: usize, toward: &Q, r: &Q) -> Q {
+        let two = Q::from_integer(2.into());
+        let mut step = (toward - r) / &two;
+        loop {
+            let x = r + &step;
+            let clear = if x < *r {
+                i == 0 || roots[i - 1].cmp_point(&x, self.f) == Ordering::Less
+            } else {
+                i + 1 == roots.len() || roots[i + 1].cmp_point(&x, self.f) == Ordering::Greater
+            };
+            if clear {
+                return x;
+            }
+            step /= &two;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sturm::{count_real_roots, isolate_squarefree_sturm};
+    use proptest::prelude::*;
+
+    /// The full isolation and the positive one against Sturm's bisection,
+    /// which defines the intervals: the positive roots are the last ones.
+    fn agrees_with_sturm(p: &UPoly) -> Result<(), TestCaseError> {
+        let sf = p.squarefree();
+        prop_assume!(sf.degree().unwrap_or(0) > 0);
+        let sturm = isolate_squarefree_sturm(&sf);
+        let full = isolate(&sf, false, usize::MAX).expect("no budget");
+        prop_assert_eq!(&full, &sturm);
+        let positive = count_real_roots(&sf, &Q::zero(), &root_bound(&sf));
+        let only = isolate(&sf, true, usize::MAX).expect("no budget");
+        prop_assert_eq!(&only[..], &sturm[sturm.len() - positive..]);
+        Ok(())
+    }
+
+    fn product(factors: &[UPoly]) -> UPoly {
+        factors.iter().fold(UPoly::from_ints(&[1]), |acc, f| &acc * f)
+    }
+
+    proptest! {
+        /// Random integer polynomials (roots anywhere, complex ones near
+        /// the axis, a root at zero when c0 = 0).
+        #[test]
+        fn random_polynomials(c in proptest::collection::vec(-20i64..20, 2..12)) {
+            prop_assume!(*c.last().unwrap() != 0);
+            agrees_with_sturm(&UPoly::from_ints(&c))?;
+        }
+
+        /// Rational roots with small denominators, many of them dyadic, so
+        /// that Sturm's halving points (and Descartes') hit roots, with a
+        /// factor without real roots or with irrational ones beside them.
+        #[test]
+        fn rational_and_dyadic_roots(
+            roots in proptest::collection::vec((-40i64..40, prop_oneof![Just(1i64), Just(2), Just(4), Just(8), Just(3)]), 1..7),
+            extra in proptest::collection::vec(-6i64..6, 3),
+        ) {
+            let mut factors: Vec<UPoly> =
+                roots.iter().map(|&(a, b)| UPoly::from_ints(&[-a, b])).collect();
+            if extra[2] != 0 {
+                factors.push(UPoly::from_ints(&extra));
+            }
+            agrees_with_sturm(&product(&factors))?;
+        }
+
+        /// Even and odd polynomials f(x) = x^k·F(x²): the squared path,
+        /// with rational squares, non-square rationals and irrational roots.
+        #[test]
+        fn even_polynomials(
+            ys in proptest::collection::vec((-30i64..60, prop_oneof![Just(1i64), Just(4), Just(2), Just(9)]), 1..5),
+            odd in any::<bool>(),
+        ) {
+            // ∏ (b·x² − a): roots ±√(a/b) for a > 0.
+            let mut factors: Vec<UPoly> =
+                ys.iter().map(|&(a, b)| UPoly::from_ints(&[-a, 0, b])).collect();
+            if odd {
+                factors.push(UPoly::from_ints(&[0, 1]));
+            }
+            agrees_with_sturm(&product(&factors))?;
+        }
+    }
+
+    /// Close roots (a cluster Descartes must split deeply) and a budget too
+    /// small for them: `None`, so the caller runs the Sturm chain.
+    #[test]
+    fn cluster_and_budget() {
+        // (x − 1)(1000x − 1001)(1000000x − 1000001)(x² − 2)
+        let p = product(&[
+            UPoly::from_ints(&[-1, 1]),
+            UPoly::from_ints(&[-1001, 1000]),
+            UPoly::from_ints(&[-1000001, 1000000]),
+            UPoly::from_ints(&[-2, 0, 1]),
+        ]);
+        assert_eq!(isolate(&p, false, usize::MAX).unwrap(), isolate_squarefree_sturm(&p));
+        assert!(isolate(&p, false, 4).is_none());
+    }
+
+    /// Fujiwara's exponent bounds every root: 2^e exceeds the largest
+    /// modulus (the roots here are known), and it is far below Cauchy's for
+    /// a polynomial with a huge constant term.
+    #[test]
+    fn fujiwara_bounds_roots() {
+        // (x − 3)(x + 5)(x − 1/2)·2 = 2x³ + 3x² − 32x + 15 → max |root| 5 < 2^e.
+        let e = fujiwara_exponent(&[15, -32, 3, 2].map(BigInt::from));
+        assert!(e >= 3, "5 < 2^e");
+        // x^10 − 2^40: roots of modulus 16; Cauchy's bound is 2^40 + 1.
+        let mut c = vec![BigInt::zero(); 11];
+        c[0] = -(BigInt::one() << 40usize);
+        c[10] = BigInt::one();
+        let e = fujiwara_exponent(&c);
+        assert!((5..=7).contains(&e), "16 < 2^e, and not far above: e = {e}");
+    }
+}
