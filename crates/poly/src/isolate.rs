@@ -31,7 +31,7 @@ use std::cmp::Ordering;
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
 
-use crate::sturm::{root_bound, sign_changes, taylor_shift_one, IntPoly};
+use crate::sturm::{root_bound, sign_changes, taylor_shift_one, CmpZero, IntPoly};
 use crate::{UPoly, Q};
 
 /// A real root of f as the replay sees it.
@@ -210,7 +210,7 @@ fn exact_sqrt(y: &Q) -> Option<Q> {
 }
 
 /// A root in (0, 2^e) found by Descartes' bisection.
-enum Found {
+pub(crate) enum Found {
     /// A root at a halving point.
     At(Q),
     /// The one root in the open interval (lo, hi); `s_lo`, `s_hi` the signs
@@ -220,7 +220,12 @@ enum Found {
 
 /// The roots of `g` (g(0) ≠ 0) in (0, 2^e), increasing. With `first_only`,
 /// stops after the first. `None` past `budget` parts.
-fn descartes_isolate(g: &[BigInt], e: u64, first_only: bool, budget: usize) -> Option<Vec<Found>> {
+pub(crate) fn descartes_isolate(
+    g: &[BigInt],
+    e: u64,
+    first_only: bool,
+    budget: usize,
+) -> Option<Vec<Found>> {
     let n = g.len() - 1;
     let mut out = Vec::new();
     // No sign change: no positive root at all.
@@ -271,7 +276,7 @@ fn descartes_isolate(g: &[BigInt], e: u64, first_only: bool, budget: usize) -> O
                 // Near x = 1⁻ (y = 0⁺ in rev(1 + y)) and x = 0⁺, h has the
                 // sign of its lowest non-zero coefficient there.
                 let lowest_sign = |c: &[BigInt]| {
-                    c.iter().find(|x| !x.is_zero()).map_or(Ordering::Equal, |x| x.sign_ord())
+                    c.iter().find(|x| !x.is_zero()).map_or(Ordering::Equal, |x| x.sign().cmp_zero())
                 };
                 out.push(Found::Between {
                     lo: at(k.clone(), d),
@@ -300,20 +305,6 @@ fn descartes_isolate(g: &[BigInt], e: u64, first_only: bool, budget: usize) -> O
         stack.push(Item::Part(strip_twos(left), k2, d + 1));
     }
     Some(out)
-}
-
-trait SignOrd {
-    fn sign_ord(&self) -> Ordering;
-}
-
-impl SignOrd for BigInt {
-    fn sign_ord(&self) -> Ordering {
-        match self.sign() {
-            num_bigint::Sign::Minus => Ordering::Less,
-            num_bigint::Sign::NoSign => Ordering::Equal,
-            num_bigint::Sign::Plus => Ordering::Greater,
-        }
-    }
 }
 
 /// An e with every root of `g` (degree ≥ 1) below 2^e in modulus, by

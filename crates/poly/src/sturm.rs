@@ -140,7 +140,7 @@ impl IntPoly {
     }
 }
 
-trait CmpZero {
+pub(crate) trait CmpZero {
     fn cmp_zero(self) -> Ordering;
 }
 
@@ -285,52 +285,17 @@ pub fn root_bound(p: &UPoly) -> Q {
 /// Whether `p` (p(0) ≠ 0) provably has no root in (0, ∞): Descartes' rule
 /// of signs on (0, B) (B a power of two above every root's modulus) and on
 /// the halves of any part where the rule counts two or more sign changes,
-/// up to `budget` parts. `false` means "not proven": a part with exactly one
-/// sign change holds a root, and a root at a halving point is seen exactly.
-///
-/// A part (a, a + w) is the polynomial g(x) = p(a + w·x) on (0, 1), scaled
-/// to integers; its sign changes are those of (1 + x)^n·g(1/(1 + x)), the
-/// reversed g shifted by one. Halves: 2^n·g(x/2) and that shifted by one.
+/// up to `budget` parts ([`crate::isolate`]'s bisection, stopped at the
+/// first root). `false` means "not proven": a part with exactly one sign
+/// change holds a root, and a root at a halving point is seen exactly.
 pub(crate) fn no_positive_roots(p: &UPoly, budget: usize) -> bool {
-    let Some(n) = p.degree() else { return false };
     debug_assert!(!p.coeff(0).is_zero());
-    let b = root_bound(p);
-    let e = b.numer().bits() - 1; // B = 2^e
-    debug_assert!(b.denom().is_one() && (BigInt::one() << e) == *b.numer());
-    let c = crate::upoly::int_primitive(p);
-    // Descartes on (0, ∞) itself: no sign change, no positive root; an odd
-    // number, at least one.
-    match sign_changes(&c) {
-        0 => return true,
-        v if v % 2 == 1 => return false,
-        _ => {}
+    if p.degree().unwrap_or(0) == 0 {
+        return false;
     }
-    let mut stack: Vec<Vec<BigInt>> =
-        vec![c.into_iter().enumerate().map(|(k, x)| x << (e as usize * k)).collect()];
-    let mut parts = 0;
-    while let Some(g) = stack.pop() {
-        parts += 1;
-        if parts > budget {
-            return false;
-        }
-        let mut rev: Vec<BigInt> = g.iter().rev().cloned().collect();
-        taylor_shift_one(&mut rev);
-        match sign_changes(&rev) {
-            0 => continue,
-            1 => return false,
-            _ => {}
-        }
-        let left: Vec<BigInt> = g.iter().enumerate().map(|(k, x)| x << (n - k)).collect();
-        // left(1) = 2^n·g(1/2): a root exactly at the halving point.
-        if left.iter().fold(BigInt::zero(), |acc, x| acc + x).is_zero() {
-            return false;
-        }
-        let mut right = left.clone();
-        taylor_shift_one(&mut right);
-        stack.push(left);
-        stack.push(right);
-    }
-    true
+    let e = root_bound(p).numer().bits() - 1;
+    crate::isolate::descartes_isolate(&crate::upoly::int_primitive(p), e, true, budget)
+        .is_some_and(|roots| roots.is_empty())
 }
 
 /// g(x) ↦ g(x + 1) in place (coefficients lowest first), by repeated

@@ -962,16 +962,8 @@ mod tests {
                 c
             };
             let (f, g) = (coeffs(m), coeffs(n));
-            let r = resultant(&f, &g);
             // Degree ≤ n·4 + m·4 ≤ 20 here: 27 points decide it.
-            for t in -13i64..=13 {
-                let tq = Q::from_integer(t.into());
-                let at = |v: &[UPoly]| -> Vec<i64> {
-                    v.iter().map(|c| c.eval(&tq).to_integer().to_i64().unwrap()).collect()
-                };
-                let expected = sylvester_resultant(&at(&f), &at(&g));
-                assert_eq!(r.eval(&tq), Q::from_integer(expected), "f = {f:?}, g = {g:?}, t = {t}");
-            }
+            resultant_matches_at(&f, &g, -13..=13);
         }
     }
 
@@ -1071,6 +1063,20 @@ mod tests {
 
     /// The Sylvester determinant over Z by Bareiss' fraction-free
     /// elimination: the textbook resultant, the oracle.
+    /// The modular resultant of f, g ∈ Z[Φ][z] at each Φ = t equals
+    /// Sylvester's determinant of f(t), g(t).
+    fn resultant_matches_at(f: &[UPoly], g: &[UPoly], ts: std::ops::RangeInclusive<i64>) {
+        let r = resultant(f, g);
+        for t in ts {
+            let tq = Q::from_integer(t.into());
+            let at = |v: &[UPoly]| -> Vec<i64> {
+                v.iter().map(|c| c.eval(&tq).to_integer().to_i64().unwrap()).collect()
+            };
+            let expected = sylvester_resultant(&at(f), &at(g));
+            assert_eq!(r.eval(&tq), Q::from_integer(expected), "f = {f:?}, g = {g:?}, t = {t}");
+        }
+    }
+
     fn sylvester_resultant(f: &[i64], g: &[i64]) -> BigInt {
         let (m, n) = (f.len() - 1, g.len() - 1);
         let size = m + n;
@@ -1137,15 +1143,7 @@ mod tests {
                 c
             };
             let (f, g) = (coeffs(m), coeffs(n));
-            let r = resultant(&f, &g);
-            for t in -3i64..=3 {
-                let tq = Q::from_integer(t.into());
-                let at = |v: &[UPoly]| -> Vec<i64> {
-                    v.iter().map(|c| c.eval(&tq).to_integer().to_i64().unwrap()).collect()
-                };
-                let expected = sylvester_resultant(&at(&f), &at(&g));
-                assert_eq!(r.eval(&tq), Q::from_integer(expected), "f = {f:?}, g = {g:?}, t = {t}");
-            }
+            resultant_matches_at(&f, &g, -3..=3);
         }
     }
 
