@@ -56,7 +56,12 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
     let report = analyze_derivation(&derivation, &values)
         .with_context(|| format!("method {}", method.name()))?;
     let out = match args.format {
-        Format::Text => text(method.name(), &shown, &chi, &report) + &implicit_text(&method, &chi)?,
+        Format::Text => {
+            let mut names = Names::default();
+            text(method.name(), &shown, &chi, &report, &mut names)
+                + &implicit_text(&method, &chi, &mut names)?
+                + &names.definitions()
+        }
         Format::Json => {
             let mut v = to_json(method.name(), &shown, &chi, &report);
             implicit_json(&method, &chi, &mut v)?;
@@ -85,7 +90,11 @@ fn implicit_facts(
     Ok(Some((lead.to_string(), singular, limit.name())))
 }
 
-fn implicit_text(method: &poly::Method, chi: &poly::Poly) -> anyhow::Result<String> {
+fn implicit_text(
+    method: &poly::Method,
+    chi: &poly::Poly,
+    names: &mut Names,
+) -> anyhow::Result<String> {
     let Some((lead, singular, limit)) = implicit_facts(method, chi)? else {
         return Ok(String::new());
     };
@@ -93,7 +102,7 @@ fn implicit_text(method: &poly::Method, chi: &poly::Poly) -> anyhow::Result<Stri
     if singular.is_empty() {
         s += "the step's linear system is regular for every Phi > 0\n";
     } else {
-        let pts: Vec<String> = singular.iter().map(show).collect();
+        let pts: Vec<String> = singular.iter().map(|a| names.show(a)).collect();
         let _ = writeln!(s, "the step's linear system is singular at Phi = {}", pts.join(", "));
     }
     let _ = writeln!(s, "as Phi -> infinity: {limit}");
@@ -192,18 +201,67 @@ pub fn to_json(name: &str, params: &[(String, Q)], chi: &poly::Poly, r: &Stabili
     })
 }
 
-/// A short exact-plus-decimal rendering for people.
-fn show(a: &Algebraic) -> String {
-    let closed = a.closed_form();
-    let dec = a.to_decimal(15);
-    match closed {
-        Some(c) if c == dec.trim_end_matches('0').trim_end_matches('.') => c,
-        Some(c) => format!("{c} ≈ {dec}"),
-        None => format!("{dec} (root of {})", a.defining_poly().to_string_in("Phi")),
+/// Short exact-plus-decimal renderings for people. A number without a
+/// closed form is shown by its decimals and a name (r1, r2, … in the order
+/// met), and each name is defined once, at the end: AB8's limit is a root
+/// of a degree-20 polynomial with 60-digit coefficients, and the report
+/// names it at every interval it bounds.
+#[derive(Default)]
+struct Names {
+    roots: Vec<Algebraic>,
+}
+
+impl Names {
+    fn show(&mut self, a: &Algebraic) -> String {
+        let closed = a.closed_form();
+        let dec = a.to_decimal(15);
+        match closed {
+            Some(c) if c == dec.trim_end_matches('0').trim_end_matches('.') => c,
+            Some(c) => format!("{c} ≈ {dec}"),
+            None => {
+                let k = match self.roots.iter().position(|r| r == a) {
+                    Some(k) => k,
+                    None => {
+                        self.roots.push(a.clone());
+                        self.roots.len() - 1
+                    }
+                };
+                format!("{dec} (r{})", k + 1)
+            }
+        }
+    }
+
+    /// "where r1 = root of … in [lo, hi]", the interval narrower than 1e-15.
+    fn definitions(&self) -> String {
+        let mut s = String::new();
+        if self.roots.is_empty() {
+            return s;
+        }
+        let _ = writeln!(
+            s,
+            "
+where"
+        );
+        for (k, r) in self.roots.iter().enumerate() {
+            let (lo, hi) = r.refine(&fine()).interval();
+            let _ = writeln!(
+                s,
+                "  r{} = root of {} in [{lo}, {hi}]",
+                k + 1,
+                r.defining_poly().to_string_in("Phi")
+            );
+        }
+        s
     }
 }
 
-fn text(name: &str, params: &[(String, Q)], chi: &poly::Poly, r: &StabilityReport) -> String {
+fn text(
+    name: &str,
+    params: &[(String, Q)],
+    chi: &poly::Poly,
+    r: &StabilityReport,
+    names: &mut Names,
+) -> String {
     let mut s = String::new();
     let given: Vec<String> = params.iter().map(|(n, v)| format!("{n} = {v}")).collect();
     let _ = writeln!(
@@ -220,35 +278,27 @@ fn text(name: &str, params: &[(String, Q)], chi: &poly::Poly, r: &StabilityRepor
             let _ = writeln!(s, "unbounded for every Phi > 0 (no stability limit)");
         }
         Stability::Limited { phi_max: m, bounded_at_phi_max, boundary: b } => {
-            let _ = writeln!(s, "stable for 0 < Phi < {}", show(m));
+            let _ = writeln!(s, "stable for 0 < Phi < {}", names.show(m));
             let at = if *bounded_at_phi_max { "bounded" } else { "unbounded" };
             let _ = writeln!(s, "at the limit: {b}; the limit itself is {at}");
-            let (lo, hi) = m.refine(&fine()).interval();
-            if m.is_rational() {
-                return s + &classes(r) + &extras(r);
-            }
-            let _ = writeln!(
-                s,
-                "exact: root of {} in [{lo}, {hi}]",
-                m.defining_poly().to_string_in("Phi")
-            );
         }
     }
-    s + &classes(r) + &extras(r)
+    s += &classes(r, names);
+    s + &extras(r, names)
 }
 
 /// Disjoint stable intervals and the marginal-verdict note, when present.
-fn extras(r: &StabilityReport) -> String {
+fn extras(r: &StabilityReport, names: &mut Names) -> String {
     let mut s = String::new();
     let near_zero = r.stable_intervals.first().is_some_and(|i| i.lo.sign().is_eq());
     let further: Vec<_> = r.stable_intervals.iter().skip(usize::from(near_zero)).collect();
     if !further.is_empty() {
         let _ = writeln!(s, "\nbounded further out:");
         for i in further {
-            let hi = i.hi.as_ref().map_or("inf".to_owned(), show);
+            let hi = i.hi.as_ref().map_or("inf".to_owned(), |h| names.show(h));
             let (l, rb) =
                 (if i.lo_closed { "[" } else { "(" }, if i.hi_closed { "]" } else { ")" });
-            let _ = writeln!(s, "  {l}{}, {hi}{rb}", show(&i.lo));
+            let _ = writeln!(s, "  {l}{}, {hi}{rb}", names.show(&i.lo));
         }
     }
     if let Some(m) = &r.marginal {
@@ -257,10 +307,12 @@ fn extras(r: &StabilityReport) -> String {
             "\nnote: the verdict hangs on a tiny term: |z|^2 - 1 = c*Phi^{} + ... with c = {} \
              (|c| < 1e-12, below the rounding of 16-digit coefficients)",
             m.power,
-            show(&poly::Algebraic::from_rational(m.coefficient.clone()))
+            names.show(&poly::Algebraic::from_rational(m.coefficient.clone()))
         );
-        let limit =
-            m.practical_phi_max.as_ref().map_or("none (within it for every Phi)".to_owned(), show);
+        let limit = m
+            .practical_phi_max
+            .as_ref()
+            .map_or("none (within it for every Phi)".to_owned(), |l| names.show(l));
         let _ = writeln!(
             s,
             "practical limit for growth per step <= 1 + {}: Phi <= {limit}",
@@ -270,15 +322,15 @@ fn extras(r: &StabilityReport) -> String {
     s
 }
 
-fn classes(r: &StabilityReport) -> String {
+fn classes(r: &StabilityReport, names: &mut Names) -> String {
     let mut s = String::new();
     let _ = writeln!(s, "\nroot classes over Phi > 0:");
     for (k, i) in r.intervals.iter().enumerate() {
-        let hi = i.hi.as_ref().map_or("inf".to_owned(), show);
-        let _ = writeln!(s, "  ({}, {hi}): {}", show(&i.lo), i.class);
+        let hi = i.hi.as_ref().map_or("inf".to_owned(), |h| names.show(h));
+        let _ = writeln!(s, "  ({}, {hi}): {}", names.show(&i.lo), i.class);
         if let Some(c) = r.class_changes.get(k) {
             let at = c.at_class.map_or("not computed".to_owned(), |k| k.name().to_owned());
-            let _ = writeln!(s, "  at Phi = {}: {at}", show(&c.at));
+            let _ = writeln!(s, "  at Phi = {}: {at}", names.show(&c.at));
         }
     }
     s

@@ -133,6 +133,29 @@ fn text_format_names_the_limit() {
     assert!(text.contains("root_through_minus_one"), "{text}");
 }
 
+/// A limit without a closed form (AB8's, a root of a degree-20
+/// polynomial with 60-digit coefficients) is named r1 wherever it bounds
+/// an interval, and its defining polynomial is printed once, with an
+/// isolating interval narrower than 1e-15, not at every mention.
+#[test]
+fn text_format_names_roots_once() {
+    let out = zcheck(&["stability", "ab8"]);
+    assert!(out.status.success());
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.contains("stable for 0 < Phi < 0.029489552040055 (r1)"), "{text}");
+    assert_eq!(text.matches("root of Phi^20").count(), 1, "{text}");
+    let def = text.lines().find(|l| l.starts_with("  r1 = root of Phi^20")).expect("defined");
+    assert!(def.contains(" in ["), "{def}");
+    assert!(!text.contains("(r2)"), "one number without a closed form: {text}");
+    // Every name used is defined.
+    let out = zcheck(&["stability", "ssprk104"]);
+    let text = String::from_utf8(out.stdout).unwrap();
+    for k in 1..=5 {
+        assert!(text.contains(&format!("(r{k})")), "{text}");
+        assert!(text.contains(&format!("\n  r{k} = root of ")), "{text}");
+    }
+}
+
 #[track_caller]
 fn check_rejected(args: &[&str], expected: &str) {
     let out = zcheck(args);
