@@ -116,8 +116,8 @@ struct Located {
 
 /// The parts Descartes' bisection may take on each side of zero before
 /// [`isolate`] gives up for the Sturm chain: generous for well-separated
-/// roots, cut short where complex roots crowd the axis (SSPRK(10,4)'s
-/// conditions need 100 and more from Cauchy's bound; DESIGN.md).
+/// roots (the built-ins' conditions take 1–30), cut short where complex
+/// roots crowd the axis and the chain is cheaper (DESIGN.md).
 pub(crate) fn budget(degree: usize) -> usize {
     4 * degree + 16
 }
