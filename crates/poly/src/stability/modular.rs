@@ -866,28 +866,39 @@ mod tests {
         acc
     }
 
+    /// An n×n matrix of integer polynomials: a third of the entries zero,
+    /// the others Φ^k·(1 to 3 coefficients in [−m, m]), k < `powers`.
+    fn random_matrix(
+        n: usize,
+        next: &mut impl FnMut() -> u64,
+        powers: u64,
+        m: u64,
+    ) -> Vec<Vec<UPoly>> {
+        (0..n)
+            .map(|_| {
+                (0..n)
+                    .map(|_| {
+                        if next().is_multiple_of(3) {
+                            return UPoly::zero();
+                        }
+                        let k = if powers > 1 { (next() % powers) as usize } else { 0 };
+                        let len = 1 + (next() % 3) as usize;
+                        let mut c = vec![0i64; k];
+                        c.extend((0..len).map(|_| (next() % (2 * m + 1)) as i64 - m as i64));
+                        up(&c)
+                    })
+                    .collect()
+            })
+            .collect()
+    }
+
     /// Random 1×1 … 5×5 matrices of integer polynomials (many zero entries,
     /// so pivots vanish at some points and rows are swapped) against Laplace.
     #[test]
     fn det_matches_laplace_expansion() {
         let mut next = crate::testing::xorshift(0x2545_f491_4f6c_dd1d);
         for trial in 0..60 {
-            let n = 1 + trial % 5;
-            let m: Vec<Vec<UPoly>> = (0..n)
-                .map(|_| {
-                    (0..n)
-                        .map(|_| {
-                            if next().is_multiple_of(3) {
-                                return UPoly::zero();
-                            }
-                            let len = 1 + (next() % 3) as usize;
-                            let c: Vec<i64> =
-                                (0..len).map(|_| (next() % 2001) as i64 - 1000).collect();
-                            up(&c)
-                        })
-                        .collect()
-                })
-                .collect();
+            let m = random_matrix(1 + trial % 5, &mut next, 1, 1000);
             assert_eq!(det(&m), laplace(&m), "{m:?}");
         }
     }
@@ -899,23 +910,7 @@ mod tests {
     fn det_with_powers_of_phi_matches_laplace_expansion() {
         let mut next = crate::testing::xorshift(0x9e37_79b9_7f4a_7c15);
         for trial in 0..80 {
-            let n = 1 + trial % 5;
-            let m: Vec<Vec<UPoly>> = (0..n)
-                .map(|_| {
-                    (0..n)
-                        .map(|_| {
-                            if next().is_multiple_of(3) {
-                                return UPoly::zero();
-                            }
-                            let k = (next() % 4) as usize;
-                            let len = 1 + (next() % 3) as usize;
-                            let mut c = vec![0i64; k];
-                            c.extend((0..len).map(|_| (next() % 41) as i64 - 20));
-                            up(&c)
-                        })
-                        .collect()
-                })
-                .collect();
+            let m = random_matrix(1 + trial % 5, &mut next, 4, 20);
             assert_eq!(det(&m), laplace(&m), "{m:?}");
         }
     }
