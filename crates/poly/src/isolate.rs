@@ -14,7 +14,9 @@
 //!    to integers, bounds the number of roots in the open interval; 0 or 1
 //!    sign change is exact. A root at a halving point is seen there
 //!    exactly. Only Taylor shifts by one and shifts of bits: no remainder
-//!    sequence.
+//!    sequence. The bisection starts from Fujiwara's bound (often far below
+//!    Cauchy's), and an even f(x) = F(x²) is located through the positive
+//!    roots of F.
 //! 2. Sturm's bisection replayed on the roots now located: its only
 //!    questions are "how many roots in (lo, mid]" and "is mid a root", and a
 //!    located root answers "are you below x" with at most one sign of f,
@@ -23,8 +25,7 @@
 //! The result is identical to [`crate::sturm::isolate_squarefree_sturm`]
 //! (a property test holds the two together). Descartes' bisection is slow
 //! where complex roots crowd the real axis; past a budget of parts it gives
-//! up (`None`) and the caller runs the Sturm chain, as it does for low
-//! degrees, where the chain is cheap.
+//! up (`None`) and the caller runs the Sturm chain.
 
 use std::cmp::Ordering;
 
@@ -193,7 +194,7 @@ pub(crate) fn isolate(sf: &UPoly, positive_only: bool, budget: usize) -> Option<
         Located { poly: IntPoly::from_ints(g.to_vec()), squared: false }
     };
     let mut out = Vec::new();
-    let mut replay = Replay { f: &located, out: &mut out };
+    let mut replay = Replay { located: &located, out: &mut out };
     let lo = -b.clone();
     if positive_only {
         replay.positive(&mut roots, lo, b);
@@ -341,7 +342,7 @@ fn strip_twos(mut c: Vec<BigInt>) -> Vec<BigInt> {
 /// Sturm's bisection ([`crate::sturm::isolate_squarefree_sturm`]) replayed
 /// on located roots.
 struct Replay<'a> {
-    f: &'a Located,
+    located: &'a Located,
     out: &'a mut Vec<(Q, Q)>,
 }
 
@@ -352,7 +353,7 @@ impl Replay<'_> {
         match roots.len() {
             0 => {}
             1 => {
-                if roots[0].cmp_point(&hi, self.f) == Ordering::Equal {
+                if roots[0].cmp_point(&hi, self.located) == Ordering::Equal {
                     self.out.push((hi.clone(), hi));
                 } else {
                     self.out.push((lo, hi));
@@ -383,7 +384,7 @@ impl Replay<'_> {
     /// others, at least the largest when there is one).
     fn positive(&mut self, roots: &mut [Root], lo: Q, hi: Q) {
         if roots.len() < 2 {
-            if roots.first_mut().is_some_and(|r| r.cmp_point(&Q::zero(), self.f).is_gt()) {
+            if roots.first_mut().is_some_and(|r| r.cmp_point(&Q::zero(), self.located).is_gt()) {
                 self.isolate_in(roots, lo, hi);
             }
             return;
@@ -404,7 +405,7 @@ impl Replay<'_> {
         let mut left = 0;
         let mut at_mid = false;
         for r in roots.iter_mut() {
-            match r.cmp_point(mid, self.f) {
+            match r.cmp_point(mid, self.located) {
                 Ordering::Less => left += 1,
                 Ordering::Equal => {
                     left += 1;
@@ -426,9 +427,10 @@ impl Replay<'_> {
         loop {
             let x = r + &step;
             let clear = if x < *r {
-                i == 0 || roots[i - 1].cmp_point(&x, self.f) == Ordering::Less
+                i == 0 || roots[i - 1].cmp_point(&x, self.located) == Ordering::Less
             } else {
-                i + 1 == roots.len() || roots[i + 1].cmp_point(&x, self.f) == Ordering::Greater
+                i + 1 == roots.len()
+                    || roots[i + 1].cmp_point(&x, self.located) == Ordering::Greater
             };
             if clear {
                 return x;

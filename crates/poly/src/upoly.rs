@@ -534,6 +534,24 @@ mod tests {
     }
 
     proptest! {
+        /// Synthetic division by x − a/b returns q from q·(b·x − a) exactly
+        /// (times b/b′ when a/b reduces to a′/b′: it divides by b′·x − a′).
+        #[test]
+        fn divide_linear_undoes_the_product(
+            q in proptest::collection::vec(-50i64..50, 1..7), a in -30i64..30, b in 1i64..12,
+        ) {
+            prop_assume!(*q.last().unwrap() != 0);
+            let qp = UPoly::from_ints(&q);
+            let f = &qp * &UPoly::from_ints(&[-a, b]);
+            let c: Vec<BigInt> = f.coeffs().iter().map(|x| x.to_integer()).collect();
+            let r = Q::new(a.into(), b.into());
+            let scale = BigInt::from(b) / r.denom();
+            let expected: Vec<BigInt> = q.iter().map(|&x| BigInt::from(x) * &scale).collect();
+            prop_assert_eq!(divide_linear(&c, &r), expected);
+        }
+    }
+
+    proptest! {
         /// The common-denominator paths agree with plain rational arithmetic.
         #[test]
         fn integer_paths_match_rational_arithmetic(

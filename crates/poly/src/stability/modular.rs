@@ -365,9 +365,10 @@ impl Shape {
 /// the least weight of a perfect matching (weights ord) bounds the order
 /// of det M below and the greatest (weights deg) bounds its degree above:
 /// tropical determinants, found by the Hungarian algorithm. They are often
-/// far tighter than the sum of row degrees: AB8's discriminant has order
-/// 14 and degree 22 in Φ², where the row sums allow 0 and 31, so 9
-/// interpolation points per prime do instead of 32.
+/// far tighter than the sum of row degrees: for AB8's discriminant in Φ²
+/// (order 14, degree 22) they give order ≥ 13 and degree ≤ 29, where the
+/// row sums allow 0 and 31, so 17 interpolation points per prime do
+/// instead of 32.
 struct Bounds {
     ord: usize,
     deg: usize,
@@ -500,8 +501,8 @@ impl Frac {
 
 /// det(a) over F_p by fraction-free elimination: row_i ← a_kk·row_i −
 /// a_ik·row_k scales the determinant by a_kk, gathered in a denominator
-/// inverted once at the end instead of one inverse per pivot. Values in
-/// Montgomery form.
+/// and returned with it (no inverse here: [`Points`] divides all the values
+/// of a prime at once). Values in Montgomery form.
 fn det_mod(a: &mut [Vec<u64>], mont: &Mont) -> Frac {
     let (n, p) = (a.len(), mont.p);
     for x in a.iter_mut().flatten() {
@@ -542,9 +543,9 @@ fn trim(v: &mut Vec<u64>) {
 /// Res(f, g) over F_p by Euclid's algorithm (actual degrees), with
 /// pseudo-remainders: R = lc(g)^e·(f mod g) needs no inverse, and
 /// Res(g, R) = lc(g)^{e·deg g}·Res(g, f mod g), so the scale factors are
-/// gathered in a denominator inverted once at the end (an inverse costs
-/// about as much as the whole elimination of a step). Values are kept in
-/// Montgomery form throughout.
+/// gathered in a denominator and returned with it (an inverse costs about
+/// as much as the whole elimination of a step; [`Points`] does one per
+/// prime). Values are kept in Montgomery form throughout.
 fn res_mod(mut f: Vec<u64>, mut g: Vec<u64>, mont: &Mont) -> Frac {
     let p = mont.p;
     trim(&mut f);

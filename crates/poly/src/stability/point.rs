@@ -741,6 +741,33 @@ mod tests {
     }
 
     proptest! {
+        /// |root| ≥ l read off an isolating interval with at most one sign
+        /// agrees with the made number's |x| compared with l (the route it
+        /// replaced in `dominant_kind`).
+        #[test]
+        fn modulus_from_the_interval_matches_the_number(
+            c in proptest::collection::vec(-20i64..20, 2..8),
+            ln in 1i64..60, ld in 1i64..8,
+        ) {
+            prop_assume!(*c.last().unwrap() != 0);
+            let sf = UPoly::from_ints(&c).squarefree();
+            prop_assume!(sf.degree().unwrap_or(0) > 0);
+            let l = Q::new(ln.into(), ld.into());
+            let ip = IntPoly::new(&sf);
+            let intervals = crate::sturm::isolate_real_roots(&sf);
+            let numbers = Algebraic::real_roots(&sf);
+            prop_assert_eq!(intervals.len(), numbers.len());
+            for (iv, x) in intervals.iter().zip(&numbers) {
+                prop_assert_eq!(
+                    modulus_at_least(&ip, iv, &l),
+                    x.abs().cmp_rational(&l) != Ordering::Less,
+                    "{:?} {} {}", iv, x, l
+                );
+            }
+        }
+    }
+
+    proptest! {
         /// Wherever the transform recursion answers, it agrees with the
         /// inertia of the Schur–Cohn matrix.
         #[test]
