@@ -86,6 +86,8 @@ impl Algebraic {
         if let Some(n) = p.degree().filter(|&n| n > 0) {
             let lowest = p.coeffs().iter().position(|c| !c.is_zero()).unwrap_or(n);
             let zero_free = UPoly::new(p.coeffs()[lowest..].to_vec());
+            // An even F(x²) has a positive root exactly when F has one.
+            let zero_free = zero_free.even_part().unwrap_or(zero_free);
             let d = zero_free.degree().unwrap_or(0);
             if d == 0 || crate::sturm::no_positive_roots(&zero_free, 16) {
                 return Vec::new();
@@ -96,6 +98,19 @@ impl Algebraic {
         let sf = p.squarefree();
         let budget = crate::isolate::budget(sf.degree().unwrap_or(0));
         if let Some(intervals) = crate::isolate::isolate(&sf, true, budget) {
+            if let Some((all, factors)) = even_rational_roots(&sf) {
+                let rational = intervals
+                    .iter()
+                    .map(|(lo, hi)| {
+                        if lo == hi {
+                            Some(lo.clone())
+                        } else {
+                            all.iter().find(|r| lo < *r && *r < hi).cloned()
+                        }
+                    })
+                    .collect();
+                return numbers_with(&sf, intervals, rational, &all, &factors);
+            }
             if let (rational, Some(all)) = rational_roots(&sf, &intervals) {
                 return numbers_of(&sf, intervals, rational, &all);
             }
@@ -470,8 +485,13 @@ fn sign_at_root(
             &owned
         }
     };
-    // Coprime modulo a prime (the usual case): g cannot vanish at a root of
-    // poly, and the gcd over Q is not needed.
+    // A sign on the whole interval (the usual case once it is narrow):
+    // then g does not vanish at the number either.
+    if let Some(s) = gi.sign_on(lo, hi) {
+        return s;
+    }
+    // Coprime modulo a prime: g cannot vanish at a root of poly, and the
+    // gcd over Q is not needed.
     if !crate::stability::modular::coprime_mod_p(ip.coeffs(), gi.coeffs())
         && vanishes_at_root(poly, lo, hi, g)
     {
@@ -522,16 +542,34 @@ fn numbers_of(
     rational: Vec<Option<Q>>,
     all: &[Q],
 ) -> Vec<Algebraic> {
-    // sf freed of its rational roots, in integers (exact synthetic
-    // division), made monic once; its integer form is shared by every root
-    // that keeps it as defining polynomial.
+    let irrational = without_roots(sf, all);
+    let even_factors = even_rational_factors(&irrational);
+    numbers_with(sf, intervals, rational, all, &even_factors)
+}
+
+/// `sf` freed of its rational roots `all`, in integers (exact synthetic
+/// division), made monic.
+fn without_roots(sf: &UPoly, all: &[Q]) -> UPoly {
     let mut c = crate::upoly::int_primitive(sf);
     for r in all {
         c = crate::upoly::divide_linear(&c, r);
     }
-    let irrational = UPoly::new(c.into_iter().map(Q::from_integer).collect()).monic();
+    UPoly::new(c.into_iter().map(Q::from_integer).collect()).monic()
+}
+
+/// [`numbers_of`] given the factors x² − y of sf's irrational part when it
+/// is even (see [`even_rational_factors`]).
+fn numbers_with(
+    sf: &UPoly,
+    intervals: Vec<(Q, Q)>,
+    rational: Vec<Option<Q>>,
+    all: &[Q],
+    even_factors: &[UPoly],
+) -> Vec<Algebraic> {
+    // The irrational part is made monic once; its integer form is shared by
+    // every root that keeps it as defining polynomial.
+    let irrational = without_roots(sf, all);
     let mut shared: Option<Arc<IntPoly>> = None;
-    let even_factors = even_rational_factors(&irrational);
     intervals
         .into_iter()
         .zip(rational)
@@ -539,7 +577,7 @@ fn numbers_of(
             Some(r) => Algebraic::from_rational(r),
             None => {
                 let ip = shared.get_or_insert_with(|| Arc::new(IntPoly::new(&irrational)));
-                reduce_irrational_with(irrational.clone(), Some(ip), &even_factors, lo, hi)
+                reduce_irrational_with(irrational.clone(), Some(ip), even_factors, lo, hi)
             }
         })
         .collect()
@@ -576,6 +614,41 @@ fn reduce(f: UPoly, lo: Q, hi: Q) -> Algebraic {
 fn reduce_irrational(f: UPoly, lo: Q, hi: Q) -> Algebraic {
     let factors = even_rational_factors(&f);
     reduce_irrational_with(f, None, &factors, lo, hi)
+}
+
+/// For a square-free f(x) = x^k·F(x²), k ≤ 1, F(0) ≠ 0 (conditions in Φ
+/// are mostly of this form), from one p-adic run on F (half f's degree):
+/// every rational root of f (0 when k = 1, and ±√y for the rational squares
+/// y among F's rational roots), increasing, and the factors x² − y for F's
+/// other rational roots (those [`even_rational_factors`] gives for f freed
+/// of its rational roots). `None` when f is not of that form or no prime
+/// suits the lifting.
+fn even_rational_roots(f: &UPoly) -> Option<(Vec<Q>, Vec<UPoly>)> {
+    let k = f.coeffs().iter().position(|c| !c.is_zero())?;
+    if k > 1 {
+        return None;
+    }
+    let big_f = UPoly::new(f.coeffs()[k..].to_vec()).even_part()?;
+    let ys = crate::rational_roots::rational_roots(&crate::upoly::int_primitive(&big_f))?;
+    let mut roots = if k == 1 { vec![Q::zero()] } else { Vec::new() };
+    let mut factors = Vec::new();
+    for y in ys {
+        match rational_sqrt(&y) {
+            Some(r) => roots.extend([-r.clone(), r]),
+            None => factors.push(UPoly::new(vec![-y, Q::zero(), Q::one()])),
+        }
+    }
+    roots.sort();
+    Some((roots, factors))
+}
+
+/// √y when y is the square of a rational.
+fn rational_sqrt(y: &Q) -> Option<Q> {
+    if y.is_negative() {
+        return None;
+    }
+    let (n, d) = (y.numer().sqrt(), y.denom().sqrt());
+    (&n * &n == *y.numer() && &d * &d == *y.denom()).then(|| Q::new(n, d))
 }
 
 /// For an even f(x) = F(x²): the factors x² − y for the rational roots y of
@@ -984,6 +1057,43 @@ mod tests {
         let rational: Vec<Q> = roots.iter().filter_map(|r| r.as_rational().cloned()).collect();
         assert_eq!(rational, vec![Q::from_integer(a), Q::from_integer(b)]);
         assert_eq!(roots.len(), 4);
+    }
+
+    proptest! {
+        /// For f = x^k·F(x²): the rational roots and the factors x² − y
+        /// from one lifting on F are those of the general route (every
+        /// rational root of f, then `even_rational_factors` of f freed of
+        /// them). F's factors b·y − a include squares (rational roots ±√y).
+        #[test]
+        fn even_rational_roots_match_the_general_route(
+            linear in proptest::collection::vec((-6i64..=6, 1i64..=4), 0..3),
+            squares in proptest::collection::vec((1i64..=4, 1i64..=3), 0..2),
+            cofactor in proptest::collection::vec(-5i64..=5, 1..3),
+            k in 0usize..2,
+        ) {
+            let mut big_f = UPoly::from_ints(&cofactor);
+            prop_assume!(!big_f.is_zero());
+            for (a, b) in &linear {
+                big_f = &big_f * &UPoly::from_ints(&[-a, *b]);
+            }
+            for (a, b) in &squares {
+                big_f = &big_f * &UPoly::from_ints(&[-a * a, b * b]);
+            }
+            prop_assume!(big_f.degree().unwrap_or(0) >= 1 && !big_f.coeff(0).is_zero());
+            let mut f = big_f.spread();
+            if k == 1 {
+                f = &f * &UPoly::x();
+            }
+            let sf = f.squarefree();
+            let intervals = isolate_squarefree(&sf);
+            let (_, all) = rational_roots(&sf, &intervals);
+            let Some(all) = all else { return Ok(()) };
+            let factors = even_rational_factors(&without_roots(&sf, &all));
+            if let Some((roots, even)) = even_rational_roots(&sf) {
+                prop_assert_eq!(roots, all);
+                prop_assert_eq!(even, factors);
+            }
+        }
     }
 
     proptest! {

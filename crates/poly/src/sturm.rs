@@ -24,9 +24,53 @@ use crate::{UPoly, Q};
 
 /// A polynomial scaled by a positive rational to primitive integer
 /// coefficients: the same signs everywhere, evaluated without fractions.
+///
+/// When every coefficient fits in an `i64` a copy is kept in that form:
+/// evaluations then run in `i128` with checked operations and fall back to
+/// `BigInt` on overflow (the same values, so the same signs).
 #[derive(Clone, Debug)]
 pub(crate) struct IntPoly {
     c: Vec<BigInt>,
+    small: Option<Box<[i64]>>,
+}
+
+/// `x` as an `i128` when it fits in an `i64` (so products of two fit).
+fn small(x: &BigInt) -> Option<i128> {
+    num_traits::ToPrimitive::to_i64(x).map(i128::from)
+}
+
+/// Σ c_k p^k q^(n−k) in `i128`, `None` on overflow.
+fn homogeneous_small(c: &[i64], p: i128, q: i128) -> Option<i128> {
+    let (&top, rest) = c.split_last()?;
+    let mut acc = i128::from(top);
+    let mut qk: i128 = 1;
+    for &ck in rest.iter().rev() {
+        qk = qk.checked_mul(q)?;
+        acc = acc.checked_mul(p)?.checked_add(i128::from(ck).checked_mul(qk)?)?;
+    }
+    Some(acc)
+}
+
+/// [`IntPoly::sign_on`] on `i128` (`None` on overflow, `Some(None)` when
+/// the enclosure holds zero).
+fn sign_on_small(c: &[i64], a: i128, b: i128, q: i128) -> Option<Option<Ordering>> {
+    let (&top, rest) = c.split_last()?;
+    let (mut l, mut u) = (i128::from(top), i128::from(top));
+    let mut qk: i128 = 1;
+    for &ck in rest.iter().rev() {
+        qk = qk.checked_mul(q)?;
+        let p = [l.checked_mul(a)?, l.checked_mul(b)?, u.checked_mul(a)?, u.checked_mul(b)?];
+        let (min, max) = (p.iter().min()?, p.iter().max()?);
+        let t = i128::from(ck).checked_mul(qk)?;
+        (l, u) = (min.checked_add(t)?, max.checked_add(t)?);
+    }
+    Some(if l > 0 {
+        Some(Ordering::Greater)
+    } else if u < 0 {
+        Some(Ordering::Less)
+    } else {
+        None
+    })
 }
 
 impl IntPoly {
@@ -43,14 +87,15 @@ impl IntPoly {
                 *x /= &g;
             }
         }
-        IntPoly { c }
+        IntPoly::from_ints(c)
     }
 
     /// From integer coefficients (lowest power first, trimmed), taken as
     /// they are: the signs, not the scale, are what the evaluations give.
     pub(crate) fn from_ints(c: Vec<BigInt>) -> IntPoly {
         debug_assert!(c.last().is_none_or(|x| !x.is_zero()));
-        IntPoly { c }
+        let small = c.iter().map(num_traits::ToPrimitive::to_i64).collect();
+        IntPoly { c, small }
     }
 
     /// The integer coefficients, lowest power first.
@@ -71,6 +116,11 @@ impl IntPoly {
     pub(crate) fn sign_at(&self, x: &Q) -> Ordering {
         let Some(n) = self.degree() else { return Ordering::Equal };
         let (p, q) = (x.numer(), x.denom());
+        if let (Some(c), Some(ps), Some(qs)) = (&self.small, small(p), small(q)) {
+            if let Some(v) = homogeneous_small(c, ps, qs) {
+                return v.cmp(&0);
+            }
+        }
         if q.is_one() {
             let mut acc = BigInt::zero();
             for c in self.c.iter().rev() {
@@ -93,6 +143,11 @@ impl IntPoly {
     /// terms): the value at x times q^n, an integer of the value's sign.
     fn scaled_value_parts(&self, p: &BigInt, q: &BigInt) -> BigInt {
         let Some(n) = self.degree() else { return BigInt::zero() };
+        if let (Some(c), Some(ps), Some(qs)) = (&self.small, small(p), small(q)) {
+            if let Some(v) = homogeneous_small(c, ps, qs) {
+                return BigInt::from(v);
+            }
+        }
         let mut acc = self.c[n].clone();
         let mut qk = BigInt::one();
         for c in self.c[..n].iter().rev() {
@@ -110,6 +165,21 @@ impl IntPoly {
     /// homogeneous form Σ c_k X^k q^(n−k).
     pub(crate) fn sign_on(&self, lo: &Q, hi: &Q) -> Option<Ordering> {
         let n = self.degree()?;
+        if let Some(c) = &self.small {
+            if let (Some(ln), Some(ld), Some(hn), Some(hd)) =
+                (small(lo.numer()), small(lo.denom()), small(hi.numer()), small(hi.denom()))
+            {
+                // Over the common denominator q = lcm(ld, hd).
+                let g = num_integer::gcd(ld, hd);
+                if let Some(q) = (ld / g).checked_mul(hd) {
+                    if let (Some(a), Some(b)) = (ln.checked_mul(q / ld), hn.checked_mul(q / hd)) {
+                        if let Some(s) = sign_on_small(c, a, b, q) {
+                            return s;
+                        }
+                    }
+                }
+            }
+        }
         let q = crate::intgcd::lcm(lo.denom(), hi.denom());
         let a = lo.numer() * (&q / lo.denom());
         let b = hi.numer() * (&q / hi.denom());
@@ -174,7 +244,7 @@ fn chain(p: &UPoly) -> Vec<IntPoly> {
 fn chain_squarefree(sf: &UPoly) -> Vec<IntPoly> {
     let a = crate::upoly::int_primitive(sf);
     let mut b = crate::upoly::int_primitive(&sf.derivative());
-    let mut seq = vec![IntPoly { c: a.clone() }];
+    let mut seq = vec![IntPoly::from_ints(a.clone())];
     let mut a = a;
     while !b.is_empty() {
         // lc(b)^k·a = q·b + r, so −rem(a, b) is a positive multiple of
@@ -183,7 +253,7 @@ fn chain_squarefree(sf: &UPoly) -> Vec<IntPoly> {
         let negative_lead = b.last().is_some_and(|x| x.is_negative());
         let flip = !(negative_lead && k % 2 == 1);
         let next: Vec<BigInt> = if flip { r.into_iter().map(|x| -x).collect() } else { r };
-        seq.push(IntPoly { c: b.clone() });
+        seq.push(IntPoly::from_ints(b.clone()));
         a = b;
         b = crate::upoly::primitive(next);
     }
@@ -608,6 +678,29 @@ mod tests {
             if no_positive_roots(&sf, 32) {
                 prop_assert_eq!(positive, 0);
             }
+        }
+    }
+
+    proptest! {
+        /// The `i128` paths of the evaluations give what the `BigInt` ones
+        /// give (an `IntPoly` without its small form), including values
+        /// that overflow and fall back.
+        #[test]
+        fn small_evaluations_match_big(
+            c in proptest::collection::vec(-(1i64 << 40)..(1i64 << 40), 1..9),
+            (p, q, r, e) in (-(1i64 << 30)..(1i64 << 30), 1i64..(1 << 30), 0i64..(1 << 20), 0u32..24),
+        ) {
+            prop_assume!(*c.last().unwrap() != 0);
+            let ints: Vec<BigInt> = c.iter().map(|&x| BigInt::from(x)).collect();
+            let fast = IntPoly::from_ints(ints.clone());
+            prop_assert!(fast.small.is_some());
+            let slow = IntPoly { c: ints, small: None };
+            let lo = Q::new(p.into(), q.into());
+            let hi = &lo + Q::new(r.into(), BigInt::one() << e);
+            prop_assert_eq!(fast.sign_at(&lo), slow.sign_at(&lo));
+            prop_assert_eq!(fast.sign_on(&lo, &hi), slow.sign_on(&lo, &hi));
+            let (pn, qn) = (BigInt::from(p), BigInt::from(q));
+            prop_assert_eq!(fast.scaled_value_parts(&pn, &qn), slow.scaled_value_parts(&pn, &qn));
         }
     }
 

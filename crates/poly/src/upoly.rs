@@ -206,6 +206,25 @@ impl UPoly {
         UPoly::new(a.into_iter().map(Q::from_integer).collect()).monic()
     }
 
+    /// F with p(x) = F(x²), for an even p of degree ≥ 2 (`None` otherwise).
+    pub(crate) fn even_part(&self) -> Option<UPoly> {
+        let even =
+            self.c.len() >= 3 && self.c.iter().enumerate().all(|(k, c)| k % 2 == 0 || c.is_zero());
+        even.then(|| UPoly { c: self.c.iter().step_by(2).cloned().collect() })
+    }
+
+    /// F(x²) for this F (the inverse of [`UPoly::even_part`]).
+    pub(crate) fn spread(&self) -> UPoly {
+        let mut c = Vec::with_capacity(2 * self.c.len());
+        for (k, x) in self.c.iter().enumerate() {
+            if k > 0 {
+                c.push(Q::zero());
+            }
+            c.push(x.clone());
+        }
+        UPoly::new(c)
+    }
+
     /// The exponent of the largest power of x dividing a non-zero `p`.
     fn low_order(&self) -> usize {
         self.c.iter().position(|c| !c.is_zero()).unwrap_or(0)
@@ -236,6 +255,12 @@ impl UPoly {
         let low = self.low_order();
         if low > 0 {
             return self.shifted_down(low).squarefree().shifted_up(1);
+        }
+        // An even p = F(x²) with F(0) ≠ 0: sf(p) = sf(F)(x²) (each square-free
+        // factor f of F gives f(x²), square-free since f(0) ≠ 0), at half
+        // the degree.
+        if let Some(big_f) = self.even_part() {
+            return big_f.squarefree().spread();
         }
         let g = self.gcd(&self.derivative());
         if g.degree() == Some(0) {
@@ -548,6 +573,31 @@ mod tests {
             let scale = BigInt::from(b) / r.denom();
             let expected: Vec<BigInt> = q.iter().map(|&x| BigInt::from(x) * &scale).collect();
             prop_assert_eq!(divide_linear(&c, &r), expected);
+        }
+    }
+
+    proptest! {
+        /// The even route of `squarefree` (through F with p = F(x²)) agrees
+        /// with p / gcd(p, p′), on products with repeated even factors.
+        #[test]
+        fn even_squarefree_matches_the_gcd_route(
+            f in proptest::collection::vec(-9i64..9, 1..4),
+            g in proptest::collection::vec(-9i64..9, 1..4),
+            power in 1usize..3,
+        ) {
+            prop_assume!(f[0] != 0 && g[0] != 0);
+            let (f, g) = (UPoly::from_ints(&f), UPoly::from_ints(&g));
+            prop_assume!(!f.is_zero() && !g.is_zero());
+            let mut big_f = f.clone();
+            for _ in 0..power {
+                big_f = &big_f * &f;
+            }
+            let big_f = &big_f * &g;
+            let p = big_f.spread();
+            prop_assume!(p.degree().unwrap_or(0) >= 2);
+            prop_assert_eq!(p.even_part(), Some(big_f));
+            let oracle = p.div_rem(&p.gcd(&p.derivative())).0.monic();
+            prop_assert_eq!(p.squarefree(), oracle);
         }
     }
 
