@@ -605,8 +605,8 @@ pub(crate) fn refine_int(ip: &IntPoly, lo: &Q, hi: &Q, width: &Q) -> (Q, Q) {
     }
     let ratio = (hi - lo) / width;
     let ceil_bits = (ratio.ceil().to_integer() - BigInt::one()).bits();
-    if ceil_bits <= 8 {
-        return bisect_int(ip, lo, hi, width);
+    if ceil_bits <= BISECTION_HALVINGS {
+        return bisect_int(ip, lo, hi, ceil_bits);
     }
     // k = ⌈log2((hi − lo)/width)⌉ halvings: the least k with 2^k ≥ ratio.
     let k = ceil_bits;
@@ -637,24 +637,67 @@ pub(crate) fn refine_int(ip: &IntPoly, lo: &Q, hi: &Q, width: &Q) -> (Q, Q) {
     }
 }
 
-/// Plain bisection of a sign-changing interval down to `width`.
-fn bisect_int(ip: &IntPoly, lo: &Q, hi: &Q, width: &Q) -> (Q, Q) {
-    let (mut lo, mut hi) = (lo.clone(), hi.clone());
-    let two = Q::from_integer(2.into());
-    let s_lo = ip.sign_at(&lo);
-    while &hi - &lo > *width {
-        let mid = (&lo + &hi) / &two;
-        let s = ip.sign_at(&mid);
-        if s == Ordering::Equal {
-            return (mid.clone(), mid);
-        }
-        if s == s_lo {
-            lo = mid;
-        } else {
-            hi = mid;
+/// Up to this many halvings [`refine_int`] bisects (one sign each, in
+/// machine integers when they fit); beyond, quadratic refinement.
+const BISECTION_HALVINGS: u64 = 64;
+
+/// Plain bisection of a sign-changing interval: `k` halvings, a root met
+/// as a midpoint returned as (m, m). Integers over one denominator, so no
+/// fraction is reduced before the end.
+fn bisect_int(ip: &IntPoly, lo: &Q, hi: &Q, k: u64) -> (Q, Q) {
+    let e = crate::intgcd::lcm(lo.denom(), hi.denom());
+    let a = lo.numer() * (&e / lo.denom());
+    let b = hi.numer() * (&e / hi.denom());
+    let s_lo = ip.sign_at(lo);
+    // lo = a/e, hi = b/e; after j halvings the points are over e·2^j. From
+    // `i64` ends, 61 doublings stay inside `i128`.
+    if let (Some(c), Some(a), Some(b), Some(e)) = (&ip.small, small(&a), small(&b), small(&e)) {
+        if k <= 61 {
+            if let Some(r) = bisect_small(c, (a, b, e), s_lo, k) {
+                return r;
+            }
         }
     }
-    (lo, hi)
+    let (mut a, mut b, mut e) = (a, b, e);
+    for _ in 0..k {
+        let m = &a + &b;
+        (a, b, e) = (a << 1u32, b << 1u32, e << 1u32);
+        let s = ip.scaled_value_parts(&m, &e).sign().cmp_zero();
+        if s == Ordering::Equal {
+            let r = Q::new(m, e);
+            return (r.clone(), r);
+        }
+        if s == s_lo {
+            a = m;
+        } else {
+            b = m;
+        }
+    }
+    (Q::new(a, e.clone()), Q::new(b, e))
+}
+
+/// [`bisect_int`] in `i128` (`None` on overflow of an evaluation).
+fn bisect_small(
+    c: &[i64],
+    (mut a, mut b, mut e): (i128, i128, i128),
+    s_lo: Ordering,
+    k: u64,
+) -> Option<(Q, Q)> {
+    for _ in 0..k {
+        let m = a + b;
+        (a, b, e) = (2 * a, 2 * b, 2 * e);
+        let s = homogeneous_small(c, m, e)?.cmp(&0);
+        if s == Ordering::Equal {
+            let r = Q::new(m.into(), e.into());
+            return Some((r.clone(), r));
+        }
+        if s == s_lo {
+            a = m;
+        } else {
+            b = m;
+        }
+    }
+    Some((Q::new(a.into(), e.into()), Q::new(b.into(), e.into())))
 }
 
 #[cfg(test)]
