@@ -31,6 +31,27 @@ const PRIMES: [u64; 12] = [1009, 1013, 1019, 1021, 1031, 1033, 1039, 1049, 1051,
 pub(crate) fn rational_roots(f: &[BigInt]) -> Option<Vec<Q>> {
     let (lead, c0) = (f.last()?, &f[0]);
     debug_assert!(!c0.is_zero() && !lead.is_zero());
+    // Degrees 1 and 2 in closed form: −f₀/f₁; (−f₁ ± √Δ)/(2f₂) when the
+    // discriminant Δ is a square.
+    match f.len() {
+        2 => return Some(vec![Q::new(-c0, lead.clone())]),
+        3 => {
+            let disc = &f[1] * &f[1] - (lead * c0 << 2u32);
+            if disc.is_negative() {
+                return Some(Vec::new());
+            }
+            let root = disc.sqrt();
+            if &root * &root != disc {
+                return Some(Vec::new());
+            }
+            let two_a = lead << 1u32;
+            let mut out = vec![Q::new(-&f[1] - &root, two_a.clone()), Q::new(-&f[1] + root, two_a)];
+            out.sort();
+            out.dedup();
+            return Some(out);
+        }
+        _ => {}
+    }
     // p^k > 2·|f_0|·|f_n| lets reconstruction find a/b with |a| ≤ |f_0|,
     // 0 < b ≤ |f_n|.
     // No root modulo some prime (the usual case for a condition without
