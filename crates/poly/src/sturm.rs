@@ -363,8 +363,8 @@ pub(crate) fn no_positive_roots(p: &UPoly, budget: usize) -> bool {
     if p.degree().unwrap_or(0) == 0 {
         return false;
     }
-    let e = root_bound(p).numer().bits() - 1;
-    crate::isolate::descartes_isolate(&crate::upoly::int_primitive(p), e, true, budget)
+    // Descartes' bisection starts from Fujiwara's bound (no Cauchy bound).
+    crate::isolate::descartes_isolate(&crate::upoly::int_primitive(p), u64::MAX, true, budget)
         .is_some_and(|roots| roots.is_empty())
 }
 
