@@ -193,22 +193,15 @@ pub(crate) fn opposite_tie(a: &[UPoly]) -> Option<UPoly> {
 }
 
 /// For degree 3 and 4: r² = z_i z_j, a real root against a complex pair, as
-/// the resultant of the polynomial of squares and that of pair products
-/// (built from power sums by Newton's identities; small at these degrees).
+/// the resultant of the polynomial of squares and that of pair products,
+/// both in closed form (see [`squares_poly`], [`pair_products_poly`]).
 pub(crate) fn pair_tie(a: &[UPoly]) -> Option<UPoly> {
     let n = a.len() - 1;
     if !(3..=4).contains(&n) {
         return None;
     }
-    let pairs = n * (n - 1) / 2;
-    let p = scaled_power_sums(a, (2 * pairs).max(2 * n));
-    let half = Q::new(1.into(), 2.into());
-    let pair_sums: Vec<UPoly> =
-        (0..=pairs).map(|k| (&(&p[k] * &p[k]) - &p[2 * k]).scale(&half)).collect();
-    let square_sums: Vec<UPoly> = (0..=n).map(|k| p[2 * k].clone()).collect();
-    let an_sq = &a[n] * &a[n];
-    let products = integer_scaled(&poly_from_scaled_sums(&pair_sums, pairs, &an_sq));
-    let squares = integer_scaled(&poly_from_scaled_sums(&square_sums, n, &an_sq));
+    let products = integer_scaled(&pair_products_poly(a));
+    let squares = integer_scaled(&squares_poly(a));
     if products.last().is_none_or(UPoly::is_zero) || squares.last().is_none_or(UPoly::is_zero) {
         return None;
     }
@@ -216,50 +209,88 @@ pub(crate) fn pair_tie(a: &[UPoly]) -> Option<UPoly> {
     (!r.is_zero()).then_some(r)
 }
 
-/// Power sums scaled to stay polynomial in Φ: p̃_k = a_n^k p_k.
-fn scaled_power_sums(a: &[UPoly], kmax: usize) -> Vec<UPoly> {
+/// a_n^{2n}·∏(y − z_i²), by Graeffe's step: with χ(z) = E(z²) + z·O(z²),
+/// χ(z)·χ(−z) = E(z²)² − z²·O(z²)² = (−1)^n a_n² ∏(z² − z_i²).
+fn squares_poly(a: &[UPoly]) -> ZPoly {
     let n = a.len() - 1;
-    let an = &a[n];
-    let mut an_pow = vec![UPoly::constant(Q::one())];
-    for k in 1..=kmax {
-        let next = &an_pow[k - 1] * an;
-        an_pow.push(next);
-    }
-    let mut p = vec![UPoly::constant(Q::from_integer(n.into()))];
-    for k in 1..=kmax {
-        let mut s = UPoly::zero();
-        for i in 1..=k.min(n) {
-            if i < k {
-                s = &s + &(&(&a[n - i] * &an_pow[i - 1]) * &p[k - i]);
-            } else {
-                s = &s + &(&a[n - k] * &an_pow[k - 1]).scale(&Q::from_integer(k.into()));
-            }
+    let e: ZPoly = a.iter().step_by(2).cloned().collect();
+    let o: ZPoly = a.iter().skip(1).step_by(2).cloned().collect();
+    let mut g = zmul(&e, &e);
+    let oo = zmul(&o, &o);
+    for (k, c) in oo.iter().enumerate() {
+        if g.len() <= k + 1 {
+            g.resize(k + 2, UPoly::zero());
         }
-        p.push(-&s);
+        g[k + 1] = &g[k + 1] - c;
     }
-    p
+    let mut factor = UPoly::constant(Q::from_integer(if n % 2 == 0 { 1 } else { -1 }.into()));
+    for _ in 0..2 * n - 2 {
+        factor = &factor * &a[n];
+    }
+    trim(g.iter().map(|c| c * &factor).collect())
 }
 
-/// The coefficients (lowest power of x first) of a_n^{2m}·∏(x − w) over the
-/// m numbers w whose power sums, scaled by a_n^{2k}, are `sums[k]`.
-fn poly_from_scaled_sums(sums: &[UPoly], m: usize, an_sq: &UPoly) -> Vec<UPoly> {
-    let mut e = vec![UPoly::constant(Q::one())];
-    for k in 1..=m {
-        let mut acc = UPoly::zero();
-        for i in 1..=k {
-            let term = &e[k - i] * &sums[i];
-            acc = if i % 2 == 1 { &acc + &term } else { &acc - &term };
+/// a_n^{2m}·∏_{i<j}(x − z_i z_j), m = n(n − 1)/2, for n = 3 or 4, in closed
+/// form. With A = a_n:
+/// - n = 3: the products are e₃/z_k, so the polynomial is
+///   A⁶x³ − Σ_{k≥1} a_k (−a₀)^{k−1} A^{6−k} x^{3−k};
+/// - n = 4: complementary pairs u·v = e₄ with u + v = t a root of the
+///   resolvent cubic R(t) = t³ − e₂t² + (e₁e₃ − 4e₄)t − (e₁²e₄ − 4e₂e₄ + e₃²),
+///   so ∏(x − z_i z_j) = ∏_t (x² − t x + e₄) = x³ R((x² + e₄)/x), which
+///   times A¹² is A⁹ Σ_k R̂_k (A x² + a₀)^k x^{3−k} with R̂₃ = 1, R̂₂ = −a₂,
+///   R̂₁ = a₃a₁ − 4A a₀, R̂₀ = −(a₃² a₀ − 4A a₂ a₀ + A a₁²).
+fn pair_products_poly(a: &[UPoly]) -> ZPoly {
+    let n = a.len() - 1;
+    let big_a = &a[n];
+    let pow = |x: &UPoly, k: usize| (0..k).fold(UPoly::constant(Q::one()), |acc, _| &acc * x);
+    let int = |k: i64| Q::from_integer(k.into());
+    if n == 3 {
+        let minus_a0 = -&a[0];
+        let mut out = vec![UPoly::zero(); 4];
+        out[3] = pow(big_a, 6);
+        for k in 1..=3 {
+            out[3 - k] = -&(&(&a[k] * &pow(&minus_a0, k - 1)) * &pow(big_a, 6 - k));
         }
-        e.push(acc.scale(&(Q::one() / Q::from_integer(k.into()))));
+        return trim(out);
     }
-    let mut coeffs = vec![UPoly::zero(); m + 1];
-    let mut an_pow = UPoly::constant(Q::one());
-    for k in (0..=m).rev() {
-        let c = &e[k] * &an_pow;
-        coeffs[m - k] = if k % 2 == 0 { c } else { -&c };
-        an_pow = &an_pow * an_sq;
+    debug_assert_eq!(n, 4);
+    let (a0, a1, a2, a3) = (&a[0], &a[1], &a[2], &a[3]);
+    let r_hat = [
+        -&(&(&(a3 * a3) * a0) - &(&(&(big_a * a2) * a0).scale(&int(4)) - &(big_a * &(a1 * a1)))),
+        &(a3 * a1) - &(big_a * a0).scale(&int(4)),
+        -a2,
+        UPoly::constant(Q::one()),
+    ];
+    // s = A x² + a₀ as a polynomial in x.
+    let s: ZPoly = vec![a0.clone(), UPoly::zero(), big_a.clone()];
+    let mut s_pow: ZPoly = vec![UPoly::constant(Q::one())];
+    let mut out: ZPoly = vec![UPoly::zero(); 7];
+    for (k, r) in r_hat.iter().enumerate() {
+        // R̂_k·s^k·x^{3−k}
+        for (j, c) in s_pow.iter().enumerate() {
+            out[j + 3 - k] = &out[j + 3 - k] + &(r * c);
+        }
+        s_pow = zmul(&s_pow, &s);
     }
-    coeffs
+    let a9 = pow(big_a, 9);
+    trim(out.iter().map(|c| c * &a9).collect())
+}
+
+/// The product of two polynomials in x over Q[Φ].
+fn zmul(f: &[UPoly], g: &[UPoly]) -> ZPoly {
+    if f.is_empty() || g.is_empty() {
+        return Vec::new();
+    }
+    let mut out = vec![UPoly::zero(); f.len() + g.len() - 1];
+    for (i, x) in f.iter().enumerate() {
+        if x.is_zero() {
+            continue;
+        }
+        for (j, y) in g.iter().enumerate() {
+            out[i + j] = &out[i + j] + &(x * y);
+        }
+    }
+    out
 }
 
 /// Polynomials in z over Q[Φ] (coefficients lowest first).
@@ -465,6 +496,85 @@ fn reciprocal_conditions(a: &[UPoly]) -> Vec<(Condition, UPoly)> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use proptest::prelude::*;
+
+    /// The slow, obvious route to the polynomials of squares and of pair
+    /// products: power sums of the roots, Newton's identities.
+    fn by_power_sums(a: &[UPoly]) -> (ZPoly, ZPoly) {
+        let n = a.len() - 1;
+        let pairs = n * (n - 1) / 2;
+        let p = scaled_power_sums(a, (2 * pairs).max(2 * n));
+        let half = Q::new(1.into(), 2.into());
+        let pair_sums: Vec<UPoly> =
+            (0..=pairs).map(|k| (&(&p[k] * &p[k]) - &p[2 * k]).scale(&half)).collect();
+        let square_sums: Vec<UPoly> = (0..=n).map(|k| p[2 * k].clone()).collect();
+        let an_sq = &a[n] * &a[n];
+        (
+            poly_from_scaled_sums(&square_sums, n, &an_sq),
+            poly_from_scaled_sums(&pair_sums, pairs, &an_sq),
+        )
+    }
+
+    /// Power sums scaled to stay polynomial in Φ: p̃_k = a_n^k p_k.
+    fn scaled_power_sums(a: &[UPoly], kmax: usize) -> Vec<UPoly> {
+        let n = a.len() - 1;
+        let an = &a[n];
+        let mut an_pow = vec![UPoly::constant(Q::one())];
+        for k in 1..=kmax {
+            let next = &an_pow[k - 1] * an;
+            an_pow.push(next);
+        }
+        let mut p = vec![UPoly::constant(Q::from_integer(n.into()))];
+        for k in 1..=kmax {
+            let mut s = UPoly::zero();
+            for i in 1..=k.min(n) {
+                if i < k {
+                    s = &s + &(&(&a[n - i] * &an_pow[i - 1]) * &p[k - i]);
+                } else {
+                    s = &s + &(&a[n - k] * &an_pow[k - 1]).scale(&Q::from_integer(k.into()));
+                }
+            }
+            p.push(-&s);
+        }
+        p
+    }
+
+    /// The coefficients (lowest power of x first) of a_n^{2m}·∏(x − w) over
+    /// the m numbers w whose power sums, scaled by a_n^{2k}, are `sums[k]`.
+    fn poly_from_scaled_sums(sums: &[UPoly], m: usize, an_sq: &UPoly) -> Vec<UPoly> {
+        let mut e = vec![UPoly::constant(Q::one())];
+        for k in 1..=m {
+            let mut acc = UPoly::zero();
+            for i in 1..=k {
+                let term = &e[k - i] * &sums[i];
+                acc = if i % 2 == 1 { &acc + &term } else { &acc - &term };
+            }
+            e.push(acc.scale(&(Q::one() / Q::from_integer(k.into()))));
+        }
+        let mut coeffs = vec![UPoly::zero(); m + 1];
+        let mut an_pow = UPoly::constant(Q::one());
+        for k in (0..=m).rev() {
+            let c = &e[k] * &an_pow;
+            coeffs[m - k] = if k % 2 == 0 { c } else { -&c };
+            an_pow = &an_pow * an_sq;
+        }
+        coeffs
+    }
+
+    proptest! {
+        /// The closed forms give exactly the power-sum polynomials, for
+        /// degree 3 and 4 with coefficients polynomial in Φ (a₀ may vanish).
+        #[test]
+        fn closed_form_squares_and_pair_products_match_power_sums(
+            c in proptest::collection::vec(proptest::collection::vec(-4i64..=4, 1..3), 4..6),
+        ) {
+            let a: Vec<UPoly> = c.iter().map(|v| UPoly::from_ints(v)).collect();
+            prop_assume!(!a.last().unwrap().is_zero());
+            let (squares, products) = by_power_sums(&a);
+            prop_assert_eq!(squares_poly(&a), trim(squares));
+            prop_assert_eq!(pair_products_poly(&a), trim(products));
+        }
+    }
 
     #[test]
     fn inners_square_times_chi_pm1_is_the_reciprocal_resultant() {
