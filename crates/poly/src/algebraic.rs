@@ -256,7 +256,24 @@ impl Algebraic {
 
     /// Whether `g` vanishes at this number.
     pub fn is_root_of(&self, g: &UPoly) -> bool {
-        self.sign_of(g) == Ordering::Equal
+        match &self.repr {
+            Repr::Rational(q) => g.eval(q).is_zero(),
+            Repr::Root { poly, ip, lo, hi } => {
+                if g.is_zero() {
+                    return true;
+                }
+                if g.degree() == Some(0) {
+                    return false;
+                }
+                // No sign to find: a sign on the whole interval, or g coprime
+                // to the defining polynomial modulo a prime, rules the root
+                // out without refining; else the gcd decides.
+                let gi = IntPoly::new(g);
+                gi.sign_on(lo, hi).is_none()
+                    && !crate::stability::modular::coprime_mod_p(ip.coeffs(), gi.coeffs())
+                    && vanishes_at_root(poly, lo, hi, g)
+            }
+        }
     }
 
     /// The decimal expansion rounded to `digits` places after the point
@@ -1092,6 +1109,27 @@ mod tests {
             if let Some((roots, even)) = even_rational_roots(&sf) {
                 prop_assert_eq!(roots, all);
                 prop_assert_eq!(even, factors);
+            }
+        }
+    }
+
+    proptest! {
+        /// `is_root_of` (no sign computed) agrees with the sign being zero,
+        /// on the real roots of f = p·q against g = q·r, p, q, r random:
+        /// the roots of q are roots of g, the others mostly not.
+        #[test]
+        fn is_root_of_agrees_with_the_sign(
+            p in proptest::collection::vec(-6i64..=6, 2..4),
+            q in proptest::collection::vec(-6i64..=6, 2..4),
+            r in proptest::collection::vec(-6i64..=6, 1..3),
+        ) {
+            let (p, q, r) = (UPoly::from_ints(&p), UPoly::from_ints(&q), UPoly::from_ints(&r));
+            prop_assume!(!p.is_zero() && !q.is_zero() && !r.is_zero());
+            let f = &p * &q;
+            let g = &q * &r;
+            for root in Algebraic::real_roots(&f) {
+                prop_assert_eq!(root.is_root_of(&g), root.sign_of(&g) == Ordering::Equal);
+                prop_assert_eq!(root.is_root_of(&p), root.sign_of(&p) == Ordering::Equal);
             }
         }
     }

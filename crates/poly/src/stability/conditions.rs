@@ -165,6 +165,9 @@ pub(crate) fn discriminant(a: &[UPoly]) -> UPoly {
     let d: Vec<UPoly> =
         a.iter().enumerate().skip(1).map(|(k, c)| c.scale(&Q::from_integer(k.into()))).collect();
     let res = modular::resultant(a, &d);
+    if a[n].degree() == Some(0) {
+        return res.scale(&(Q::one() / a[n].coeff(0)));
+    }
     res.div_rem(&a[n]).0
 }
 
