@@ -118,14 +118,15 @@ impl Algebraic {
         Algebraic::real_roots(p).into_iter().filter(|a| a.sign() == Ordering::Greater).collect()
     }
 
-    /// The isolating intervals of the distinct real roots of `p` (those
-    /// of [`crate::sturm::isolate_real_roots`]), with the least and the
+    /// The isolating intervals of the distinct real roots of the
+    /// square-free, monic `sf` (those of
+    /// [`crate::sturm::isolate_real_roots`]), with the least and the
     /// greatest root as numbers (when there is one):
     /// [`Algebraic::real_roots`] without making numbers of the roots in
     /// between.
-    pub(crate) fn extreme_real_roots(p: &UPoly) -> (Vec<(Q, Q)>, Option<Ends>) {
-        let sf = p.squarefree();
-        let intervals = isolate_squarefree(&sf);
+    pub(crate) fn extreme_real_roots(sf: &UPoly) -> (Vec<(Q, Q)>, Option<Ends>) {
+        debug_assert_eq!(&sf.squarefree(), sf, "square-free and monic");
+        let intervals = isolate_squarefree(sf);
         let count = intervals.len();
         if count == 0 {
             return (intervals, None);
@@ -134,10 +135,10 @@ impl Algebraic {
         if count > 1 {
             ends.push(intervals[count - 1].clone());
         }
-        let (rational, all) = rational_roots(&sf, &ends);
+        let (rational, all) = rational_roots(sf, &ends);
         let roots = match all {
-            Some(all) => numbers_of(&sf, ends, rational, &all),
-            None => Algebraic::real_roots(p),
+            Some(all) => numbers_of(sf, ends, rational, &all),
+            None => Algebraic::real_roots(sf),
         };
         let (first, last) = (roots[0].clone(), roots[roots.len() - 1].clone());
         (intervals, Some((first, last)))

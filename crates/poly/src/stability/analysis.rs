@@ -13,7 +13,8 @@ use crate::{Derivation, Poly, RootClass, Sym, UPoly, Q};
 use super::conditions::{critical_conditions, discriminant, Charpoly};
 use super::field::{FPoly, Field};
 use super::point::{
-    circle_counts, class_of_single_root, classify_quadratic_by, classify_with_counts, Counts,
+    circle_counts, class_of_single_root, classify_quadratic_by, classify_with_counts,
+    quadratic_counts, Counts,
 };
 use super::{
     Boundary, ClassChange, ClassInterval, Condition, CriticalPoint, Marginal, Stability,
@@ -26,7 +27,11 @@ pub(crate) fn class_at_rational(chi: &Charpoly, phi: &Q) -> (RootClass, Counts) 
     if chi.degree() == 2 {
         let q = chi.quad();
         let class = classify_quadratic_by(|k| q.ints[k].sign_at(phi));
-        let counts = if f.is_zero() { Counts::default() } else { circle_counts(&f) };
+        let counts = match f.degree() {
+            None => Counts::default(),
+            Some(2) => quadratic_counts(&f),
+            Some(_) => circle_counts(&f),
+        };
         return (class, counts);
     }
     classify_with_counts(&f)

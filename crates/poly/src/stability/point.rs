@@ -28,7 +28,7 @@ use std::cmp::Ordering;
 
 use num_bigint::BigInt;
 use num_integer::Integer;
-use num_traits::{One, Zero};
+use num_traits::{One, Signed, Zero};
 
 use crate::algebraic::Algebraic;
 use crate::sturm::{count_real_roots, IntPoly};
@@ -60,6 +60,57 @@ fn scaled(f: &UPoly, s: &Q) -> UPoly {
 /// circle, exactly.
 pub fn circle_counts(f: &UPoly) -> Counts {
     counts_squarefree(&f.squarefree())
+}
+
+/// [`circle_counts`] of a f = a z² + b z + c (a ≠ 0) from signs: a complex
+/// pair has |z|² = c/a; real roots are placed against ±1 by f(±1) and the
+/// vertex −b/(2a).
+pub(crate) fn quadratic_counts(f: &UPoly) -> Counts {
+    debug_assert_eq!(f.degree(), Some(2));
+    // Integer coefficients with a > 0 (the same roots).
+    let mut k = crate::upoly::int_primitive(f);
+    if k[2].is_negative() {
+        k.iter_mut().for_each(|x| *x = -&*x);
+    }
+    let (c, b, a) = (&k[0], &k[1], &k[2]);
+    let counts = |inside, on, outside| Counts { inside, on, outside };
+    // |p/q| against 1, q ≠ 0.
+    let place = |p: &BigInt, q: &BigInt| match p.abs().cmp(&q.abs()) {
+        Ordering::Less => counts(1, 0, 0),
+        Ordering::Equal => counts(0, 1, 0),
+        Ordering::Greater => counts(0, 0, 1),
+    };
+    let disc = b * b - ((a * c) << 2u32);
+    match disc.sign() {
+        // A complex pair, |z|² = c/a.
+        num_bigint::Sign::Minus => {
+            return match c.cmp(a) {
+                Ordering::Less => counts(2, 0, 0),
+                Ordering::Equal => counts(0, 2, 0),
+                Ordering::Greater => counts(0, 0, 2),
+            }
+        }
+        // A double root −b/(2a).
+        num_bigint::Sign::NoSign => return place(b, &(a << 1u32)),
+        num_bigint::Sign::Plus => {}
+    }
+    let (at_one, at_minus_one) = (a + b + c, a - b + c);
+    // A root at ±1: the other is c/a over it, the same modulus as c/a.
+    if at_one.is_zero() || at_minus_one.is_zero() {
+        let mut k = place(c, a);
+        k.on += 1;
+        return k;
+    }
+    match (at_one.is_positive(), at_minus_one.is_positive()) {
+        // Opposite signs: one root in (−1, 1), one outside.
+        (true, false) | (false, true) => counts(1, 0, 1),
+        // Both positive: the roots on one side of ±1, inside when the
+        // vertex −b/(2a) is.
+        (true, true) if b.abs() < (a << 1u32) => counts(2, 0, 0),
+        (true, true) => counts(0, 0, 2),
+        // Both negative: −1 and 1 lie between the roots.
+        (false, false) => counts(0, 0, 2),
+    }
 }
 
 /// [`circle_counts`] of a square-free polynomial.
@@ -738,6 +789,29 @@ mod tests {
         let (pos, neg, zero) = inertia(c);
         assert_eq!(zero, 0, "regular case");
         (pos, neg)
+    }
+
+    proptest! {
+        /// The quadratic rules count as the general route does, on
+        /// products of linear factors (roots at ±1, double roots, rational
+        /// roots anywhere) and random quadratics (complex pairs, |z| = 1).
+        #[test]
+        fn quadratic_counts_match_the_general_route(
+            roots in ((-6i64..=6, 1i64..=4), (-6i64..=6, 1i64..=4)),
+            coeffs in (-9i64..=9, -9i64..=9, 1i64..=9),
+            scale in -3i64..=3,
+            use_roots in proptest::bool::ANY,
+        ) {
+            prop_assume!(scale != 0);
+            let f = if use_roots {
+                let ((p, q), (r, s)) = roots;
+                &UPoly::from_ints(&[-p, q]) * &UPoly::from_ints(&[-r, s])
+            } else {
+                UPoly::from_ints(&[coeffs.0, coeffs.1, coeffs.2])
+            };
+            let f = f.scale(&Q::from_integer(scale.into()));
+            prop_assert_eq!(quadratic_counts(&f), circle_counts(&f));
+        }
     }
 
     proptest! {
