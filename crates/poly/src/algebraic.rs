@@ -272,7 +272,7 @@ impl Algebraic {
                 let gi = IntPoly::new(g);
                 gi.sign_on(lo, hi).is_none()
                     && !crate::stability::modular::coprime_mod_p(ip.coeffs(), gi.coeffs())
-                    && vanishes_at_root(poly, lo, hi, g)
+                    && (divides(ip, &gi) || vanishes_at_root(poly, lo, hi, g))
             }
         }
     }
@@ -511,7 +511,7 @@ fn sign_at_root(
     // Coprime modulo a prime: g cannot vanish at a root of poly, and the
     // gcd over Q is not needed.
     if !crate::stability::modular::coprime_mod_p(ip.coeffs(), gi.coeffs())
-        && vanishes_at_root(poly, lo, hi, g)
+        && (divides(ip, gi) || vanishes_at_root(poly, lo, hi, g))
     {
         return Ordering::Equal;
     }
@@ -532,6 +532,14 @@ fn sign_at_root(
         (lo, hi) = refine_quadratic(ip, &lo, &hi, &width);
         shift = shift.saturating_mul(2).min(1 << 16);
     }
+}
+
+/// Whether the defining polynomial divides `g` (the usual case when g is
+/// the condition the number is a root of): a pseudo-remainder in integers,
+/// cheaper than the gcd.
+fn divides(ip: &IntPoly, gi: &IntPoly) -> bool {
+    gi.coeffs().len() >= ip.coeffs().len()
+        && crate::upoly::prem(gi.coeffs(), ip.coeffs()).0.is_empty()
 }
 
 /// Whether `g` vanishes at the unique root of the square-free `poly` in
