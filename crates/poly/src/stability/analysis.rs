@@ -235,7 +235,7 @@ fn run(chi: &Charpoly, p: Option<StepMatrix<'_>>, charpoly: Option<&Poly>) -> St
             verdict = Stability::Limited {
                 phi_max: point.at.clone(),
                 bounded_at_phi_max: at_bounded,
-                boundary: boundary_at(chi, &conditions, &point.at),
+                boundary: boundary_at(chi, point),
             };
             break;
         }
@@ -342,13 +342,14 @@ fn bounded_at(
     field.rank(qp) == field.rank(qp2)
 }
 
-/// What happens at the stability limit, from which conditions vanish there.
-fn boundary_at(chi: &Charpoly, conditions: &[(Condition, UPoly)], at: &Algebraic) -> Boundary {
+/// What happens at the stability limit, from which conditions vanish there
+/// (the point lists every condition with a root there).
+fn boundary_at(chi: &Charpoly, point: &CriticalPoint) -> Boundary {
+    let at = &point.at;
     let vanishes = |p: &UPoly| at.is_root_of(p);
     let one = Q::one();
     let minus_one = -Q::one();
-    let named =
-        |name: Condition| conditions.iter().any(|(n, p)| *n == name && !p.is_zero() && vanishes(p));
+    let named = |name: Condition| point.conditions.contains(&name);
     let at_minus_one = vanishes(&chi.value_at_z(&minus_one));
     let at_plus_one = vanishes(&chi.value_at_z(&one));
     if at_minus_one && vanishes(&chi.derivative_at_z(&minus_one)) {
