@@ -226,7 +226,13 @@ fn squares_poly(a: &[UPoly]) -> ZPoly {
         }
         g[k + 1] = &g[k + 1] - c;
     }
-    let mut factor = UPoly::constant(Q::from_integer(if n % 2 == 0 { 1 } else { -1 }.into()));
+    let sign = Q::from_integer(if n % 2 == 0 { 1 } else { -1 }.into());
+    if a[n].degree() == Some(0) {
+        // A constant a_n: one rational factor.
+        let factor = sign * num_traits::pow(a[n].coeff(0), 2 * n - 2);
+        return trim(g.iter().map(|c| c.scale(&factor)).collect());
+    }
+    let mut factor = UPoly::constant(sign);
     for _ in 0..2 * n - 2 {
         factor = &factor * &a[n];
     }
@@ -245,7 +251,11 @@ fn squares_poly(a: &[UPoly]) -> ZPoly {
 fn pair_products_poly(a: &[UPoly]) -> ZPoly {
     let n = a.len() - 1;
     let big_a = &a[n];
-    let pow = |x: &UPoly, k: usize| (0..k).fold(UPoly::constant(Q::one()), |acc, _| &acc * x);
+    let pow = |x: &UPoly, k: usize| match x.degree() {
+        // A constant (explicit methods): one rational power.
+        Some(0) => UPoly::constant(num_traits::pow(x.coeff(0), k)),
+        _ => (0..k).fold(UPoly::constant(Q::one()), |acc, _| &acc * x),
+    };
     let int = |k: i64| Q::from_integer(k.into());
     if n == 3 {
         let minus_a0 = -&a[0];

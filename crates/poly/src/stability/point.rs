@@ -123,10 +123,11 @@ fn counts_squarefree(sf: &UPoly) -> Counts {
         return counts;
     }
     let g = g0.gcd(&g0.reversed());
-    let (h, dg) = if g.degree().unwrap_or(0) == 0 {
-        (g0, 0)
-    } else {
-        (g0.div_rem(&g).0, g.degree().unwrap_or(0))
+    let (h, dg) = match g.degree().unwrap_or(0) {
+        0 => (g0, 0),
+        // g0 is itself self-reciprocal (g is g0 made monic).
+        d if Some(d) == g0.degree() => (UPoly::constant(Q::one()), d),
+        d => (g0.div_rem(&g).0, d),
     };
     let (hin, hout) = schur_cohn_inertia(&h);
     let on = if dg > 0 { on_circle_reciprocal(&g) } else { 0 };
