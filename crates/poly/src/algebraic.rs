@@ -1063,13 +1063,15 @@ mod tests {
         }
     }
 
-    /// Roots 1 and 1 + P, P the product of the lifting's primes: they meet
-    /// modulo every one of them, so the p-adic path declines and the search
+    /// Roots 1 and 1 + P, P the product of every prime the lifting tries:
+    /// they meet modulo each of them, so the p-adic path declines and the search
     /// in narrowed intervals (the fallback) must find both.
     #[test]
     fn rational_roots_found_when_no_prime_suits_the_lifting() {
         let mut p = BigInt::one();
-        for q in [1009u64, 1013, 1019, 1021, 1031, 1033, 1039, 1049, 1051, 1061, 1063, 1069] {
+        let near_2_20 = [1_048_573u64, 1_048_571, 1_048_559, 1_048_549, 1_048_517, 1_048_507];
+        let near_1000 = [1009u64, 1013, 1019, 1021, 1031, 1033, 1039, 1049, 1051, 1061, 1063, 1069];
+        for q in near_2_20.into_iter().chain(near_1000) {
             p *= q;
         }
         let (a, b) = (BigInt::one(), BigInt::one() + &p);

@@ -9,6 +9,13 @@
 //! answer is complete and exact; only the choice of prime is heuristic, and
 //! a prime at which some root is multiple is skipped.
 //!
+//! The roots modulo p come from gcd(x^p − x, f) at primes near 2^20: no root
+//! there means no rational root; one root, or two when p ≡ 3 (mod 4), are
+//! read off that gcd. Otherwise (or when the coefficients are large, where
+//! a prime without roots is the cheaper answer than a lift) every residue
+//! modulo primes near 1000 is tried. Degrees 1 and 2 are solved in closed
+//! form.
+//!
 //! This replaces, for the stability analysis, an upper bound on the number
 //! of rational roots (roots counted modulo primes) followed, whenever the
 //! bound did not vanish, by a search in each isolating interval narrowed to
@@ -36,7 +43,7 @@ pub(crate) fn rational_roots(f: &[BigInt]) -> Option<Vec<Q>> {
     match f.len() {
         2 => return Some(vec![Q::new(-c0, lead.clone())]),
         3 => {
-            let disc = &f[1] * &f[1] - (lead * c0 << 2u32);
+            let disc = &f[1] * &f[1] - ((lead * c0) << 2u32);
             if disc.is_negative() {
                 return Some(Vec::new());
             }
@@ -54,12 +61,24 @@ pub(crate) fn rational_roots(f: &[BigInt]) -> Option<Vec<Q>> {
     }
     // p^k > 2·|f_0|·|f_n| lets reconstruction find a/b with |a| ≤ |f_0|,
     // 0 < b ≤ |f_n|.
-    // No root modulo some prime (the usual case for a condition without
-    // rational roots): none over Q, found without trying every residue.
-    if crate::stability::modular::rational_root_bound(f) == Some(0) {
+    let bound: BigInt = (c0.abs() * lead.abs()) << 1;
+    // No root modulo some prime near 2^20 (the usual case for a condition
+    // without rational roots): none over Q. Else, where one or two roots
+    // can be read off from gcd(x^p − x, f), they are lifted at once, with
+    // no search over residues.
+    // Lifting is cheap for small coefficients (a few Newton steps): the
+    // first prime with readable roots is lifted from at once. With large
+    // ones each step inverts modulo a large power: every prime is tried for
+    // one without roots, then residues modulo primes near 1000 (below).
+    let small = bound.bits() <= 160;
+    let m = crate::stability::modular::mod_roots(f, small);
+    if m.bound == Some(0) {
         return Some(Vec::new());
     }
-    let bound = (c0.abs() * lead.abs()) << 1;
+    if let Some((p, roots)) = m.readable.filter(|_| small) {
+        return Some(lift(f, BigInt::from(p), roots, &bound));
+    }
+    // Else roots modulo primes near 1000, found by trying every residue.
     'prime: for p in PRIMES {
         let pb = BigInt::from(p);
         if (lead % &pb).is_zero() {
@@ -78,26 +97,34 @@ pub(crate) fn rational_roots(f: &[BigInt]) -> Option<Vec<Q>> {
                 roots.push(x);
             }
         }
-        let ip = crate::sturm::IntPoly::from_ints(f.to_vec());
-        let mut modulus = pb.clone();
-        let mut lifted: Vec<BigInt> = roots.iter().map(|&r| BigInt::from(r)).collect();
-        while modulus <= bound {
-            modulus = &modulus * &modulus;
-            for r in &mut lifted {
-                *r = newton_step(f, r, &modulus);
-            }
-        }
-        let mut out: Vec<Q> = lifted
-            .iter()
-            .filter_map(|r| reconstruct(r, &modulus, &c0.abs(), &lead.abs()))
-            .map(|(a, b)| Q::new(a, b))
-            .filter(|x| ip.sign_at(x).is_eq())
-            .collect();
-        out.sort();
-        out.dedup();
-        return Some(out);
+        return Some(lift(f, pb, roots, &bound));
     }
     None
+}
+
+/// The rational roots of f among the lifts of `roots`, simple roots of f
+/// modulo the prime p: Newton's iteration to a modulus above `bound`
+/// (2·|f_0|·|f_n|), rational reconstruction, and an exact check of each.
+fn lift(f: &[BigInt], p: BigInt, roots: Vec<u64>, bound: &BigInt) -> Vec<Q> {
+    let (lead, c0) = (f.last().expect("degree ≥ 1"), &f[0]);
+    let ip = crate::sturm::IntPoly::from_ints(f.to_vec());
+    let mut modulus = p;
+    let mut lifted: Vec<BigInt> = roots.into_iter().map(BigInt::from).collect();
+    while modulus <= *bound {
+        modulus = &modulus * &modulus;
+        for r in &mut lifted {
+            *r = newton_step(f, r, &modulus);
+        }
+    }
+    let mut out: Vec<Q> = lifted
+        .iter()
+        .filter_map(|r| reconstruct(r, &modulus, &c0.abs(), &lead.abs()))
+        .map(|(a, b)| Q::new(a, b))
+        .filter(|x| ip.sign_at(x).is_eq())
+        .collect();
+    out.sort();
+    out.dedup();
+    out
 }
 
 /// r − f(r)/f′(r) mod m, for r a simple root of f modulo √m (so f′(r) is

@@ -226,7 +226,7 @@ fn squares_poly(a: &[UPoly]) -> ZPoly {
         }
         g[k + 1] = &g[k + 1] - c;
     }
-    let sign = Q::from_integer(if n % 2 == 0 { 1 } else { -1 }.into());
+    let sign = Q::from_integer(if n.is_multiple_of(2) { 1 } else { -1 }.into());
     if a[n].degree() == Some(0) {
         // A constant a_n: one rational factor.
         let factor = sign * num_traits::pow(a[n].coeff(0), 2 * n - 2);

@@ -638,7 +638,7 @@ mod small {
         }
     }
 
-    fn inv(a: u64, p: u64) -> u64 {
+    pub(super) fn inv(a: u64, p: u64) -> u64 {
         let (mut r, mut b, mut e) = (1u64, a % p, p - 2);
         while e > 0 {
             if e & 1 == 1 {
@@ -680,7 +680,9 @@ mod small {
     /// coefficient first, p < 2^20): deg gcd(x^p − x, f), x^p mod f by
     /// squaring from the top bit of p, a set bit being one multiplication by
     /// x (a shift and one reduction step).
-    pub(super) fn distinct_roots(f: &[u64], p: u64) -> usize {
+    /// gcd(x^p − x, f) over F_p (the product of x − r over f's distinct
+    /// roots r in F_p, up to a constant), for f of degree ≥ 1, p < 2^20.
+    pub(super) fn roots_part(f: &[u64], p: u64) -> Vec<u64> {
         debug_assert!(p < 1 << 20);
         let d = f.len() - 1;
         // −f / lc(f), so that reducing a top term c·x^(d+s) adds c·neg[j]·x^(s+j).
@@ -705,7 +707,40 @@ mod small {
             acc[1] = (acc[1] + p - 1) % p;
         }
         trim(&mut acc);
-        gcd(acc, f.to_vec(), p).len().saturating_sub(1)
+        gcd(acc, f.to_vec(), p)
+    }
+
+    /// The roots in F_p of g, a product of distinct linear factors, when
+    /// they can be read off: degree 0 or 1, or 2 with p ≡ 3 (mod 4) (a
+    /// square root is then a power).
+    pub(super) fn read_roots(g: &[u64], p: u64) -> Option<Vec<u64>> {
+        let pow = |mut b: u64, mut e: u64| {
+            let mut r = 1u64;
+            while e > 0 {
+                if e & 1 == 1 {
+                    r = r * b % p;
+                }
+                b = b * b % p;
+                e >>= 1;
+            }
+            r
+        };
+        match g.len() {
+            1 => Some(Vec::new()),
+            2 => Some(vec![(p - g[0] * inv(g[1], p) % p) % p]),
+            3 if p % 4 == 3 => {
+                let li = inv(g[2], p);
+                let (b, c) = (g[1] * li % p, g[0] * li % p);
+                // x = (−b ± √Δ)/2, Δ = b² − 4c a non-zero square.
+                let disc = (b * b % p + p - 4 * c % p) % p;
+                let root = pow(disc, (p + 1) / 4);
+                debug_assert_eq!(root * root % p, disc, "g splits");
+                let half = inv(2, p);
+                let minus_b = (p - b) % p;
+                Some(vec![(minus_b + root) % p * half % p, (minus_b + p - root) % p * half % p])
+            }
+            _ => None,
+        }
     }
 
     /// a² mod f for a of degree below d = deg f, f given as `neg` = −f/lc(f)
@@ -754,15 +789,27 @@ mod small {
     }
 }
 
-/// An upper bound on the number of distinct rational roots of the integer
-/// polynomial `f` (square-free over Q, f(0) ≠ 0): the number of roots in
-/// F_p of f mod p, for a prime p dividing neither the leading coefficient
-/// nor the discriminant (f mod p square-free, so distinct rational roots stay
-/// distinct mod p); the least over a few primes. `None` when no such prime
-/// was found among those tried.
-pub(crate) fn rational_root_bound(f: &[BigInt]) -> Option<usize> {
-    let lead = f.last()?;
-    let mut best: Option<usize> = None;
+/// What the primes near 2^20 tell about the rational roots of the integer
+/// polynomial f (square-free over Q, f(0) ≠ 0), from those dividing neither
+/// its leading coefficient nor its discriminant (f mod p square-free, so
+/// distinct rational roots stay distinct mod p).
+pub(crate) struct ModRoots {
+    /// The least number of roots in F_p over the primes tried, an upper
+    /// bound on the number of distinct rational roots (`None`: no prime
+    /// suited). The primes are tried until one has no root.
+    pub bound: Option<usize>,
+    /// The first prime at which the roots can be read off from
+    /// gcd(x^p − x, f) (one root, or two with p ≡ 3 mod 4), with them:
+    /// simple roots, ready to be lifted.
+    pub readable: Option<(u64, Vec<u64>)>,
+}
+
+/// [`ModRoots`] of `f`; with `stop_at_readable`, the primes are tried only
+/// until the roots at one can be read off (then `bound` may be above the
+/// least count).
+pub(crate) fn mod_roots(f: &[BigInt], stop_at_readable: bool) -> ModRoots {
+    let mut out = ModRoots { bound: None, readable: None };
+    let Some(lead) = f.last() else { return out };
     for p in SMALL_PRIMES {
         if (lead % BigInt::from(p)).is_zero() {
             continue;
@@ -773,13 +820,26 @@ pub(crate) fn rational_root_bound(f: &[BigInt]) -> Option<usize> {
         if small::gcd(fp.clone(), d, p).len() != 1 {
             continue;
         }
-        let count = small::distinct_roots(&fp, p);
-        best = Some(best.map_or(count, |b: usize| b.min(count)));
+        let part = small::roots_part(&fp, p);
+        let count = part.len().saturating_sub(1);
+        out.bound = Some(out.bound.map_or(count, |b| b.min(count)));
         if count == 0 {
             break;
         }
+        if out.readable.is_none() {
+            out.readable = small::read_roots(&part, p).map(|roots| (p, roots));
+            if stop_at_readable && out.readable.is_some() {
+                break;
+            }
+        }
     }
-    best
+    out
+}
+
+/// An upper bound on the number of distinct rational roots of the integer
+/// polynomial `f` (square-free over Q, f(0) ≠ 0): [`ModRoots::bound`].
+pub(crate) fn rational_root_bound(f: &[BigInt]) -> Option<usize> {
+    mod_roots(f, false).bound
 }
 
 /// Res_z(f, g) for f, g in Z[Φ][z] given by their coefficients in z (lowest
@@ -1025,7 +1085,7 @@ mod tests {
                 let brute = (0..p)
                     .filter(|&x| f.iter().rev().fold(0u64, |acc, &c| (acc * x + c) % p) == 0)
                     .count();
-                assert_eq!(super::small::distinct_roots(&f, p), brute, "{f:?} mod {p}");
+                assert_eq!(super::small::roots_part(&f, p).len() - 1, brute, "{f:?} mod {p}");
             }
         }
     }
