@@ -203,6 +203,9 @@ pub(crate) fn pair_tie(a: &[UPoly]) -> Option<UPoly> {
     if !(3..=4).contains(&n) {
         return None;
     }
+    if let Some(r) = even_quartic_pair_tie(a) {
+        return (!r.is_zero()).then_some(r);
+    }
     let products = integer_scaled(&pair_products_poly(a));
     let squares = integer_scaled(&squares_poly(a));
     if products.last().is_none_or(UPoly::is_zero) || squares.last().is_none_or(UPoly::is_zero) {
@@ -210,6 +213,22 @@ pub(crate) fn pair_tie(a: &[UPoly]) -> Option<UPoly> {
     }
     let r = modular::resultant(&squares, &products);
     (!r.is_zero()).then_some(r)
+}
+
+/// The pair tie of an even quartic χ = a₄z⁴ + a₂z² + a₀ with a constant a₄,
+/// in closed form: its roots are ±√y₁, ±√y₂, the squares y₁, y₁, y₂, y₂ and
+/// the pair products −y₁, −y₂, ±√(y₁y₂) (twice), so Res(squares, products)
+/// is a constant times (y₁y₂)⁶(y₁ + y₂)⁴(y₁ − y₂)⁸, that is
+/// a₀⁶·a₂⁴·(a₂² − 4a₀a₄)⁴. Only its roots matter (the condition's positive
+/// roots and where it vanishes), so a₀·a₂·(a₂² − 4a₀a₄) is returned: the
+/// same roots without the multiplicities.
+fn even_quartic_pair_tie(a: &[UPoly]) -> Option<UPoly> {
+    let even = a.len() == 5 && a[1].is_zero() && a[3].is_zero() && a[4].degree() == Some(0);
+    if !even {
+        return None;
+    }
+    let d = &(&a[2] * &a[2]) - &(&a[0] * &a[4]).scale(&Q::from_integer(4.into()));
+    Some(integer_scaled(&[&(&a[0] * &a[2]) * &d]).remove(0))
 }
 
 /// a_n^{2n}·∏(y − z_i²), by Graeffe's step: with χ(z) = E(z²) + z·O(z²),
@@ -572,6 +591,34 @@ mod tests {
             an_pow = &an_pow * an_sq;
         }
         coeffs
+    }
+
+    proptest! {
+        /// An even quartic's pair tie in closed form has the roots of the
+        /// resultant of the squares and pair products (the same square-free
+        /// part).
+        #[test]
+        fn even_quartic_pair_tie_is_the_resultant(
+            a0 in proptest::collection::vec(-4i64..=4, 1..3),
+            a2 in proptest::collection::vec(-4i64..=4, 1..3),
+            a4 in 1i64..=3,
+        ) {
+            let a = vec![
+                UPoly::from_ints(&a0),
+                UPoly::zero(),
+                UPoly::from_ints(&a2),
+                UPoly::zero(),
+                UPoly::from_ints(&[a4]),
+            ];
+            let closed = even_quartic_pair_tie(&a).expect("an even quartic");
+            let products = integer_scaled(&pair_products_poly(&a));
+            let squares = integer_scaled(&squares_poly(&a));
+            let general = modular::resultant(&squares, &products);
+            prop_assert_eq!(closed.is_zero(), general.is_zero());
+            if !closed.is_zero() {
+                prop_assert_eq!(closed.squarefree(), general.squarefree());
+            }
+        }
     }
 
     proptest! {
