@@ -366,6 +366,12 @@ pub fn classify(f: &UPoly) -> RootClass {
 
 /// [`classify`] and [`circle_counts`] together.
 pub(crate) fn classify_with_counts(f: &UPoly) -> (RootClass, Counts) {
+    classify_counts(f, true)
+}
+
+/// [`classify_with_counts`], through F for an even polynomial F(z²) when
+/// `even_route` (the tests hold both routes equal).
+fn classify_counts(f: &UPoly, even_route: bool) -> (RootClass, Counts) {
     let Some(n) = f.degree() else { return (RootClass::Deadbeat, Counts::default()) };
     let lowest = f.coeffs().iter().position(|c| !c.is_zero()).unwrap_or(n);
     let g = UPoly::new(f.coeffs()[lowest..].to_vec());
@@ -373,8 +379,35 @@ pub(crate) fn classify_with_counts(f: &UPoly) -> (RootClass, Counts) {
     if g.degree().unwrap_or(0) == 0 {
         return (RootClass::Deadbeat, zero_counts);
     }
-    let sf = g.squarefree();
-    let mut counts = counts_squarefree(&sf);
+    // An even g = F(z²), F(0) ≠ 0 (so g(0) ≠ 0): the roots of g are the
+    // ±√w for the roots w of F, |z|² = |w|, with w's multiplicity, so the
+    // counts are F's doubled and a repeated root on the circle is one of
+    // F's. The dominant roots: a complex or negative w gives complex z,
+    // and a positive w the real pair ±√w of equal modulus (alternating:
+    // the rule for a tie of z and −z below).
+    let (base, kind, mut counts) = match g.even_part().filter(|_| even_route) {
+        Some(big_f) => {
+            let sf = big_f.squarefree();
+            let c = match sf.degree() {
+                Some(2) => quadratic_counts(&sf),
+                _ => counts_squarefree(&sf),
+            };
+            let kind = dominant_kind(&sf).map(|k| {
+                if k == Kind::Positive {
+                    Kind::Negative
+                } else {
+                    Kind::Complex
+                }
+            });
+            let counts = Counts { inside: 2 * c.inside, on: 2 * c.on, outside: 2 * c.outside };
+            (big_f, kind, counts)
+        }
+        None => {
+            let sf = g.squarefree();
+            let counts = counts_squarefree(&sf);
+            (g.clone(), dominant_kind(&sf), counts)
+        }
+    };
     counts.inside += zero_counts.inside;
     let rho = if counts.outside > 0 {
         Ordering::Greater
@@ -383,12 +416,12 @@ pub(crate) fn classify_with_counts(f: &UPoly) -> (RootClass, Counts) {
     } else {
         Ordering::Less
     };
-    let kind = match dominant_kind(&sf) {
+    let kind = match kind {
         Some(k) => k,
         None => return (classify_roots_by_products(&g), counts),
     };
     let repeated_on = || {
-        let d = g.gcd(&g.derivative());
+        let d = base.gcd(&base.derivative());
         d.degree().unwrap_or(0) > 0 && circle_counts(&d).on > 0
     };
     let (stable, on, unstable) = match kind {
@@ -812,6 +845,32 @@ mod tests {
             };
             let f = f.scale(&Q::from_integer(scale.into()));
             prop_assert_eq!(quadratic_counts(&f), circle_counts(&f));
+        }
+    }
+
+    proptest! {
+        /// The class and counts of an even z^k·F(z²) read from F agree
+        /// with the general route on z, for products of small factors
+        /// (roots at ±1 and ±i, on the circle, repeated, ties of moduli).
+        #[test]
+        fn even_route_matches_the_general_route(
+            factors in proptest::collection::vec((-4i64..=4, -4i64..=4, 0i64..=2), 1..4),
+            repeat in proptest::bool::ANY,
+            shift in 0usize..3,
+        ) {
+            let mut big_f = UPoly::from_ints(&[1]);
+            for &(c0, c1, c2) in &factors {
+                big_f = &big_f * &UPoly::from_ints(&[c0, c1, c2]);
+            }
+            if repeat {
+                let (c0, c1, c2) = factors[0];
+                big_f = &big_f * &UPoly::from_ints(&[c0, c1, c2]);
+            }
+            prop_assume!(big_f.degree().unwrap_or(0) > 0);
+            let mut c = vec![Q::zero(); shift];
+            c.extend(big_f.spread().coeffs().iter().cloned());
+            let f = UPoly::new(c);
+            prop_assert_eq!(classify_counts(&f, true), classify_counts(&f, false));
         }
     }
 
