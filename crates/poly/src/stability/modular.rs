@@ -846,12 +846,40 @@ pub(crate) fn rational_root_bound(f: &[BigInt]) -> Option<usize> {
 /// first, each an integer polynomial in Φ, the last one non-zero). Computed
 /// in u = Φ² when every coefficient is even in Φ (see [`det`]).
 pub(crate) fn resultant(f: &[UPoly], g: &[UPoly]) -> UPoly {
+    if g.len() == 2 {
+        return resultant_with_linear(f, g);
+    }
+    if f.len() == 2 {
+        // Res(f, g) = (−1)^(deg f·deg g) Res(g, f).
+        let r = resultant_with_linear(g, f);
+        return if g.len() % 2 == 0 { r.scale(&-Q::one()) } else { r };
+    }
     if all_even(f.iter().chain(g)) && f.iter().chain(g).any(|e| e.degree().unwrap_or(0) > 0) {
         let (fh, gh): (Vec<UPoly>, Vec<UPoly>) =
             (f.iter().map(halve).collect(), g.iter().map(halve).collect());
         return unhalve(&resultant_direct(&fh, &gh));
     }
     resultant_direct(f, g)
+}
+
+/// Res(f, g) for a linear g = g₀ + g₁z, Sylvester's determinant expanded
+/// along its one row of g per column: (−1)^m Σ_k f_k·(−g₀)^k·g₁^(m−k)
+/// (m = deg f; f_m·∏ g(α_i) when f_m ≠ 0), by a homogeneous Horner scheme:
+/// no primes, no bounds.
+fn resultant_with_linear(f: &[UPoly], g: &[UPoly]) -> UPoly {
+    let m = f.len() - 1;
+    let neg_g0 = -&g[0];
+    let mut acc = f[m].clone();
+    let mut g1_power = UPoly::constant(Q::one());
+    for k in (0..m).rev() {
+        g1_power = &g1_power * &g[1];
+        acc = &(&acc * &neg_g0) + &(&f[k] * &g1_power);
+    }
+    if m % 2 == 1 {
+        acc.scale(&-Q::one())
+    } else {
+        acc
+    }
 }
 
 fn resultant_direct(f: &[UPoly], g: &[UPoly]) -> UPoly {
@@ -1215,6 +1243,25 @@ mod tests {
         let d = det(&m);
         assert_eq!(d, det_direct(&m));
         assert!(d.degree().unwrap_or(0) >= 4, "{d:?}");
+    }
+
+    proptest::proptest! {
+        /// The closed form with a linear factor equals the modular
+        /// Sylvester determinant, either side linear, even or not in Φ.
+        #[test]
+        fn linear_resultant_matches_the_modular_one(
+            f in proptest::collection::vec(proptest::collection::vec(-6i64..=6, 1..4), 1..6),
+            g in proptest::collection::vec(-6i64..=6, 1..4),
+            g1 in proptest::collection::vec(-6i64..=6, 1..4),
+            flip in proptest::bool::ANY,
+        ) {
+            let mut f: Vec<UPoly> = f.iter().map(|c| up(c)).collect();
+            f.push(up(&[2, 0, 1]));
+            let g = vec![up(&g), up(&g1)];
+            proptest::prop_assume!(!g[1].is_zero());
+            let (a, b) = if flip { (g, f) } else { (f, g) };
+            proptest::prop_assert_eq!(resultant(&a, &b), resultant_direct(&a, &b));
+        }
     }
 
     #[test]
