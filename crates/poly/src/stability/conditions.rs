@@ -152,11 +152,16 @@ pub(crate) fn unit_circle_condition(a: &[UPoly]) -> UPoly {
     modular::det(&rows)
 }
 
-/// The discriminant of χ in z, up to a non-zero constant.
+/// The discriminant of χ in z, up to a non-zero constant; for an even χ
+/// with a constant a_n, a polynomial with the same roots in Φ (see
+/// [`even_discriminant`]).
 pub(crate) fn discriminant(a: &[UPoly]) -> UPoly {
     let n = a.len() - 1;
     if n < 2 {
         return UPoly::constant(Q::one());
+    }
+    if let Some(d) = even_discriminant(a) {
+        return d;
     }
     if n == 2 {
         let (c, b, a) = (&a[0], &a[1], &a[2]);
@@ -169,6 +174,25 @@ pub(crate) fn discriminant(a: &[UPoly]) -> UPoly {
         return res.scale(&(Q::one() / a[n].coeff(0)));
     }
     res.div_rem(&a[n]).0
+}
+
+/// For an even χ(z) = F(z²) of degree n ≥ 4 with a constant a_n: the
+/// roots ±√w_i give Disc_z χ = c·F(0)·(Disc F)² (the pairs ±√w_i differ by
+/// 2√w_i, and each pair i < j contributes (w_i − w_j)² twice), so
+/// a₀·Disc F has its roots in Φ, at half the degree in z. Only the roots
+/// matter: the discriminant is a condition (its positive roots) and a test
+/// of vanishing at a point.
+fn even_discriminant(a: &[UPoly]) -> Option<UPoly> {
+    let n = a.len() - 1;
+    let even = n >= 4
+        && n % 2 == 0
+        && a[n].degree() == Some(0)
+        && a.iter().skip(1).step_by(2).all(UPoly::is_zero);
+    if !even {
+        return None;
+    }
+    let big_f: Vec<UPoly> = a.iter().step_by(2).cloned().collect();
+    Some(integer_scaled(&[&a[0] * &discriminant(&big_f)]).remove(0))
 }
 
 /// Ties r = −s between roots: Res_y(E, O) with χ(z) = E(z²) + z·O(z²).
@@ -617,6 +641,36 @@ mod tests {
             prop_assert_eq!(closed.is_zero(), general.is_zero());
             if !closed.is_zero() {
                 prop_assert_eq!(closed.squarefree(), general.squarefree());
+            }
+        }
+    }
+
+    proptest! {
+        /// An even χ's discriminant through F has the roots of the
+        /// resultant Res(χ, χ′) (the same square-free part), degrees 4
+        /// and 6 in z.
+        #[test]
+        fn even_discriminant_has_the_roots_of_the_resultant(
+            c in proptest::collection::vec(proptest::collection::vec(-4i64..=4, 1..3), 2..4),
+            lead in 1i64..=3,
+        ) {
+            let mut a = Vec::new();
+            for v in &c {
+                a.push(UPoly::from_ints(v));
+                a.push(UPoly::zero());
+            }
+            a.push(UPoly::from_ints(&[lead]));
+            let even = even_discriminant(&a).expect("even, constant a_n");
+            let d: Vec<UPoly> = a
+                .iter()
+                .enumerate()
+                .skip(1)
+                .map(|(k, c)| c.scale(&Q::from_integer(k.into())))
+                .collect();
+            let general = modular::resultant(&integer_scaled(&a), &integer_scaled(&d));
+            prop_assert_eq!(even.is_zero(), general.is_zero());
+            if !even.is_zero() {
+                prop_assert_eq!(even.squarefree(), general.squarefree());
             }
         }
     }
