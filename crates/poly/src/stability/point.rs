@@ -447,6 +447,37 @@ fn classify_counts(f: &UPoly, even_route: bool) -> (RootClass, Counts) {
 /// Which kind of root has the largest modulus; `None` when a bracket does
 /// not separate (a tie between a real root and a complex pair).
 fn dominant_kind(sf: &UPoly) -> Option<Kind> {
+    match sf.degree() {
+        Some(1 | 2) => Some(small_dominant_kind(sf)),
+        _ => dominant_kind_by_brackets(sf),
+    }
+}
+
+/// [`dominant_kind`] of a square-free `sf` of degree 1 or 2 with sf(0) ≠ 0,
+/// from signs: the root −c₀/c₁; no real root (complex); or real roots
+/// r₁ < r₂ whose sum −c₁/c₂ says which is larger in modulus (a tie
+/// r₁ = −r₂ counts as negative, as in the general route).
+fn small_dominant_kind(sf: &UPoly) -> Kind {
+    let c = crate::upoly::int_primitive(sf);
+    let same_sign = |x: &BigInt, y: &BigInt| x.sign() == y.sign();
+    if c.len() == 2 {
+        return if same_sign(&c[0], &c[1]) { Kind::Negative } else { Kind::Positive };
+    }
+    let disc = &c[1] * &c[1] - ((&c[0] * &c[2]) << 2u32);
+    if disc.is_negative() {
+        return Kind::Complex;
+    }
+    // r₁ + r₂ = −c₁/c₂ > 0 exactly when c₁, c₂ differ in sign.
+    if !c[1].is_zero() && !same_sign(&c[1], &c[2]) {
+        Kind::Positive
+    } else {
+        Kind::Negative
+    }
+}
+
+/// [`dominant_kind`] by isolating the real roots and bracketing the
+/// largest modulus among them.
+fn dominant_kind_by_brackets(sf: &UPoly) -> Option<Kind> {
     let n = sf.degree().expect("non-constant");
     let (reals, ends) = Algebraic::extreme_real_roots(sf);
     let Some((bottom, top)) = ends.as_ref() else {
@@ -845,6 +876,21 @@ mod tests {
             };
             let f = f.scale(&Q::from_integer(scale.into()));
             prop_assert_eq!(quadratic_counts(&f), circle_counts(&f));
+        }
+    }
+
+    proptest! {
+        /// The dominant kind of a square-free linear or quadratic
+        /// polynomial from signs agrees with the brackets' route.
+        #[test]
+        fn small_dominant_kind_matches_the_brackets(
+            c in proptest::collection::vec(-9i64..=9, 2..4),
+        ) {
+            let f = UPoly::from_ints(&c);
+            prop_assume!(f.degree().unwrap_or(0) > 0 && !f.coeff(0).is_zero());
+            let sf = f.squarefree();
+            prop_assume!(sf.degree() == f.degree());
+            prop_assert_eq!(Some(small_dominant_kind(&sf)), dominant_kind_by_brackets(&sf));
         }
     }
 
