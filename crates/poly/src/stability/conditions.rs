@@ -399,7 +399,17 @@ fn pseudo_div(f: &[UPoly], g: &[UPoly]) -> (ZPoly, ZPoly) {
 
 /// The primitive gcd of two polynomials in Q[Φ][z] (primitive PRS).
 pub(crate) fn gcd_z(f: &[UPoly], g: &[UPoly]) -> ZPoly {
-    let (mut a, mut b) = (primitive(trim(f.to_vec())), primitive(trim(g.to_vec())));
+    let (a, b) = (primitive(trim(f.to_vec())), primitive(trim(g.to_vec())));
+    // f = ±g up to content (χ and a palindromic reverse): the sequence
+    // below would stop after one remainder with b.
+    if a.len() == b.len() && (a == b || a.iter().zip(&b).all(|(x, y)| *x == -y)) {
+        return b;
+    }
+    gcd_prs(a, b)
+}
+
+/// The primitive remainder sequence of two primitive polynomials.
+fn gcd_prs(mut a: ZPoly, mut b: ZPoly) -> ZPoly {
     if a.len() < b.len() {
         std::mem::swap(&mut a, &mut b);
     }
@@ -507,7 +517,8 @@ fn deflated_value_at_z(a: &[UPoly], s: &Q) -> UPoly {
 fn reciprocal_conditions(a: &[UPoly]) -> Vec<(Condition, UPoly)> {
     let rev: Vec<UPoly> = a.iter().rev().cloned().collect();
     let mut g = gcd_z(a, &rev);
-    let h = exact_div_z(a, &g);
+    // g of χ's own degree: the cofactor is constant (χ self-reciprocal).
+    let h = if g.len() == a.len() { Vec::new() } else { exact_div_z(a, &g) };
     let mut out = Vec::new();
     if h.len() >= 3 {
         let c = unit_circle_condition(&h);
@@ -642,6 +653,23 @@ mod tests {
             if !closed.is_zero() {
                 prop_assert_eq!(closed.squarefree(), general.squarefree());
             }
+        }
+    }
+
+    proptest! {
+        /// gcd_z of f and a multiple c·f (c = ±1, ±2, or a polynomial in
+        /// Φ: content removed) is the remainder sequence's answer.
+        #[test]
+        fn gcd_of_a_multiple_is_the_remainder_sequence(
+            c in proptest::collection::vec(proptest::collection::vec(-4i64..=4, 1..3), 2..5),
+            k in proptest::sample::select(vec![vec![1i64], vec![-1], vec![2], vec![-3], vec![1, 1]]),
+        ) {
+            let f: Vec<UPoly> = c.iter().map(|v| UPoly::from_ints(v)).collect();
+            prop_assume!(!f.last().unwrap().is_zero());
+            let m = UPoly::from_ints(&k);
+            let g: Vec<UPoly> = f.iter().map(|x| x * &m).collect();
+            let slow = gcd_prs(primitive(f.clone()), primitive(g.clone()));
+            prop_assert_eq!(gcd_z(&f, &g), slow);
         }
     }
 
