@@ -185,7 +185,7 @@ pub(crate) fn discriminant(a: &[UPoly]) -> UPoly {
 fn even_discriminant(a: &[UPoly]) -> Option<UPoly> {
     let n = a.len() - 1;
     let even = n >= 4
-        && n % 2 == 0
+        && n.is_multiple_of(2)
         && a[n].degree() == Some(0)
         && a.iter().skip(1).step_by(2).all(UPoly::is_zero);
     if !even {

@@ -852,7 +852,7 @@ pub(crate) fn resultant(f: &[UPoly], g: &[UPoly]) -> UPoly {
     if f.len() == 2 {
         // Res(f, g) = (−1)^(deg f·deg g) Res(g, f).
         let r = resultant_with_linear(g, f);
-        return if g.len() % 2 == 0 { r.scale(&-Q::one()) } else { r };
+        return if g.len().is_multiple_of(2) { r.scale(&-Q::one()) } else { r };
     }
     if all_even(f.iter().chain(g)) && f.iter().chain(g).any(|e| e.degree().unwrap_or(0) > 0) {
         let (fh, gh): (Vec<UPoly>, Vec<UPoly>) =
