@@ -187,6 +187,8 @@ fn run(chi: &Charpoly, p: Option<StepMatrix<'_>>, charpoly: Option<&Poly>) -> St
 
     // Boundedness exactly at every point next to a bounded interval.
     // The discriminant is one of the conditions already (computed once).
+    // Only its roots may be used: for an even χ it is a₀·Disc F, with the
+    // discriminant's roots but not its multiplicities or sign.
     let disc = conditions
         .iter()
         .find(|(name, _)| *name == Condition::Discriminant)
