@@ -705,57 +705,6 @@ mod tests {
     use super::*;
     use proptest::prelude::*;
 
-    /// Bisection over Q, one reduced fraction per step: the definition
-    /// `refine_int` must reproduce.
-    fn bisect_rational(ip: &IntPoly, lo: &Q, hi: &Q, width: &Q) -> (Q, Q) {
-        let (mut lo, mut hi) = (lo.clone(), hi.clone());
-        let two = Q::from_integer(2.into());
-        let s_lo = ip.sign_at(&lo);
-        while &hi - &lo > *width {
-            let mid = (&lo + &hi) / &two;
-            let s = ip.sign_at(&mid);
-            if s == Ordering::Equal {
-                return (mid.clone(), mid);
-            }
-            if s == s_lo {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-        }
-        (lo, hi)
-    }
-
-    proptest! {
-        #![proptest_config(ProptestConfig::with_cases(64))]
-        /// `refine_int` equals bisection over Q where the roots and the
-        /// interval ends are large (2^40 and more): the `i128` path
-        /// overflows part-way and falls back to `BigInt`, or never fits.
-        #[test]
-        fn refinement_with_large_ends_is_bisection(
-            roots in proptest::collection::vec((-(1i64 << 40)..(1i64 << 40), 1i64..(1 << 20)), 1..4),
-            pick in 0usize..4,
-            halvings in 0u32..70,
-            huge in proptest::bool::ANY,
-        ) {
-            let mut f = UPoly::from_ints(&[1, 0, 3]);
-            for &(a, b) in &roots {
-                f = &f * &UPoly::from_ints(&[-a, b]);
-            }
-            if huge {
-                f = &f * &UPoly::from_ints(&[i64::MAX / 3, 1]);
-            }
-            let sf = f.squarefree();
-            let intervals = isolate_real_roots(&sf);
-            let (lo, hi) = intervals[pick % intervals.len()].clone();
-            prop_assume!(lo != hi);
-            let ip = IntPoly::new(&sf);
-            let width = (&hi - &lo) / Q::from_integer(BigInt::one() << halvings)
-                * Q::new(3.into(), 5.into());
-            prop_assert_eq!(refine_int(&ip, &lo, &hi, &width), bisect_rational(&ip, &lo, &hi, &width));
-        }
-    }
-
     proptest! {
         /// The shift agrees with composing with x + 1, and Descartes' proof
         /// of "no positive root" agrees with the Sturm count.

@@ -333,6 +333,32 @@ proptest! {
         }
     }
 
+    /// The same where the roots and the interval ends are large (2^40 and
+    /// more): the `i128` bisection overflows part-way and falls back to
+    /// `BigInt`, or never fits.
+    #[test]
+    fn refinement_with_large_ends_equals_bisection(
+        roots in proptest::collection::vec((-(1i64 << 40)..(1i64 << 40), 1i64..(1 << 20)), 1..4),
+        pick in 0usize..4,
+        halvings in 0u32..70,
+        huge in proptest::bool::ANY,
+    ) {
+        let mut p = UPoly::from_ints(&[1, 0, 3]);
+        for &(a, b) in &roots {
+            p = &p * &UPoly::from_ints(&[-a, b]);
+        }
+        if huge {
+            p = &p * &UPoly::from_ints(&[i64::MAX / 3, 1]);
+        }
+        let sf = p.squarefree();
+        let intervals = isolate_real_roots(&sf);
+        let (lo, hi) = intervals[pick % intervals.len()].clone();
+        prop_assume!(lo != hi);
+        let width = (&hi - &lo) / Q::from_integer(num_bigint::BigInt::from(1) << halvings) * q(3, 5);
+        let fast = poly::sturm::refine_interval(&sf, &lo, &hi, &width);
+        prop_assert_eq!(fast, bisect_oracle(&sf, &lo, &hi, &width));
+    }
+
     /// Comparisons across different polynomials agree with isolating the
     /// product: the merged, deduplicated roots of p and q are the roots of
     /// p·q, in the same order.
