@@ -184,15 +184,16 @@ pub(crate) fn discriminant(a: &[UPoly]) -> UPoly {
 /// of vanishing at a point.
 fn even_discriminant(a: &[UPoly]) -> Option<UPoly> {
     let n = a.len() - 1;
-    let even = n >= 4
-        && n.is_multiple_of(2)
-        && a[n].degree() == Some(0)
-        && a.iter().skip(1).step_by(2).all(UPoly::is_zero);
-    if !even {
+    if n < 4 || !even_in_z(a) || a[n].degree() != Some(0) {
         return None;
     }
     let big_f: Vec<UPoly> = a.iter().step_by(2).cloned().collect();
     Some(integer_scaled(&[&a[0] * &discriminant(&big_f)]).remove(0))
+}
+
+/// Whether χ has only even powers of z and even degree: χ = F(z²).
+fn even_in_z(a: &[UPoly]) -> bool {
+    a.len() % 2 == 1 && a.iter().skip(1).step_by(2).all(UPoly::is_zero)
 }
 
 /// Ties r = −s between roots: Res_y(E, O) with χ(z) = E(z²) + z·O(z²).
@@ -247,8 +248,7 @@ pub(crate) fn pair_tie(a: &[UPoly]) -> Option<UPoly> {
 /// roots and where it vanishes), so a₀·a₂·(a₂² − 4a₀a₄) is returned: the
 /// same roots without the multiplicities.
 fn even_quartic_pair_tie(a: &[UPoly]) -> Option<UPoly> {
-    let even = a.len() == 5 && a[1].is_zero() && a[3].is_zero() && a[4].degree() == Some(0);
-    if !even {
+    if a.len() != 5 || !even_in_z(a) || a[4].degree() != Some(0) {
         return None;
     }
     let d = &(&a[2] * &a[2]) - &(&a[0] * &a[4]).scale(&Q::from_integer(4.into()));

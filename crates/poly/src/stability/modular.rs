@@ -714,17 +714,6 @@ mod small {
     /// they can be read off: degree 0 or 1, or 2 with p ≡ 3 (mod 4) (a
     /// square root is then a power).
     pub(super) fn read_roots(g: &[u64], p: u64) -> Option<Vec<u64>> {
-        let pow = |mut b: u64, mut e: u64| {
-            let mut r = 1u64;
-            while e > 0 {
-                if e & 1 == 1 {
-                    r = r * b % p;
-                }
-                b = b * b % p;
-                e >>= 1;
-            }
-            r
-        };
         match g.len() {
             1 => Some(Vec::new()),
             2 => Some(vec![(p - g[0] * inv(g[1], p) % p) % p]),
@@ -733,7 +722,7 @@ mod small {
                 let (b, c) = (g[1] * li % p, g[0] * li % p);
                 // x = (−b ± √Δ)/2, Δ = b² − 4c a non-zero square.
                 let disc = (b * b % p + p - 4 * c % p) % p;
-                let root = pow(disc, (p + 1) / 4);
+                let root = super::powmod(disc, (p + 1) / 4, p);
                 debug_assert_eq!(root * root % p, disc, "g splits");
                 let half = inv(2, p);
                 let minus_b = (p - b) % p;
@@ -1243,6 +1232,38 @@ mod tests {
         let d = det(&m);
         assert_eq!(d, det_direct(&m));
         assert!(d.degree().unwrap_or(0) >= 4, "{d:?}");
+    }
+
+    proptest::proptest! {
+        /// The roots read off a product of distinct linear factors over
+        /// F_p are its roots: one, or two at a prime p ≡ 3 (mod 4); none
+        /// read at p ≡ 1 (mod 4) for two.
+        #[test]
+        fn roots_read_off_are_the_roots(
+            r1 in 0u64..1_048_507, r2 in 0u64..1_048_507, scale in 1u64..1000, two in proptest::bool::ANY,
+        ) {
+            for p in SMALL_PRIMES {
+                let (r1, r2) = (r1 % p, r2 % p);
+                let linear = vec![(p - r1) * scale % p, scale];
+                let g = if two {
+                    proptest::prop_assume!(r1 != r2);
+                    // scale·(x − r1)(x − r2)
+                    vec![r1 * r2 % p * scale % p, (2 * p - r1 - r2) % p * scale % p, scale]
+                } else {
+                    linear
+                };
+                let read = small::read_roots(&g, p);
+                if two && p % 4 == 1 {
+                    proptest::prop_assert_eq!(read, None);
+                    continue;
+                }
+                let mut read = read.expect("readable");
+                read.sort_unstable();
+                let mut expected = if two { vec![r1, r2] } else { vec![r1] };
+                expected.sort_unstable();
+                proptest::prop_assert_eq!(read, expected, "p = {}", p);
+            }
+        }
     }
 
     proptest::proptest! {
