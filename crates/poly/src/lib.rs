@@ -48,59 +48,48 @@
 //! assert!(e.to_string().starts_with("bad.zm:3:5: nonlinear term"));
 //! ```
 
-mod algebraic;
-mod builtins;
-mod class;
-pub mod cost;
+mod analysis;
+mod arith;
 mod derive;
-pub mod equiv;
 mod error;
-pub mod field;
-pub mod field_stability;
-mod implicit;
-mod intgcd;
-pub mod invariant;
-mod isolate;
-mod matrix;
-mod method;
-mod params;
-mod poly;
-mod rational_roots;
-pub mod region;
-pub mod series;
-pub mod stability;
-pub mod sturm;
-mod sym;
-mod syntax;
+mod lang;
+mod multivariate;
 #[cfg(test)]
 mod testing;
-mod upoly;
+mod univariate;
 
-pub use crate::algebraic::Algebraic;
-pub use crate::builtins::{
-    all_builtin_names, builtin, builtin_names, builtin_source, comparison_builtin_names,
-    damped_builtin_names, direct_twin, paper_builtin_names, BUILTINS, COMPARISON_BUILTINS,
-    DAMPED_BUILTINS, DAMPED_METHODS, IMPLICIT_METHODS, PAPER_METHODS,
+pub use crate::analysis::stability::constants as field_stability;
+pub use crate::analysis::{cost, equiv, invariant, region, series, stability};
+pub use crate::multivariate::constants as field;
+pub use crate::univariate::sturm;
+
+pub use crate::analysis::class::RootClass;
+pub use crate::analysis::cost::{step_cost, OpCount, StepCost};
+pub use crate::derive::implicit::{
+    singular_points, system as implicit_system, System as ImplicitSystem,
 };
-pub use crate::class::RootClass;
-pub use crate::cost::{step_cost, OpCount, StepCost};
 #[doc(hidden)]
-pub use crate::derive::charpoly_z_route_dense;
-pub use crate::derive::{
+pub use crate::derive::routes::charpoly_z_route_dense;
+pub use crate::derive::routes::{
     charpoly, charpoly_state_route, charpoly_z_route, derive, derive_source, transition_matrix, w,
     z_matrix, Derivation,
 };
 pub use crate::error::{show_invisible, Error, ErrorKind, Span};
-pub use crate::implicit::{singular_points, system as implicit_system, System as ImplicitSystem};
-pub use crate::matrix::{PolyMatrix, SparsePolyMatrix};
-pub use crate::method::{
+pub use crate::lang::builtins::{
+    all_builtin_names, builtin, builtin_names, builtin_source, comparison_builtin_names,
+    damped_builtin_names, direct_twin, paper_builtin_names, BUILTINS, COMPARISON_BUILTINS,
+    DAMPED_BUILTINS, DAMPED_METHODS, IMPLICIT_METHODS, PAPER_METHODS,
+};
+pub use crate::lang::method::{
     Assign, Constant, EndValue, Equation, GaussSeidelRead, Method, Operand, Target, Unknown,
 };
-pub use crate::params::Params;
-pub use crate::poly::{Monomial, Poly};
-pub use crate::sym::Sym;
-pub use crate::syntax::parse_number;
-pub use crate::upoly::UPoly;
+pub use crate::lang::params::Params;
+pub use crate::lang::syntax::parse_number;
+pub use crate::multivariate::matrix::{PolyMatrix, SparsePolyMatrix};
+pub use crate::multivariate::poly::{Monomial, Poly};
+pub use crate::multivariate::sym::Sym;
+pub use crate::univariate::algebraic::Algebraic;
+pub use crate::univariate::upoly::UPoly;
 
 /// The one exact scalar type: arbitrary-precision rationals.
 pub type Q = num_rational::BigRational;

@@ -21,8 +21,9 @@
 //! system is singular. The z route (`derive.rs`) reaches the same polynomial
 //! from the equations as written, with no solving.
 
-use crate::method::{EndValue, Method, Operand};
-use crate::{field, Poly, PolyMatrix, Sym};
+use crate::lang::method::{EndValue, Method, Operand};
+use crate::multivariate::constants as field;
+use crate::{Poly, PolyMatrix, Sym};
 
 /// The linear system of an implicit step and its output map.
 #[derive(Clone, Debug, PartialEq, Eq)]

@@ -102,7 +102,7 @@ impl UPoly {
         let mut den = BigInt::one();
         for c in &self.c {
             if !c.denom().is_one() {
-                den = crate::intgcd::lcm(&den, c.denom());
+                den = crate::arith::intgcd::lcm(&den, c.denom());
             }
         }
         let num = self.c.iter().map(|c| c.numer() * (&den / c.denom())).collect();
@@ -192,7 +192,7 @@ impl UPoly {
             return g.shifted_up(i.min(j));
         }
         let (mut a, mut b) = (int_primitive(self), int_primitive(other));
-        if crate::stability::modular::coprime_mod_p(&a, &b) {
+        if crate::univariate::modular::coprime_mod_p(&a, &b) {
             return UPoly::constant(Q::one());
         }
         if a.len() < b.len() {
@@ -388,7 +388,7 @@ impl<'a> Mul<&'a UPoly> for &'a UPoly {
 /// a ± b over the least common denominator, each coefficient reduced once.
 fn combine(a: &UPoly, b: &UPoly, subtract: bool) -> UPoly {
     let ((mut x, dx), (y, dy)) = (a.common_denominator(), b.common_denominator());
-    let den = if dx == dy { dx.clone() } else { crate::intgcd::lcm(&dx, &dy) };
+    let den = if dx == dy { dx.clone() } else { crate::arith::intgcd::lcm(&dx, &dy) };
     let (fx, fy) = (&den / &dx, &den / &dy);
     if !fx.is_one() {
         for c in &mut x {
@@ -420,7 +420,7 @@ pub(crate) fn reduced(n: BigInt, d: BigInt) -> Q {
     if d.is_one() {
         return Q::from_integer(n);
     }
-    let g = crate::intgcd::gcd(&n, &d);
+    let g = crate::arith::intgcd::gcd(&n, &d);
     if g.is_one() {
         Q::new_raw(n, d)
     } else {
@@ -455,7 +455,7 @@ pub(crate) fn divide_linear(c: &[BigInt], r: &Q) -> Vec<BigInt> {
 pub(crate) fn int_primitive(p: &UPoly) -> Vec<BigInt> {
     let mut den = BigInt::one();
     for q in p.coeffs() {
-        den = crate::intgcd::lcm(&den, q.denom());
+        den = crate::arith::intgcd::lcm(&den, q.denom());
     }
     primitive(p.coeffs().iter().map(|q| q.numer() * (&den / q.denom())).collect())
 }
@@ -493,7 +493,7 @@ pub(crate) fn content<'a>(xs: impl IntoIterator<Item = &'a BigInt>) -> BigInt {
         if x.is_zero() {
             continue;
         }
-        g = if g.is_zero() { x.abs() } else { crate::intgcd::gcd(&g, &(x % &g)) };
+        g = if g.is_zero() { x.abs() } else { crate::arith::intgcd::gcd(&g, &(x % &g)) };
         if g.is_one() {
             break;
         }

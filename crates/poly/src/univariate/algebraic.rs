@@ -19,7 +19,7 @@ use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
 
-use crate::sturm::{
+use crate::univariate::sturm::{
     count_real_roots, isolate_squarefree, refine_int, refine_quadratic, sign, IntPoly,
 };
 use crate::{UPoly, Q};
@@ -89,15 +89,15 @@ impl Algebraic {
             // An even F(x²) has a positive root exactly when F has one.
             let zero_free = zero_free.even_part().unwrap_or(zero_free);
             let d = zero_free.degree().unwrap_or(0);
-            if d == 0 || crate::sturm::no_positive_roots(&zero_free, 16) {
+            if d == 0 || crate::univariate::sturm::no_positive_roots(&zero_free, 16) {
                 return Vec::new();
             }
         }
         // Only the positive roots isolated (the same intervals) and made
         // numbers, when every rational root is known without the others.
         let sf = p.squarefree();
-        let budget = crate::isolate::budget(sf.degree().unwrap_or(0));
-        if let Some(intervals) = crate::isolate::isolate(&sf, true, budget) {
+        let budget = crate::univariate::isolate::budget(sf.degree().unwrap_or(0));
+        if let Some(intervals) = crate::univariate::isolate::isolate(&sf, true, budget) {
             if let Some((all, factors)) = even_rational_roots(&sf) {
                 let rational = intervals
                     .iter()
@@ -120,7 +120,7 @@ impl Algebraic {
 
     /// The isolating intervals of the distinct real roots of the
     /// square-free, monic `sf` (those of
-    /// [`crate::sturm::isolate_real_roots`]), with the least and the
+    /// [`crate::univariate::sturm::isolate_real_roots`]), with the least and the
     /// greatest root as numbers (when there is one):
     /// [`Algebraic::real_roots`] without making numbers of the roots in
     /// between.
@@ -271,7 +271,7 @@ impl Algebraic {
                 // out without refining; else the gcd decides.
                 let gi = IntPoly::new(g);
                 gi.sign_on(lo, hi).is_none()
-                    && !crate::stability::modular::coprime_mod_p(ip.coeffs(), gi.coeffs())
+                    && !crate::univariate::modular::coprime_mod_p(ip.coeffs(), gi.coeffs())
                     && (divides(ip, &gi) || vanishes_at_root(poly, lo, hi, g))
             }
         }
@@ -510,7 +510,7 @@ fn sign_at_root(
     }
     // Coprime modulo a prime: g cannot vanish at a root of poly, and the
     // gcd over Q is not needed.
-    if !crate::stability::modular::coprime_mod_p(ip.coeffs(), gi.coeffs())
+    if !crate::univariate::modular::coprime_mod_p(ip.coeffs(), gi.coeffs())
         && (divides(ip, gi) || vanishes_at_root(poly, lo, hi, g))
     {
         return Ordering::Equal;
@@ -539,7 +539,7 @@ fn sign_at_root(
 /// cheaper than the gcd.
 fn divides(ip: &IntPoly, gi: &IntPoly) -> bool {
     gi.coeffs().len() >= ip.coeffs().len()
-        && crate::upoly::prem(gi.coeffs(), ip.coeffs()).0.is_empty()
+        && crate::univariate::upoly::prem(gi.coeffs(), ip.coeffs()).0.is_empty()
 }
 
 /// Whether `g` vanishes at the unique root of the square-free `poly` in
@@ -576,9 +576,9 @@ fn numbers_of(
 /// `sf` freed of its rational roots `all`, in integers (exact synthetic
 /// division), made monic.
 fn without_roots(sf: &UPoly, all: &[Q]) -> UPoly {
-    let mut c = crate::upoly::int_primitive(sf);
+    let mut c = crate::univariate::upoly::int_primitive(sf);
     for r in all {
-        c = crate::upoly::divide_linear(&c, r);
+        c = crate::univariate::upoly::divide_linear(&c, r);
     }
     UPoly::new(c.into_iter().map(Q::from_integer).collect()).monic()
 }
@@ -655,7 +655,9 @@ fn even_rational_roots(f: &UPoly) -> Option<(Vec<Q>, Vec<UPoly>)> {
         return None;
     }
     let big_f = UPoly::new(f.coeffs()[k..].to_vec()).even_part()?;
-    let ys = crate::rational_roots::rational_roots(&crate::upoly::int_primitive(&big_f))?;
+    let ys = crate::univariate::rational_roots::rational_roots(
+        &crate::univariate::upoly::int_primitive(&big_f),
+    )?;
     let mut roots = if k == 1 { vec![Q::zero()] } else { Vec::new() };
     let mut factors = Vec::new();
     for y in ys {
@@ -692,9 +694,9 @@ fn even_rational_factors(f: &UPoly) -> Vec<UPoly> {
     let zero_free = UPoly::new(big_f.coeffs()[lowest..].to_vec());
     let mut ys = if zero_free.degree().unwrap_or(0) == 0 {
         Vec::new()
-    } else if let Some(ys) =
-        crate::rational_roots::rational_roots(&crate::upoly::int_primitive(&zero_free))
-    {
+    } else if let Some(ys) = crate::univariate::rational_roots::rational_roots(
+        &crate::univariate::upoly::int_primitive(&zero_free),
+    ) {
         ys
     } else {
         let intervals = isolate_squarefree(&big_f);
@@ -750,9 +752,9 @@ fn reduce_irrational_with(
 /// The rational root in each isolating interval of the square-free `f`, if
 /// any (the intervals may be a subset of f's). Roots met exactly by
 /// bisection come first; then every rational root, by p-adic lifting
-/// ([`crate::rational_roots::rational_roots`]). Only when no prime suits
+/// ([`crate::univariate::rational_roots::rational_roots`]). Only when no prime suits
 /// the lifting: when a prime bound
-/// ([`crate::stability::modular::rational_root_bound`]) allows more roots,
+/// ([`crate::univariate::modular::rational_root_bound`]) allows more roots,
 /// the simplest rational of a narrowed interval is tried in each, and if
 /// that finds fewer than the bound the slow, complete search runs.
 fn rational_roots(f: &UPoly, intervals: &[(Q, Q)]) -> (Vec<Option<Q>>, Option<Vec<Q>>) {
@@ -776,9 +778,9 @@ fn rational_roots(f: &UPoly, intervals: &[(Q, Q)]) -> (Vec<Option<Q>>, Option<Ve
         return (out, Some(zero));
     }
     // Every rational root, by p-adic lifting, placed in its interval.
-    if let Some(roots) =
-        crate::rational_roots::rational_roots(&crate::upoly::int_primitive(&zero_free))
-    {
+    if let Some(roots) = crate::univariate::rational_roots::rational_roots(
+        &crate::univariate::upoly::int_primitive(&zero_free),
+    ) {
         for r in &roots {
             // (The intervals may be a subset of the isolation: `reduce`
             // asks about one.)
@@ -794,8 +796,9 @@ fn rational_roots(f: &UPoly, intervals: &[(Q, Q)]) -> (Vec<Option<Q>>, Option<Ve
         return (out, Some(all));
     }
     let found_nonzero = out.iter().flatten().filter(|r| !r.is_zero()).count();
-    let bound =
-        crate::stability::modular::rational_root_bound(&crate::upoly::int_primitive(&zero_free));
+    let bound = crate::univariate::modular::rational_root_bound(
+        &crate::univariate::upoly::int_primitive(&zero_free),
+    );
     if bound == Some(found_nonzero) {
         return (out, None);
     }
@@ -847,13 +850,13 @@ fn rational_root_in(f: &UPoly, ip: &IntPoly, lo: &Q, hi: &Q) -> Option<Q> {
 fn integer_leading(f: &UPoly) -> BigInt {
     let mut den = BigInt::one();
     for c in f.coeffs() {
-        den = crate::intgcd::lcm(&den, c.denom());
+        den = crate::arith::intgcd::lcm(&den, c.denom());
     }
     let ints: Vec<BigInt> =
         f.coeffs().iter().map(|c| (c * Q::from_integer(den.clone())).to_integer()).collect();
     let mut g = BigInt::zero();
     for i in &ints {
-        g = crate::intgcd::gcd(&g, i);
+        g = crate::arith::intgcd::gcd(&g, i);
     }
     (ints.last().cloned().unwrap_or_else(BigInt::one) / g).abs()
 }
@@ -1079,8 +1082,12 @@ mod tests {
         let quad =
             UPoly::new(vec![Q::from_integer(&a * &b), Q::from_integer(-(&a + &b)), Q::one()]);
         let f = &quad * &UPoly::from_ints(&[-2, 0, 1]);
-        let ints = crate::upoly::int_primitive(&f);
-        assert_eq!(crate::rational_roots::rational_roots(&ints), None, "no prime suits");
+        let ints = crate::univariate::upoly::int_primitive(&f);
+        assert_eq!(
+            crate::univariate::rational_roots::rational_roots(&ints),
+            None,
+            "no prime suits"
+        );
         let roots = Algebraic::real_roots(&f);
         let rational: Vec<Q> = roots.iter().filter_map(|r| r.as_rational().cloned()).collect();
         assert_eq!(rational, vec![Q::from_integer(a), Q::from_integer(b)]);

@@ -117,7 +117,7 @@ impl Poly {
     /// # Ok::<(), poly::Error>(())
     /// ```
     pub fn parse(src: &str) -> Result<Poly, crate::Error> {
-        crate::syntax::parse_poly(src).map_err(|e| e.located("<expression>", src))
+        crate::lang::syntax::parse_poly(src).map_err(|e| e.located("<expression>", src))
     }
 
     /// The zero polynomial, as a constant.

@@ -10,7 +10,7 @@
 //!   a_n … a_2, Y the lower-right triangular Toeplitz of a_0 … a_{n−2}); it is
 //!   the square root of Res_z(χ, z^n χ(1/z)) / (χ(1) χ(−1)), so it carries the
 //!   same roots at half the degree. It is computed by modular evaluation and
-//!   interpolation ([`super::modular`]).
+//!   interpolation ([`crate::univariate::modular`]).
 //!
 //! When that product vanishes identically (a self-reciprocal factor:
 //! symplectic methods keep roots on the circle for a whole Φ-interval), the
@@ -35,8 +35,8 @@ use num_traits::One;
 use crate::error::{Error, ErrorKind};
 use crate::{Poly, Sym, UPoly, Q};
 
-use super::modular;
 use super::Condition;
+use crate::univariate::modular;
 
 /// χ split into its coefficients in z, each an integer polynomial in Φ.
 #[derive(Clone, Debug)]
@@ -125,7 +125,7 @@ pub(crate) fn integer_scaled(a: &[UPoly]) -> Vec<UPoly> {
     let mut den = BigInt::one();
     for c in a {
         for q in c.coeffs() {
-            den = crate::intgcd::lcm(&den, q.denom());
+            den = crate::arith::intgcd::lcm(&den, q.denom());
         }
     }
     let s = Q::from_integer(den);

@@ -1,7 +1,7 @@
 //! Real-root isolation by Descartes' rule of signs, returning the very
 //! intervals of Sturm bisection.
 //!
-//! [`crate::sturm`] isolates the real roots of a square-free f by bisecting
+//! [`crate::univariate::sturm`] isolates the real roots of a square-free f by bisecting
 //! (−B, B] (B a power of two above every root) and counting roots in each
 //! half with the Sturm chain, whose remainders grow to numbers of thousands
 //! of bits on the stability conditions. Its intervals are part of every
@@ -22,7 +22,7 @@
 //!    located root answers "are you below x" with at most one sign of f,
 //!    narrowing its interval for the next question.
 //!
-//! The result is identical to [`crate::sturm::isolate_squarefree_sturm`]
+//! The result is identical to [`crate::univariate::sturm::isolate_squarefree_sturm`]
 //! (a property test holds the two together). Descartes' bisection is slow
 //! where complex roots crowd the real axis; past a budget of parts it gives
 //! up (`None`) and the caller runs the Sturm chain.
@@ -32,7 +32,7 @@ use std::cmp::Ordering;
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
 
-use crate::sturm::{root_bound, sign_changes, taylor_shift_one, CmpZero, IntPoly};
+use crate::univariate::sturm::{root_bound, sign_changes, taylor_shift_one, CmpZero, IntPoly};
 use crate::{UPoly, Q};
 
 /// A real root of f as the replay sees it.
@@ -128,7 +128,7 @@ pub(crate) fn budget(degree: usize) -> usize {
 /// when Descartes' bisection needs more than `budget` parts on a side.
 pub(crate) fn isolate(sf: &UPoly, positive_only: bool, budget: usize) -> Option<Vec<(Q, Q)>> {
     let b = root_bound(sf);
-    let c = crate::upoly::int_primitive(sf);
+    let c = crate::univariate::upoly::int_primitive(sf);
     let lowest = c.iter().position(|x| !x.is_zero()).expect("non-zero");
     // f without its root at zero (square-free: at most a simple one).
     let g = &c[lowest..];
@@ -339,7 +339,7 @@ fn strip_twos(mut c: Vec<BigInt>) -> Vec<BigInt> {
     c
 }
 
-/// Sturm's bisection ([`crate::sturm::isolate_squarefree_sturm`]) replayed
+/// Sturm's bisection ([`crate::univariate::sturm::isolate_squarefree_sturm`]) replayed
 /// on located roots.
 struct Replay<'a> {
     located: &'a Located,
@@ -443,7 +443,7 @@ impl Replay<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::sturm::{count_real_roots, isolate_squarefree_sturm};
+    use crate::univariate::sturm::{count_real_roots, isolate_squarefree_sturm};
     use proptest::prelude::*;
 
     /// The full isolation and the positive one against Sturm's bisection,

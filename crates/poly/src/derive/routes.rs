@@ -21,12 +21,12 @@
 //! one determinant of the size of the state: route (a)'s is a pencil
 //! B₀ + w·B₁ in w and the parameters, route (b)'s a characteristic
 //! polynomial in the parameters, both taken by the modular path of
-//! [`crate::matrix`] (evaluation modulo primes, interpolation, CRT) unless
+//! [`crate::multivariate::matrix`] (evaluation modulo primes, interpolation, CRT) unless
 //! the dense `i128` Berkowitz finishes first. [`charpoly_z_route_dense`]
 //! keeps the old, quadratic route (a) as the tests' oracle.
 
 use crate::error::{Error, ErrorKind, Span};
-use crate::method::{EndValue, Method, Operand};
+use crate::lang::method::{EndValue, Method, Operand};
 use crate::{Poly, PolyMatrix, SparsePolyMatrix, Sym};
 
 /// Everything derived from one method.
@@ -343,7 +343,7 @@ fn charpoly_from_z_matrix(m: &Method, mat: &SparsePolyMatrix) -> Result<Poly, Er
         None => det_z_matrix_dense(mat.to_dense(), &kept),
     };
     if !m.constants().is_empty() {
-        det = crate::field::reduce(&det);
+        det = crate::multivariate::constants::reduce(&det);
     }
     charpoly_from_det(m, &det)
 }
@@ -368,8 +368,8 @@ fn charpoly_from_det(m: &Method, det: &Poly) -> Result<Poly, Error> {
 /// implicit method, d·P with d = det A: see `implicit.rs`).
 pub fn transition_matrix(m: &Method) -> PolyMatrix {
     if m.is_implicit() {
-        let sys = crate::implicit::system(m);
-        return crate::implicit::transition_fraction(m, &sys).0;
+        let sys = crate::derive::implicit::system(m);
+        return crate::derive::implicit::transition_fraction(m, &sys).0;
     }
     let slots = m.slots();
     let n = slots.len();
@@ -477,15 +477,15 @@ pub fn derive(method: &Method) -> Result<Derivation, Error> {
     let z_matrix = z_matrix(method);
     let a = charpoly_from_z_matrix(method, &z_matrix)?;
     let (transition_matrix, p_denominator, b) = if method.is_implicit() {
-        let sys = crate::implicit::system(method);
-        let (p, d) = crate::implicit::transition_fraction(method, &sys);
-        (p, d, crate::implicit::charpoly_pencil(method, &sys))
+        let sys = crate::derive::implicit::system(method);
+        let (p, d) = crate::derive::implicit::transition_fraction(method, &sys);
+        (p, d, crate::derive::implicit::charpoly_pencil(method, &sys))
     } else {
         let mut p = transition_matrix(method);
         let mut b = charpoly_state_route(&p);
         if !method.constants().is_empty() {
-            p = p.map(crate::field::reduce);
-            b = crate::field::reduce(&b);
+            p = p.map(crate::multivariate::constants::reduce);
+            b = crate::multivariate::constants::reduce(&b);
         }
         (p, Poly::one(), b)
     };

@@ -77,11 +77,11 @@ impl IntPoly {
     pub(crate) fn new(p: &UPoly) -> IntPoly {
         let mut den = BigInt::one();
         for q in p.coeffs() {
-            den = crate::intgcd::lcm(&den, q.denom());
+            den = crate::arith::intgcd::lcm(&den, q.denom());
         }
         let mut c: Vec<BigInt> =
             p.coeffs().iter().map(|q| q.numer() * (&den / q.denom())).collect();
-        let g = crate::upoly::content(&c);
+        let g = crate::univariate::upoly::content(&c);
         if !g.is_zero() && !g.is_one() {
             for x in &mut c {
                 *x /= &g;
@@ -180,7 +180,7 @@ impl IntPoly {
                 }
             }
         }
-        let q = crate::intgcd::lcm(lo.denom(), hi.denom());
+        let q = crate::arith::intgcd::lcm(lo.denom(), hi.denom());
         let a = lo.numer() * (&q / lo.denom());
         let b = hi.numer() * (&q / hi.denom());
         let (mut l, mut u) = (self.c[n].clone(), self.c[n].clone());
@@ -242,20 +242,20 @@ fn chain(p: &UPoly) -> Vec<IntPoly> {
 }
 
 fn chain_squarefree(sf: &UPoly) -> Vec<IntPoly> {
-    let a = crate::upoly::int_primitive(sf);
-    let mut b = crate::upoly::int_primitive(&sf.derivative());
+    let a = crate::univariate::upoly::int_primitive(sf);
+    let mut b = crate::univariate::upoly::int_primitive(&sf.derivative());
     let mut seq = vec![IntPoly::from_ints(a.clone())];
     let mut a = a;
     while !b.is_empty() {
         // lc(b)^k·a = q·b + r, so −rem(a, b) is a positive multiple of
         // −sign(lc(b))^k·r.
-        let (r, k) = crate::upoly::prem(&a, &b);
+        let (r, k) = crate::univariate::upoly::prem(&a, &b);
         let negative_lead = b.last().is_some_and(|x| x.is_negative());
         let flip = !(negative_lead && k % 2 == 1);
         let next: Vec<BigInt> = if flip { r.into_iter().map(|x| -x).collect() } else { r };
         seq.push(IntPoly::from_ints(b.clone()));
         a = b;
-        b = crate::upoly::primitive(next);
+        b = crate::univariate::upoly::primitive(next);
     }
     seq
 }
@@ -355,7 +355,7 @@ pub fn root_bound(p: &UPoly) -> Q {
 /// Whether `p` (p(0) ≠ 0) provably has no root in (0, ∞): Descartes' rule
 /// of signs on (0, B) (B a power of two above every root's modulus) and on
 /// the halves of any part where the rule counts two or more sign changes,
-/// up to `budget` parts ([`crate::isolate`]'s bisection, stopped at the
+/// up to `budget` parts ([`crate::univariate::isolate`]'s bisection, stopped at the
 /// first root). `false` means "not proven": a part with exactly one sign
 /// change holds a root, and a root at a halving point is seen exactly.
 pub(crate) fn no_positive_roots(p: &UPoly, budget: usize) -> bool {
@@ -364,8 +364,13 @@ pub(crate) fn no_positive_roots(p: &UPoly, budget: usize) -> bool {
         return false;
     }
     // Descartes' bisection starts from Fujiwara's bound (no Cauchy bound).
-    crate::isolate::descartes_isolate(&crate::upoly::int_primitive(p), u64::MAX, true, budget)
-        .is_some_and(|roots| roots.is_empty())
+    crate::univariate::isolate::descartes_isolate(
+        &crate::univariate::upoly::int_primitive(p),
+        u64::MAX,
+        true,
+        budget,
+    )
+    .is_some_and(|roots| roots.is_empty())
 }
 
 /// g(x) ↦ g(x + 1) in place (coefficients lowest first), by repeated
@@ -408,18 +413,19 @@ pub fn isolate_real_roots(p: &UPoly) -> Vec<(Q, Q)> {
 /// [`isolate_real_roots`] for a polynomial already square-free (its own
 /// square-free part up to a constant factor): the same intervals, without
 /// recomputing the square-free part. Computed by Descartes' rule and a
-/// replay of the bisection ([`crate::isolate`]); by the Sturm chain only
+/// replay of the bisection ([`crate::univariate::isolate`]); by the Sturm chain only
 /// when the rational roots elude p-adic lifting.
 pub(crate) fn isolate_squarefree(sf: &UPoly) -> Vec<(Q, Q)> {
     if sf.degree().unwrap_or(0) == 0 {
         return Vec::new();
     }
-    let budget = crate::isolate::budget(sf.degree().unwrap_or(0));
-    crate::isolate::isolate(sf, false, budget).unwrap_or_else(|| isolate_squarefree_sturm(sf))
+    let budget = crate::univariate::isolate::budget(sf.degree().unwrap_or(0));
+    crate::univariate::isolate::isolate(sf, false, budget)
+        .unwrap_or_else(|| isolate_squarefree_sturm(sf))
 }
 
 /// [`isolate_squarefree`] by bisection with the Sturm chain's counts: the
-/// definition of the intervals, and the oracle of [`crate::isolate`].
+/// definition of the intervals, and the oracle of [`crate::univariate::isolate`].
 pub(crate) fn isolate_squarefree_sturm(sf: &UPoly) -> Vec<(Q, Q)> {
     if sf.degree().unwrap_or(0) == 0 {
         return Vec::new();
@@ -499,7 +505,7 @@ pub(crate) fn refine_quadratic(ip: &IntPoly, lo: &Q, hi: &Q, width: &Q) -> (Q, Q
     }
     // Integers throughout: a = A/E, b = B/E over one denominator E > 0, and
     // values f(x)·E^n (the same positive factor at every point).
-    let mut e = crate::intgcd::lcm(lo.denom(), hi.denom());
+    let mut e = crate::arith::intgcd::lcm(lo.denom(), hi.denom());
     let mut a = lo.numer() * (&e / lo.denom());
     let mut b = hi.numer() * (&e / hi.denom());
     let value = |x: &BigInt, e: &BigInt| ip.scaled_value_parts(x, e);
@@ -645,7 +651,7 @@ const BISECTION_HALVINGS: u64 = 64;
 /// as a midpoint returned as (m, m). Integers over one denominator, so no
 /// fraction is reduced before the end.
 fn bisect_int(ip: &IntPoly, lo: &Q, hi: &Q, k: u64) -> (Q, Q) {
-    let e = crate::intgcd::lcm(lo.denom(), hi.denom());
+    let e = crate::arith::intgcd::lcm(lo.denom(), hi.denom());
     let a = lo.numer() * (&e / lo.denom());
     let b = hi.numer() * (&e / hi.denom());
     let s_lo = ip.sign_at(lo);

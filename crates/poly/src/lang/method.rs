@@ -17,7 +17,7 @@ use std::fmt;
 use num_traits::Zero;
 
 use crate::error::{Error, ErrorKind, Span};
-use crate::syntax::{self, BinOp, Expr, ExprKind, Item};
+use crate::lang::syntax::{self, BinOp, Expr, ExprKind, Item};
 use crate::{Poly, Sym};
 
 /// Where a value read by an assignment comes from.
@@ -67,7 +67,7 @@ pub struct Constant {
     /// The name in the program.
     pub name: String,
     /// The radical in normal form (√12 = 2·√3).
-    pub radical: crate::field::Radical,
+    pub radical: crate::multivariate::constants::Radical,
     /// The value as an element of the field spanned by the generators.
     pub value: Poly,
     /// The 1-based source line.
@@ -286,14 +286,13 @@ impl Lowerer<'_> {
                             ));
                         }
                         let Some(c) = b.scalar.as_constant() else {
-                            if crate::field::has_generators(&b.scalar)
-                                && b.scalar
-                                    .symbols()
-                                    .iter()
-                                    .all(|&s| crate::field::generator_of(s).is_some())
+                            if crate::multivariate::constants::has_generators(&b.scalar)
+                                && b.scalar.symbols().iter().all(|&s| {
+                                    crate::multivariate::constants::generator_of(s).is_some()
+                                })
                             {
                                 // A nonzero constant of the field: exact inverse.
-                                let inv = crate::field::inverse(&b.scalar)
+                                let inv = crate::multivariate::constants::inverse(&b.scalar)
                                     .expect("a nonzero field element");
                                 return Ok(self.fix_lin(a.scale(&inv)));
                             }
@@ -322,7 +321,7 @@ impl Lowerer<'_> {
     /// `p` reduced modulo the constants' minimal polynomials, when any.
     fn fix(&self, p: Poly) -> Poly {
         if self.reduce {
-            crate::field::reduce(&p)
+            crate::multivariate::constants::reduce(&p)
         } else {
             p
         }
@@ -333,11 +332,11 @@ impl Lowerer<'_> {
             return l;
         }
         Lin {
-            scalar: crate::field::reduce(&l.scalar),
+            scalar: crate::multivariate::constants::reduce(&l.scalar),
             terms: l
                 .terms
                 .into_iter()
-                .map(|(op, c)| (op, crate::field::reduce(&c)))
+                .map(|(op, c)| (op, crate::multivariate::constants::reduce(&c)))
                 .filter(|(_, c)| !c.is_zero())
                 .collect(),
         }
@@ -469,24 +468,24 @@ fn radical_of(
     func: &str,
     args: &[(crate::Q, Span)],
     call: Span,
-) -> Result<crate::field::Radical, Error> {
+) -> Result<crate::multivariate::constants::Radical, Error> {
     let bad = |s: Span, what: &str| {
-        Error::new(ErrorKind::BadConstant, s, format!("{what}: expected `sqrt(N)`, `cbrt(N)` or `root(K, N)` with N a positive integer (at most {}) and K an integer from 2 to 64", crate::field::MAX_RADICAND))
+        Error::new(ErrorKind::BadConstant, s, format!("{what}: expected `sqrt(N)`, `cbrt(N)` or `root(K, N)` with N a positive integer (at most {}) and K an integer from 2 to 64", crate::multivariate::constants::MAX_RADICAND))
     };
     let (k, n) = match (func, args) {
         ("sqrt", [n]) => (2, n),
         ("cbrt", [n]) => (3, n),
         ("root", [(k, ks), n]) => {
-            let k = crate::field::radicand(k)
+            let k = crate::multivariate::constants::radicand(k)
                 .filter(|&k| (2..=64).contains(&k))
                 .ok_or_else(|| bad(*ks, &format!("root index {k}")))?;
             (k as u32, n)
         }
         _ => return Err(bad(call, &format!("`{func}` with {} argument(s)", args.len()))),
     };
-    let value = crate::field::radicand(&n.0)
+    let value = crate::multivariate::constants::radicand(&n.0)
         .ok_or_else(|| bad(n.1, &format!("{} is not a positive integer", n.0)))?;
-    Ok(crate::field::Radical::root(k, value))
+    Ok(crate::multivariate::constants::Radical::root(k, value))
 }
 
 fn decl_err(span: Span, msg: impl Into<String>) -> Error {
@@ -526,7 +525,8 @@ impl Method {
         declared.insert("Phi".into(), Span::default());
         let mut assigns_src = Vec::new();
         let mut declared_unknowns: Vec<(String, Span)> = Vec::new();
-        let mut const_src: Vec<(String, Span, crate::field::Radical)> = Vec::new();
+        let mut const_src: Vec<(String, Span, crate::multivariate::constants::Radical)> =
+            Vec::new();
         for item in items {
             let item_kind = match item {
                 Item::State(..) => ItemKind::State,
@@ -616,7 +616,8 @@ impl Method {
 
         // Constants: one generator per prime, with the index every constant
         // of this program needs.
-        let index = crate::field::generator_indices(const_src.iter().map(|(_, _, r)| r));
+        let index =
+            crate::multivariate::constants::generator_indices(const_src.iter().map(|(_, _, r)| r));
         let constants: Vec<Constant> = const_src
             .iter()
             .map(|(n, s, r)| Constant {
@@ -796,7 +797,7 @@ impl Method {
             finals,
         };
         if !m.unknowns.is_empty() {
-            let det = crate::implicit::system_determinant(&m);
+            let det = crate::derive::implicit::system_determinant(&m);
             if det.is_zero() {
                 let line = m.equations.iter().map(|e| e.line).min().unwrap_or(1);
                 return Err(Error::new(

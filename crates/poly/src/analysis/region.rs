@@ -19,7 +19,7 @@
 //! stable/unstable split is constant.
 //!
 //! **Membership** of a rational (Φ, D) is the exact class of χ there
-//! ([`crate::stability::class_at`] with D substituted). **Φ_max(D)** at a
+//! ([`crate::analysis::stability::class_at`] with D substituted). **Φ_max(D)** at a
 //! rational D is the one-variable analysis of χ(z; Φ, D) in Φ.
 //!
 //! **Unconditional stability** (every Φ > 0 and D ≥ 0 bounded, the analogue
@@ -41,7 +41,7 @@ use std::fmt;
 
 use num_traits::{One, Signed, Zero};
 
-use crate::stability::{self, Stability};
+use crate::analysis::stability::{self, Stability};
 use crate::Error as StabilityError;
 use crate::{Algebraic, Poly, PolyMatrix, RootClass, Sym, UPoly, Q};
 

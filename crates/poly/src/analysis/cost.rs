@@ -58,7 +58,7 @@ use std::ops::{Add, AddAssign};
 
 use num_traits::One;
 
-use crate::method::{Method, Operand};
+use crate::lang::method::{Method, Operand};
 use crate::{Poly, PolyMatrix};
 
 /// Counts of per-step operations.

@@ -71,7 +71,7 @@ pub(crate) fn rational_roots(f: &[BigInt]) -> Option<Vec<Q>> {
     // ones each step inverts modulo a large power: every prime is tried for
     // one without roots, then residues modulo primes near 1000 (below).
     let small = bound.bits() <= 160;
-    let m = crate::stability::modular::mod_roots(f, small);
+    let m = crate::univariate::modular::mod_roots(f, small);
     if m.bound == Some(0) {
         return Some(Vec::new());
     }
@@ -107,7 +107,7 @@ pub(crate) fn rational_roots(f: &[BigInt]) -> Option<Vec<Q>> {
 /// (2·|f_0|·|f_n|), rational reconstruction, and an exact check of each.
 fn lift(f: &[BigInt], p: BigInt, roots: Vec<u64>, bound: &BigInt) -> Vec<Q> {
     let (lead, c0) = (f.last().expect("degree ≥ 1"), &f[0]);
-    let ip = crate::sturm::IntPoly::from_ints(f.to_vec());
+    let ip = crate::univariate::sturm::IntPoly::from_ints(f.to_vec());
     let mut modulus = p;
     let mut lifted: Vec<BigInt> = roots.into_iter().map(BigInt::from).collect();
     while modulus <= *bound {

@@ -160,7 +160,10 @@ pub fn form_value(q: &[Vec<Q>], x: &[Q]) -> Q {
 pub fn transition_matrix_at(method: &Method, values: &HashMap<Sym, Q>) -> Option<Vec<Vec<Q>>> {
     // An implicit step's P is (d·P)/d with d = det A.
     let (p, d) = if method.is_implicit() {
-        crate::implicit::transition_fraction(method, &crate::implicit::system(method))
+        crate::derive::implicit::transition_fraction(
+            method,
+            &crate::derive::implicit::system(method),
+        )
     } else {
         (crate::transition_matrix(method), crate::Poly::one())
     };

@@ -21,12 +21,13 @@
 
 use std::cmp::Ordering;
 
-use crate::error::{Error, ErrorKind};
-use crate::stability::{
+use crate::analysis::stability::{
     Boundary, ClassChange, ClassInterval, Condition, Counts, CriticalPoint, Stability,
     StabilityReport, StableInterval,
 };
-use crate::{field, Algebraic, Poly, RootClass, Sym, UPoly, Q};
+use crate::error::{Error, ErrorKind};
+use crate::multivariate::constants as field;
+use crate::{Algebraic, Poly, RootClass, Sym, UPoly, Q};
 
 /// Coefficients of χ in z (lowest first), each a polynomial in Φ over F.
 fn z_coeffs(chi: &Poly) -> Result<Vec<Poly>, Error> {
@@ -409,7 +410,7 @@ pub fn limit_at_infinity(chi: &Poly) -> Result<LimitAtInfinity, Error> {
         classify_quadratic(&lim[0], &lim[1], &lim[2])
     } else {
         let u = UPoly::new(lim.iter().map(|c| c.as_constant().unwrap_or_default()).collect());
-        crate::stability::classify(&u)
+        crate::analysis::stability::classify(&u)
     };
     use RootClass::*;
     Ok(match class {

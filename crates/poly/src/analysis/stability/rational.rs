@@ -6,12 +6,11 @@ use std::collections::HashMap;
 
 use num_traits::{One, Signed};
 
-use crate::algebraic::Algebraic;
 use crate::error::{Error, ErrorKind};
+use crate::univariate::algebraic::Algebraic;
 use crate::{Derivation, Poly, RootClass, Sym, UPoly, Q};
 
 use super::conditions::{critical_conditions, discriminant, Charpoly};
-use super::field::{FPoly, Field};
 use super::point::{
     circle_counts, class_of_single_root, classify_quadratic_by, classify_with_counts,
     quadratic_counts, Counts,
@@ -20,6 +19,7 @@ use super::{
     Boundary, ClassChange, ClassInterval, Condition, CriticalPoint, Marginal, Stability,
     StabilityReport, StableInterval,
 };
+use crate::univariate::number_field::{FPoly, Field};
 
 /// The class and root counts of χ at a rational Φ.
 pub(crate) fn class_at_rational(chi: &Charpoly, phi: &Q) -> (RootClass, Counts) {
@@ -74,8 +74,8 @@ pub(crate) fn class_at_point(chi: &Charpoly, phi: &Algebraic) -> Option<RootClas
 /// ```
 pub fn analyze(charpoly: &Poly) -> Result<StabilityReport, Error> {
     // Exact constants (sqrt(3), cbrt(2)): the norm-based layer.
-    if crate::field::has_generators(charpoly) {
-        return crate::field_stability::analyze(charpoly);
+    if crate::multivariate::constants::has_generators(charpoly) {
+        return crate::analysis::stability::constants::analyze(charpoly);
     }
     let chi = Charpoly::new(charpoly)?;
     Ok(run(&chi, None, Some(charpoly)))
@@ -92,8 +92,8 @@ pub fn analyze_derivation(
     let charpoly = d.charpoly.eval_partial(params);
     // Exact constants: the norm-based layer on χ alone (second order, so a
     // repeated root on the circle is decided from χ).
-    if crate::field::has_generators(&charpoly) {
-        return crate::field_stability::analyze(&charpoly);
+    if crate::multivariate::constants::has_generators(&charpoly) {
+        return crate::analysis::stability::constants::analyze(&charpoly);
     }
     let chi = Charpoly::new(&charpoly)?;
     let phi = Sym::phi();
@@ -385,7 +385,7 @@ fn marginal(chi: &Charpoly, charpoly: &Poly) -> Option<Marginal> {
     if chi.degree() != 2 {
         return None;
     }
-    let lead = crate::series::dissipation_order(charpoly).ok().flatten()?;
+    let lead = crate::analysis::series::dissipation_order(charpoly).ok().flatten()?;
     let tiny = Q::new(1.into(), num_traits::pow(num_bigint::BigInt::from(10), 12));
     if lead.coeff.abs() >= tiny {
         return None;

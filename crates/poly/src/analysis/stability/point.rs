@@ -30,8 +30,8 @@ use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
 
-use crate::algebraic::Algebraic;
-use crate::sturm::{count_real_roots, IntPoly};
+use crate::univariate::algebraic::Algebraic;
+use crate::univariate::sturm::{count_real_roots, IntPoly};
 use crate::{RootClass, UPoly, Q};
 
 /// Distinct roots inside, on and outside the unit circle.
@@ -68,7 +68,7 @@ pub fn circle_counts(f: &UPoly) -> Counts {
 pub(crate) fn quadratic_counts(f: &UPoly) -> Counts {
     debug_assert_eq!(f.degree(), Some(2));
     // Integer coefficients with a > 0 (the same roots).
-    let mut k = crate::upoly::int_primitive(f);
+    let mut k = crate::univariate::upoly::int_primitive(f);
     if k[2].is_negative() {
         k.iter_mut().for_each(|x| *x = -&*x);
     }
@@ -172,7 +172,7 @@ fn schur_cohn_inertia(h: &UPoly) -> (usize, usize) {
     if n == 0 {
         return (0, 0);
     }
-    let a = crate::upoly::int_primitive(h);
+    let a = crate::univariate::upoly::int_primitive(h);
     if let Some(r) = schur_transform_counts(&a) {
         return r;
     }
@@ -458,7 +458,7 @@ fn dominant_kind(sf: &UPoly) -> Option<Kind> {
 /// r₁ < r₂ whose sum −c₁/c₂ says which is larger in modulus (a tie
 /// r₁ = −r₂ counts as negative, as in the general route).
 fn small_dominant_kind(sf: &UPoly) -> Kind {
-    let c = crate::upoly::int_primitive(sf);
+    let c = crate::univariate::upoly::int_primitive(sf);
     let same_sign = |x: &BigInt, y: &BigInt| x.sign() == y.sign();
     if c.len() == 2 {
         return if same_sign(&c[0], &c[1]) { Kind::Negative } else { Kind::Positive };
@@ -530,7 +530,7 @@ fn dominant_kind_by_brackets(sf: &UPoly) -> Option<Kind> {
 }
 
 /// Whether the root of `ip` isolated by `(lo, hi)` (an interval of
-/// [`crate::sturm::isolate_real_roots`]: `(r, r)` for a rational root, or
+/// [`crate::univariate::sturm::isolate_real_roots`]: `(r, r)` for a rational root, or
 /// exactly one root strictly inside and `ip` non-zero of opposite signs at
 /// the ends) has modulus at least `l > 0`.
 fn modulus_at_least(ip: &IntPoly, (lo, hi): &(Q, Q), l: &Q) -> bool {
@@ -642,7 +642,7 @@ pub(crate) fn class_of_single_root(
 #[derive(Clone, Debug)]
 pub(crate) struct QuadPolys {
     pub polys: Vec<UPoly>,
-    pub ints: Vec<crate::sturm::IntPoly>,
+    pub ints: Vec<crate::univariate::sturm::IntPoly>,
 }
 
 const Q_A: usize = 0;
@@ -678,7 +678,7 @@ impl QuadPolys {
             &(a + b) + c,
             &(a - b) + c,
         ];
-        let ints = polys.iter().map(crate::sturm::IntPoly::new).collect();
+        let ints = polys.iter().map(crate::univariate::sturm::IntPoly::new).collect();
         QuadPolys { polys, ints }
     }
 }
@@ -934,7 +934,7 @@ mod tests {
             prop_assume!(sf.degree().unwrap_or(0) > 0);
             let l = Q::new(ln.into(), ld.into());
             let ip = IntPoly::new(&sf);
-            let intervals = crate::sturm::isolate_real_roots(&sf);
+            let intervals = crate::univariate::sturm::isolate_real_roots(&sf);
             let numbers = Algebraic::real_roots(&sf);
             prop_assert_eq!(intervals.len(), numbers.len());
             for (iv, x) in intervals.iter().zip(&numbers) {

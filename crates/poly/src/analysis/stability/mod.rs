@@ -35,23 +35,22 @@
 //! split are exact for every degree, because boundedness changes only where
 //! a root meets the unit circle.
 
-mod analysis;
 mod conditions;
-mod field;
-pub(crate) mod modular;
+pub mod constants;
 pub mod point;
+mod rational;
 
 use std::cmp::Ordering;
 use std::collections::HashMap;
 use std::fmt;
 
-pub use analysis::{analyze, analyze_derivation};
 pub use point::{
     circle_counts, classify, classify_pq, classify_roots_by_products, Counts, PqSigns,
 };
+pub use rational::{analyze, analyze_derivation};
 
-use crate::algebraic::Algebraic;
 use crate::error::Error;
+use crate::univariate::algebraic::Algebraic;
 use crate::{Poly, RootClass, Sym, Q};
 
 /// A critical condition: a polynomial in Φ whose roots may change the class.
@@ -316,18 +315,18 @@ impl StabilityReport {
 /// The root class of χ at a rational Φ, exactly.
 pub fn class_at(charpoly: &Poly, phi: &Q) -> Result<RootClass, Error> {
     // Exact constants (sqrt(3), cbrt(2)): the norm-based layer.
-    if crate::field::has_generators(charpoly) {
-        return crate::field_stability::class_at(charpoly, phi);
+    if crate::multivariate::constants::has_generators(charpoly) {
+        return crate::analysis::stability::constants::class_at(charpoly, phi);
     }
     let chi = conditions::Charpoly::new(charpoly)?;
-    Ok(analysis::class_at_rational(&chi, phi).0)
+    Ok(rational::class_at_rational(&chi, phi).0)
 }
 
 /// The root class of χ exactly at an algebraic Φ; `Ok(None)` when χ has
 /// degree ≥ 3 and Φ is irrational (not computed, see the module notes).
 pub fn class_at_algebraic(charpoly: &Poly, phi: &Algebraic) -> Result<Option<RootClass>, Error> {
     let chi = conditions::Charpoly::new(charpoly)?;
-    Ok(analysis::class_at_point(&chi, phi))
+    Ok(rational::class_at_point(&chi, phi))
 }
 
 /// Substitutes rational values for every parameter except Φ (and z).

@@ -1,0 +1,7 @@
+//! Layer 1, arithmetic: the exact scalar [`Q`], integer gcds, and all of
+//! Z/p (primes, Montgomery arithmetic, CRT, interpolation, determinants and
+//! polynomial remainders modulo p).
+//!
+//! Imports nothing from the crate above it.
+
+pub(crate) mod intgcd;

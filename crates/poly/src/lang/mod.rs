@@ -1,0 +1,11 @@
+//! Layer 4, the method language: the `.zm` syntax, [`Method`](method::Method)
+//! and its lowering to a linear step, the one registry of built-ins,
+//! [`Params`](params::Params), and Butcher-tableau input.
+//!
+//! Imports only from the layers below (`arith`, `univariate`,
+//! `multivariate`).
+
+pub(crate) mod builtins;
+pub(crate) mod method;
+pub(crate) mod params;
+pub(crate) mod syntax;
