@@ -34,7 +34,7 @@ pub fn parse(data: &[u8]) {
         if text.len() <= 2000 {
             let _ = poly::Poly::parse(text);
         }
-        let _ = poly::parse_number(text);
+        let _ = poly::advanced::parse_number(text);
     }
 }
 
@@ -55,7 +55,7 @@ pub fn stability(data: &[u8]) {
         None => return,
     };
     let Ok(method) = poly::Method::parse_bytes("fuzz.zm", src) else { return };
-    let Ok(chi) = poly::charpoly(&method) else { return };
+    let Ok(chi) = poly::advanced::charpoly(&method) else { return };
     // Parameter values 0, 1/4, 1/2, ..., 15/4 and their negatives, picked
     // by the first byte, so that special values (0, 1) are reached.
     let value =
@@ -63,5 +63,5 @@ pub fn stability(data: &[u8]) {
     let at: std::collections::HashMap<poly::Sym, poly::Q> =
         method.params().iter().filter(|s| s.name() != "Phi").map(|s| (*s, value.clone())).collect();
     let chi = chi.eval_partial(&at);
-    let _ = poly::stability::analyze(&chi);
+    let _ = poly::advanced::stability::analyze(&chi);
 }

@@ -53,7 +53,7 @@ fn standard_euler_is_identity_plus_phi_a() {
 /// every built-in.
 #[test]
 fn characteristic_equation_is_det_z_minus_p() {
-    for name in poly::paper_builtin_names() {
+    for name in poly::advanced::builtins::paper_builtin_names() {
         let d = derive(name);
         let det = d.transition_matrix.char_matrix(&parse("z")).det_laplace();
         assert_eq!(det, d.charpoly, "{name}");
@@ -213,7 +213,7 @@ fn p_q_formulas() {
     }
 }
 
-/// The exact class changes (poly::stability, Sturm sequences over Q) agree
+/// The exact class changes (poly::advanced::stability, Sturm sequences over Q) agree
 /// with the numeric sweep of the check crate (f64 classification on a grid,
 /// bisected to adjacent floats): every exact change between different
 /// classes has a numeric boundary within 1e-9, and the classes on both
@@ -229,7 +229,7 @@ fn exact_class_changes_agree_with_the_numeric_sweep() {
         "semi_false_heun",
     ] {
         let d = derive(name);
-        let exact = poly::stability::analyze(&d.charpoly).expect("analysis");
+        let exact = poly::advanced::stability::analyze(&d.charpoly).expect("analysis");
         let numeric = check::sweep::sweep(
             &d.method,
             &check::numeric::Params::phi(1.0),

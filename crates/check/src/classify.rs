@@ -38,7 +38,7 @@ use poly::RootClass;
 
 /// The sign table of second-order methods lives in `poly` (one table for the
 /// exact analysis and the numeric classifiers).
-pub use poly::stability::{classify_pq, PqSigns};
+pub use poly::advanced::stability::{classify_pq, PqSigns};
 
 /// The class decided by numeric roots with per-root tolerances (see the
 /// module docs). `tolerance[i]` belongs to `roots[i]`.

@@ -1,7 +1,7 @@
 //! Round-off drift of a conserved quadratic form over long runs.
 //!
 //! A method with |z| = 1 at Φ conserves a positive definite quadratic form
-//! xᵀQx exactly ([`poly::invariant`]); in floating point each step rounds,
+//! xᵀQx exactly ([`poly::advanced::invariant`]); in floating point each step rounds,
 //! and the form drifts. This module measures that drift and the model it is
 //! judged against:
 //!
@@ -49,7 +49,7 @@ fn exact<T: Real>(x: T) -> Q {
 
 fn form_of<T: Real>(form: &[Vec<Q>], x: &[T]) -> Q {
     let xq: Vec<Q> = x.iter().map(|&v| exact(v)).collect();
-    poly::invariant::form_value(form, &xq)
+    poly::advanced::invariant::form_value(form, &xq)
 }
 
 /// Q(x)/Q(x0) − 1, exactly, rounded once to `f64`.
@@ -107,7 +107,7 @@ pub struct Study<T> {
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum NoStudy {
     /// The step conserves no quadratic form, or more than one.
-    Form(poly::invariant::NoForm),
+    Form(poly::advanced::invariant::NoForm),
     /// The conserved form is indefinite: the roots are real (off |z| = 1).
     Indefinite,
 }
@@ -116,8 +116,8 @@ impl<T: Real> Study<T> {
     /// Prepares a study of `kernel` from `lanes` independent starts.
     pub fn new(kernel: Kernel<T>, lanes: usize) -> Result<Study<T>, NoStudy> {
         let p = kernel.exact_transition();
-        let form = poly::invariant::conserved_form(&p).map_err(NoStudy::Form)?;
-        if !poly::invariant::is_positive_definite(&form) {
+        let form = poly::advanced::invariant::conserved_form(&p).map_err(NoStudy::Form)?;
+        if !poly::advanced::invariant::is_positive_definite(&form) {
             return Err(NoStudy::Indefinite);
         }
         // Starts spread over the ellipse's directions and over binades, so

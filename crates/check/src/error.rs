@@ -97,14 +97,14 @@ impl Error {
     pub(crate) fn not_a_method_file(path: &Path, what: &str) -> Error {
         let mut e = Error::new(
             ErrorKind::Io,
-            format!("{}: {what}", poly::show_invisible(&path.display().to_string())),
+            format!("{}: {what}", poly::advanced::show_invisible(&path.display().to_string())),
         );
         e.inner.path = Some(path.to_owned());
         e
     }
 
     pub(crate) fn io(path: &Path, source: std::io::Error) -> Error {
-        let shown = poly::show_invisible(&path.display().to_string()).into_owned();
+        let shown = poly::advanced::show_invisible(&path.display().to_string()).into_owned();
         let mut e = Error::new(ErrorKind::Io, format!("{shown}: cannot read"));
         e.inner.path = Some(path.to_owned());
         e.inner.source = Some(Source::Io(source));

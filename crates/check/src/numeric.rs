@@ -40,7 +40,8 @@ use std::collections::HashMap;
 
 use nalgebra::DMatrix;
 use num_traits::ToPrimitive;
-use poly::{Method, Operand, Poly, Sym, Q};
+use poly::advanced::Operand;
+use poly::{Method, Poly, Sym, Q};
 
 use crate::error::Error;
 
@@ -162,7 +163,7 @@ pub fn eval_poly(p: &Poly, params: &Params) -> Result<f64, Error> {
             // An exact constant's generator p^(1/L) has a value of its own.
             let x = match params.get(sym.name()) {
                 Some(x) => x,
-                None => poly::field::generator_value(sym)
+                None => poly::advanced::field::generator_value(sym)
                     .map(|q| q_to_f64(&q))
                     .ok_or_else(|| Error::missing_param("(polynomial)", sym.name()))?,
             };
@@ -374,9 +375,9 @@ impl Step {
         let mut moves = Vec::new();
         for (var, &depth) in method.history().iter().enumerate() {
             let end_reg = match method.end_value(var) {
-                poly::EndValue::Assign(k) => Some(n_slots + k),
-                poly::EndValue::Unknown(u) => Some(unknown_reg(u)),
-                poly::EndValue::Kept => None,
+                poly::advanced::EndValue::Assign(k) => Some(n_slots + k),
+                poly::advanced::EndValue::Unknown(u) => Some(unknown_reg(u)),
+                poly::advanced::EndValue::Kept => None,
             };
             match end_reg {
                 Some(r) => {

@@ -60,7 +60,8 @@ impl HornerPoly {
             None => {
                 let mut out = Vec::new();
                 for c in p.coeffs_in(phi) {
-                    if c.symbols().iter().any(|&s| poly::field::generator_of(s).is_none()) {
+                    if c.symbols().iter().any(|&s| poly::advanced::field::generator_of(s).is_none())
+                    {
                         return None;
                     }
                     out.push(crate::numeric::eval_poly(&c, &Params::default()).ok()?);

@@ -90,8 +90,9 @@ fn random_phi_matrix(n: usize, mut seed: u64) -> PolyMatrix {
 }
 
 fn bench_builtins(c: &mut Criterion) {
-    let methods: Vec<Method> =
-        poly::builtin_names().map(|n| poly::builtin(n).expect("built-ins parse")).collect();
+    let methods: Vec<Method> = poly::advanced::builtins::builtin_names()
+        .map(|n| poly::builtin(n).expect("built-ins parse"))
+        .collect();
     c.bench_function("derive/all_builtins_both_routes", |b| {
         b.iter(|| {
             for m in &methods {
@@ -103,20 +104,24 @@ fn bench_builtins(c: &mut Criterion) {
     c.bench_function("derive/phase/z_route", |b| {
         b.iter(|| {
             for m in &methods {
-                black_box(poly::charpoly_z_route(black_box(m)).expect("degree within order"));
+                black_box(
+                    poly::advanced::charpoly_z_route(black_box(m)).expect("degree within order"),
+                );
             }
         })
     });
     c.bench_function("derive/phase/state_route", |b| {
         b.iter(|| {
             for m in &methods {
-                black_box(poly::charpoly_state_route(&poly::transition_matrix(black_box(m))));
+                black_box(poly::advanced::charpoly_state_route(
+                    &poly::advanced::transition_matrix(black_box(m)),
+                ));
             }
         })
     });
     c.bench_function("derive/all_builtins_parse_and_derive", |b| {
         b.iter(|| {
-            for name in poly::builtin_names() {
+            for name in poly::advanced::builtins::builtin_names() {
                 let m = poly::builtin(black_box(name)).expect("built-ins parse");
                 black_box(poly::derive(&m).expect("routes agree"));
             }
@@ -126,10 +131,10 @@ fn bench_builtins(c: &mut Criterion) {
 
 fn bench_det12(c: &mut Criterion) {
     let rk4 = Method::parse("rk4_chain.zm", &rk4_spring_chain_source()).expect("rk4 chain parses");
-    let p = poly::transition_matrix(&rk4);
+    let p = poly::advanced::transition_matrix(&rk4);
     assert_eq!(p.rows(), 12);
     c.bench_function("det12/rk4_spring_chain/charpoly_berkowitz", |b| {
-        b.iter(|| black_box(poly::charpoly_state_route(black_box(&p))))
+        b.iter(|| black_box(poly::advanced::charpoly_state_route(black_box(&p))))
     });
     // The determinant of zI − P itself (entries in z and Phi) and the whole
     // derivation (whose z route ends in a determinant in 1/z and Phi) take
@@ -147,7 +152,7 @@ fn bench_det12(c: &mut Criterion) {
     slow.finish();
     let r = random_phi_matrix(12, 0x9E37_79B9_7F4A_7C15);
     c.bench_function("det12/random_deg2_phi/charpoly_berkowitz", |b| {
-        b.iter(|| black_box(poly::charpoly_state_route(black_box(&r))))
+        b.iter(|| black_box(poly::advanced::charpoly_state_route(black_box(&r))))
     });
     c.bench_function("det12/random_deg2_phi/det", |b| b.iter(|| black_box(black_box(&r).det())));
 }
@@ -166,12 +171,16 @@ fn bench_chains(c: &mut Criterion) {
         });
         group.bench_function(format!("rk4_{n}/z_route"), |b| {
             b.iter(|| {
-                black_box(poly::charpoly_z_route(black_box(&m)).expect("degree within order"))
+                black_box(
+                    poly::advanced::charpoly_z_route(black_box(&m)).expect("degree within order"),
+                )
             })
         });
         group.bench_function(format!("rk4_{n}/state_route"), |b| {
             b.iter(|| {
-                black_box(poly::charpoly_state_route(&poly::transition_matrix(black_box(&m))))
+                black_box(poly::advanced::charpoly_state_route(&poly::advanced::transition_matrix(
+                    black_box(&m),
+                )))
             })
         });
     }

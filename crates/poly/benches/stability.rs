@@ -1,5 +1,5 @@
 //! Exact stability analysis of multistep and Runge–Kutta methods on the
-//! oscillator (the built-ins of `poly::COMPARISON_BUILTINS`): `analyze` on χ, from the
+//! oscillator (the built-ins of `poly::advanced::builtins::COMPARISON_BUILTINS`): `analyze` on χ, from the
 //! derived characteristic polynomial to the full report.
 //!
 //! Run: `cargo bench -p poly --bench stability -- --warm-up-time 1
@@ -14,14 +14,16 @@ const METHODS: &[&str] = &[
 ];
 
 fn charpoly(name: &str) -> poly::Poly {
-    poly::charpoly(&poly::builtin(name).expect("a built-in")).expect("derives")
+    poly::advanced::charpoly(&poly::builtin(name).expect("a built-in")).expect("derives")
 }
 
 fn stability(c: &mut Criterion) {
     let mut g = c.benchmark_group("stability");
     for name in METHODS {
         let chi = charpoly(name);
-        g.bench_function(*name, |b| b.iter(|| poly::stability::analyze(&chi).expect("analysis")));
+        g.bench_function(*name, |b| {
+            b.iter(|| poly::advanced::stability::analyze(&chi).expect("analysis"))
+        });
     }
     g.finish();
 }

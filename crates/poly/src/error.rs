@@ -167,7 +167,7 @@ pub(crate) fn is_invisible(c: char) -> bool {
 /// and line feeds too), so the text is safe to print on a terminal.
 ///
 /// ```
-/// assert_eq!(poly::show_invisible("a\u{1b}[2Jb\u{200b}"), "aU+001B[2JbU+200B");
+/// assert_eq!(poly::advanced::show_invisible("a\u{1b}[2Jb\u{200b}"), "aU+001B[2JbU+200B");
 /// ```
 pub fn show_invisible(s: &str) -> std::borrow::Cow<'_, str> {
     if !s.chars().any(is_invisible) {
@@ -244,8 +244,8 @@ impl Error {
         Error::new(kind, Span::default(), message)
     }
 
-    pub(crate) fn unknown_builtin(name: &str) -> Error {
-        let names: Vec<&str> = crate::all_builtin_names().collect();
+    /// No built-in is called `name`; `names` are the ones there are.
+    pub(crate) fn unknown_builtin(name: &str, names: &[&str]) -> Error {
         Error::new(
             ErrorKind::UnknownBuiltin,
             Span::default(),

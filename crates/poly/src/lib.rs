@@ -48,6 +48,7 @@
 //! assert!(e.to_string().starts_with("bad.zm:3:5: nonlinear term"));
 //! ```
 
+pub mod advanced;
 mod analysis;
 mod arith;
 mod derive;
@@ -58,45 +59,21 @@ mod multivariate;
 mod testing;
 mod univariate;
 
-pub use crate::analysis::stability::constants as field_stability;
-pub use crate::analysis::{cost, equiv, invariant, region, series, stability};
-pub use crate::multivariate::constants as field;
-pub use crate::univariate::sturm;
-
 pub use crate::analysis::class::RootClass;
-pub use crate::analysis::cost::{step_cost, OpCount, StepCost};
-pub use crate::derive::implicit::{
-    singular_points, system as implicit_system, System as ImplicitSystem,
+pub use crate::analysis::cost::{OpCount, StepCost};
+pub use crate::analysis::equiv::Relation;
+pub use crate::analysis::stability::{
+    Boundary, ClassChange, ClassInterval, Condition, CriticalPoint, Marginal, Stability,
+    StabilityReport, StableInterval,
 };
-#[doc(hidden)]
-pub use crate::derive::routes::charpoly_z_route_dense;
-pub use crate::derive::routes::{
-    charpoly, charpoly_state_route, charpoly_z_route, derive, derive_source, transition_matrix, w,
-    z_matrix, Derivation,
-};
-pub use crate::error::{show_invisible, Error, ErrorKind, Span};
-pub use crate::lang::builtins::{
-    all_builtin_names, builtin, builtin_names, builtin_source, comparison_builtin_names,
-    damped_builtin_names, direct_twin, paper_builtin_names, BUILTINS, COMPARISON_BUILTINS,
-    DAMPED_BUILTINS, DAMPED_METHODS, IMPLICIT_METHODS, PAPER_METHODS,
-};
-pub use crate::lang::method::{
-    Assign, Constant, EndValue, Equation, GaussSeidelRead, Method, Operand, Target, Unknown,
-};
+pub use crate::arith::rational::{q, Q};
+pub use crate::derive::routes::{derive, derive_source, Derivation};
+pub use crate::error::{Error, ErrorKind, Span};
+pub use crate::lang::builtins::builtin;
+pub use crate::lang::method::Method;
 pub use crate::lang::params::Params;
-pub use crate::lang::syntax::parse_number;
-pub use crate::multivariate::matrix::{PolyMatrix, SparsePolyMatrix};
-pub use crate::multivariate::poly::{Monomial, Poly};
+pub use crate::multivariate::matrix::PolyMatrix;
+pub use crate::multivariate::poly::Poly;
 pub use crate::multivariate::sym::Sym;
 pub use crate::univariate::algebraic::Algebraic;
 pub use crate::univariate::upoly::UPoly;
-
-/// The one exact scalar type: arbitrary-precision rationals.
-pub type Q = num_rational::BigRational;
-
-/// The rational `num/den`; panics when `den` is zero (a programmer error).
-#[track_caller]
-pub fn q(num: i64, den: i64) -> Q {
-    assert!(den != 0, "zero denominator");
-    Q::new(num.into(), den.into())
-}

@@ -130,7 +130,10 @@ impl ExactCharpoly {
             // exact constants (Forest–Ruth's cbrt(2)) takes the general path.
             pq: d
                 .p_q()
-                .filter(|(p, q)| !poly::field::has_generators(p) && !poly::field::has_generators(q))
+                .filter(|(p, q)| {
+                    !poly::advanced::field::has_generators(p)
+                        && !poly::advanced::field::has_generators(q)
+                })
                 .map(|(p, q)| PqPolys::new(p, q)),
         }
     }
@@ -213,8 +216,8 @@ fn with_constants_approximated(p: &Poly) -> Poly {
     let values: HashMap<Sym, Q> = p
         .symbols()
         .into_iter()
-        .filter(|&s| poly::field::generator_of(s).is_some())
-        .map(|s| (s, poly::field::approx(&Poly::sym(s), &width)))
+        .filter(|&s| poly::advanced::field::generator_of(s).is_some())
+        .map(|s| (s, poly::advanced::field::approx(&Poly::sym(s), &width)))
         .collect();
     if values.is_empty() {
         p.clone()

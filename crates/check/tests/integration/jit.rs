@@ -63,8 +63,11 @@ fn check_same(step: &Step, jit: &JitStep, n_steps: u64, lanes: usize) {
 /// 0 to 100, batches of every width modulo the vector groups.
 #[test]
 fn jit_equals_interpreter_on_every_builtin() {
-    let names: Vec<&str> = poly::all_builtin_names().collect();
-    assert!(names.iter().any(|n| poly::IMPLICIT_METHODS.contains(n)), "implicit built-ins too");
+    let names: Vec<&str> = poly::advanced::builtins::all_builtin_names().collect();
+    assert!(
+        names.iter().any(|n| poly::advanced::builtins::IMPLICIT_METHODS.contains(n)),
+        "implicit built-ins too"
+    );
     for name in names {
         let m = poly::builtin(name).unwrap();
         for phi in [0.1, 0.7, 1.9] {
@@ -89,7 +92,7 @@ fn jit_equals_interpreter_on_every_builtin() {
 /// covers them rather than skipping them as singular).
 #[test]
 fn implicit_builtins_are_compiled() {
-    for name in poly::IMPLICIT_METHODS {
+    for name in poly::advanced::builtins::IMPLICIT_METHODS {
         let step = Step::compile(&poly::builtin(name).unwrap(), &Params::phi(0.7)).unwrap();
         JitStep::compile(&step).unwrap();
     }

@@ -49,7 +49,7 @@ fn check_same(step: &Step, n_steps: u64, lanes: usize) {
 /// unrolled periods, batches narrower and wider than a block.
 #[test]
 fn kernel_equals_interpreter_on_every_builtin() {
-    for name in poly::builtin_names() {
+    for name in poly::advanced::builtins::builtin_names() {
         let m = poly::builtin(name).unwrap();
         for phi in [0.1, 0.7, 1.9] {
             let step = Step::compile(&m, &Params::phi(phi).with("D", 0.3)).unwrap();

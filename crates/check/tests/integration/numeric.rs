@@ -69,7 +69,7 @@ fn batch_lanes_equal_single_runs() {
 /// parameters, to a few rounding errors.
 #[test]
 fn transition_matrix_matches_exact_entries() {
-    for name in poly::builtin_names().filter(|n| *n != "damped_euler_d") {
+    for name in poly::advanced::builtins::builtin_names().filter(|n| *n != "damped_euler_d") {
         for phi in [1e-8, 0.1, 0.5, 1.0, 1.9, 3.7] {
             let params = Params::phi(phi);
             let m = poly::builtin(name).unwrap();

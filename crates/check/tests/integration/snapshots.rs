@@ -17,7 +17,7 @@ fn params() -> Params {
 #[test]
 fn sweep_boundaries_of_every_builtin() {
     let mut s = String::new();
-    for name in poly::paper_builtin_names() {
+    for name in poly::advanced::builtins::paper_builtin_names() {
         let sw = sweep(&poly::builtin(name).unwrap(), &params(), &default_grid()).unwrap();
         write!(s, "{name}: {}", sw.first.1).unwrap();
         for b in &sw.boundaries {
@@ -55,7 +55,10 @@ fn verify_summary<'a>(names: impl IntoIterator<Item = &'a str>, phis: &[f64]) ->
 /// The verify table at the default Φ list.
 #[test]
 fn verify_summary_of_every_builtin() {
-    let s = verify_summary(poly::paper_builtin_names(), &[1e-6, 0.1, 0.5, 1.0, 1.5, 1.9]);
+    let s = verify_summary(
+        poly::advanced::builtins::paper_builtin_names(),
+        &[1e-6, 0.1, 0.5, 1.0, 1.5, 1.9],
+    );
     crate::snapshot::in_dir("check")
         .bind(|| insta::assert_snapshot!("verify_summary_of_every_builtin", s));
 }
@@ -63,7 +66,10 @@ fn verify_summary_of_every_builtin() {
 /// The verify table of the implicit and algebraic built-ins, up to Φ = 3.
 #[test]
 fn verify_summary_of_the_implicit_builtins() {
-    let s = verify_summary(poly::IMPLICIT_METHODS, &[1e-6, 0.1, 0.5, 1.0, 1.5, 1.9, 3.0]);
+    let s = verify_summary(
+        poly::advanced::builtins::IMPLICIT_METHODS,
+        &[1e-6, 0.1, 0.5, 1.0, 1.5, 1.9, 3.0],
+    );
     crate::snapshot::in_dir("check")
         .bind(|| insta::assert_snapshot!("verify_summary_of_the_implicit_builtins", s));
 }

@@ -1,6 +1,6 @@
 //! Issue 10's property test, numeric half: on random linear programs (1–3
 //! state variables, history up to 2 steps, small rational coefficients,
-//! powers of Φ up to 3), the exact analysis of `poly::stability` agrees with
+//! powers of Φ up to 3), the exact analysis of `poly::advanced::stability` agrees with
 //! a dense numeric scan of the spectral radius of P(Φ) (eigenvalues, f64)
 //! wherever the scan is conclusive: away from the critical points and where
 //! |ρ − 1| is well above rounding. The exact half (Jury's test at the
@@ -8,7 +8,7 @@
 
 use check::witness::{eigenvalues_faer, eigenvalues_nalgebra};
 use check::{Params, ParamsF64};
-use poly::stability::{analyze, Stability};
+use poly::Stability;
 use poly::{Method, Q};
 use proptest::prelude::*;
 
@@ -26,8 +26,8 @@ proptest! {
     #[test]
     fn exact_stability_agrees_with_an_eigenvalue_scan(src in program()) {
         let m = Method::parse("gen.zm", &src).map_err(|e| TestCaseError::fail(format!("{e}\n{src}")))?;
-        let Ok(chi) = poly::charpoly(&m) else { return Ok(()) };
-        let Ok(r) = analyze(&chi) else { return Ok(()) };
+        let Ok(d) = poly::derive(&m) else { return Ok(()) };
+        let Ok(r) = d.stability(&poly::Params::new()) else { return Ok(()) };
         let critical: Vec<f64> =
             r.critical_points.iter().map(|p| p.at.to_decimal(12).parse().unwrap()).collect();
         for k in 1..=120i64 {
@@ -58,6 +58,7 @@ proptest! {
                 Stability::BoundedForAllPhi => true,
                 Stability::UnboundedForAllPhi => false,
                 Stability::Limited { phi_max, .. } => phi_max.cmp_rational(&q).is_gt(),
+                Stability::UndecidedAt { .. } => panic!("the derivation decides every point"),
             };
             if stable_below_max {
                 prop_assert!(rho < 1.0, "below Phi_max = {:?} but rho({}) = {}\n{}", r.phi_max(), phi, rho, src);

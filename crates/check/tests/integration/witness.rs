@@ -33,7 +33,7 @@ fn check_agrees(name: &str, phi: f64, steps: u64) {
 /// The acceptance list of the issue, for every paper built-in.
 #[test]
 fn builtins_agree_at_the_default_phis() {
-    for name in poly::builtin_names() {
+    for name in poly::advanced::builtins::builtin_names() {
         for phi in [1e-6, 0.1, 0.5, 1.0, 1.5, 1.9] {
             check_agrees(name, phi, STEPS);
         }
@@ -49,7 +49,7 @@ fn builtins_agree_at_the_default_phis() {
 /// the witness reports that as an error.
 #[test]
 fn comparison_builtins_agree() {
-    for name in poly::comparison_builtin_names().filter(|n| *n != "leapfrog") {
+    for name in poly::advanced::builtins::comparison_builtin_names().filter(|n| *n != "leapfrog") {
         for phi in [1e-6, 0.01, 0.1, 0.5] {
             check_agrees(name, phi, STEPS);
         }
@@ -59,7 +59,7 @@ fn comparison_builtins_agree() {
 /// Both sides of every class boundary a sweep reports.
 #[test]
 fn builtins_agree_at_every_class_boundary() {
-    for name in poly::builtin_names() {
+    for name in poly::advanced::builtins::builtin_names() {
         let m = poly::builtin(name).unwrap();
         let s = sweep(&m, &params(), &default_grid()).unwrap();
         for b in &s.boundaries {
@@ -126,7 +126,7 @@ fn sweeps_find_the_closed_form_boundaries() {
 /// The fast f64 classifier equals the exact class at every grid point.
 #[test]
 fn fast_classifier_equals_the_exact_class() {
-    for name in poly::builtin_names() {
+    for name in poly::advanced::builtins::builtin_names() {
         let m = poly::builtin(name).unwrap();
         let c = Classifier::new(&m, &params()).unwrap();
         let w = Witnesses::new(&m).unwrap();

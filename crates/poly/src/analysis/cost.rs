@@ -48,7 +48,7 @@
 //!
 //! ```
 //! let m = poly::builtin("false_euler")?;
-//! let c = poly::step_cost(&m);
+//! let c = poly::advanced::cost::step_cost(&m);
 //! assert_eq!((c.program.mul, c.program.add), (2, 2));
 //! # Ok::<(), poly::Error>(())
 //! ```
@@ -176,7 +176,7 @@ pub fn matrix_cost(p: &PolyMatrix) -> OpCount {
 /// matrix applied directly.
 ///
 /// ```
-/// let verlet = poly::step_cost(&poly::builtin("verlet")?);
+/// let verlet = poly::advanced::cost::step_cost(&poly::builtin("verlet")?);
 /// assert_eq!(verlet.program.to_string(), "1 mul + 1 add + 1 copy");
 /// # Ok::<(), poly::Error>(())
 /// ```
@@ -197,7 +197,7 @@ pub fn step_cost(method: &Method) -> StepCost {
     let shifts: u32 = method.history().iter().sum();
     let mut program = per_assign.iter().copied().fold(OpCount::default(), Add::add);
     program.copy += shifts;
-    let matrix_form = matrix_cost(&crate::transition_matrix(method));
+    let matrix_form = matrix_cost(&crate::derive::routes::transition_matrix(method));
     let (n_u, n_s) = (method.unknowns().len() as u32, method.order() as u32);
     let solve = OpCount { mul: n_u * n_s, add: n_u * n_s.saturating_sub(1), copy: 0 };
     program += solve;
@@ -211,7 +211,7 @@ pub fn live_assigns(method: &Method) -> Vec<bool> {
     let assigns = method.assigns();
     let mut live = vec![false; assigns.len()];
     for var in 0..method.state().len() {
-        if let crate::EndValue::Assign(k) = method.end_value(var) {
+        if let crate::lang::method::EndValue::Assign(k) = method.end_value(var) {
             live[k] = true;
         }
     }

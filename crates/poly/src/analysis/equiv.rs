@@ -12,7 +12,8 @@
 
 use std::collections::VecDeque;
 
-use crate::{Derivation, Method, Operand, Poly, PolyMatrix, Q};
+use crate::lang::method::Operand;
+use crate::{Derivation, Method, Poly, PolyMatrix, Q};
 
 /// How two methods relate, strongest first.
 #[derive(Clone, Debug, PartialEq, Eq)]

@@ -160,12 +160,9 @@ pub fn form_value(q: &[Vec<Q>], x: &[Q]) -> Q {
 pub fn transition_matrix_at(method: &Method, values: &HashMap<Sym, Q>) -> Option<Vec<Vec<Q>>> {
     // An implicit step's P is (d·P)/d with d = det A.
     let (p, d) = if method.is_implicit() {
-        crate::derive::implicit::transition_fraction(
-            method,
-            &crate::derive::implicit::system(method),
-        )
+        crate::derive::implicit::transition_fraction(method, &crate::lang::system::system(method))
     } else {
-        (crate::transition_matrix(method), crate::Poly::one())
+        (crate::derive::routes::transition_matrix(method), crate::Poly::one())
     };
     let d = d.eval(values)?;
     if d.is_zero() {

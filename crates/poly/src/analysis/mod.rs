@@ -11,4 +11,5 @@ pub mod equiv;
 pub mod invariant;
 pub mod region;
 pub mod series;
+pub(crate) mod singular;
 pub mod stability;

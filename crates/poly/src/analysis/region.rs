@@ -44,6 +44,7 @@ use num_traits::{One, Signed, Zero};
 use crate::analysis::stability::{self, Stability};
 use crate::Error as StabilityError;
 use crate::{Algebraic, Poly, PolyMatrix, RootClass, Sym, UPoly, Q};
+use crate::{Derivation, Params};
 
 /// Which condition a critical curve expresses.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -123,15 +124,30 @@ pub enum Unconditional {
 /// The exact (Φ, D) stability region of one characteristic polynomial.
 #[derive(Clone, Debug)]
 pub struct Region {
+    derivation: Derivation,
     chi: Poly,
     param: Sym,
     curves: Vec<Curve>,
 }
 
-/// Builds the region of `chi` (a polynomial in z, Φ and `param`, no other
-/// symbol). Errs when χ, with the parameter given a value, is not a
-/// polynomial in z and Φ with roots.
-pub fn region(chi: &Poly, param: Sym) -> Result<Region, StabilityError> {
+impl Derivation {
+    /// The exact stability region over (Φ, `param`) of a method whose only
+    /// parameters are Φ and `param`. Errs when χ, with the parameter given a
+    /// value, is not a polynomial in z and Φ with roots.
+    ///
+    /// ```
+    /// let d = poly::derive(&poly::builtin("false_euler_damped")?)?;
+    /// let r = d.region(poly::Sym::new("D"))?;
+    /// assert!(r.contains(&poly::q(1, 1), &poly::q(1, 10))?);
+    /// # Ok::<(), poly::Error>(())
+    /// ```
+    pub fn region(&self, param: Sym) -> Result<Region, StabilityError> {
+        region(self, param)
+    }
+}
+
+fn region(derivation: &Derivation, param: Sym) -> Result<Region, StabilityError> {
+    let chi = &derivation.charpoly;
     // The one-variable engine validates the symbols: any symbol other than
     // z, Φ and `param` is reported by it.
     stability::class_at(&substitute(chi, param, &Q::one()), &Q::one())?;
@@ -165,7 +181,7 @@ pub fn region(chi: &Poly, param: Sym) -> Result<Region, StabilityError> {
         let (monomial, poly) = split_monomial(&p, &[phi, param]);
         curves.push(Curve { kind, poly: primitive(&poly), monomial });
     }
-    Ok(Region { chi: chi.clone(), param, curves })
+    Ok(Region { derivation: derivation.clone(), chi: chi.clone(), param, curves })
 }
 
 impl Region {
@@ -205,12 +221,17 @@ impl Region {
         Ok(self.class_at(phi, d)?.is_bounded())
     }
 
-    /// Φ_max at a rational D, exactly.
+    /// Φ_max at a rational D, exactly (boundedness at a repeated root on
+    /// the unit circle decided from the transition matrix).
     pub fn phi_max(&self, d: &Q) -> Result<PhiLimit, StabilityError> {
-        let r = stability::analyze(&self.at_param(d))?;
+        let params = Params::new().bind(self.param.name(), d.clone());
+        let r = self.derivation.stability(&params)?;
         Ok(match r.stability {
             Stability::BoundedForAllPhi => PhiLimit::Every,
             Stability::Limited { phi_max, .. } => PhiLimit::Below(phi_max),
+            // Bounded below `at`; only χ with exact constants can leave it
+            // undecided, and then `at` is where the proof stops.
+            Stability::UndecidedAt { at, .. } => PhiLimit::Below(at),
             Stability::UnboundedForAllPhi => PhiLimit::Never,
         })
     }
@@ -411,10 +432,6 @@ fn rational_between(lo: &Algebraic, hi: &Algebraic) -> Q {
 mod tests {
     use super::*;
 
-    fn chi_of(name: &str) -> Poly {
-        crate::charpoly(&crate::builtin(name).unwrap()).unwrap()
-    }
-
     /// The Sylvester resultant equals the product of g over the roots of f
     /// for polynomials with known rational roots (the obvious oracle).
     #[test]
@@ -432,7 +449,10 @@ mod tests {
     /// positive root is 2(√(1 + D²) − D); χ(1) is Φ² alone.
     #[test]
     fn false_euler_curves() {
-        let r = region(&chi_of("false_euler_damped"), Sym::new("D")).unwrap();
+        let r = crate::derive(&crate::builtin("false_euler_damped").unwrap())
+            .unwrap()
+            .region(Sym::new("D"))
+            .unwrap();
         let minus_one = r.curves().iter().find(|c| c.kind == CurveKind::ChiAtMinusOne).unwrap();
         assert_eq!(minus_one.poly, Poly::parse("Phi^2 + 4*D*Phi - 4").unwrap());
         let one = r.curves().iter().find(|c| c.kind == CurveKind::ChiAtOne).unwrap();

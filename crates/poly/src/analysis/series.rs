@@ -418,7 +418,7 @@ fn split_square(g0: &Q) -> (Q, Q) {
 ///
 /// ```
 /// let chi = poly::Poly::parse("z^2 - 2*(1 - Phi^2/2)*z + 1")?; // False Euler
-/// let psi = poly::series::psi_series(&chi, 3)?;
+/// let psi = poly::advanced::series::psi_series(&chi, 3)?;
 /// assert_eq!(psi, vec![poly::q(0, 1), poly::q(1, 1), poly::q(0, 1), poly::q(1, 24)]);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```

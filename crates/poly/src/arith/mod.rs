@@ -5,3 +5,5 @@
 //! Imports nothing from the crate above it.
 
 pub(crate) mod intgcd;
+pub(crate) mod rational;
+pub(crate) mod zp;

@@ -21,109 +21,9 @@
 //! system is singular. The z route (`derive.rs`) reaches the same polynomial
 //! from the equations as written, with no solving.
 
-use crate::lang::method::{EndValue, Method, Operand};
-use crate::multivariate::constants as field;
+use crate::lang::method::Method;
+use crate::lang::system::{fix, System};
 use crate::{Poly, PolyMatrix, Sym};
-
-/// The linear system of an implicit step and its output map.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct System {
-    /// A = I − ∂r/∂u, one row per equation (n × n).
-    pub a: PolyMatrix,
-    /// E = ∂r/∂s (n × N).
-    pub e: PolyMatrix,
-    /// H_s: the end-of-step slots' dependence on the start slots (N × N).
-    pub h_s: PolyMatrix,
-    /// H_u: their dependence on the unknowns (N × n).
-    pub h_u: PolyMatrix,
-}
-
-fn fix(m: &Method, p: Poly) -> Poly {
-    if m.constants().is_empty() {
-        p
-    } else {
-        field::reduce(&p)
-    }
-}
-
-/// The system of `m` by symbolic execution over (slots, unknowns).
-pub fn system(m: &Method) -> System {
-    let slots = m.slots();
-    let (n_s, n_u) = (slots.len(), m.unknowns().len());
-    let width = n_s + n_u;
-    let slot_of = |var: usize, lag: u32| {
-        slots.iter().position(|&s| s == (var, lag)).expect("lag within the method's history")
-    };
-    let unit = |k: usize| {
-        let mut v = vec![Poly::zero(); width];
-        v[k] = Poly::one();
-        v
-    };
-    let form = |terms: &[(Operand, Poly)], values: &[Vec<Poly>]| {
-        let mut acc = vec![Poly::zero(); width];
-        for (op, c) in terms {
-            let src = match *op {
-                Operand::Stmt(t) => values[t].clone(),
-                Operand::Start { var, lag } => unit(slot_of(var, lag)),
-                Operand::Unknown(u) => unit(n_s + u),
-            };
-            for (x, s) in acc.iter_mut().zip(&src) {
-                if !s.is_zero() {
-                    *x += &(c * s);
-                }
-            }
-        }
-        acc.into_iter().map(|p| fix(m, p)).collect::<Vec<_>>()
-    };
-    let mut values: Vec<Vec<Poly>> = Vec::with_capacity(m.assigns().len());
-    for a in m.assigns() {
-        let v = form(&a.terms, &values);
-        values.push(v);
-    }
-    let mut a = PolyMatrix::identity(n_u);
-    let mut e = PolyMatrix::zeros(n_u, n_s);
-    for eq in m.equations() {
-        let r = form(&eq.terms, &values);
-        let j = eq.unknown;
-        for (i, x) in r.into_iter().enumerate() {
-            if i < n_s {
-                e[(j, i)] = x;
-            } else {
-                a[(j, i - n_s)] -= &x;
-            }
-        }
-    }
-    let mut h_s = PolyMatrix::zeros(n_s, n_s);
-    let mut h_u = PolyMatrix::zeros(n_s, n_u);
-    for (row, &(var, lag)) in slots.iter().enumerate() {
-        let new = if lag == 0 {
-            match m.end_value(var) {
-                EndValue::Assign(k) => values[k].clone(),
-                EndValue::Unknown(u) => unit(n_s + u),
-                EndValue::Kept => unit(slot_of(var, 0)),
-            }
-        } else {
-            unit(slot_of(var, lag - 1))
-        };
-        for (col, x) in new.into_iter().enumerate() {
-            if col < n_s {
-                h_s[(row, col)] = x;
-            } else {
-                h_u[(row, col - n_s)] = x;
-            }
-        }
-    }
-    System { a, e, h_s, h_u }
-}
-
-/// det A, the determinant of the step's linear system (1 when explicit).
-pub fn system_determinant(m: &Method) -> Poly {
-    let s = system(m);
-    if s.a.rows() == 0 {
-        return Poly::one();
-    }
-    fix(m, s.a.det())
-}
 
 /// χ = det [[A, −E], [−H_u, zI − H_s]] = det A · det(zI − P).
 pub fn charpoly_pencil(m: &Method, s: &System) -> Poly {
@@ -192,32 +92,4 @@ pub fn transition_fraction(m: &Method, s: &System) -> (PolyMatrix, Poly) {
         }
     }
     (p, d)
-}
-
-/// The Φ > 0 at which an implicit step's system is singular: the positive
-/// real zeros of d = det A (as a polynomial in Φ alone). For a d holding
-/// constants, the zeros of its norm over Q at which d itself changes sign.
-/// Empty for an explicit method or when d holds other parameters.
-pub fn singular_points(d: &crate::Derivation) -> Vec<crate::Algebraic> {
-    let den = &d.p_denominator;
-    let n = field::norm(den);
-    let Some(u) = n.to_upoly(Sym::phi()) else { return Vec::new() };
-    if u.degree().unwrap_or(0) == 0 {
-        return Vec::new();
-    }
-    let roots = crate::Algebraic::positive_roots(&u.squarefree());
-    if !field::has_generators(den) {
-        return roots;
-    }
-    let at = |x: &crate::Q| {
-        field::sign(&field::reduce(&den.subs(Sym::phi(), &Poly::constant(x.clone()))))
-    };
-    roots
-        .into_iter()
-        .filter(|r| {
-            let r = r.refine(&crate::Q::new(1.into(), 1_000_000.into()));
-            let (lo, hi) = r.interval();
-            at(&lo) != at(&hi)
-        })
-        .collect()
 }

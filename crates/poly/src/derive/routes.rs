@@ -27,7 +27,8 @@
 
 use crate::error::{Error, ErrorKind, Span};
 use crate::lang::method::{EndValue, Method, Operand};
-use crate::{Poly, PolyMatrix, SparsePolyMatrix, Sym};
+use crate::multivariate::matrix::SparsePolyMatrix;
+use crate::{Poly, PolyMatrix, Sym};
 
 /// Everything derived from one method.
 #[derive(Clone, Debug)]
@@ -368,7 +369,7 @@ fn charpoly_from_det(m: &Method, det: &Poly) -> Result<Poly, Error> {
 /// implicit method, d·P with d = det A: see `implicit.rs`).
 pub fn transition_matrix(m: &Method) -> PolyMatrix {
     if m.is_implicit() {
-        let sys = crate::derive::implicit::system(m);
+        let sys = crate::lang::system::system(m);
         return crate::derive::implicit::transition_fraction(m, &sys).0;
     }
     let slots = m.slots();
@@ -477,7 +478,7 @@ pub fn derive(method: &Method) -> Result<Derivation, Error> {
     let z_matrix = z_matrix(method);
     let a = charpoly_from_z_matrix(method, &z_matrix)?;
     let (transition_matrix, p_denominator, b) = if method.is_implicit() {
-        let sys = crate::derive::implicit::system(method);
+        let sys = crate::lang::system::system(method);
         let (p, d) = crate::derive::implicit::transition_fraction(method, &sys);
         (p, d, crate::derive::implicit::charpoly_pencil(method, &sys))
     } else {

@@ -163,7 +163,15 @@ pub fn builtin_source(name: &str) -> Option<&'static str> {
 pub fn builtin(name: &str) -> Result<Method, Error> {
     match builtin_source(name) {
         Some(src) => Method::parse(&format!("<builtin>/{name}.zm"), src),
-        None => Err(Error::unknown_builtin(name)),
+        None => Err(Error::unknown_builtin(name, &all_builtin_names().collect::<Vec<_>>())),
+    }
+}
+
+impl Method {
+    /// The built-in method `name` (see `zcheck methods`): the same as
+    /// [`builtin`](crate::builtin).
+    pub fn builtin(name: &str) -> Result<Method, Error> {
+        builtin(name)
     }
 }
 

@@ -493,30 +493,9 @@ fn decl_err(span: Span, msg: impl Into<String>) -> Error {
 }
 
 impl Method {
-    /// Parses and lowers a `.zm` program. `file` names the source in errors.
-    ///
-    /// ```
-    /// let m = poly::Method::parse("fe.zm", "method fe\nstate v y\nv = v - Phi*y\ny = y + Phi*v\n")?;
-    /// assert_eq!(m.state(), ["v", "y"]);
-    /// # Ok::<(), poly::Error>(())
-    /// ```
-    pub fn parse(file: &str, src: &str) -> Result<Method, Error> {
-        // A byte-order mark some editors put first is not part of the text.
-        let src = src.strip_prefix('\u{FEFF}').unwrap_or(src);
-        Method::parse_inner(src).map_err(|e| e.located(file, src))
-    }
-
-    /// [`Method::parse`] on raw bytes: bytes that are not UTF-8 are an
-    /// [`ErrorKind::Encoding`](crate::ErrorKind::Encoding) error located at
-    /// the first bad byte's line and column.
-    pub fn parse_bytes(file: &str, bytes: &[u8]) -> Result<Method, Error> {
-        match std::str::from_utf8(bytes) {
-            Ok(src) => Method::parse(file, src),
-            Err(e) => Err(Error::not_utf8(file, bytes, e)),
-        }
-    }
-
-    fn parse_inner(src: &str) -> Result<Method, Error> {
+    /// Lowers a `.zm` program (no location added to errors, no check of
+    /// the implicit system: [`Method::parse`] does both).
+    pub(crate) fn lower(src: &str) -> Result<Method, Error> {
         let items = syntax::parse(src)?;
         let mut name: Option<String> = None;
         let mut state: Option<Vec<String>> = None;
@@ -796,18 +775,18 @@ impl Method {
             gauss_seidel,
             finals,
         };
-        if !m.unknowns.is_empty() {
-            let det = crate::derive::implicit::system_determinant(&m);
-            if det.is_zero() {
-                let line = m.equations.iter().map(|e| e.line).min().unwrap_or(1);
-                return Err(Error::new(
-                    ErrorKind::Singular,
-                    Span { line, col: 1, len: 1 },
-                    format!("the implicit system in {} is singular for every Phi: its determinant det(I - d(right-hand sides)/d(unknowns)) is 0; expected equations that determine every unknown", m.unknowns.iter().map(|u| u.name.as_str()).collect::<Vec<_>>().join(", ")),
-                ));
-            }
-        }
         Ok(m)
+    }
+
+    /// The error for an implicit system singular for every Φ, located on
+    /// the first equation.
+    pub(crate) fn singular_error(&self) -> Error {
+        let line = self.equations.iter().map(|e| e.line).min().unwrap_or(1);
+        Error::new(
+            ErrorKind::Singular,
+            Span { line, col: 1, len: 1 },
+            format!("the implicit system in {} is singular for every Phi: its determinant det(I - d(right-hand sides)/d(unknowns)) is 0; expected equations that determine every unknown", self.unknowns.iter().map(|u| u.name.as_str()).collect::<Vec<_>>().join(", ")),
+        )
     }
 
     /// The method's name.

@@ -5,7 +5,9 @@
 //! Imports only from the layers below (`arith`, `univariate`,
 //! `multivariate`).
 
-pub(crate) mod builtins;
+pub mod builtins;
+pub(crate) mod load;
 pub(crate) mod method;
 pub(crate) mod params;
 pub(crate) mod syntax;
+pub(crate) mod system;

@@ -16,7 +16,7 @@
 //! rules are checked when the program is lowered (see `method.rs`).
 
 use crate::error::{Error, ErrorKind, Span};
-use crate::Q;
+use crate::{Poly, Q};
 use num_bigint::BigInt;
 use num_traits::Zero;
 
@@ -294,10 +294,10 @@ fn lex_number(chars: &[char]) -> Result<(Tok, usize), String> {
 /// Errors carry the 1-based column in `text` (line 1, no file name).
 ///
 /// ```
-/// assert_eq!(poly::parse_number("0.1")?, poly::q(1, 10));
-/// assert_eq!(poly::parse_number("-1/2")?, poly::q(-1, 2));
-/// assert_eq!(poly::parse_number("2.5e-3")?, poly::q(1, 400));
-/// assert!(poly::parse_number("1.2.3").is_err());
+/// assert_eq!(poly::advanced::parse_number("0.1")?, poly::q(1, 10));
+/// assert_eq!(poly::advanced::parse_number("-1/2")?, poly::q(-1, 2));
+/// assert_eq!(poly::advanced::parse_number("2.5e-3")?, poly::q(1, 400));
+/// assert!(poly::advanced::parse_number("1.2.3").is_err());
 /// # Ok::<(), poly::Error>(())
 /// ```
 pub fn parse_number(text: &str) -> Result<Q, Error> {
@@ -746,4 +746,18 @@ fn to_poly(e: &Expr) -> Result<crate::Poly, Error> {
             }
         }
     })
+}
+
+impl Poly {
+    /// Parses a polynomial written in the crate's plain-text form, e.g.
+    /// `z^2 - 2*(1 - Phi^2/2)*z + 1`. Every name is a symbol.
+    ///
+    /// ```
+    /// let p = poly::Poly::parse("(1 - Phi^2/2)^2")?;
+    /// assert_eq!(p.to_string(), "1 - Phi^2 + 1/4*Phi^4");
+    /// # Ok::<(), poly::Error>(())
+    /// ```
+    pub fn parse(src: &str) -> Result<Poly, crate::Error> {
+        parse_poly(src).map_err(|e| e.located("<expression>", src))
+    }
 }

@@ -35,7 +35,8 @@ use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 
-use crate::{Monomial, Poly, PolyMatrix, Sym, Q};
+use crate::multivariate::poly::Monomial;
+use crate::{Poly, PolyMatrix, Sym, Q};
 
 /// The largest radicand accepted (factored by trial division).
 pub const MAX_RADICAND: u64 = 1_000_000_000_000;

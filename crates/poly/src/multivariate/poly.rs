@@ -108,18 +108,6 @@ pub struct Poly {
 }
 
 impl Poly {
-    /// Parses a polynomial written in the crate's plain-text form, e.g.
-    /// `z^2 - 2*(1 - Phi^2/2)*z + 1`. Every name is a symbol.
-    ///
-    /// ```
-    /// let p = poly::Poly::parse("(1 - Phi^2/2)^2")?;
-    /// assert_eq!(p.to_string(), "1 - Phi^2 + 1/4*Phi^4");
-    /// # Ok::<(), poly::Error>(())
-    /// ```
-    pub fn parse(src: &str) -> Result<Poly, crate::Error> {
-        crate::lang::syntax::parse_poly(src).map_err(|e| e.located("<expression>", src))
-    }
-
     /// The zero polynomial, as a constant.
     pub(crate) const ZERO: Poly = Poly { terms: BTreeMap::new() };
 

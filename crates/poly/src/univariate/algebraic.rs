@@ -19,9 +19,8 @@ use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
 
-use crate::univariate::sturm::{
-    count_real_roots, isolate_squarefree, refine_int, refine_quadratic, sign, IntPoly,
-};
+use crate::univariate::roots::isolate_squarefree;
+use crate::univariate::sturm::{count_real_roots, refine_int, refine_quadratic, sign, IntPoly};
 use crate::{UPoly, Q};
 
 /// The least and the greatest of some real roots.
@@ -89,7 +88,7 @@ impl Algebraic {
             // An even F(x²) has a positive root exactly when F has one.
             let zero_free = zero_free.even_part().unwrap_or(zero_free);
             let d = zero_free.degree().unwrap_or(0);
-            if d == 0 || crate::univariate::sturm::no_positive_roots(&zero_free, 16) {
+            if d == 0 || crate::univariate::roots::no_positive_roots(&zero_free, 16) {
                 return Vec::new();
             }
         }
@@ -271,7 +270,7 @@ impl Algebraic {
                 // out without refining; else the gcd decides.
                 let gi = IntPoly::new(g);
                 gi.sign_on(lo, hi).is_none()
-                    && !crate::univariate::modular::coprime_mod_p(ip.coeffs(), gi.coeffs())
+                    && !crate::arith::zp::coprime_mod_p(ip.coeffs(), gi.coeffs())
                     && (divides(ip, &gi) || vanishes_at_root(poly, lo, hi, g))
             }
         }
@@ -510,7 +509,7 @@ fn sign_at_root(
     }
     // Coprime modulo a prime: g cannot vanish at a root of poly, and the
     // gcd over Q is not needed.
-    if !crate::univariate::modular::coprime_mod_p(ip.coeffs(), gi.coeffs())
+    if !crate::arith::zp::coprime_mod_p(ip.coeffs(), gi.coeffs())
         && (divides(ip, gi) || vanishes_at_root(poly, lo, hi, g))
     {
         return Ordering::Equal;
@@ -754,7 +753,7 @@ fn reduce_irrational_with(
 /// bisection come first; then every rational root, by p-adic lifting
 /// ([`crate::univariate::rational_roots::rational_roots`]). Only when no prime suits
 /// the lifting: when a prime bound
-/// ([`crate::univariate::modular::rational_root_bound`]) allows more roots,
+/// ([`crate::arith::zp::rational_root_bound`]) allows more roots,
 /// the simplest rational of a narrowed interval is tried in each, and if
 /// that finds fewer than the bound the slow, complete search runs.
 fn rational_roots(f: &UPoly, intervals: &[(Q, Q)]) -> (Vec<Option<Q>>, Option<Vec<Q>>) {
@@ -796,9 +795,8 @@ fn rational_roots(f: &UPoly, intervals: &[(Q, Q)]) -> (Vec<Option<Q>>, Option<Ve
         return (out, Some(all));
     }
     let found_nonzero = out.iter().flatten().filter(|r| !r.is_zero()).count();
-    let bound = crate::univariate::modular::rational_root_bound(
-        &crate::univariate::upoly::int_primitive(&zero_free),
-    );
+    let bound =
+        crate::arith::zp::rational_root_bound(&crate::univariate::upoly::int_primitive(&zero_free));
     if bound == Some(found_nonzero) {
         return (out, None);
     }

@@ -10,5 +10,6 @@ pub(crate) mod isolate;
 pub(crate) mod modular;
 pub(crate) mod number_field;
 pub(crate) mod rational_roots;
+pub(crate) mod roots;
 pub mod sturm;
 pub(crate) mod upoly;

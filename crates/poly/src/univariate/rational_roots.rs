@@ -71,7 +71,7 @@ pub(crate) fn rational_roots(f: &[BigInt]) -> Option<Vec<Q>> {
     // ones each step inverts modulo a large power: every prime is tried for
     // one without roots, then residues modulo primes near 1000 (below).
     let small = bound.bits() <= 160;
-    let m = crate::univariate::modular::mod_roots(f, small);
+    let m = crate::arith::zp::mod_roots(f, small);
     if m.bound == Some(0) {
         return Some(Vec::new());
     }

@@ -192,7 +192,7 @@ impl UPoly {
             return g.shifted_up(i.min(j));
         }
         let (mut a, mut b) = (int_primitive(self), int_primitive(other));
-        if crate::univariate::modular::coprime_mod_p(&a, &b) {
+        if crate::arith::zp::coprime_mod_p(&a, &b) {
             return UPoly::constant(Q::one());
         }
         if a.len() < b.len() {
@@ -540,6 +540,39 @@ pub(crate) fn prem(a: &[BigInt], b: &[BigInt]) -> (Vec<BigInt>, usize) {
         }
     }
     (r, k)
+}
+
+/// For a palindromic g of even degree 2m (coefficients lowest first), G with
+/// g(z) = z^m G(z + 1/z): G = c_m + Σ_k c_{m+k} D_k(x), D_k(z + 1/z) = z^k + z^{−k}.
+pub(crate) fn reciprocal_reduce<T: Clone>(
+    c: &[T],
+    zero: T,
+    add: impl Fn(&T, &T) -> T,
+    scale_int: impl Fn(&T, i64) -> T,
+) -> Vec<T> {
+    let m = (c.len() - 1) / 2;
+    // D_k as integer polynomials in x.
+    let mut d: Vec<Vec<i64>> = vec![vec![2], vec![0, 1]];
+    for k in 2..=m {
+        let mut next = vec![0i64; k + 1];
+        for (i, &v) in d[k - 1].iter().enumerate() {
+            next[i + 1] += v;
+        }
+        for (i, &v) in d[k - 2].iter().enumerate() {
+            next[i] -= v;
+        }
+        d.push(next);
+    }
+    let mut g = vec![zero.clone(); m + 1];
+    g[0] = add(&g[0], &c[m]);
+    for k in 1..=m {
+        for (i, &v) in d[k].iter().enumerate() {
+            if v != 0 {
+                g[i] = add(&g[i], &scale_int(&c[m + k], v));
+            }
+        }
+    }
+    g
 }
 
 #[cfg(test)]

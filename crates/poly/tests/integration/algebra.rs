@@ -4,7 +4,8 @@
 //! representation is canonical: two different computations of the same
 //! polynomial must build the same value.
 
-use poly::{q, Monomial, Poly, Sym, UPoly, Q};
+use poly::advanced::Monomial;
+use poly::{q, Poly, Sym, UPoly, Q};
 use proptest::prelude::*;
 
 use crate::common::{nonzero_q, point, small_poly, small_q, sym};

@@ -1,11 +1,14 @@
-//! Operations per step (`poly::cost`): the paper's "two multiplications and
+//! Operations per step (`poly::advanced::cost`): the paper's "two multiplications and
 //! two additions" and the counting model's rules, one concern per checker.
 //!
 //! Expected counts are read off the `.zm` sources line by line (the comment
 //! beside each row says how), not copied from the program's output.
 
-use poly::cost::{combination_cost, matrix_cost};
-use poly::{builtin, builtin_names, direct_twin, step_cost, Method, OpCount, Poly};
+use poly::advanced::builtins::builtin_names;
+use poly::advanced::builtins::direct_twin;
+use poly::advanced::cost::step_cost;
+use poly::advanced::cost::{combination_cost, matrix_cost};
+use poly::{builtin, Method, OpCount, Poly};
 
 fn ops(mul: u32, add: u32, copy: u32) -> OpCount {
     OpCount { mul, add, copy }

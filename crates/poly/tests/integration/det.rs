@@ -193,7 +193,7 @@ fn pencil(n: usize, unit: bool) -> impl Strategy<Value = PolyMatrix> {
     let entry = || prop_oneof![1 => Just(Poly::zero()), 2 => poly_in(2, 3)];
     (proptest::collection::vec(entry(), n * n), proptest::collection::vec(entry(), n * n)).prop_map(
         move |(a, b)| {
-            let w = Poly::sym(poly::w());
+            let w = Poly::sym(poly::advanced::w());
             let rows = (0..n)
                 .map(|i| {
                     (0..n)
@@ -222,8 +222,8 @@ proptest! {
         a in (1usize..=5, any::<bool>()).prop_flat_map(|(n, unit)| pencil(n, unit))
     ) {
         let laplace = a.det_laplace();
-        prop_assert_eq!(a.det_pencil_modular(poly::w()).expect("small grid"), laplace.clone());
-        prop_assert_eq!(a.det_pencil(poly::w()), laplace);
+        prop_assert_eq!(a.det_pencil_modular(poly::advanced::w()).expect("small grid"), laplace.clone());
+        prop_assert_eq!(a.det_pencil(poly::advanced::w()), laplace);
     }
 }
 

@@ -209,12 +209,14 @@ mod fuzz {
     }
 
     fn edited_builtin() -> impl Strategy<Value = String> {
-        let names: Vec<&'static str> = poly::builtin_names().collect();
+        let names: Vec<&'static str> = poly::advanced::builtins::builtin_names().collect();
         let edit = (any::<prop::sample::Index>(), 0usize..4, prop::sample::select(PIECES));
         (prop::sample::select(names), proptest::collection::vec(edit, 1..=4)).prop_map(
             |(name, edits)| {
-                let mut chars: Vec<char> =
-                    poly::builtin_source(name).expect("built-in").chars().collect();
+                let mut chars: Vec<char> = poly::advanced::builtins::builtin_source(name)
+                    .expect("built-in")
+                    .chars()
+                    .collect();
                 for (at, what, piece) in edits {
                     let i = at.index(chars.len() + 1);
                     match what {
@@ -310,14 +312,14 @@ fn invisible_characters() {
 /// A byte-order mark first in the file and CRLF line endings are accepted.
 #[test]
 fn bom_and_crlf_are_accepted() {
-    let src = poly::builtin_source("false_euler").unwrap();
+    let src = poly::advanced::builtins::builtin_source("false_euler").unwrap();
     let with_bom = format!("\u{feff}{src}");
     let crlf = src.replace('\n', "\r\n");
     for text in [with_bom, crlf] {
         let m = Method::parse("ok.zm", &text).expect("parses");
         assert_eq!(
-            poly::charpoly(&m).unwrap(),
-            poly::charpoly(&poly::builtin("false_euler").unwrap()).unwrap()
+            poly::advanced::charpoly(&m).unwrap(),
+            poly::advanced::charpoly(&poly::builtin("false_euler").unwrap()).unwrap()
         );
     }
 }
@@ -368,8 +370,9 @@ fn unknown_builtin_has_no_fake_location() {
 /// fractions and signs; everything else a located error.
 #[test]
 fn numbers_typed_on_the_command_line() {
-    let ok =
-        |s: &str, n: i64, d: i64| assert_eq!(poly::parse_number(s).unwrap(), poly::q(n, d), "{s}");
+    let ok = |s: &str, n: i64, d: i64| {
+        assert_eq!(poly::advanced::parse_number(s).unwrap(), poly::q(n, d), "{s}")
+    };
     ok("0.1", 1, 10);
     ok(".5", 1, 2);
     ok("-1/2", -1, 2);
@@ -378,11 +381,11 @@ fn numbers_typed_on_the_command_line() {
     ok("1e6", 1_000_000, 1);
     ok("1.5/0.5", 3, 1);
     assert_eq!(
-        poly::parse_number("1e-300").unwrap(),
+        poly::advanced::parse_number("1e-300").unwrap(),
         poly::Q::new(1.into(), num_traits::pow(num_bigint::BigInt::from(10), 300))
     );
     let bad = |s: &str, col: u32, says: &str| {
-        let e = poly::parse_number(s).expect_err(s);
+        let e = poly::advanced::parse_number(s).expect_err(s);
         assert_eq!(e.span().col, col, "{s}: {e}");
         assert!(e.message().contains(says), "{s}: {e}");
     };

@@ -42,7 +42,7 @@ fn first_order_methods_are_analysed() {
         "method m\nstate y\ny = y + Phi*y\n",
         "method m\nstate y\ny = y\n",
     ] {
-        let chi = poly::charpoly(&poly::Method::parse("first.zm", src).unwrap()).unwrap();
-        assert!(poly::stability::analyze(&chi).is_ok(), "{src}");
+        let chi = poly::advanced::charpoly(&poly::Method::parse("first.zm", src).unwrap()).unwrap();
+        assert!(poly::advanced::stability::analyze(&chi).is_ok(), "{src}");
     }
 }

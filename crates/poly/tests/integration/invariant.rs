@@ -1,10 +1,10 @@
-//! Conserved quadratic forms (`poly::invariant`): the brief's closed form for
+//! Conserved quadratic forms (`poly::advanced::invariant`): the brief's closed form for
 //! False Euler, and PᵀQP = Q checked by plain multiplication on every
 //! built-in that has a form.
 
 use std::collections::HashMap;
 
-use poly::invariant::{
+use poly::advanced::invariant::{
     conserved_form, form_text, is_positive_definite, transition_matrix_at, NoForm,
 };
 use poly::{q, Sym, Q};
@@ -48,7 +48,7 @@ fn false_euler_form_is_the_closed_form() {
 #[test]
 fn forms_solve_the_defining_equation() {
     let mut found = 0;
-    for name in poly::builtin_names() {
+    for name in poly::advanced::builtins::builtin_names() {
         let m = poly::builtin(name).unwrap();
         for phi in [q(1, 10), q(1, 2), q(3, 2)] {
             let values: HashMap<Sym, Q> =

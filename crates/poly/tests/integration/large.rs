@@ -18,7 +18,11 @@ fn rk4_chains_match_the_slow_routes() {
     for n in 1..=3 {
         let m = parse(&programs::rk4_chain(n));
         let d = poly::derive(&m).unwrap_or_else(|e| panic!("{e}"));
-        assert_eq!(d.charpoly, poly::charpoly_z_route_dense(&m).expect("slow z route"), "n = {n}");
+        assert_eq!(
+            d.charpoly,
+            poly::advanced::charpoly_z_route_dense(&m).expect("slow z route"),
+            "n = {n}"
+        );
         let mut c = d.transition_matrix.charpoly_berkowitz_sparse();
         c.reverse();
         assert_eq!(d.charpoly, Poly::from_coeffs_in(Sym::z(), &c), "n = {n}");
@@ -60,7 +64,7 @@ fn a_chain_of_100_000_temporaries_derives() {
     assert_eq!(m.assigns().len(), n + 2);
     let d = poly::derive(&m).unwrap_or_else(|e| panic!("{e}"));
     let short = parse("method se\nstate v y\nv = v - Phi*y\ny = y + Phi*v\n");
-    assert_eq!(d.charpoly, poly::charpoly(&short).expect("derives"));
+    assert_eq!(d.charpoly, poly::advanced::charpoly(&short).expect("derives"));
     // M has one row per assignment and about two nonzeros per row.
     assert_eq!(d.z_matrix.rows(), n + 2);
     assert!(d.z_matrix.nonzeros() <= 3 * (n + 2), "{} nonzeros", d.z_matrix.nonzeros());
@@ -72,8 +76,8 @@ fn short_temporary_chains_match_the_slow_route() {
     for n in [2, 3, 10, 50] {
         let m = parse(&programs::temporary_chain(n));
         assert_eq!(
-            poly::charpoly_z_route(&m).expect("fast"),
-            poly::charpoly_z_route_dense(&m).expect("slow"),
+            poly::advanced::charpoly_z_route(&m).expect("fast"),
+            poly::advanced::charpoly_z_route_dense(&m).expect("slow"),
             "n = {n}"
         );
     }

@@ -21,6 +21,7 @@ mod common;
 mod cost;
 mod det;
 mod errors;
+mod front_door;
 mod fuzz_corpus;
 mod implicit;
 mod invariant;

@@ -1,13 +1,11 @@
 //! Stability limits of multistep and Runge–Kutta methods on the oscillator,
 //! written as `.zm` programs with history reads (the built-ins of
-//! `poly::COMPARISON_BUILTINS`, `methods/*.zm`), with
+//! `poly::advanced::builtins::COMPARISON_BUILTINS`, `methods/*.zm`), with
 //! classical values derived by hand, and against a slow, obvious oracle:
 //! Schur's recursive test over Q ("every root strictly inside the unit
 //! circle") at rationals just below and above each exact limit.
 
-use std::collections::HashMap;
-
-use poly::stability::{analyze, analyze_derivation, Boundary, Stability, StabilityReport};
+use poly::advanced::stability::{analyze, Boundary, Stability, StabilityReport};
 use poly::{q, Algebraic, Derivation, Poly, Sym, UPoly, Q};
 
 fn derivation(name: &str) -> Derivation {
@@ -118,11 +116,15 @@ fn adams_bashforth_five_and_six() {
 #[test]
 fn leapfrog_limit_is_one() {
     let d = derivation("leapfrog");
+    // χ alone: bounded below 1, undecided at 1 (a repeated pair at ±i).
     let r = analyze(&d.charpoly).unwrap();
-    assert_eq!(r.phi_max().cloned(), Some(Algebraic::from_rational(q(1, 1))));
-    assert_eq!(r.bounded_at_phi_max(), Some(false));
+    match &r.stability {
+        Stability::UndecidedAt { at, .. } => assert_eq!(at, &Algebraic::from_rational(q(1, 1))),
+        other => panic!("{other:?}"),
+    }
     assert_eq!(r.intervals[0].counts.on, 4);
-    let rp = analyze_derivation(&d, &HashMap::new()).unwrap();
+    let rp = d.stability(&poly::Params::new()).unwrap();
+    assert_eq!(rp.phi_max().cloned(), Some(Algebraic::from_rational(q(1, 1))));
     assert_eq!(rp.bounded_at_phi_max(), Some(false));
     // Just above 1, a root is outside.
     let chi = d.charpoly;
@@ -156,16 +158,17 @@ fn runge_kutta_limits() {
 }
 
 /// Merson 4(3) at Φ = 2√3: a double root at +1 where P = I exactly. From χ
-/// alone the limit counts as unbounded; from P it is bounded.
+/// alone the limit is undecided; from P it is bounded.
 #[test]
 fn merson_limit_is_bounded_from_the_transition_matrix() {
     let d = derivation("merson");
     let r = analyze(&d.charpoly).unwrap();
-    let m = r.phi_max().unwrap().clone();
+    let Stability::UndecidedAt { at: m, boundary } = r.stability else {
+        panic!("{:?}", r.stability)
+    };
     assert_eq!(m.closed_form().as_deref(), Some("2*sqrt(3)"));
-    assert_eq!(r.boundary(), Some(Boundary::DoubleRootAtPlusOne));
-    assert_eq!(r.bounded_at_phi_max(), Some(false));
-    let rp = analyze_derivation(&d, &HashMap::new()).unwrap();
+    assert_eq!(boundary, Boundary::DoubleRootAtPlusOne);
+    let rp = d.stability(&poly::Params::new()).unwrap();
     assert_eq!(rp.phi_max().cloned(), Some(m.clone()));
     assert_eq!(rp.bounded_at_phi_max(), Some(true));
     assert!(rp.from_transition_matrix);
@@ -191,7 +194,7 @@ fn merson_limit_is_bounded_from_the_transition_matrix() {
 #[test]
 fn adams_bashforth_seven_and_eight() {
     for name in ["ab7", "ab8"] {
-        let r = analyze_derivation(&derivation(name), &HashMap::new()).unwrap();
+        let r = derivation(name).stability(&poly::Params::new()).unwrap();
         assert_eq!(r.boundary(), Some(Boundary::ComplexPairLeavesCircle), "{name}");
         assert_eq!(r.bounded_at_phi_max(), Some(true), "{name}");
         check_limit_against_schur(name, &r);
@@ -212,9 +215,9 @@ fn exact(x: &Algebraic) -> String {
 #[test]
 fn comparison_builtins_summary() {
     let mut out = String::new();
-    for name in poly::comparison_builtin_names() {
+    for name in poly::advanced::builtins::comparison_builtin_names() {
         let d = derivation(name);
-        let r = analyze_derivation(&d, &HashMap::new()).unwrap();
+        let r = d.stability(&poly::Params::new()).unwrap();
         out += &format!("{name}: degree {}, {}", r.degree, r.stability.name());
         if let Some(m) = r.phi_max() {
             out += &format!(

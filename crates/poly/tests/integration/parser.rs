@@ -1,7 +1,8 @@
 //! Details of the expression language: exact decimals, comments, powers,
 //! the precedence of unary minus, and history reads.
 
-use poly::{Method, Operand, Poly};
+use poly::advanced::Operand;
+use poly::{Method, Poly};
 
 /// `text` (a polynomial expression) parses to the same polynomial as
 /// `same_as`.

@@ -6,7 +6,7 @@
 //! the classes of the intervals. The numeric half (eigenvalues of P on a
 //! dense Φ grid) is in `check`'s tests.
 
-use poly::stability::{analyze, Stability};
+use poly::advanced::stability::{analyze, Stability};
 use poly::{Method, Poly, Sym, Q};
 use proptest::prelude::*;
 
@@ -45,7 +45,7 @@ proptest! {
     #[test]
     fn random_programs_agree_with_jury_at_the_samples(src in program()) {
         let m = Method::parse("gen.zm", &src).map_err(|e| TestCaseError::fail(format!("{e}\n{src}")))?;
-        let Ok(chi) = poly::charpoly(&m) else { return Ok(()) };
+        let Ok(chi) = poly::advanced::charpoly(&m) else { return Ok(()) };
         let Ok(r) = analyze(&chi) else { return Ok(()) };
         for i in &r.intervals {
             let strict = jury_strictly_stable(chi_at(&chi, &i.sample));
@@ -67,6 +67,17 @@ proptest! {
             }
             Stability::UnboundedForAllPhi => {
                 prop_assert!(!r.intervals[0].class.is_bounded(), "{}", src);
+            }
+            // χ alone: bounded below the undecided point, which has a
+            // repeated root on the circle.
+            Stability::UndecidedAt { at, .. } => {
+                for i in &r.intervals {
+                    if i.hi.as_ref().is_some_and(|hi| hi <= at) {
+                        prop_assert!(i.class.is_bounded(), "{}", src);
+                    }
+                }
+                let point = r.critical_points.iter().find(|p| &p.at == at);
+                prop_assert!(point.is_some_and(|p| p.bounded.is_none()), "{}", src);
             }
             Stability::Limited { phi_max, bounded_at_phi_max, .. } => {
                 for i in &r.intervals {
@@ -90,7 +101,7 @@ proptest! {
 #[test]
 fn a_root_fixed_at_one_does_not_hide_another_crossing_it() {
     let src = "method gen\nstate x0 x1 x2\nx0 = x0 + 1*x1\nx1 = x1 + 1*x2\nx2 = x2 + -1*x2 + 1/3*Phi^2*x2\n";
-    let chi = poly::charpoly(&Method::parse("gen.zm", src).unwrap()).unwrap();
+    let chi = poly::advanced::charpoly(&Method::parse("gen.zm", src).unwrap()).unwrap();
     let r = analyze(&chi).unwrap();
     assert!(r.critical_points.iter().any(|p| p.at.to_string() == "sqrt(3)"), "{r:#?}");
     let above = r.intervals.last().unwrap();

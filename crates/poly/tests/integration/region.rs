@@ -6,15 +6,21 @@
 use std::cmp::Ordering;
 
 use num_traits::Zero;
-use poly::region::{region, CurveKind, PhiLimit, Unconditional};
+use poly::advanced::region::{CurveKind, PhiLimit, Region, Unconditional};
 use poly::{q, Algebraic, Poly, Sym, Q};
 
 fn d() -> Sym {
     Sym::new("D")
 }
 
-fn chi(name: &str) -> Poly {
-    poly::charpoly(&poly::builtin(name).unwrap()).unwrap()
+/// The (Φ, D) region of a built-in.
+fn region_of(name: &str) -> Region {
+    poly::derive(&poly::builtin(name).unwrap()).unwrap().region(d()).unwrap()
+}
+
+/// The (Φ, D) region of a `.zm` program.
+fn region_of_source(src: &str) -> Region {
+    poly::derive_source("test.zm", src).unwrap().region(d()).unwrap()
 }
 
 /// Membership of every rational (Φ, D) on a grid equals the oracle
@@ -23,7 +29,7 @@ fn chi(name: &str) -> Poly {
 /// inside the circle), double and unbounded at D = 0.
 #[test]
 fn false_euler_membership_is_the_closed_form() {
-    let r = region(&chi("false_euler_damped"), d()).unwrap();
+    let r = region_of("false_euler_damped");
     let mut on_boundary = 0;
     for i in 1..=30 {
         for j in 0..=20 {
@@ -42,7 +48,7 @@ fn false_euler_membership_is_the_closed_form() {
 /// positive root of Φ² + 4DΦ − 4, within 1e-12 of the closed form.
 #[test]
 fn false_euler_phi_max_is_the_closed_form() {
-    let r = region(&chi("false_euler_damped"), d()).unwrap();
+    let r = region_of("false_euler_damped");
     for (dd, expected) in
         [(q(0, 1), q(2, 1)), (q(3, 4), q(1, 1)), (q(5, 12), q(4, 3)), (q(8, 15), q(6, 5))]
     {
@@ -73,7 +79,7 @@ fn false_euler_phi_max_is_the_closed_form() {
 /// Φ = 0), the unit circle 2DΦ (only the axes).
 #[test]
 fn false_euler_curves() {
-    let r = region(&chi("false_euler_damped"), d()).unwrap();
+    let r = region_of("false_euler_damped");
     let kinds: Vec<CurveKind> = r.boundary_curves().map(|c| c.kind).collect();
     assert_eq!(kinds, [CurveKind::ChiAtMinusOne]);
     let c = r.boundary_curves().next().unwrap();
@@ -88,16 +94,25 @@ fn false_euler_curves() {
 /// D ≥ 0; the explicit methods are not.
 #[test]
 fn unconditional_stability() {
-    let backward = Poly::parse("(1 + 2*D*Phi + Phi^2)*z^2 - (2 + 2*D*Phi)*z + 1").unwrap();
-    // Trapezoidal: det(z(I − ΦA/2) − (I + ΦA/2)) for A = [[−2D, −1], [1, 0]].
-    let trapezoid =
-        Poly::parse("(1 + D*Phi + Phi^2/4)*z^2 - (2 - Phi^2/2)*z + (1 - D*Phi + Phi^2/4)").unwrap();
-    for (name, chi) in [("backward", backward), ("trapezoid", trapezoid)] {
-        let r = region(&chi, d()).unwrap();
+    // Backward Euler and the trapezoidal rule on v' = −2Dv − y, y' = v.
+    let backward =
+        "method backward\nstate v y\nparam D\nv' = v - Phi*(2*D*v' + y')\ny' = y + Phi*v'\n";
+    let trapezoid = "method trapezoid\nstate v y\nparam D\n\
+        v' = v - Phi/2*(2*D*v + y + 2*D*v' + y')\ny' = y + Phi/2*(v + v')\n";
+    for (name, src) in [("backward", backward), ("trapezoid", trapezoid)] {
+        let r = region_of_source(src);
+        let chi = r.charpoly().clone();
+        let expected = match name {
+            "backward" => "(1 + 2*D*Phi + Phi^2)*z^2 - (2 + 2*D*Phi)*z + 1",
+            _ => "(1 + D*Phi + Phi^2/4)*z^2 - (2 - Phi^2/2)*z + (1 - D*Phi + Phi^2/4)",
+        };
+        // The programs are the systems intended: χ up to a constant factor.
+        let want = Poly::parse(expected).unwrap();
+        assert!(proportional(&chi, &want), "{name}: {chi}");
         assert!(matches!(r.unconditional().unwrap(), Unconditional::Stable { .. }), "{name}");
     }
-    for name in poly::DAMPED_METHODS {
-        let r = region(&chi(name), d()).unwrap();
+    for name in poly::advanced::builtins::DAMPED_METHODS {
+        let r = region_of(name);
         match r.unconditional().unwrap() {
             Unconditional::Unstable { d, limit } => {
                 // The counterexample is real: some Φ is unbounded there.
@@ -113,8 +128,8 @@ fn unconditional_stability() {
 #[test]
 fn membership_agrees_with_phi_max() {
     let eps = q(1, 1000);
-    for name in poly::DAMPED_METHODS {
-        let r = region(&chi(name), d()).unwrap();
+    for name in poly::advanced::builtins::DAMPED_METHODS {
+        let r = region_of(name);
         for dd in [q(0, 1), q(1, 10), q(1, 2), q(2, 1)] {
             if let PhiLimit::Below(m) = r.phi_max(&dd).unwrap() {
                 let (lo, hi) = m.refine(&q(1, 1 << 20)).interval();
@@ -126,4 +141,12 @@ fn membership_agrees_with_phi_max() {
             }
         }
     }
+}
+
+/// Whether a = c·b for a nonzero rational c.
+fn proportional(a: &Poly, b: &Poly) -> bool {
+    let (z, phi) = (Sym::z(), Sym::phi());
+    let lead = |p: &Poly| p.coeffs_in(z).last().cloned().unwrap().coeffs_in(phi)[0].clone();
+    let (la, lb) = (lead(a), lead(b));
+    a * &lb == b * &la
 }

@@ -378,18 +378,18 @@ fn check_program(prog: &Program, phi: Q, k: Q) {
     let n = prog.slots().len();
     assert_eq!(method.order(), n, "{src}");
 
-    let p = poly::transition_matrix(&method);
-    let a = poly::charpoly_z_route(&method).unwrap_or_else(|e| panic!("{e}\n{src}"));
-    let b = poly::charpoly_state_route(&p);
+    let p = poly::advanced::transition_matrix(&method);
+    let a = poly::advanced::charpoly_z_route(&method).unwrap_or_else(|e| panic!("{e}\n{src}"));
+    let b = poly::advanced::charpoly_state_route(&p);
     assert_eq!(a, b, "routes disagree on\n{src}");
     // The z route eliminates temporaries before its determinant; on small
     // programs, hold it against Berkowitz on the whole of M.
-    let m_full = poly::z_matrix(&method).to_dense();
+    let m_full = poly::advanced::z_matrix(&method).to_dense();
     if m_full.rows() <= 6 {
         let det = m_full.det();
         let z = Poly::sym(Sym::z());
         let w_to_z = det
-            .coeffs_in(poly::w())
+            .coeffs_in(poly::advanced::w())
             .iter()
             .enumerate()
             .fold(Poly::zero(), |acc, (k, c)| acc + c * z.pow((n - k) as u32));
@@ -397,7 +397,8 @@ fn check_program(prog: &Program, phi: Q, k: Q) {
     }
     // The fast route (a) (sparse M, forward substitution, modular
     // determinant) against the slow one (dense elimination, sparse Berkowitz).
-    let slow = poly::charpoly_z_route_dense(&method).unwrap_or_else(|e| panic!("{e}\n{src}"));
+    let slow =
+        poly::advanced::charpoly_z_route_dense(&method).unwrap_or_else(|e| panic!("{e}\n{src}"));
     assert_eq!(a, slow, "fast and slow z routes\n{src}");
     let d = poly::derive(&method).unwrap_or_else(|e| panic!("{e}\n{src}"));
     assert_eq!(d.charpoly, a);

@@ -3,14 +3,14 @@
 //! Appendix A's approximations.
 
 use num_bigint::BigInt;
-use poly::series::{
+use poly::advanced::series::{
     dispersion_order, dissipation_order, modulus_sq_series, psi_series, psi_series_scaled,
     LeadingTerm, Series, SeriesErrorKind,
 };
 use poly::{q, Poly, Sym, Q};
 
 fn chi_of(name: &str) -> Poly {
-    poly::charpoly(&poly::builtin(name).unwrap()).unwrap()
+    poly::advanced::charpoly(&poly::builtin(name).unwrap()).unwrap()
 }
 
 fn factorial(n: u64) -> BigInt {
@@ -64,7 +64,7 @@ fn p_q(chi: &Poly, order: usize) -> (Series, Series) {
 #[test]
 fn psi_satisfies_cos_psi_equals_p_over_sqrt_q() {
     let order = 16;
-    for name in poly::paper_builtin_names().filter(|n| *n != "damped_euler_d") {
+    for name in poly::advanced::builtins::paper_builtin_names().filter(|n| *n != "damped_euler_d") {
         let chi = chi_of(name);
         let psi = Series::new(psi_series(&chi, order).unwrap());
         let (s, c) = sin_cos(&psi);

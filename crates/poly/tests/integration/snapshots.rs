@@ -3,7 +3,8 @@
 //! compared by hand with the equations the paper prints (sections 5–11 and
 //! Appendix B); the differences are listed in the report of issue 2.
 
-use poly::{Derivation, Operand};
+use poly::advanced::Operand;
+use poly::Derivation;
 
 /// The derivation of a built-in, as reviewed.
 fn record(name: &str) -> String {
@@ -11,7 +12,7 @@ fn record(name: &str) -> String {
     let d = poly::derive(&m).unwrap_or_else(|e| panic!("{e}"));
     let mut s = String::new();
     s += "source:\n";
-    for line in poly::builtin_source(name).expect("built-in").lines() {
+    for line in poly::advanced::builtins::builtin_source(name).expect("built-in").lines() {
         s += &format!("  {line}\n");
     }
     s += "\nlowered step:\n";
@@ -47,7 +48,7 @@ fn record(name: &str) -> String {
 
 #[test]
 fn builtin_derivations() {
-    for name in poly::all_builtin_names() {
+    for name in poly::advanced::builtins::all_builtin_names() {
         let mut settings = crate::snapshot::in_dir("poly");
         settings.set_omit_expression(true);
         settings.bind(|| insta::assert_snapshot!(name, record(name)));

@@ -3,7 +3,9 @@
 
 use std::cmp::Ordering;
 
-use poly::sturm::{count_all_real_roots, count_real_roots, isolate_real_roots, sturm_sequence};
+use poly::advanced::sturm::{
+    count_all_real_roots, count_real_roots, isolate_real_roots, sturm_sequence,
+};
 use poly::{q, Algebraic, UPoly, Q};
 use proptest::prelude::*;
 
@@ -328,7 +330,7 @@ proptest! {
             Q::new(1.into(), num_bigint::BigInt::from(1) << bits)
         };
         for (lo, hi) in isolate_real_roots(&p) {
-            let fast = poly::sturm::refine_interval(&sf, &lo, &hi, &width);
+            let fast = poly::advanced::sturm::refine_interval(&sf, &lo, &hi, &width);
             prop_assert_eq!(fast, bisect_oracle(&sf, &lo, &hi, &width));
         }
     }
@@ -355,7 +357,7 @@ proptest! {
         let (lo, hi) = intervals[pick % intervals.len()].clone();
         prop_assume!(lo != hi);
         let width = (&hi - &lo) / Q::from_integer(num_bigint::BigInt::from(1) << halvings) * q(3, 5);
-        let fast = poly::sturm::refine_interval(&sf, &lo, &hi, &width);
+        let fast = poly::advanced::sturm::refine_interval(&sf, &lo, &hi, &width);
         prop_assert_eq!(fast, bisect_oracle(&sf, &lo, &hi, &width));
     }
 

@@ -35,8 +35,10 @@ use num_traits::One;
 use crate::error::{Error, ErrorKind};
 use crate::{Poly, Sym, UPoly, Q};
 
-use super::Condition;
+use super::report::{Condition, CriticalPoint};
+use crate::univariate::algebraic::Algebraic;
 use crate::univariate::modular;
+use crate::univariate::upoly::reciprocal_reduce;
 
 /// χ split into its coefficients in z, each an integer polynomial in Φ.
 #[derive(Clone, Debug)]
@@ -428,39 +430,6 @@ pub(crate) fn exact_div_z(f: &[UPoly], g: &[UPoly]) -> ZPoly {
     primitive(q)
 }
 
-/// For a palindromic g of even degree 2m (coefficients lowest first), G with
-/// g(z) = z^m G(z + 1/z): G = c_m + Σ_k c_{m+k} D_k(x), D_k(z + 1/z) = z^k + z^{−k}.
-pub(crate) fn reciprocal_reduce<T: Clone>(
-    c: &[T],
-    zero: T,
-    add: impl Fn(&T, &T) -> T,
-    scale_int: impl Fn(&T, i64) -> T,
-) -> Vec<T> {
-    let m = (c.len() - 1) / 2;
-    // D_k as integer polynomials in x.
-    let mut d: Vec<Vec<i64>> = vec![vec![2], vec![0, 1]];
-    for k in 2..=m {
-        let mut next = vec![0i64; k + 1];
-        for (i, &v) in d[k - 1].iter().enumerate() {
-            next[i + 1] += v;
-        }
-        for (i, &v) in d[k - 2].iter().enumerate() {
-            next[i] -= v;
-        }
-        d.push(next);
-    }
-    let mut g = vec![zero.clone(); m + 1];
-    g[0] = add(&g[0], &c[m]);
-    for k in 1..=m {
-        for (i, &v) in d[k].iter().enumerate() {
-            if v != 0 {
-                g[i] = add(&g[i], &scale_int(&c[m + k], v));
-            }
-        }
-    }
-    g
-}
-
 /// The critical conditions of χ, each a polynomial in Φ.
 pub(crate) fn critical_conditions(chi: &Charpoly) -> Vec<(Condition, UPoly)> {
     let a = &chi.a;
@@ -558,6 +527,34 @@ fn reciprocal_conditions(a: &[UPoly]) -> Vec<(Condition, UPoly)> {
         }
     }
     out
+}
+
+/// Every positive root of every non-trivial condition, merged exactly.
+pub(crate) fn critical_points(conditions: &[(Condition, UPoly)]) -> Vec<CriticalPoint> {
+    // Narrow intervals make the printed "root of ... in [a, b]" readable.
+    // Refined as soon as found (the refined interval depends only on the
+    // isolating one): the merging and sorting below then compare narrow
+    // intervals, which mostly separate at once, instead of refining copies
+    // again in every comparison.
+    let width = Q::new(1.into(), 1024.into());
+    let mut points: Vec<CriticalPoint> = Vec::new();
+    for (name, cond) in conditions {
+        if cond.degree().unwrap_or(0) == 0 {
+            continue;
+        }
+        for root in Algebraic::positive_roots(cond) {
+            let root = root.refine(&width);
+            match points.iter_mut().find(|p| p.at == root) {
+                Some(p) if p.conditions.contains(name) => {}
+                Some(p) => p.conditions.push(*name),
+                None => {
+                    points.push(CriticalPoint { at: root, conditions: vec![*name], bounded: None })
+                }
+            }
+        }
+    }
+    points.sort_by(|x, y| x.at.cmp(&y.at));
+    points
 }
 
 #[cfg(test)]

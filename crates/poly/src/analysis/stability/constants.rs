@@ -21,9 +21,10 @@
 
 use std::cmp::Ordering;
 
-use crate::analysis::stability::{
-    Boundary, ClassChange, ClassInterval, Condition, Counts, CriticalPoint, Stability,
-    StabilityReport, StableInterval,
+use super::conditions::critical_points;
+use super::point::{classify_quadratic_by, quadratic_terms, Counts};
+use super::report::{
+    Boundary, ClassChange, ClassInterval, Condition, Stability, StabilityReport, StableInterval,
 };
 use crate::error::{Error, ErrorKind};
 use crate::multivariate::constants as field;
@@ -50,91 +51,11 @@ fn z_coeffs(chi: &Poly) -> Result<Vec<Poly>, Error> {
     Ok(a)
 }
 
-/// The class of c + b z + a z² (elements of F) from exact signs; the same
-/// rules as the rational engine's quadratic classifier.
-pub fn classify_quadratic(c: &Poly, b: &Poly, a: &Poly) -> RootClass {
-    let sgn = |p: &Poly| field::sign(&field::reduce(p));
-    let sa = sgn(a);
-    let two = Poly::int(2);
-    if sa == Ordering::Equal {
-        let sb = sgn(b);
-        if sb == Ordering::Equal {
-            return RootClass::Deadbeat;
-        }
-        let by_b = |o: Ordering| if sb == Ordering::Greater { o } else { o.reverse() };
-        let r = by_b(sgn(&-c));
-        let r_minus_one = by_b(sgn(&-&(c + b)));
-        let r_plus_one = by_b(sgn(&(b - c)));
-        return match r {
-            Ordering::Equal => RootClass::Deadbeat,
-            Ordering::Greater => match r_minus_one {
-                Ordering::Less => RootClass::MonotonicStable,
-                Ordering::Equal => RootClass::Constant,
-                Ordering::Greater => RootClass::MonotonicUnstable,
-            },
-            Ordering::Less => match r_plus_one {
-                Ordering::Greater => RootClass::AlternatingStable,
-                Ordering::Equal => RootClass::Alternating,
-                Ordering::Less => RootClass::AlternatingUnstable,
-            },
-        };
-    }
-    let by_a = |o: Ordering| if sa == Ordering::Greater { o } else { o.reverse() };
-    let disc = sgn(&(&(b * b) - &(&Poly::int(4) * &(a * c))));
-    let two_a = &two * a;
-    if disc == Ordering::Less {
-        return match by_a(sgn(&(c - a))) {
-            Ordering::Less => RootClass::DampedOscillation,
-            Ordering::Equal => RootClass::Harmonic,
-            Ordering::Greater => RootClass::UnstableOscillation,
-        };
-    }
-    match by_a(sgn(&-b)) {
-        Ordering::Equal => {
-            if by_a(sgn(c)) == Ordering::Equal {
-                return RootClass::Deadbeat;
-            }
-            match by_a(sgn(&-&(c + a))) {
-                Ordering::Less => RootClass::AlternatingStable,
-                Ordering::Equal => RootClass::Alternating,
-                Ordering::Greater => RootClass::AlternatingUnstable,
-            }
-        }
-        Ordering::Greater => {
-            let p_minus_one = by_a(sgn(&-&(b + &two_a)));
-            if disc == Ordering::Equal {
-                return match p_minus_one {
-                    Ordering::Less => RootClass::MonotonicStable,
-                    Ordering::Equal => RootClass::DoubleRootOnCircle,
-                    Ordering::Greater => RootClass::MonotonicUnstable,
-                };
-            }
-            match (by_a(sgn(&(&(a + b) + c))), p_minus_one) {
-                (Ordering::Less, _) | (Ordering::Equal | Ordering::Greater, Ordering::Greater) => {
-                    RootClass::MonotonicUnstable
-                }
-                (Ordering::Equal, _) => RootClass::Constant,
-                (Ordering::Greater, _) => RootClass::MonotonicStable,
-            }
-        }
-        Ordering::Less => {
-            let p_plus_one = by_a(sgn(&(&two_a - b)));
-            if disc == Ordering::Equal {
-                return match p_plus_one {
-                    Ordering::Greater => RootClass::AlternatingStable,
-                    Ordering::Equal => RootClass::DoubleRootOnCircle,
-                    Ordering::Less => RootClass::AlternatingUnstable,
-                };
-            }
-            match (by_a(sgn(&(&(a - b) + c))), p_plus_one) {
-                (Ordering::Less, _) | (Ordering::Equal | Ordering::Greater, Ordering::Less) => {
-                    RootClass::AlternatingUnstable
-                }
-                (Ordering::Equal, _) => RootClass::Alternating,
-                (Ordering::Greater, _) => RootClass::AlternatingStable,
-            }
-        }
-    }
+/// The class of c + b z + a z² (elements of F) from exact signs in F, by
+/// the one root-class table of the rational engine.
+pub(crate) fn classify_quadratic(c: &Poly, b: &Poly, a: &Poly) -> RootClass {
+    let terms = quadratic_terms(c, b, a);
+    classify_quadratic_by(|k| field::sign(&field::reduce(&terms[k])))
 }
 
 /// The class of a constant-bearing second-order χ at a rational Φ, exactly.
@@ -169,8 +90,16 @@ fn between(lo: &Algebraic, hi: &Algebraic) -> Q {
 }
 
 /// The exact stability analysis of a second-order χ over F; see the module
-/// notes.
-pub fn analyze(chi: &Poly) -> Result<StabilityReport, Error> {
+/// notes. With the numerator N of the transition matrix P = N/d, a limit
+/// where a root on the circle is repeated is decided from P: bounded there
+/// only when P is scalar (a 2×2 matrix with a double eigenvalue is
+/// semisimple exactly then), and P is not scalar where the norm of an entry
+/// of N − (tr N/2)·I does not vanish. Without N, or when every such norm
+/// vanishes there, the limit is [`Stability::UndecidedAt`].
+pub(crate) fn analyze(
+    chi: &Poly,
+    numerator: Option<&[Vec<Poly>]>,
+) -> Result<StabilityReport, Error> {
     let a = z_coeffs(chi)?;
     if a.len() != 3 {
         return Err(degree_error(a.len() - 1));
@@ -187,28 +116,14 @@ pub fn analyze(chi: &Poly) -> Result<StabilityReport, Error> {
         (Condition::UnitCircle, c - lead),
         (Condition::ModulusTie, b.clone()),
     ];
-    let mut points: Vec<CriticalPoint> = Vec::new();
+    let mut norms: Vec<(Condition, UPoly)> = Vec::new();
     for (name, cond) in &conditions {
         let n = field::norm(&field::reduce(cond));
-        let Some(u) = n.to_upoly(Sym::phi()) else { continue };
-        if u.degree().unwrap_or(0) == 0 {
-            continue;
-        }
-        for root in Algebraic::positive_roots(&u.squarefree()) {
-            match points.iter_mut().find(|p| p.at == root) {
-                Some(p) if p.conditions.contains(name) => {}
-                Some(p) => p.conditions.push(*name),
-                None => {
-                    points.push(CriticalPoint { at: root, conditions: vec![*name], bounded: None })
-                }
-            }
+        if let Some(u) = n.to_upoly(Sym::phi()) {
+            norms.push((*name, u.squarefree()));
         }
     }
-    points.sort_by(|x, y| x.at.cmp(&y.at));
-    let width = Q::new(1.into(), 1024.into());
-    for p in &mut points {
-        p.at = p.at.refine(&width);
-    }
+    let points = critical_points(&norms);
     let zero = Algebraic::zero();
     let mut samples = Vec::with_capacity(points.len() + 1);
     for k in 0..=points.len() {
@@ -253,9 +168,13 @@ pub fn analyze(chi: &Poly) -> Result<StabilityReport, Error> {
         }
     }
     let stability = match (phi_max, boundary) {
-        (Some(phi_max), Some(boundary)) => {
-            Stability::Limited { phi_max, bounded_at_phi_max: bounded_at_limit(boundary), boundary }
-        }
+        (Some(phi_max), Some(boundary)) => match bounded_at_limit(boundary) {
+            Some(bounded) => Stability::Limited { phi_max, bounded_at_phi_max: bounded, boundary },
+            None if numerator.is_some_and(|n| not_scalar_at(n, &phi_max)) => {
+                Stability::Limited { phi_max, bounded_at_phi_max: false, boundary }
+            }
+            None => Stability::UndecidedAt { at: phi_max, boundary },
+        },
         _ if bounded_for_all => Stability::BoundedForAllPhi,
         _ => Stability::UnboundedForAllPhi,
     };
@@ -270,6 +189,12 @@ pub fn analyze(chi: &Poly) -> Result<StabilityReport, Error> {
             lo_closed: false,
             hi: Some(phi_max.clone()),
             hi_closed: *bounded_at_phi_max,
+        }],
+        Stability::UndecidedAt { at, .. } => vec![StableInterval {
+            lo: zero.clone(),
+            lo_closed: false,
+            hi: Some(at.clone()),
+            hi_closed: false,
         }],
         Stability::UnboundedForAllPhi => Vec::new(),
     };
@@ -286,15 +211,35 @@ pub fn analyze(chi: &Poly) -> Result<StabilityReport, Error> {
 }
 
 /// Whether χ is bounded exactly at the limit, from what happens there: a
-/// double root on the circle is unbounded (χ alone), a simple root at ±1
-/// or a pair of distinct roots on the circle is bounded.
-fn bounded_at_limit(boundary: Boundary) -> bool {
-    matches!(
-        boundary,
+/// simple root at ±1 or a pair of distinct roots on the circle is bounded;
+/// a root on the circle that is repeated needs P (`None`); anything else
+/// has a root outside.
+fn bounded_at_limit(boundary: Boundary) -> Option<bool> {
+    match boundary {
         Boundary::RootThroughPlusOne
-            | Boundary::RootThroughMinusOne
-            | Boundary::ComplexPairLeavesCircle
-    )
+        | Boundary::RootThroughMinusOne
+        | Boundary::ComplexPairLeavesCircle => Some(true),
+        Boundary::DoubleRootAtMinusOne
+        | Boundary::DoubleRootAtPlusOne
+        | Boundary::RepeatedPairOnCircle => None,
+        _ => Some(false),
+    }
+}
+
+/// Whether the 2×2 numerator N of P is certainly not a multiple of I at
+/// Φ = α: the norm over Q of N₁₂, N₂₁ or N₁₁ − N₂₂ does not vanish at α.
+fn not_scalar_at(n: &[Vec<Poly>], alpha: &Algebraic) -> bool {
+    if n.len() != 2 || n.iter().any(|row| row.len() != 2) {
+        return false;
+    }
+    let off = [n[0][1].clone(), n[1][0].clone(), &n[0][0] - &n[1][1]];
+    off.iter().any(|g| {
+        let norm = field::norm(&field::reduce(g));
+        match norm.to_upoly(Sym::phi()) {
+            Some(u) => !u.is_zero() && !alpha.is_root_of(&u),
+            None => false,
+        }
+    })
 }
 
 /// The counts of roots of c + b z + a z² (over F, Φ = `phi`) inside, on and
@@ -410,7 +355,7 @@ pub fn limit_at_infinity(chi: &Poly) -> Result<LimitAtInfinity, Error> {
         classify_quadratic(&lim[0], &lim[1], &lim[2])
     } else {
         let u = UPoly::new(lim.iter().map(|c| c.as_constant().unwrap_or_default()).collect());
-        crate::analysis::stability::classify(&u)
+        super::point::classify(&u)
     };
     use RootClass::*;
     Ok(match class {

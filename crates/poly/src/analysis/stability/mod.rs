@@ -19,10 +19,10 @@
 //! and for second-order χ (signs of polynomials at an algebraic number);
 //! boundedness at a critical point next to a bounded interval is decided
 //! for any degree in Q(α): a repeated root on the circle (gcds over Q(α))
-//! makes χ alone unbounded, and with the transition matrix P
-//! ([`analyze_derivation`]) the root is bounded exactly when it is
-//! semisimple: rank q(P) = rank q(P)² for the square-free q of the repeated
-//! roots on the circle.
+//! is bounded exactly when it is semisimple in the transition matrix P:
+//! rank q(P) = rank q(P)² for the square-free q of the repeated roots on the
+//! circle. [`Derivation::stability`] decides it so; an analysis of χ alone
+//! ([`analyze`]) reports such a point as undecided, never as unbounded.
 //!
 //! No float decides anything.
 //!
@@ -37,286 +37,146 @@
 
 mod conditions;
 pub mod constants;
-pub mod point;
+pub(crate) mod point;
 mod rational;
+mod report;
 
-use std::cmp::Ordering;
-use std::collections::HashMap;
-use std::fmt;
-
-pub use point::{
-    circle_counts, classify, classify_pq, classify_roots_by_products, Counts, PqSigns,
+pub use constants::{limit_at_infinity, LimitAtInfinity};
+#[doc(hidden)]
+pub use point::classify_roots_by_products;
+pub use point::Counts;
+pub use point::{classify, classify_pq, PqSigns};
+pub use report::{
+    Boundary, ClassChange, ClassInterval, Condition, CriticalPoint, Marginal, Stability,
+    StabilityReport, StableInterval,
 };
-pub use rational::{analyze, analyze_derivation};
 
-use crate::error::Error;
+use crate::error::{Error, ErrorKind};
+use crate::multivariate::constants::has_generators;
 use crate::univariate::algebraic::Algebraic;
-use crate::{Poly, RootClass, Sym, Q};
+use crate::{Derivation, Params, Poly, RootClass, Sym, UPoly, Q};
 
-/// A critical condition: a polynomial in Φ whose roots may change the class.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-#[non_exhaustive]
-pub enum Condition {
-    /// The leading coefficient a_n vanishes: a root arrives from infinity.
-    LeadingCoefficient,
-    /// The constant coefficient a_0 vanishes: a root passes through zero.
-    ConstantCoefficient,
-    /// χ(1) = 0: a real root at +1.
-    ChiAtOne,
-    /// χ(−1) = 0: a real root at −1.
-    ChiAtMinusOne,
-    /// Two roots with product 1 (|z|² = 1 for a complex pair).
-    UnitCircle,
-    /// Two roots of the self-reciprocal factor meet (on the circle, or
-    /// leaving it).
-    ReciprocalDiscriminant,
-    /// Two roots coincide (discriminant of χ in z).
-    Discriminant,
-    /// Two roots of different kind have the same modulus.
-    ModulusTie,
+/// The exact stability analysis of a bare χ(z; Φ), for a caller who holds
+/// only the polynomial (every parameter but Φ given a value). A repeated
+/// root on the unit circle is bounded or not according to the transition
+/// matrix, which χ does not carry: such a point is reported as
+/// [`Stability::UndecidedAt`], never as unbounded. With a derivation at
+/// hand, ask [`Derivation::stability`], which decides it.
+///
+/// ```
+/// let chi = poly::Poly::parse("z^2 - 2*(1 - Phi^2/2)*z + 1")?; // False Euler
+/// let report = poly::advanced::stability::analyze(&chi)?;
+/// // Bounded below 2; at 2 a double root at −1, which only P decides.
+/// assert_eq!(report.undecided_at().unwrap().to_string(), "2");
+/// assert_eq!(report.boundary(), Some(poly::Boundary::DoubleRootAtMinusOne));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn analyze(charpoly: &Poly) -> Result<StabilityReport, Error> {
+    if has_generators(charpoly) {
+        return constants::analyze(charpoly, None);
+    }
+    rational::analyze(charpoly, None)
 }
 
-impl Condition {
-    /// The name used in JSON and reports.
-    pub fn name(self) -> &'static str {
-        match self {
-            Condition::LeadingCoefficient => "leading coefficient",
-            Condition::ConstantCoefficient => "constant coefficient",
-            Condition::ChiAtOne => "chi(1)",
-            Condition::ChiAtMinusOne => "chi(-1)",
-            Condition::UnitCircle => "z_i z_j = 1",
-            Condition::ReciprocalDiscriminant => "reciprocal discriminant",
-            Condition::Discriminant => "discriminant",
-            Condition::ModulusTie => "modulus tie",
+impl Derivation {
+    /// The exact stability analysis over Φ > 0, with every parameter of the
+    /// method but Φ bound in `params`: the stability limit, the stable
+    /// intervals and the class on every interval. Boundedness where a root
+    /// on the unit circle is repeated is decided from the transition matrix
+    /// P (bounded exactly when P is semisimple there).
+    ///
+    /// ```
+    /// let d = poly::derive(&poly::Method::builtin("false_euler")?)?;
+    /// let report = d.stability(&poly::Params::new())?;
+    /// assert_eq!(report.phi_max().unwrap().to_string(), "2");
+    /// assert_eq!(report.bounded_at_phi_max(), Some(false));
+    /// # Ok::<(), poly::Error>(())
+    /// ```
+    pub fn stability(&self, params: &Params) -> Result<StabilityReport, Error> {
+        let values = self.bind(params)?;
+        let charpoly = self.charpoly.eval_partial(&values);
+        let phi = Sym::phi();
+        if has_generators(&charpoly) {
+            let numerator: Vec<Vec<Poly>> = (0..self.transition_matrix.rows())
+                .map(|i| {
+                    self.transition_matrix.row(i).iter().map(|e| e.eval_partial(&values)).collect()
+                })
+                .collect();
+            return constants::analyze(&charpoly, Some(&numerator));
         }
+        let in_phi = |e: &Poly, what: &str| {
+            let e = e.eval_partial(&values);
+            e.to_upoly(phi).ok_or_else(|| {
+                Error::analysis(
+                    ErrorKind::ExtraSymbol,
+                    format!("{what} {e} still contains a parameter; expected a polynomial in Phi only (give it a value)"),
+                )
+            })
+        };
+        let p = &self.transition_matrix;
+        let rows: Vec<Vec<UPoly>> = (0..p.rows())
+            .map(|i| p.row(i).iter().map(|e| in_phi(e, "transition matrix entry")).collect())
+            .collect::<Result<_, _>>()?;
+        let denominator = in_phi(&self.p_denominator, "the step's determinant det A,")?;
+        rational::analyze(
+            &charpoly,
+            Some(rational::StepMatrix { numerator: &rows, denominator: &denominator }),
+        )
     }
-}
 
-impl fmt::Display for Condition {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.name())
+    /// The root class exactly at a rational Φ, with the method's other
+    /// parameters bound in `params`.
+    pub fn class_at(&self, params: &Params, phi: &Q) -> Result<RootClass, Error> {
+        let values = self.bind(params)?;
+        class_at(&self.charpoly.eval_partial(&values), phi)
     }
-}
 
-/// What happens at the stability limit Φ_max.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-#[non_exhaustive]
-pub enum Boundary {
-    /// Two roots meet at z = −1 (False Euler at Φ = 2).
-    DoubleRootAtMinusOne,
-    /// Two roots meet at z = +1.
-    DoubleRootAtPlusOne,
-    /// A real root passes through z = +1.
-    RootThroughPlusOne,
-    /// A real root passes through z = −1.
-    RootThroughMinusOne,
-    /// A complex pair crosses the unit circle.
-    ComplexPairLeavesCircle,
-    /// A complex pair on the unit circle becomes a repeated pair.
-    RepeatedPairOnCircle,
-    /// The leading coefficient vanishes: a root arrives from infinity.
-    RootFromInfinity,
-    /// None of the above was recognised.
-    Other,
-}
-
-impl Boundary {
-    /// The snake_case name used in JSON and reports.
-    pub fn name(self) -> &'static str {
-        match self {
-            Boundary::DoubleRootAtMinusOne => "double_root_at_minus_one",
-            Boundary::DoubleRootAtPlusOne => "double_root_at_plus_one",
-            Boundary::RootThroughPlusOne => "root_through_plus_one",
-            Boundary::RootThroughMinusOne => "root_through_minus_one",
-            Boundary::ComplexPairLeavesCircle => "complex_pair_leaves_circle",
-            Boundary::RepeatedPairOnCircle => "repeated_pair_on_circle",
-            Boundary::RootFromInfinity => "root_from_infinity",
-            Boundary::Other => "other",
+    /// The values of every parameter of the method but Φ, refusing names
+    /// the method does not declare and Φ itself (the analysis covers every
+    /// Φ > 0).
+    pub(crate) fn bind(&self, params: &Params) -> Result<std::collections::HashMap<Sym, Q>, Error> {
+        let method = &self.method;
+        if let Some(name) = params.undeclared(method).next() {
+            return Err(Error::analysis(
+                ErrorKind::ExtraSymbol,
+                format!(
+                    "method `{}` has no parameter {name}; expected one of: {}",
+                    method.name(),
+                    param_list(method.params())
+                ),
+            ));
         }
-    }
-}
-
-impl fmt::Display for Boundary {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.name())
-    }
-}
-
-/// The verdict over Φ > 0 near zero: one of three exclusive states.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub enum Stability {
-    /// Every 0 < Φ < `phi_max` gives a bounded sequence, and Φ just above
-    /// `phi_max` does not.
-    Limited {
-        /// The stability limit.
-        phi_max: Algebraic,
-        /// Whether Φ = Φ_max itself is bounded (decided exactly; from the
-        /// Jordan structure of P when the analysis was given P).
-        bounded_at_phi_max: bool,
-        /// What happens at the limit.
-        boundary: Boundary,
-    },
-    /// No Φ > 0 is bounded near zero: every small Φ > 0 grows. (Bounded
-    /// intervals further out, if any, are in
-    /// [`StabilityReport::stable_intervals`].)
-    UnboundedForAllPhi,
-    /// Every Φ > 0 gives a bounded sequence.
-    BoundedForAllPhi,
-}
-
-impl Stability {
-    /// `limited`, `unbounded_for_all_phi` or `bounded_for_all_phi`.
-    pub fn name(&self) -> &'static str {
-        match self {
-            Stability::Limited { .. } => "limited",
-            Stability::UnboundedForAllPhi => "unbounded_for_all_phi",
-            Stability::BoundedForAllPhi => "bounded_for_all_phi",
+        let others: Vec<Sym> =
+            method.params().iter().copied().filter(|&s| s != Sym::phi()).collect();
+        if params.value("Phi").is_some() {
+            return Err(Error::analysis(
+                ErrorKind::ExtraSymbol,
+                "Phi is bound, but the analysis covers every Phi > 0; expected values for the other parameters only".to_owned(),
+            ));
         }
+        params.values_of(&others).map_err(|name| {
+            Error::analysis(
+                ErrorKind::ExtraSymbol,
+                format!("method `{}` has the parameter {name}; give it a value", method.name()),
+            )
+        })
     }
 }
 
-/// A Φ where the root class changes.
-#[derive(Clone, Debug)]
-pub struct ClassChange {
-    /// The critical Φ.
-    pub at: Algebraic,
-    /// The class just below.
-    pub from: RootClass,
-    /// The class just above.
-    pub to: RootClass,
-    /// The class exactly at `at` (`None` when not computed: degree ≥ 3 at an
-    /// irrational point).
-    pub at_class: Option<RootClass>,
-}
-
-/// A maximal open Φ-interval of one class.
-#[derive(Clone, Debug)]
-pub struct ClassInterval {
-    /// Lower end (zero for the first interval).
-    pub lo: Algebraic,
-    /// Upper end; `None` for ∞.
-    pub hi: Option<Algebraic>,
-    /// The class everywhere strictly inside.
-    pub class: RootClass,
-    /// The rational Φ at which the class was decided.
-    pub sample: Q,
-    /// Distinct roots inside, on and outside the unit circle at the sample.
-    pub counts: Counts,
-}
-
-/// A critical Φ and the conditions that vanish there.
-#[derive(Clone, Debug)]
-pub struct CriticalPoint {
-    /// The critical Φ.
-    pub at: Algebraic,
-    /// The vanishing conditions.
-    pub conditions: Vec<Condition>,
-    /// Whether the sequence is bounded exactly at this Φ; decided at every
-    /// point next to a bounded interval, `None` elsewhere.
-    pub bounded: Option<bool>,
-}
-
-/// A maximal Φ-interval on which every step size gives a bounded sequence.
-#[derive(Clone, Debug)]
-pub struct StableInterval {
-    /// Lower end (zero for an interval starting at zero).
-    pub lo: Algebraic,
-    /// Whether `lo` itself is bounded (false for zero, which is excluded).
-    pub lo_closed: bool,
-    /// Upper end; `None` for ∞.
-    pub hi: Option<Algebraic>,
-    /// Whether `hi` itself is bounded.
-    pub hi_closed: bool,
-}
-
-/// Where the verdict hangs on a term too small to be meaningful.
-#[derive(Clone, Debug)]
-pub struct Marginal {
-    /// c in |z|² − 1 = c·Φ^k + … (exact; 0 < |c| < 10⁻¹²).
-    pub coefficient: Q,
-    /// k.
-    pub power: usize,
-    /// The stated growth threshold ε: growth per step at most 1 + ε.
-    pub threshold: Q,
-    /// The largest Φ with every root |z| ≤ 1 + ε on (0, Φ]; `None` when no
-    /// such limit exists (within ε for every Φ).
-    pub practical_phi_max: Option<Algebraic>,
-}
-
-/// The result of [`analyze`].
-#[derive(Clone, Debug)]
-pub struct StabilityReport {
-    /// Degree of χ in z.
-    pub degree: usize,
-    /// The verdict near Φ = 0.
-    pub stability: Stability,
-    /// Whether boundedness at multiple roots on the circle was decided from
-    /// the transition matrix P (true) or from χ alone (false: a repeated
-    /// root on the circle counts as unbounded).
-    pub from_transition_matrix: bool,
-    /// Every class change over Φ > 0, increasing.
-    pub class_changes: Vec<ClassChange>,
-    /// The classes between the changes, covering (0, ∞).
-    pub intervals: Vec<ClassInterval>,
-    /// Every maximal interval of bounded Φ, increasing (disjoint).
-    pub stable_intervals: Vec<StableInterval>,
-    /// Every critical Φ > 0 examined, with its vanishing conditions.
-    pub critical_points: Vec<CriticalPoint>,
-    /// Set when the verdict near zero hangs on a tiny term.
-    pub marginal: Option<Marginal>,
-}
-
-impl StabilityReport {
-    /// Φ_max when the verdict is [`Stability::Limited`].
-    pub fn phi_max(&self) -> Option<&Algebraic> {
-        match &self.stability {
-            Stability::Limited { phi_max, .. } => Some(phi_max),
-            _ => None,
-        }
-    }
-
-    /// Whether Φ_max itself is bounded, when there is a limit.
-    pub fn bounded_at_phi_max(&self) -> Option<bool> {
-        match &self.stability {
-            Stability::Limited { bounded_at_phi_max, .. } => Some(*bounded_at_phi_max),
-            _ => None,
-        }
-    }
-
-    /// The boundary kind, when there is a limit.
-    pub fn boundary(&self) -> Option<Boundary> {
-        match &self.stability {
-            Stability::Limited { boundary, .. } => Some(*boundary),
-            _ => None,
-        }
-    }
-
-    /// Bounded for every Φ > 0.
-    pub fn bounded_for_all(&self) -> bool {
-        self.stability == Stability::BoundedForAllPhi
-    }
-
-    /// The class exactly at each change point, in the order of
-    /// [`StabilityReport::class_changes`].
-    pub fn class_at_changes(&self) -> Vec<Option<RootClass>> {
-        self.class_changes.iter().map(|c| c.at_class).collect()
-    }
-
-    /// Whether every 0 < Φ < `phi` is bounded (exact).
-    pub fn is_stable_below(&self, phi: &Q) -> bool {
-        match &self.stability {
-            Stability::BoundedForAllPhi => true,
-            Stability::UnboundedForAllPhi => false,
-            Stability::Limited { phi_max, .. } => phi_max.cmp_rational(phi) != Ordering::Less,
-        }
+fn param_list(params: &[Sym]) -> String {
+    let names: Vec<&str> = params.iter().map(|s| s.name()).filter(|n| *n != "Phi").collect();
+    if names.is_empty() {
+        "none but Phi".to_owned()
+    } else {
+        names.join(", ")
     }
 }
 
 /// The root class of χ at a rational Φ, exactly.
 pub fn class_at(charpoly: &Poly, phi: &Q) -> Result<RootClass, Error> {
     // Exact constants (sqrt(3), cbrt(2)): the norm-based layer.
-    if crate::multivariate::constants::has_generators(charpoly) {
-        return crate::analysis::stability::constants::class_at(charpoly, phi);
+    if has_generators(charpoly) {
+        return constants::class_at(charpoly, phi);
     }
     let chi = conditions::Charpoly::new(charpoly)?;
     Ok(rational::class_at_rational(&chi, phi).0)
@@ -327,9 +187,4 @@ pub fn class_at(charpoly: &Poly, phi: &Q) -> Result<RootClass, Error> {
 pub fn class_at_algebraic(charpoly: &Poly, phi: &Algebraic) -> Result<Option<RootClass>, Error> {
     let chi = conditions::Charpoly::new(charpoly)?;
     Ok(rational::class_at_point(&chi, phi))
-}
-
-/// Substitutes rational values for every parameter except Φ (and z).
-pub fn substitute_params(charpoly: &Poly, values: &HashMap<Sym, Q>) -> Poly {
-    charpoly.eval_partial(values)
 }

@@ -154,7 +154,7 @@ fn on_circle_reciprocal(g: &UPoly) -> usize {
         return on;
     }
     debug_assert!(d % 2 == 0, "a palindrome of even degree remains");
-    let big_g = super::conditions::reciprocal_reduce(
+    let big_g = crate::univariate::upoly::reciprocal_reduce(
         g.coeffs(),
         Q::zero(),
         |a, b| a + b,
@@ -636,6 +636,39 @@ pub(crate) fn class_of_single_root(
     }
 }
 
+/// The thirteen expressions in c, b, a whose signs decide the class of
+/// c + b z + a z², in the order [`classify_quadratic_by`] reads them (the
+/// `Q_*` indices): over Q\[Φ\] for the rational engine, over F\[Φ\] for
+/// χ with exact constants. The one root-class table is
+/// [`classify_quadratic_by`] with [`classify_pq`].
+pub(crate) fn quadratic_terms<T>(c: &T, b: &T, a: &T) -> Vec<T>
+where
+    T: Clone,
+    for<'x> &'x T: std::ops::Add<&'x T, Output = T>
+        + std::ops::Sub<&'x T, Output = T>
+        + std::ops::Mul<&'x T, Output = T>
+        + std::ops::Neg<Output = T>,
+{
+    let two_a = a + a;
+    let ac = a * c;
+    let four_ac = &(&ac + &ac) + &(&ac + &ac);
+    vec![
+        a.clone(),
+        b.clone(),
+        -c,
+        -&(c + b),
+        b - c,
+        &(b * b) - &four_ac,
+        -b,
+        -&(b + &two_a),
+        &two_a - b,
+        c - a,
+        c + a,
+        &(a + b) + c,
+        &(a - b) + c,
+    ]
+}
+
 /// The polynomials in Φ whose signs decide a second-order χ = c + b z + a z²
 /// (see [`classify_quadratic_by`]), formed once per χ, with their integer
 /// forms for signs at rationals.
@@ -661,23 +694,7 @@ const Q_CHI_MINUS_1: usize = 12;
 
 impl QuadPolys {
     pub(crate) fn new(a: &[UPoly]) -> QuadPolys {
-        let (c, b, a) = (&a[0], &a[1], &a[2]);
-        let two_a = a.scale(&Q::from_integer(2.into()));
-        let polys = vec![
-            a.clone(),
-            b.clone(),
-            -c,
-            -&(c + b),
-            b - c,
-            &(b * b) - &(a * c).scale(&Q::from_integer(4.into())),
-            -b,
-            -&(b + &two_a),
-            &two_a - b,
-            c - a,
-            c + a,
-            &(a + b) + c,
-            &(a - b) + c,
-        ];
+        let polys = quadratic_terms(&a[0], &a[1], &a[2]);
         let ints = polys.iter().map(crate::univariate::sturm::IntPoly::new).collect();
         QuadPolys { polys, ints }
     }
@@ -934,7 +951,7 @@ mod tests {
             prop_assume!(sf.degree().unwrap_or(0) > 0);
             let l = Q::new(ln.into(), ld.into());
             let ip = IntPoly::new(&sf);
-            let intervals = crate::univariate::sturm::isolate_real_roots(&sf);
+            let intervals = crate::univariate::roots::isolate_real_roots(&sf);
             let numbers = Algebraic::real_roots(&sf);
             prop_assert_eq!(intervals.len(), numbers.len());
             for (iv, x) in intervals.iter().zip(&numbers) {

@@ -2,20 +2,18 @@
 //! and boundedness at the points, the stability limit and the stable
 //! intervals.
 
-use std::collections::HashMap;
-
 use num_traits::{One, Signed};
 
-use crate::error::{Error, ErrorKind};
+use crate::error::Error;
 use crate::univariate::algebraic::Algebraic;
-use crate::{Derivation, Poly, RootClass, Sym, UPoly, Q};
+use crate::{Poly, RootClass, UPoly, Q};
 
-use super::conditions::{critical_conditions, discriminant, Charpoly};
+use super::conditions::{critical_conditions, critical_points, discriminant, Charpoly};
 use super::point::{
     circle_counts, class_of_single_root, classify_quadratic_by, classify_with_counts,
     quadratic_counts, Counts,
 };
-use super::{
+use super::report::{
     Boundary, ClassChange, ClassInterval, Condition, CriticalPoint, Marginal, Stability,
     StabilityReport, StableInterval,
 };
@@ -62,103 +60,24 @@ pub(crate) fn class_at_point(chi: &Charpoly, phi: &Algebraic) -> Option<RootClas
     }
 }
 
-/// The exact stability analysis of χ(z; Φ) over Φ > 0, from χ alone: a
-/// repeated root on the unit circle counts as unbounded.
-///
-/// ```
-/// let chi = poly::Poly::parse("z^2 - 2*(1 - Phi^2/2)*z + 1")?; // False Euler
-/// let report = poly::stability::analyze(&chi)?;
-/// assert_eq!(report.phi_max().unwrap().to_string(), "2");
-/// assert_eq!(report.boundary(), Some(poly::stability::Boundary::DoubleRootAtMinusOne));
-/// # Ok::<(), Box<dyn std::error::Error>>(())
-/// ```
-pub fn analyze(charpoly: &Poly) -> Result<StabilityReport, Error> {
-    // Exact constants (sqrt(3), cbrt(2)): the norm-based layer.
-    if crate::multivariate::constants::has_generators(charpoly) {
-        return crate::analysis::stability::constants::analyze(charpoly);
-    }
-    let chi = Charpoly::new(charpoly)?;
-    Ok(run(&chi, None, Some(charpoly)))
-}
-
-/// The exact stability analysis of a derivation with the given parameter
-/// values: like [`analyze`], but boundedness where a root on the unit
-/// circle is repeated is decided from the transition matrix P (bounded
-/// exactly when P is semisimple there).
-pub fn analyze_derivation(
-    d: &Derivation,
-    params: &HashMap<Sym, Q>,
+/// The exact stability analysis of a χ(z; Φ) over Q, with the transition
+/// matrix P when there is one: with P, boundedness where a root on the unit
+/// circle is repeated is decided from P (bounded exactly when P is
+/// semisimple there); without it, such a point is undecided.
+pub(crate) fn analyze(
+    charpoly: &Poly,
+    step: Option<StepMatrix<'_>>,
 ) -> Result<StabilityReport, Error> {
-    let charpoly = d.charpoly.eval_partial(params);
-    // Exact constants: the norm-based layer on χ alone (second order, so a
-    // repeated root on the circle is decided from χ).
-    if crate::multivariate::constants::has_generators(&charpoly) {
-        return crate::analysis::stability::constants::analyze(&charpoly);
-    }
-    let chi = Charpoly::new(&charpoly)?;
-    let phi = Sym::phi();
-    let p = &d.transition_matrix;
-    let mut rows = Vec::with_capacity(p.rows());
-    for i in 0..p.rows() {
-        let mut row = Vec::with_capacity(p.cols());
-        for e in p.row(i) {
-            let e = e.eval_partial(params);
-            let u = e.to_upoly(phi).ok_or_else(|| {
-                Error::analysis(
-                    ErrorKind::ExtraSymbol,
-                    format!(
-                        "transition matrix entry {e} still contains a parameter; \
-                         expected a polynomial in Phi only (give it a value)"
-                    ),
-                )
-            })?;
-            row.push(u);
-        }
-        rows.push(row);
-    }
-    let denominator = d.p_denominator.eval_partial(params).to_upoly(phi).ok_or_else(|| {
-        Error::analysis(
-            ErrorKind::ExtraSymbol,
-            "the step's determinant det A still contains a parameter; expected a polynomial in Phi only (give it a value)".to_owned(),
-        )
-    })?;
-    Ok(run(&chi, Some(StepMatrix { numerator: &rows, denominator: &denominator }), Some(&charpoly)))
+    let chi = Charpoly::new(charpoly)?;
+    Ok(run(&chi, step, Some(charpoly)))
 }
 
 /// The transition matrix P = numerator / denominator, entries polynomials
 /// in Φ (the denominator is det A of an implicit step's system, else 1).
 #[derive(Clone, Copy)]
-struct StepMatrix<'a> {
-    numerator: &'a [Vec<UPoly>],
-    denominator: &'a UPoly,
-}
-
-/// Every positive root of every non-trivial condition, merged exactly.
-fn critical_points(conditions: &[(Condition, UPoly)]) -> Vec<CriticalPoint> {
-    // Narrow intervals make the printed "root of ... in [a, b]" readable.
-    // Refined as soon as found (the refined interval depends only on the
-    // isolating one): the merging and sorting below then compare narrow
-    // intervals, which mostly separate at once, instead of refining copies
-    // again in every comparison.
-    let width = Q::new(1.into(), 1024.into());
-    let mut points: Vec<CriticalPoint> = Vec::new();
-    for (name, cond) in conditions {
-        if cond.degree().unwrap_or(0) == 0 {
-            continue;
-        }
-        for root in Algebraic::positive_roots(cond) {
-            let root = root.refine(&width);
-            match points.iter_mut().find(|p| p.at == root) {
-                Some(p) if p.conditions.contains(name) => {}
-                Some(p) => p.conditions.push(*name),
-                None => {
-                    points.push(CriticalPoint { at: root, conditions: vec![*name], bounded: None })
-                }
-            }
-        }
-    }
-    points.sort_by(|x, y| x.at.cmp(&y.at));
-    points
+pub(crate) struct StepMatrix<'a> {
+    pub(crate) numerator: &'a [Vec<UPoly>],
+    pub(crate) denominator: &'a UPoly,
 }
 
 fn run(chi: &Charpoly, p: Option<StepMatrix<'_>>, charpoly: Option<&Poly>) -> StabilityReport {
@@ -195,7 +114,7 @@ fn run(chi: &Charpoly, p: Option<StepMatrix<'_>>, charpoly: Option<&Poly>) -> St
         .map_or_else(|| discriminant(&chi.a), |(_, d)| d.clone());
     for (k, point) in points.iter_mut().enumerate() {
         if classes[k].is_bounded() || classes[k + 1].is_bounded() {
-            point.bounded = Some(bounded_at(chi, &point.at, at_classes[k], &disc, p));
+            point.bounded = bounded_at(chi, &point.at, at_classes[k], &disc, p);
         }
     }
 
@@ -230,7 +149,14 @@ fn run(chi: &Charpoly, p: Option<StepMatrix<'_>>, charpoly: Option<&Poly>) -> St
     } else {
         let mut verdict = Stability::BoundedForAllPhi;
         for (k, point) in points.iter().enumerate() {
-            let at_bounded = point.bounded.expect("decided next to a bounded interval");
+            let Some(at_bounded) = point.bounded else {
+                // χ alone: a repeated root on the circle that P would decide.
+                verdict = Stability::UndecidedAt {
+                    at: point.at.clone(),
+                    boundary: boundary_at(chi, point),
+                };
+                break;
+            };
             if at_bounded && classes[k + 1].is_bounded() {
                 continue;
             }
@@ -286,22 +212,24 @@ fn run(chi: &Charpoly, p: Option<StepMatrix<'_>>, charpoly: Option<&Poly>) -> St
 }
 
 /// Whether Φ = α is bounded, given that every root at α has |z| ≤ 1 (the
-/// point borders a bounded interval, and roots move continuously).
+/// point borders a bounded interval, and roots move continuously); `None`
+/// when a root on the circle is repeated there and P is not at hand (χ alone
+/// cannot tell: the root is bounded exactly when P is semisimple at α).
 fn bounded_at(
     chi: &Charpoly,
     alpha: &Algebraic,
     at_class: Option<RootClass>,
     disc: &UPoly,
     p: Option<StepMatrix<'_>>,
-) -> bool {
+) -> Option<bool> {
     match at_class {
-        Some(c) if c.is_bounded() => return true,
-        Some(RootClass::DoubleRootOnCircle) if p.is_some() => {}
-        Some(_) => return false,
+        Some(c) if c.is_bounded() => return Some(true),
+        Some(RootClass::DoubleRootOnCircle) => {}
+        Some(_) => return Some(false),
         None => {
             if !disc.is_zero() && !alpha.is_root_of(disc) {
                 // Simple roots, none outside: bounded.
-                return true;
+                return Some(true);
             }
         }
     }
@@ -311,24 +239,24 @@ fn bounded_at(
     let lowest = f.iter().position(|c| !field.is_zero(c)).unwrap_or(0);
     let f: FPoly = f[lowest..].to_vec();
     if f.len() < 3 {
-        return true;
+        return Some(true);
     }
     let df = field.derivative(&f);
     let d = field.gcd(&f, &df);
     if d.len() < 2 {
-        return true;
+        return Some(true);
     }
     let rev: FPoly = d.iter().rev().cloned().collect();
     let e = field.gcd(&d, &rev);
     if e.len() < 2 {
-        return true;
+        return Some(true);
     }
-    let Some(StepMatrix { numerator: p, denominator }) = p else { return false };
+    let StepMatrix { numerator: p, denominator } = p?;
     // P = numerator / d (d = det A for an implicit step): a step whose system
     // is singular at this point is not defined there, so not bounded.
     let den = field.reduce(denominator);
     if field.is_zero(&den) {
-        return false;
+        return Some(false);
     }
     let den_inv = field.inv(&den);
     // q: the distinct repeated roots on the circle.
@@ -341,7 +269,7 @@ fn bounded_at(
         .collect();
     let qp = field.poly_at_matrix(&q, &pm);
     let qp2 = field.mat_mul(&qp, &qp);
-    field.rank(qp) == field.rank(qp2)
+    Some(field.rank(qp) == field.rank(qp2))
 }
 
 /// What happens at the stability limit, from which conditions vanish there
@@ -404,7 +332,7 @@ fn marginal(chi: &Charpoly, charpoly: &Poly) -> Option<Marginal> {
     let practical_phi_max = match report.stability {
         Stability::Limited { phi_max, .. } => Some(phi_max),
         Stability::BoundedForAllPhi => None,
-        Stability::UnboundedForAllPhi => return None,
+        Stability::UnboundedForAllPhi | Stability::UndecidedAt { .. } => return None,
     };
     Some(Marginal { coefficient: lead.coeff, power: lead.order, threshold, practical_phi_max })
 }

@@ -11,8 +11,9 @@ use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, ToPrimitive};
 
-use super::PolyMatrix;
-use crate::{Monomial, Poly, Sym, Q};
+use super::polymatrix::PolyMatrix;
+use crate::multivariate::poly::Monomial;
+use crate::{Poly, Sym, Q};
 
 /// Dense integer polynomials in one flat buffer. Slot `i` holds its
 /// coefficients, lowest power first and without trailing zeros, in

@@ -31,186 +31,19 @@
 //! unlucky and the result is the sparse path's, which the tests check.
 
 use std::collections::BTreeSet;
-use std::sync::{Mutex, OnceLock};
 
 use num_bigint::BigInt;
 use num_integer::Integer;
-use num_traits::{One, Signed, ToPrimitive, Zero};
+use num_traits::{One, Signed, Zero};
 
-use super::PolyMatrix;
-use crate::{Monomial, Poly, Sym, Q};
+use super::polymatrix::PolyMatrix;
+use crate::arith::zp::{self, interpolate, inverse_table, primes, split_pencil, Crt, Scratch, Zp};
+use crate::multivariate::poly::Monomial;
+use crate::{Poly, Sym, Q};
 
 /// The largest evaluation grid attempted (points per prime); beyond it the
 /// caller falls back to the sparse path.
 const MAX_GRID: usize = 1 << 22;
-
-/// Arithmetic modulo an odd prime `p < 2^62`, on Montgomery residues
-/// `a·2^64 mod p`.
-#[derive(Clone, Copy)]
-pub(crate) struct Field {
-    p: u64,
-    /// `-p⁻¹ mod 2^64`.
-    neg_inv: u64,
-    /// `2^128 mod p`, which maps an integer into Montgomery form.
-    r2: u64,
-}
-
-impl Field {
-    pub(crate) fn new(p: u64) -> Field {
-        debug_assert!(p % 2 == 1 && p < 1 << 62);
-        // Newton's iteration doubles the correct low bits of p⁻¹ mod 2^64;
-        // p is its own inverse mod 8, so five steps reach 96 bits.
-        let mut inv = p;
-        for _ in 0..5 {
-            inv = inv.wrapping_mul(2u64.wrapping_sub(p.wrapping_mul(inv)));
-        }
-        let r = ((1u128 << 64) % u128::from(p)) as u64;
-        let r2 = ((u128::from(r) * u128::from(r)) % u128::from(p)) as u64;
-        Field { p, neg_inv: inv.wrapping_neg(), r2 }
-    }
-
-    /// `a·b·2^-64 mod p`: with `a, b < p < 2^62` the sum below stays under
-    /// 2^127 and the result under 2p.
-    #[inline]
-    pub(crate) fn mul(self, a: u64, b: u64) -> u64 {
-        let t = u128::from(a) * u128::from(b);
-        let m = (t as u64).wrapping_mul(self.neg_inv);
-        let u = ((t + u128::from(m) * u128::from(self.p)) >> 64) as u64;
-        if u >= self.p {
-            u - self.p
-        } else {
-            u
-        }
-    }
-
-    #[inline]
-    pub(crate) fn add(self, a: u64, b: u64) -> u64 {
-        let s = a + b;
-        if s >= self.p {
-            s - self.p
-        } else {
-            s
-        }
-    }
-
-    #[inline]
-    pub(crate) fn sub(self, a: u64, b: u64) -> u64 {
-        if a >= b {
-            a - b
-        } else {
-            a + self.p - b
-        }
-    }
-
-    pub(crate) fn neg(self, a: u64) -> u64 {
-        if a == 0 {
-            0
-        } else {
-            self.p - a
-        }
-    }
-
-    /// The Montgomery residue of an integer.
-    pub(crate) fn lift(self, a: u64) -> u64 {
-        self.mul(a % self.p, self.r2)
-    }
-
-    fn lift_big(self, x: &BigInt) -> u64 {
-        let r = match x.to_i128() {
-            Some(v) => v.rem_euclid(i128::from(self.p)) as u64,
-            None => x.mod_floor(&BigInt::from(self.p)).to_u64().expect("a residue fits"),
-        };
-        self.lift(r)
-    }
-
-    /// The integer in `0..p` of a Montgomery residue.
-    pub(crate) fn to_u64(self, a: u64) -> u64 {
-        self.mul(a, 1)
-    }
-
-    pub(crate) fn one(self) -> u64 {
-        self.lift(1)
-    }
-
-    fn pow(self, mut a: u64, mut e: u64) -> u64 {
-        let mut r = self.one();
-        while e > 0 {
-            if e & 1 == 1 {
-                r = self.mul(r, a);
-            }
-            a = self.mul(a, a);
-            e >>= 1;
-        }
-        r
-    }
-
-    /// The inverse of a nonzero residue (Fermat).
-    pub(crate) fn inv(self, a: u64) -> u64 {
-        debug_assert!(a != 0);
-        self.pow(a, self.p - 2)
-    }
-}
-
-/// Deterministic Miller–Rabin for 64-bit integers (these bases suffice
-/// below 3.3·10^24).
-fn is_prime(n: u64) -> bool {
-    if n < 2 {
-        return false;
-    }
-    const BASES: [u64; 12] = [2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37];
-    for &b in &BASES {
-        if n.is_multiple_of(b) {
-            return n == b;
-        }
-    }
-    let mulmod = |a: u64, b: u64| ((u128::from(a) * u128::from(b)) % u128::from(n)) as u64;
-    let powmod = |mut a: u64, mut e: u64| {
-        let mut r = 1u64;
-        while e > 0 {
-            if e & 1 == 1 {
-                r = mulmod(r, a);
-            }
-            a = mulmod(a, a);
-            e >>= 1;
-        }
-        r
-    };
-    let (mut d, mut s) = (n - 1, 0);
-    while d % 2 == 0 {
-        d /= 2;
-        s += 1;
-    }
-    'bases: for &b in &BASES {
-        let mut x = powmod(b, d);
-        if x == 1 || x == n - 1 {
-            continue;
-        }
-        for _ in 1..s {
-            x = mulmod(x, x);
-            if x == n - 1 {
-                continue 'bases;
-            }
-        }
-        return false;
-    }
-    true
-}
-
-/// The first `count` primes below 2^62, largest first (cached: found once
-/// per process).
-pub(crate) fn primes(count: usize) -> Vec<u64> {
-    static PRIMES: OnceLock<Mutex<Vec<u64>>> = OnceLock::new();
-    let mut list =
-        PRIMES.get_or_init(|| Mutex::new(Vec::new())).lock().unwrap_or_else(|e| e.into_inner());
-    let mut candidate = list.last().map_or((1u64 << 62) - 1, |&p| p - 2);
-    while list.len() < count {
-        if is_prime(candidate) {
-            list.push(candidate);
-        }
-        candidate -= 2;
-    }
-    list[..count].to_vec()
-}
 
 /// Each prime contributes at least this many bits to the CRT modulus.
 const BITS_PER_PRIME: u64 = 61;
@@ -392,7 +225,7 @@ enum Job {
 /// Residues, per prime, of the result's integer coefficients: slot
 /// `k * grid + idx` is coefficient `k` (0 for a determinant) of the
 /// monomial with exponents given by the mixed-radix digits of `idx`.
-fn residues(b: &Integral, job: Job, f: Field) -> Vec<u64> {
+fn residues(b: &Integral, job: Job, f: Zp) -> Vec<u64> {
     let n = b.n;
     let nv = b.vars.len();
     let sizes: Vec<usize> = b.degree.iter().map(|d| d + 1).collect();
@@ -421,9 +254,7 @@ fn residues(b: &Integral, job: Job, f: Field) -> Vec<u64> {
             t
         })
         .collect();
-    let inverses: Vec<u64> = (0..=sizes.iter().copied().max().unwrap_or(1))
-        .map(|k| if k == 0 { 0 } else { f.inv(f.lift(k as u64)) })
-        .collect();
+    let inverses = inverse_table(f, sizes.iter().copied().max().unwrap_or(1));
     // The innermost symbol is evaluated by Horner on each entry's dense
     // coefficients in it; the others once per outer point.
     let inner = nv.checked_sub(1);
@@ -456,7 +287,7 @@ fn residues(b: &Integral, job: Job, f: Field) -> Vec<u64> {
         let base = outer * inner_size;
         if job == Job::Pencil {
             let (b0, b1) = split_pencil(&dense, inner_width, n);
-            if let Some(c) = pencil_mod(f, b0, b1, n, &mut scratch) {
+            if let Some(c) = zp::pencil(f, b0, b1, n, &mut scratch) {
                 for (k, &x) in c.iter().enumerate() {
                     if k < inner_size {
                         out[base + k] = x;
@@ -479,9 +310,9 @@ fn residues(b: &Integral, job: Job, f: Field) -> Vec<u64> {
             }
             let idx = base + point;
             match job {
-                Job::Det | Job::Pencil => out[idx] = det_mod(f, &mut mat, n),
+                Job::Det | Job::Pencil => out[idx] = zp::det(f, &mut mat, n),
                 Job::Charpoly => {
-                    let c = charpoly_mod(f, &mut mat, n, &mut scratch);
+                    let c = zp::charpoly(f, &mut mat, n, &mut scratch);
                     for (k, &x) in c.iter().enumerate() {
                         out[k * grid + idx] = x;
                     }
@@ -491,7 +322,7 @@ fn residues(b: &Integral, job: Job, f: Field) -> Vec<u64> {
         if job == Job::Pencil {
             // This outer point fell back to values in w: interpolate them
             // now, since the pass below skips the w axis.
-            interpolate(f, &mut out[base..base + inner_size], &inverses);
+            interpolate(f, &mut out[base..base + inner_size], |i| i as u64, &inverses);
         }
     }
     // Values on the grid to coefficients, one symbol at a time.
@@ -511,7 +342,7 @@ fn residues(b: &Integral, job: Job, f: Field) -> Vec<u64> {
                 }
                 line.clear();
                 line.extend((0..size).map(|t| block[start + t * stride]));
-                interpolate(f, &mut line, &inverses);
+                interpolate(f, &mut line, |i| i as u64, &inverses);
                 for (t, &x) in line.iter().enumerate() {
                     block[start + t * stride] = x;
                 }
@@ -519,249 +350,6 @@ fn residues(b: &Integral, job: Job, f: Field) -> Vec<u64> {
         }
     }
     out
-}
-
-/// The coefficient matrices of w⁰ and w¹ of a pencil, from the dense
-/// per-entry coefficients in w (`width` = 1 or 2 per entry).
-fn split_pencil(dense: &[u64], width: usize, n: usize) -> (Vec<u64>, Vec<u64>) {
-    let b0 = (0..n * n).map(|s| dense[s * width]).collect();
-    let b1 = (0..n * n).map(|s| if width > 1 { dense[s * width + 1] } else { 0 }).collect();
-    (b0, b1)
-}
-
-/// The coefficients in w, lowest first, of det(B₀ + w·B₁) over `F_p`, or
-/// `None` when B₀ is singular. With C = −B₀⁻¹B₁,
-/// det(B₀ + wB₁) = det B₀ · det(I − wC) = det B₀ · Σ_k c_k(C) w^k, where
-/// det(xI − C) = Σ c_k x^(n−k): one elimination and one Hessenberg reduction
-/// instead of `n + 1` eliminations at points in w.
-fn pencil_mod(
-    f: Field,
-    mut b0: Vec<u64>,
-    mut b1: Vec<u64>,
-    n: usize,
-    scratch: &mut Scratch,
-) -> Option<Vec<u64>> {
-    // Gauss–Jordan on [B₀ | B₁]: B₀ to I, B₁ to B₀⁻¹B₁.
-    let mut det = f.one();
-    for c in 0..n {
-        let r = (c..n).find(|&r| b0[r * n + c] != 0)?;
-        if r != c {
-            for j in 0..n {
-                b0.swap(r * n + j, c * n + j);
-                b1.swap(r * n + j, c * n + j);
-            }
-            det = f.neg(det);
-        }
-        let pivot = b0[c * n + c];
-        det = f.mul(det, pivot);
-        let inv = f.inv(pivot);
-        for j in 0..n {
-            b0[c * n + j] = f.mul(b0[c * n + j], inv);
-            b1[c * n + j] = f.mul(b1[c * n + j], inv);
-        }
-        for r in 0..n {
-            let x = b0[r * n + c];
-            if r == c || x == 0 {
-                continue;
-            }
-            for j in c..n {
-                b0[r * n + j] = f.sub(b0[r * n + j], f.mul(x, b0[c * n + j]));
-            }
-            for j in 0..n {
-                b1[r * n + j] = f.sub(b1[r * n + j], f.mul(x, b1[c * n + j]));
-            }
-        }
-    }
-    for x in &mut b1 {
-        *x = f.neg(*x);
-    }
-    let c = charpoly_mod(f, &mut b1, n, scratch);
-    Some(c.into_iter().map(|x| f.mul(x, det)).collect())
-}
-
-/// Values at the points 0, 1, ..., len−1 to coefficients, lowest first, in
-/// place: Newton's divided differences, then the Newton form expanded.
-fn interpolate(f: Field, v: &mut [u64], inverses: &[u64]) {
-    let d = v.len();
-    for (j, &inv) in inverses.iter().enumerate().take(d).skip(1) {
-        for i in (j..d).rev() {
-            v[i] = f.mul(f.sub(v[i], v[i - 1]), inv);
-        }
-    }
-    // p = c_{d-1}; p = p·(x − (i)) + c_i for i = d−2 down to 0.
-    let newton: Vec<u64> = v.to_vec();
-    v.fill(0);
-    v[0] = newton[d - 1];
-    for i in (0..d - 1).rev() {
-        let xi = f.lift(i as u64);
-        // p·x − xi·p + c_i, highest first so each slot reads the old value.
-        for k in (1..d).rev() {
-            v[k] = f.sub(v[k - 1], f.mul(xi, v[k]));
-        }
-        v[0] = f.sub(newton[i], f.mul(xi, v[0]));
-    }
-}
-
-/// The determinant of an `n×n` matrix over `F_p` by Gaussian elimination
-/// (destroys `a`).
-fn det_mod(f: Field, a: &mut [u64], n: usize) -> u64 {
-    let mut det = f.one();
-    for c in 0..n {
-        let Some(r) = (c..n).find(|&r| a[r * n + c] != 0) else {
-            return 0;
-        };
-        if r != c {
-            for j in c..n {
-                a.swap(r * n + j, c * n + j);
-            }
-            det = f.neg(det);
-        }
-        let pivot = a[c * n + c];
-        det = f.mul(det, pivot);
-        let inv = f.inv(pivot);
-        for r in c + 1..n {
-            let x = a[r * n + c];
-            if x == 0 {
-                continue;
-            }
-            let factor = f.mul(x, inv);
-            let (top, bottom) = a.split_at_mut(r * n);
-            let pivot_row = &top[c * n + c + 1..c * n + n];
-            for (y, &p) in bottom[c + 1..n].iter_mut().zip(pivot_row) {
-                *y = f.sub(*y, f.mul(factor, p));
-            }
-        }
-    }
-    det
-}
-
-/// Buffers reused across the grid points of one characteristic polynomial.
-struct Scratch {
-    polys: Vec<Vec<u64>>,
-}
-
-impl Scratch {
-    fn new(n: usize) -> Scratch {
-        Scratch { polys: (0..=n).map(|m| vec![0; m + 1]).collect() }
-    }
-}
-
-/// `[c_0 = 1, c_1, ..., c_n]` of `det(xI − A) = Σ c_k x^(n−k)` over `F_p`:
-/// Hessenberg reduction by similarity, then the three-term-like recurrence
-/// on the leading principal blocks (destroys `a`).
-fn charpoly_mod(f: Field, h: &mut [u64], n: usize, scratch: &mut Scratch) -> Vec<u64> {
-    for m in 1..n.saturating_sub(1) {
-        let Some(i) = (m..n).find(|&i| h[i * n + m - 1] != 0) else {
-            continue;
-        };
-        if i != m {
-            for j in 0..n {
-                h.swap(i * n + j, m * n + j);
-            }
-            for j in 0..n {
-                h.swap(j * n + i, j * n + m);
-            }
-        }
-        let inv = f.inv(h[m * n + m - 1]);
-        for i in m + 1..n {
-            let u = f.mul(h[i * n + m - 1], inv);
-            if u == 0 {
-                continue;
-            }
-            // Row i −= u·row m, then column m += u·column i.
-            for j in m - 1..n {
-                h[i * n + j] = f.sub(h[i * n + j], f.mul(u, h[m * n + j]));
-            }
-            for j in 0..n {
-                h[j * n + m] = f.add(h[j * n + m], f.mul(u, h[j * n + i]));
-            }
-        }
-    }
-    // p_m = (x − h_mm) p_{m−1} − Σ_{i<m} h_im (∏_{j=i+1}^{m} h_{j,j−1}) p_{i−1},
-    // 1-based; p_m is stored lowest power first.
-    let p = &mut scratch.polys;
-    p[0][0] = f.one();
-    for m in 1..=n {
-        let (done, rest) = p.split_at_mut(m);
-        let pm = &mut rest[0];
-        let prev = &done[m - 1];
-        let d = h[(m - 1) * n + m - 1];
-        pm[0] = f.neg(f.mul(d, prev[0]));
-        for k in 1..m {
-            pm[k] = f.sub(prev[k - 1], f.mul(d, prev[k]));
-        }
-        pm[m] = prev[m - 1];
-        let mut t = f.one();
-        for i in (1..m).rev() {
-            t = f.mul(t, h[i * n + i - 1]);
-            if t == 0 {
-                break;
-            }
-            let coef = f.mul(h[(i - 1) * n + m - 1], t);
-            if coef == 0 {
-                continue;
-            }
-            for (k, &x) in done[i - 1].iter().enumerate() {
-                pm[k] = f.sub(pm[k], f.mul(coef, x));
-            }
-        }
-    }
-    // c_k is the coefficient of x^(n−k).
-    p[n].iter().rev().copied().collect()
-}
-
-/// Garner's mixed-radix reconstruction of integers from residues modulo
-/// `primes`, in the symmetric range.
-struct Crt {
-    fields: Vec<Field>,
-    /// `(p_0 ⋯ p_{j−1})⁻¹ mod p_j`, Montgomery form in field j.
-    inv_prefix: Vec<u64>,
-    /// `p_i mod p_j` for i < j, Montgomery form in field j.
-    p_mod: Vec<Vec<u64>>,
-    primes: Vec<u64>,
-    modulus: BigInt,
-    half: BigInt,
-}
-
-impl Crt {
-    fn new(primes: &[u64]) -> Crt {
-        let fields: Vec<Field> = primes.iter().map(|&p| Field::new(p)).collect();
-        let mut inv_prefix = Vec::new();
-        let mut p_mod = Vec::new();
-        for (j, &f) in fields.iter().enumerate() {
-            let row: Vec<u64> = primes[..j].iter().map(|&p| f.lift(p)).collect();
-            let prod = row.iter().fold(f.one(), |acc, &x| f.mul(acc, x));
-            inv_prefix.push(f.inv(prod));
-            p_mod.push(row);
-        }
-        let modulus = primes.iter().fold(BigInt::one(), |acc, &p| acc * p);
-        let half = &modulus >> 1u32;
-        Crt { fields, inv_prefix, p_mod, primes: primes.to_vec(), modulus, half }
-    }
-
-    /// The integer in `(-M/2, M/2]` with the given Montgomery residues.
-    fn reconstruct(&self, residues: &[u64]) -> BigInt {
-        let m = self.primes.len();
-        let mut digits = Vec::with_capacity(m);
-        for (j, &residue) in residues.iter().enumerate().take(m) {
-            let f = self.fields[j];
-            // (v_0 + v_1 p_0 + ... ) mod p_j, by Horner from the top digit.
-            let mut acc = 0u64;
-            for i in (0..j).rev() {
-                acc = f.add(f.mul(acc, self.p_mod[j][i]), f.lift(digits[i]));
-            }
-            let v = f.mul(f.sub(residue, acc), self.inv_prefix[j]);
-            digits.push(f.to_u64(v));
-        }
-        let mut x = BigInt::zero();
-        for j in (0..m).rev() {
-            x = x * self.primes[j] + digits[j];
-        }
-        if x > self.half {
-            x -= &self.modulus;
-        }
-        x
-    }
 }
 
 /// Runs `job` on the integral matrix and returns the integer coefficients
@@ -855,62 +443,4 @@ pub(crate) fn charpoly(a: &PolyMatrix) -> Option<Vec<Poly>> {
         den *= &l;
     }
     Some(out)
-}
-
-#[cfg(test)]
-mod tests {
-    //! The field, the primes and the interpolation on their own; the
-    //! determinant and characteristic polynomial against the sparse path
-    //! are in the integration tests.
-
-    use super::*;
-
-    #[test]
-    fn montgomery_arithmetic_matches_u128_arithmetic() {
-        for &p in &primes(3) {
-            let f = Field::new(p);
-            for (a, b) in
-                [(0u64, 5u64), (1, 1), (p - 1, p - 1), (123_456_789, p - 2), (p / 3, p / 2)]
-            {
-                let want = ((u128::from(a) * u128::from(b)) % u128::from(p)) as u64;
-                assert_eq!(f.to_u64(f.mul(f.lift(a), f.lift(b))), want);
-                assert_eq!(
-                    f.to_u64(f.add(f.lift(a), f.lift(b))),
-                    ((u128::from(a) + u128::from(b)) % u128::from(p)) as u64
-                );
-            }
-            let x = f.lift(987_654_321);
-            assert_eq!(f.to_u64(f.mul(x, f.inv(x))), 1);
-        }
-    }
-
-    #[test]
-    fn primes_are_prime_and_descending() {
-        let ps = primes(4);
-        assert!(ps.windows(2).all(|w| w[0] > w[1]));
-        for &p in &ps {
-            assert!(p < 1 << 62 && p > 1 << 61);
-            // Trial division by small odd numbers as a sanity oracle.
-            assert!((3..2000u64).step_by(2).all(|d| p % d != 0));
-        }
-        assert!(is_prime(2_305_843_009_213_693_951)); // 2^61 − 1
-        assert!(!is_prime(2_305_843_009_213_693_953));
-        assert!(!is_prime(3_215_031_751)); // a strong pseudoprime to 2, 3, 5, 7
-    }
-
-    #[test]
-    fn interpolation_inverts_evaluation() {
-        let f = Field::new(primes(1)[0]);
-        let coeffs: Vec<u64> = [5u64, 0, 7, 1, 3].iter().map(|&c| f.lift(c)).collect();
-        let mut values: Vec<u64> = (0..coeffs.len() as u64)
-            .map(|x| {
-                let xm = f.lift(x);
-                coeffs.iter().rev().fold(0, |acc, &c| f.add(f.mul(acc, xm), c))
-            })
-            .collect();
-        let inverses: Vec<u64> =
-            (0..=5).map(|k| if k == 0 { 0 } else { f.inv(f.lift(k)) }).collect();
-        interpolate(f, &mut values, &inverses);
-        assert_eq!(values, coeffs);
-    }
 }

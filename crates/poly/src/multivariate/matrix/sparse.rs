@@ -9,7 +9,7 @@
 use std::fmt;
 use std::ops::Index;
 
-use super::PolyMatrix;
+use super::polymatrix::PolyMatrix;
 use crate::Poly;
 
 /// A `rows × cols` matrix of [`Poly`] entries, each row a list of its
