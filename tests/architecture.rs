@@ -375,6 +375,16 @@ impl Crate {
             let (m, p) = (m.clone(), p.clone());
             return self.resolve(&m, &p, depth + 1).or(Some(file));
         }
+        // A glob re-export (`pub use child::*`): the module that defines it.
+        for (m, p, _) in self.uses[&file].iter().filter(|(m, _, name)| *m == module && name == "*") {
+            let mut full = p.clone();
+            full.push(item.clone());
+            if let Some(target) = self.resolve(m, &full, depth + 1) {
+                if self.defs[&target].contains(item) {
+                    return Some(target);
+                }
+            }
+        }
         Some(file)
     }
 

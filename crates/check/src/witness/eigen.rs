@@ -4,8 +4,10 @@
 use nalgebra::DMatrix;
 use num_traits::Zero;
 
-use super::C64;
 use crate::error::Error;
+
+/// A complex `f64`.
+pub type C64 = num_complex::Complex<f64>;
 
 /// Witness 1: eigenvalues of P by nalgebra's real Schur decomposition,
 /// stopped after 100·N iterations.

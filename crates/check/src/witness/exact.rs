@@ -8,7 +8,8 @@ use nalgebra::DMatrix;
 use num_traits::{Signed, Zero};
 use poly::{Method, Poly, RootClass, Sym, Q};
 
-use super::{eigenvalues_nalgebra, poly_tolerances, C64};
+use super::eigen::{eigenvalues_nalgebra, C64};
+use super::tolerance::poly_tolerances;
 use crate::classify::{classify_pq, classify_roots, psi_of, PqSigns};
 use crate::error::Error;
 use crate::numeric::{q_to_f64, Params};

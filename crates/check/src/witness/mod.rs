@@ -59,7 +59,6 @@
 
 use crate::numeric::ParamsF64;
 use nalgebra::DMatrix;
-use num_complex::Complex;
 use poly::Method;
 
 use crate::error::Error;
@@ -75,20 +74,12 @@ pub use exact::*;
 pub use simulate::*;
 pub use tolerance::*;
 
-/// A complex `f64`.
-pub type C64 = Complex<f64>;
-
 /// The simulation length when none is given.
 pub const DEFAULT_STEPS: u64 = 1_000_000;
 
 /// The largest norm of P, and magnitude of an eigenvalue, the witnesses take:
 /// their squares stay far inside the `f64` range.
 pub const MAX_WITNESS_MAGNITUDE: f64 = 1e100;
-
-/// Multiplier of N·ε for an isolated root.
-pub const C_ISOLATED: f64 = 16.0;
-/// Multiplier of N·ε^(1/m) for a cluster of m roots.
-pub const C_CLUSTER: f64 = 8.0;
 
 /// One comparison of a witness with the reference.
 #[derive(Clone, Debug, PartialEq)]

@@ -2,7 +2,7 @@
 
 use std::f64::consts::LN_2;
 
-use super::C64;
+use super::eigen::C64;
 use crate::numeric::Step;
 
 /// What the long-run simulation measured.

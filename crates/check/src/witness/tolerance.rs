@@ -3,7 +3,12 @@
 use nalgebra::DMatrix;
 use num_traits::Zero;
 
-use super::{eigen_condition, C64, C_CLUSTER, C_ISOLATED};
+use super::eigen::{eigen_condition, C64};
+
+/// Multiplier of N·ε for an isolated root.
+pub const C_ISOLATED: f64 = 16.0;
+/// Multiplier of N·ε^(1/m) for a cluster of m roots.
+pub const C_CLUSTER: f64 = 8.0;
 
 pub(super) fn scale_of(p: &DMatrix<f64>) -> f64 {
     p.norm().max(1.0)
