@@ -18,12 +18,12 @@ pub use crate::derive::routes::{
     charpoly, charpoly_state_route, charpoly_z_route, transition_matrix, w, z_matrix,
 };
 pub use crate::error::show_invisible;
-pub use crate::lang::builtins;
 pub use crate::lang::method::{
     Assign, Constant, EndValue, Equation, GaussSeidelRead, Operand, Target, Unknown,
 };
 pub use crate::lang::syntax::parse_number;
 pub use crate::lang::system::{system as implicit_system, System as ImplicitSystem};
+pub use crate::lang::{builtins, tableau};
 pub use crate::multivariate::constants as field;
 pub use crate::multivariate::matrix::SparsePolyMatrix;
 pub use crate::multivariate::poly::Monomial;

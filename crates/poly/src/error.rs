@@ -50,6 +50,9 @@ pub enum ErrorKind {
     Singular,
     /// A `const` that is not `sqrt`, `cbrt` or `root` of a positive integer.
     BadConstant,
+    /// A series of Ψ or |z| that does not exist for this χ (not second
+    /// order, no complex pair near Φ = 0, or Ψ not a series over Q).
+    NoSeries,
 }
 
 /// A position in a source file, 1-based.

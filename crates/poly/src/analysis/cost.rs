@@ -232,3 +232,11 @@ pub fn live_assigns(method: &Method) -> Vec<bool> {
 pub fn is_unit(c: &Poly) -> bool {
     c.as_constant().is_some_and(|q| q.is_one() || (-q).is_one())
 }
+
+impl crate::Derivation {
+    /// Operations per step under the stated constant-folding model (see
+    /// the module docs).
+    pub fn cost(&self) -> StepCost {
+        step_cost(&self.method)
+    }
+}

@@ -236,6 +236,15 @@ pub fn reordered_updates(a: &Method, b: &Method) -> bool {
     sa == sb
 }
 
+impl Derivation {
+    /// The strongest relation this method bears to `other` (equal P,
+    /// similar by a signed permutation or scaling, updates reordered, or
+    /// the same χ only).
+    pub fn relate(&self, other: &Derivation) -> Relation {
+        relate(self, other)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -13,11 +13,9 @@
 //! [`conserved_form`] returns it scaled so that its first nonzero diagonal
 //! entry is 1.
 
-use std::collections::HashMap;
-
 use num_traits::{One, Signed, Zero};
 
-use crate::{Method, Sym, Q};
+use crate::{Method, Q};
 
 /// Why a step has no single conserved form.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -27,6 +25,9 @@ pub enum NoForm {
     /// The solutions form a space of this dimension (> 1): the form is not
     /// unique (repeated roots or several pairs on the unit circle).
     NotUnique(usize),
+    /// P has no rational value there: a parameter without a value, an
+    /// exact irrational constant, or an implicit step singular there.
+    Undefined,
 }
 
 /// The index of q_ij (i ≤ j) among the unknowns.
@@ -157,7 +158,9 @@ pub fn form_value(q: &[Vec<Q>], x: &[Q]) -> Q {
 /// The exact transition matrix of `method` with its parameters set to
 /// `values` (every parameter must have a value; `None` otherwise, and for
 /// an exact irrational constant or an implicit step singular there).
-pub fn transition_matrix_at(method: &Method, values: &HashMap<Sym, Q>) -> Option<Vec<Vec<Q>>> {
+pub fn transition_matrix_at(method: &Method, params: &crate::Params) -> Option<Vec<Vec<Q>>> {
+    let values = params.for_method(method).ok()?;
+    let values = &values;
     // An implicit step's P is (d·P)/d with d = det A.
     let (p, d) = if method.is_implicit() {
         crate::derive::implicit::transition_fraction(method, &crate::lang::system::system(method))
@@ -206,4 +209,15 @@ pub fn form_text(q: &[Vec<Q>], names: &[String]) -> String {
         out.push('0');
     }
     out
+}
+
+impl crate::Derivation {
+    /// The conserved quadratic form Q (PᵀQP = Q) at the parameter values
+    /// `params` (Φ among them), when the step has exactly one.
+    pub fn conserved_form(&self, params: &crate::Params) -> Result<Vec<Vec<Q>>, NoForm> {
+        match transition_matrix_at(&self.method, params) {
+            Some(p) => conserved_form(&p),
+            None => Err(NoForm::Undefined),
+        }
+    }
 }

@@ -494,3 +494,41 @@ pub fn dissipation_order(charpoly: &Poly) -> Result<Option<LeadingTerm>, SeriesE
     };
     Ok(Some(LeadingTerm { order: k, coeff: diff.coeff(k) / a.coeff(0) }))
 }
+
+impl From<SeriesError> for crate::Error {
+    fn from(e: SeriesError) -> crate::Error {
+        let kind = match e.kind {
+            SeriesErrorKind::ExtraSymbol => crate::ErrorKind::ExtraSymbol,
+            _ => crate::ErrorKind::NoSeries,
+        };
+        crate::Error::new(kind, crate::Span::default(), e.message)
+    }
+}
+
+impl crate::Derivation {
+    /// Ψ(Φ), the angle per step of the principal root, as an exact series:
+    /// the coefficients of Φ^0..=Φ^`order` (Appendix A, for any
+    /// second-order method), with the method's other parameters bound.
+    ///
+    /// ```
+    /// let d = poly::derive(&poly::builtin("false_euler")?)?;
+    /// let psi = d.psi_series(&poly::Params::new(), 5)?;
+    /// assert_eq!(psi[3], poly::q(1, 24)); // Ψ = Φ + Φ³/24 + …
+    /// # Ok::<(), poly::Error>(())
+    /// ```
+    pub fn psi_series(&self, params: &crate::Params, order: usize) -> Result<Vec<Q>, crate::Error> {
+        let values = self.bind(params)?;
+        Ok(psi_series(&self.charpoly.eval_partial(&values), order)?)
+    }
+
+    /// |z|² of the complex pair as an exact series in Φ (coefficients of
+    /// Φ^0..=Φ^`order`), with the method's other parameters bound.
+    pub fn modulus_sq_series(
+        &self,
+        params: &crate::Params,
+        order: usize,
+    ) -> Result<Vec<Q>, crate::Error> {
+        let values = self.bind(params)?;
+        Ok(modulus_sq_series(&self.charpoly.eval_partial(&values), order)?)
+    }
+}

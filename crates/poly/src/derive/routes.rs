@@ -58,6 +58,33 @@ pub fn w() -> Sym {
 }
 
 impl Derivation {
+    /// The method derived.
+    pub fn method(&self) -> &Method {
+        &self.method
+    }
+
+    /// χ(z), a polynomial in z, Φ and the method's parameters (for an
+    /// implicit method, det A · det(zI − P)).
+    pub fn charpoly(&self) -> &Poly {
+        &self.charpoly
+    }
+
+    /// The transition matrix P over the augmented state (for an implicit
+    /// method, P times [`Derivation::p_denominator`]).
+    pub fn transition_matrix(&self) -> &PolyMatrix {
+        &self.transition_matrix
+    }
+
+    /// The common denominator of P's entries (det A; 1 when explicit).
+    pub fn p_denominator(&self) -> &Poly {
+        &self.p_denominator
+    }
+
+    /// The z-domain matrix M, in w = z⁻¹.
+    pub fn z_matrix(&self) -> &SparsePolyMatrix {
+        &self.z_matrix
+    }
+
     /// χ's coefficients, highest power of z first (the first is 1 for an
     /// explicit method, det A for an implicit one).
     pub fn coeffs(&self) -> Vec<Poly> {

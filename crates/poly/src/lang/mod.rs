@@ -11,3 +11,4 @@ pub(crate) mod method;
 pub(crate) mod params;
 pub(crate) mod syntax;
 pub(crate) mod system;
+pub mod tableau;

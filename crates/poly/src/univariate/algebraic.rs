@@ -1026,9 +1026,11 @@ impl Ord for Algebraic {
 
 impl fmt::Display for Algebraic {
     /// The closed form when known, else `root of <poly> in [lo, hi]` with
-    /// the polynomial written in `x`.
+    /// the polynomial written in `Phi`, as the command line prints it: the
+    /// numbers the front door returns are values of Φ. [`Algebraic::describe`]
+    /// names another variable.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&self.describe("x"))
+        f.write_str(&self.describe("Phi"))
     }
 }
 

@@ -2,17 +2,14 @@
 //! False Euler, and PᵀQP = Q checked by plain multiplication on every
 //! built-in that has a form.
 
-use std::collections::HashMap;
-
 use poly::advanced::invariant::{
     conserved_form, form_text, is_positive_definite, transition_matrix_at, NoForm,
 };
-use poly::{q, Sym, Q};
+use poly::{q, Q};
 
 fn at(name: &str, phi: Q) -> Vec<Vec<Q>> {
     let m = poly::builtin(name).unwrap();
-    let values: HashMap<Sym, Q> =
-        [(Sym::new("Phi"), phi), (Sym::new("D"), q(1, 5))].into_iter().collect();
+    let values = poly::Params::new().bind("Phi", phi).bind("D", q(1, 5));
     transition_matrix_at(&m, &values).expect("every parameter set")
 }
 
@@ -51,8 +48,7 @@ fn forms_solve_the_defining_equation() {
     for name in poly::advanced::builtins::builtin_names() {
         let m = poly::builtin(name).unwrap();
         for phi in [q(1, 10), q(1, 2), q(3, 2)] {
-            let values: HashMap<Sym, Q> =
-                [(Sym::new("Phi"), phi.clone()), (Sym::new("D"), q(1, 5))].into_iter().collect();
+            let values = poly::Params::new().bind("Phi", phi.clone()).bind("D", q(1, 5));
             // An exact irrational constant (sqrt(3)) has no rational P.
             let Some(p) = transition_matrix_at(&m, &values) else {
                 assert!(!m.constants().is_empty(), "{name} at {phi}");

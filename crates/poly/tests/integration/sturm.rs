@@ -177,7 +177,7 @@ fn defining_polynomials_are_reduced() {
     assert_eq!(r.to_string(), "sqrt(3)");
     // No closed form: the display names the polynomial and an interval.
     let cube = root_of(&[-2, 0, 0, 1], q(1, 1), q(2, 1));
-    assert!(cube.to_string().starts_with("root of x^3 - 2 in ["), "{cube}");
+    assert!(cube.to_string().starts_with("root of Phi^3 - 2 in ["), "{cube}");
 }
 
 /// Exact comparisons: with rationals, between equal numbers given by

@@ -1,0 +1,474 @@
+//! Butcher tableaux as input: `A`, `b` (and `c`) of a Runge–Kutta method
+//! become the `.zm` program of the method applied to the oscillator (or the
+//! damped oscillator), so an analyst starts from the tableau they know.
+//!
+//! Every entry is exact: an integer or decimal, a fraction, or a constant
+//! expression in `+ - * / ^ ( )` with `sqrt(N)`, `cbrt(N)` and `root(K, N)`
+//! for positive integers N, checked by the `.zm` parser itself (division by
+//! an expression that is exactly zero is refused exactly).
+//!
+//! The program: stage slopes `k{i}v`, `k{i}y` of the test equation
+//! `v' = −ω y` (damped: `v' = −ω(2D v + y)`), `y' = ω v`, with
+//! `k_i = f(x + Φ Σ_j a_ij k_j)` and `x ← x + Φ Σ_i b_i k_i`. A strictly
+//! lower triangular `A` gives an explicit program of ordinary temporaries;
+//! any other `A` declares every stage an `unknown`, one linear system
+//! solved exactly.
+//!
+//! ```
+//! use poly::advanced::tableau::{Exact, Tableau};
+//! let e = |s: &str| Exact::parse(s);
+//! let a = vec![vec![e("1/4")?, e("1/4 - sqrt(3)/6")?], vec![e("1/4 + sqrt(3)/6")?, e("1/4")?]];
+//! let b = vec![e("1/2")?, e("1/2")?];
+//! let t = Tableau::new("gauss_legendre_2", a, b, None)?;
+//! let d = poly::derive(&t.method(false)?)?;
+//! assert_eq!(d.stability(&poly::Params::new())?.stability, poly::Stability::BoundedForAllPhi);
+//! # Ok::<(), poly::Error>(())
+//! ```
+
+use std::fmt::Write as _;
+
+use crate::error::{Error, ErrorKind, Span};
+use crate::lang::method::Method;
+
+/// The most stages read: beyond any published method, and a bound on the
+/// size of the generated program.
+pub const MAX_STAGES: usize = 64;
+
+/// One exact tableau entry: its `.zm` expression (radicals replaced by
+/// constant names), the radicals it names, and whether it is exactly zero.
+#[derive(Clone, Debug)]
+pub struct Exact {
+    expr: String,
+    radicals: Vec<(String, String)>,
+    zero: bool,
+}
+
+impl Exact {
+    /// Reads one entry. The error says what was expected; its caller knows
+    /// where the entry stands (a file position, an index).
+    pub fn parse(text: &str) -> Result<Exact, Error> {
+        let mut radicals = Vec::new();
+        let expr = replace_radicals(text, &mut radicals).map_err(entry_error)?;
+        let zero = probe(&expr, &radicals).map_err(entry_error)?;
+        Ok(Exact { expr, radicals, zero })
+    }
+
+    /// Whether the entry is exactly zero.
+    pub fn is_zero(&self) -> bool {
+        self.zero
+    }
+}
+
+fn entry_error(message: String) -> Error {
+    Error::new(ErrorKind::BadConstant, Span::default(), message)
+}
+
+/// A Butcher tableau read exactly.
+#[derive(Clone, Debug)]
+pub struct Tableau {
+    name: String,
+    a: Vec<Vec<Exact>>,
+    b: Vec<Exact>,
+    /// `Some(rows)` when `c` was given: the rows where it differs from A's
+    /// row sums.
+    c_mismatch: Option<Vec<usize>>,
+    /// `(name, radical)`: `("sqrt_3", "sqrt(3)")`, in order of appearance.
+    constants: Vec<(String, String)>,
+}
+
+impl Tableau {
+    /// A tableau from its entries: `A` square with one row per stage (1 to
+    /// [`MAX_STAGES`]), `b` and `c` one entry per stage. `name` must be a
+    /// `.zm` identifier (letters, digits and `_`).
+    pub fn new(
+        name: &str,
+        a: Vec<Vec<Exact>>,
+        b: Vec<Exact>,
+        c: Option<Vec<Exact>>,
+    ) -> Result<Tableau, Error> {
+        let shape = |m: String| Error::new(ErrorKind::Syntax, Span::default(), m);
+        let s = a.len();
+        if s == 0 || s > MAX_STAGES {
+            return Err(shape(format!("A has {s} rows: expected 1 to {MAX_STAGES} stages")));
+        }
+        for (i, row) in a.iter().enumerate() {
+            if row.len() != s {
+                return Err(shape(format!(
+                    "row {} of A has {} entries: expected {s} (A is square, one row per stage)",
+                    i + 1,
+                    row.len()
+                )));
+            }
+        }
+        if b.len() != s {
+            return Err(shape(format!("b has {} entries: expected {s}, one per stage", b.len())));
+        }
+        if let Some(c) = &c {
+            if c.len() != s {
+                return Err(shape(format!(
+                    "c has {} entries: expected {s}, one per stage",
+                    c.len()
+                )));
+            }
+        }
+        let id = method_ident(name);
+        if id != name {
+            return Err(shape(format!(
+                "name {name:?}: expected letters, digits and `_` (such as {id:?})"
+            )));
+        }
+        let mut constants: Vec<(String, String)> = Vec::new();
+        for e in a.iter().flatten().chain(&b).chain(c.iter().flatten()) {
+            for r in &e.radicals {
+                if !constants.contains(r) {
+                    constants.push(r.clone());
+                }
+            }
+        }
+        let c_mismatch = match &c {
+            Some(c) => {
+                let mut rows = Vec::new();
+                for (i, ci) in c.iter().enumerate() {
+                    let sum: Vec<String> = a[i].iter().map(|e| format!("({})", e.expr)).collect();
+                    let diff = format!("({}) - ({})", ci.expr, sum.join(" + "));
+                    if !probe(&diff, &constants).map_err(entry_error)? {
+                        rows.push(i + 1);
+                    }
+                }
+                Some(rows)
+            }
+            None => None,
+        };
+        Ok(Tableau { name: id, a, b, c_mismatch, constants })
+    }
+
+    /// The number of stages.
+    pub fn stages(&self) -> usize {
+        self.b.len()
+    }
+
+    /// Whether `A` is strictly lower triangular (an explicit method).
+    pub fn is_explicit(&self) -> bool {
+        self.a.iter().enumerate().all(|(i, row)| row[i..].iter().all(|e| e.zero))
+    }
+
+    /// The method's name.
+    pub fn name(&self) -> &str {
+        &self.name
+    }
+
+    /// The rows where the given `c` differs from A's row sums (empty when
+    /// it matches; `None` when no `c` was given).
+    pub fn c_mismatch(&self) -> Option<&[usize]> {
+        self.c_mismatch.as_deref()
+    }
+
+    /// The method on the oscillator, or on the damped oscillator (`param
+    /// D`) when `damped`.
+    pub fn method(&self, damped: bool) -> Result<Method, Error> {
+        Method::parse(&format!("<tableau>/{}.zm", self.name), &self.to_zm("the tableau", damped))
+    }
+
+    /// The `.zm` program of the method; `source` names where the tableau
+    /// came from, in the program's first comment.
+    pub fn to_zm(&self, source: &str, damped: bool) -> String {
+        let s = self.stages();
+        let explicit = self.is_explicit();
+        let mut out = String::new();
+        let kind = if explicit {
+            "explicit"
+        } else if self.a.iter().enumerate().all(|(i, row)| row[i + 1..].iter().all(|e| e.zero)) {
+            "diagonally implicit"
+        } else {
+            "fully implicit"
+        };
+        let w = |out: &mut String, line: String| writeln!(out, "{line}").expect("string");
+        w(
+            &mut out,
+            format!("# Generated by `zcheck from-tableau` from {source}: {s} stages, {kind}."),
+        );
+        w(
+            &mut out,
+            if damped {
+                "# Test equation v' = -w0 (2 D v + y), y' = w0 v; stage slopes k{i}v, k{i}y."
+                    .to_owned()
+            } else {
+                "# Test equation v' = -w0 y, y' = w0 v; stage slopes k{i}v, k{i}y.".to_owned()
+            },
+        );
+        match &self.c_mismatch {
+            Some(rows) if rows.is_empty() => {
+                w(&mut out, "# c is A's row sums (c_i = sum_j a_ij), exactly.".to_owned())
+            }
+            Some(rows) => w(
+                &mut out,
+                format!(
+                    "# c differs from A's row sums in row(s) {:?}; an autonomous equation never reads c.",
+                    rows
+                ),
+            ),
+            None => {}
+        }
+        w(&mut out, format!("method {}", self.name));
+        w(&mut out, "state v y".to_owned());
+        if damped {
+            w(&mut out, "param D".to_owned());
+        }
+        for (name, radical) in &self.constants {
+            w(&mut out, format!("const {name} = {radical}"));
+        }
+        if !explicit {
+            let names: Vec<String> =
+                (1..=s).flat_map(|i| [format!("k{i}v"), format!("k{i}y")]).collect();
+            w(&mut out, format!("unknown {}", names.join(" ")));
+        }
+        // Σ_j a_ij k{j}x, or None when the row is zero.
+        let combo = |coefs: &[Exact], x: char| -> Option<String> {
+            let terms: Vec<String> = coefs
+                .iter()
+                .enumerate()
+                .filter(|(_, e)| !e.zero)
+                .map(|(j, e)| {
+                    let c = e.expr.trim();
+                    let plain = c.chars().all(|ch| ch.is_ascii_digit() || ch == '/' || ch == '.');
+                    match c {
+                        "1" => format!("k{}{x}", j + 1),
+                        _ if plain => format!("{c}*k{}{x}", j + 1),
+                        _ => format!("({c})*k{}{x}", j + 1),
+                    }
+                })
+                .collect();
+            (!terms.is_empty()).then(|| terms.join(" + "))
+        };
+        for (i, row) in self.a.iter().enumerate() {
+            let k = i + 1;
+            // The stage's state: x + Φ Σ_j a_ij k_j, or x when the row is zero.
+            let at = |x: char| match combo(row, x) {
+                Some(c) => (format!("{x} + Phi*({c})"), true),
+                None => (x.to_string(), false),
+            };
+            let ((vs, v_sum), (ys, y_sum)) = (at('v'), at('y'));
+            let paren = |s: &str, sum: bool| if sum { format!("({s})") } else { s.to_owned() };
+            if damped {
+                w(&mut out, format!("k{k}v = -(2*D*{} + {ys})", paren(&vs, v_sum)));
+            } else {
+                w(&mut out, format!("k{k}v = -{}", paren(&ys, y_sum)));
+            }
+            w(&mut out, format!("k{k}y = {vs}"));
+        }
+        for x in ['v', 'y'] {
+            match combo(&self.b, x) {
+                Some(c) => w(&mut out, format!("{x} = {x} + Phi*({c})")),
+                None => w(&mut out, format!("{x} = {x}")),
+            }
+        }
+        out
+    }
+}
+
+impl Method {
+    /// The Runge–Kutta method of a Butcher tableau on the oscillator, from
+    /// its entries as text (`"1/4 - sqrt(3)/6"`); an error names the entry
+    /// (`A[1][2]`, `b[3]`, `c[1]`, counted from 1).
+    ///
+    /// ```
+    /// let m = poly::Method::from_tableau("heun", &[vec!["0", "0"], vec!["1", "0"]], &["1/2", "1/2"], None)?;
+    /// let d = poly::derive(&m)?;
+    /// assert_eq!(d.stability(&poly::Params::new())?.stability.name(), "unbounded_for_all_phi");
+    /// let bad = poly::Method::from_tableau("t", &[vec!["0", "x"], vec!["1", "0"]], &["1", "0"], None);
+    /// assert!(bad.unwrap_err().to_string().starts_with("A[1][2]: unexpected name `x`"));
+    /// # Ok::<(), poly::Error>(())
+    /// ```
+    pub fn from_tableau(
+        name: &str,
+        a: &[Vec<&str>],
+        b: &[&str],
+        c: Option<&[&str]>,
+    ) -> Result<Method, Error> {
+        let entry = |text: &str, at: String| {
+            Exact::parse(text).map_err(|e| {
+                Error::new(e.kind(), Span::default(), format!("{at}: {}", e.message()))
+            })
+        };
+        let a = a
+            .iter()
+            .enumerate()
+            .map(|(i, row)| {
+                row.iter()
+                    .enumerate()
+                    .map(|(j, t)| entry(t, format!("A[{}][{}]", i + 1, j + 1)))
+                    .collect::<Result<Vec<_>, _>>()
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        let b = b
+            .iter()
+            .enumerate()
+            .map(|(i, t)| entry(t, format!("b[{}]", i + 1)))
+            .collect::<Result<Vec<_>, _>>()?;
+        let c = c
+            .map(|c| {
+                c.iter()
+                    .enumerate()
+                    .map(|(i, t)| entry(t, format!("c[{}]", i + 1)))
+                    .collect::<Result<Vec<_>, _>>()
+            })
+            .transpose()?;
+        Tableau::new(name, a, b, c)?.method(false)
+    }
+}
+
+/// A name fit for a `.zm` method: letters, digits and `_`, not starting
+/// with a digit.
+pub fn method_ident(s: &str) -> String {
+    let s: String =
+        s.chars().map(|c| if c.is_ascii_alphanumeric() || c == '_' { c } else { '_' }).collect();
+    if s.is_empty() || s.starts_with(|c: char| c.is_ascii_digit()) {
+        format!("rk_{s}")
+    } else {
+        s
+    }
+}
+
+/// Replaces each `sqrt(N)`, `cbrt(N)` and `root(K, N)` by a constant name,
+/// declaring it in `constants` once; refuses any other name.
+fn replace_radicals(text: &str, constants: &mut Vec<(String, String)>) -> Result<String, String> {
+    let chars: Vec<char> = text.chars().collect();
+    let mut out = String::new();
+    let mut i = 0;
+    while i < chars.len() {
+        let ch = chars[i];
+        if ch.is_ascii_alphabetic() || ch == '_' {
+            let start = i;
+            while i < chars.len() && (chars[i].is_ascii_alphanumeric() || chars[i] == '_') {
+                i += 1;
+            }
+            let word: String = chars[start..i].iter().collect();
+            let mut j = i;
+            while j < chars.len() && chars[j] == ' ' {
+                j += 1;
+            }
+            if !matches!(word.as_str(), "sqrt" | "cbrt" | "root") || chars.get(j) != Some(&'(') {
+                return Err(format!(
+                    "unexpected name `{word}` in an entry: expected numbers, + - * / ^ ( ) and \
+                     sqrt(N), cbrt(N) or root(K, N)"
+                ));
+            }
+            let close = chars[j..]
+                .iter()
+                .position(|&c| c == ')')
+                .map(|p| j + p)
+                .ok_or_else(|| format!("`{word}(` is not closed: expected `)`"))?;
+            let inner: String = chars[j + 1..close].iter().collect();
+            let args: Vec<&str> = inner.split(',').map(str::trim).collect();
+            let positive = |a: &str| -> Result<u64, String> {
+                a.parse::<u64>().ok().filter(|&n| n > 0).ok_or_else(|| {
+                    format!("{word}({inner}): expected a positive integer literal, found `{a}`")
+                })
+            };
+            let (k, n) = match (word.as_str(), args.as_slice()) {
+                ("sqrt", [n]) => (2, positive(n)?),
+                ("cbrt", [n]) => (3, positive(n)?),
+                ("root", [k, n]) => {
+                    let k = positive(k)?;
+                    if k < 2 {
+                        return Err(format!("root({inner}): expected a root index K >= 2"));
+                    }
+                    (k, positive(n)?)
+                }
+                _ => {
+                    return Err(format!(
+                        "{word}({inner}): expected {}",
+                        if word == "root" { "two arguments, root(K, N)" } else { "one argument" }
+                    ))
+                }
+            };
+            let (name, radical) = match k {
+                2 => (format!("sqrt_{n}"), format!("sqrt({n})")),
+                3 => (format!("cbrt_{n}"), format!("cbrt({n})")),
+                _ => (format!("root_{k}_{n}"), format!("root({k}, {n})")),
+            };
+            if !constants.iter().any(|(c, _)| *c == name) {
+                constants.push((name.clone(), radical));
+            }
+            out.push_str(&name);
+            i = close + 1;
+        } else if ch.is_ascii_digit() || " \t+-*/^().".contains(ch) {
+            out.push(ch);
+            i += 1;
+        } else {
+            return Err(format!(
+                "unexpected character {} in an entry: expected numbers, + - * / ^ ( ) and \
+                 sqrt(N), cbrt(N) or root(K, N)",
+                if ch.is_control() || !ch.is_ascii() {
+                    format!("U+{:04X}", ch as u32)
+                } else {
+                    format!("`{ch}`")
+                }
+            ));
+        }
+    }
+    if out.trim().is_empty() {
+        return Err("the entry is empty: expected an exact number".to_owned());
+    }
+    Ok(out)
+}
+
+/// Checks one expression with the `.zm` parser (exact, constants included)
+/// and says whether it is exactly zero.
+fn probe(expr: &str, constants: &[(String, String)]) -> Result<bool, String> {
+    let mut src = String::from("method probe\nstate v\n");
+    for (name, radical) in constants {
+        writeln!(src, "const {name} = {radical}").expect("string");
+    }
+    writeln!(src, "v = ({expr})*v").expect("string");
+    let m = Method::parse("entry", &src).map_err(|e| e.message().to_owned())?;
+    Ok(m.assigns().last().is_none_or(|a| a.terms.is_empty()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn e(s: &str) -> Exact {
+        Exact::parse(s).unwrap()
+    }
+
+    /// RK4's tableau gives the RK4 built-in's χ.
+    #[test]
+    fn rk4_tableau_is_the_builtin() {
+        let z = || e("0");
+        let a = vec![
+            vec![z(), z(), z(), z()],
+            vec![e("1/2"), z(), z(), z()],
+            vec![z(), e("1/2"), z(), z()],
+            vec![z(), z(), e("1"), z()],
+        ];
+        let b = vec![e("1/6"), e("1/3"), e("1/3"), e("1/6")];
+        let c = Some(vec![z(), e("1/2"), e("1/2"), e("1")]);
+        let t = Tableau::new("rk4", a, b, c).unwrap();
+        assert!(t.is_explicit());
+        assert_eq!(t.c_mismatch(), Some(&[][..]));
+        let mine = crate::derive(&t.method(false).unwrap()).unwrap();
+        let builtin = crate::derive(&crate::builtin("rk4").unwrap()).unwrap();
+        assert_eq!(mine.charpoly, builtin.charpoly);
+    }
+
+    /// Bad entries and shapes are refused with what was expected.
+    #[test]
+    fn bad_entries_and_shapes() {
+        for (text, says) in [
+            ("x", "unexpected name `x`"),
+            ("sqrt(-2)", "expected a positive integer literal"),
+            ("1/0", ""),
+            ("", "empty"),
+            ("1 ; 2", "unexpected character `;`"),
+        ] {
+            let err = Exact::parse(text).unwrap_err();
+            assert!(err.message().contains(says), "{text}: {err}");
+        }
+        let err = Tableau::new("t", vec![vec![e("1"), e("0")]], vec![e("1")], None).unwrap_err();
+        assert!(err.message().contains("row 1 of A has 2 entries"), "{err}");
+        let err = Tableau::new("a b", vec![vec![e("0")]], vec![e("1")], None).unwrap_err();
+        assert!(err.message().contains("expected letters, digits"), "{err}");
+    }
+}
