@@ -1,4 +1,4 @@
-//! Fuzz target `parse`: see `zcheck_fuzz::parse` and FUZZING.md.
+//! Fuzz target `parse`: see `testkit::fuzz::parse` and FUZZING.md.
 #![no_main]
 
 libfuzzer_sys::fuzz_target!(|data: &[u8]| zcheck_fuzz::parse(data));

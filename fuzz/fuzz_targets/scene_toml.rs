@@ -1,7 +1,4 @@
-//! Fuzz target `scene_toml`: see `fuzz/src/app.rs` and FUZZING.md.
+//! Fuzz target `scene_toml`: see `testkit::fuzz` and FUZZING.md.
 #![no_main]
 
-#[path = "../src/app.rs"]
-mod app;
-
-libfuzzer_sys::fuzz_target!(|data: &[u8]| app::scene_toml(data));
+libfuzzer_sys::fuzz_target!(|data: &[u8]| zcheck_fuzz::scene_toml(data));

@@ -1,7 +1,4 @@
-//! Fuzz target `tableau`: see `fuzz/src/app.rs` and FUZZING.md.
+//! Fuzz target `tableau`: see `testkit::fuzz` and FUZZING.md.
 #![no_main]
 
-#[path = "../src/app.rs"]
-mod app;
-
-libfuzzer_sys::fuzz_target!(|data: &[u8]| app::tableau(data));
+libfuzzer_sys::fuzz_target!(|data: &[u8]| zcheck_fuzz::tableau(data));

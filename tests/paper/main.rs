@@ -21,6 +21,5 @@ mod sec09_standard_heun;
 mod sec10_false_heun;
 mod sec11_semi_false_heun;
 mod sec12_conclusions;
-#[path = "../support/snapshot.rs"]
-mod snapshot;
+use testkit::snapshot;
 mod verdict_policy;

@@ -9,8 +9,7 @@ use criterion::{criterion_group, criterion_main, Criterion};
 use poly::{Method, Poly, PolyMatrix, Sym};
 use std::hint::black_box;
 
-#[path = "common/programs.rs"]
-mod programs;
+use testkit::programs;
 
 /// RK4 on a chain of six unit masses joined by springs to each other and to
 /// two walls, written as a `.zm` step program with the four stages as

@@ -11,8 +11,7 @@ mod extremes;
 mod jit;
 mod kernel;
 mod numeric;
-#[path = "../../../../tests/support/snapshot.rs"]
-mod snapshot;
+use testkit::snapshot;
 mod snapshots;
 mod stability_scan;
 mod witness;

@@ -12,9 +12,8 @@ use poly::Stability;
 use poly::{Method, Q};
 use proptest::prelude::*;
 
-#[path = "../../../../tests/support/random_program.rs"]
-mod random_program;
 use random_program::program;
+use testkit::random_program;
 
 /// |ρ − 1| below this is inconclusive in f64: the eigenvalues of a root
 /// repeated m times (identically in Φ) are only accurate to about ε^(1/m).

@@ -4,11 +4,9 @@
 //! target calls, so CI checks them without the nightly toolchain that
 //! cargo-fuzz needs (see FUZZING.md).
 
-#[path = "../../../../fuzz/src/lib.rs"]
-mod targets;
+use testkit::fuzz as targets;
 
-#[path = "../../../../fuzz/src/replay.rs"]
-mod replay_corpus;
+use testkit::replay as replay_corpus;
 
 use std::path::PathBuf;
 

@@ -4,8 +4,7 @@
 
 use poly::{Method, Poly, Sym};
 
-#[path = "../../benches/common/programs.rs"]
-mod programs;
+use testkit::programs;
 
 fn parse(src: &str) -> Method {
     Method::parse("generated.zm", src).unwrap_or_else(|e| panic!("{e}"))

@@ -32,8 +32,7 @@ mod random_programs;
 mod region;
 mod routes;
 mod series;
-#[path = "../../../../tests/support/snapshot.rs"]
-mod snapshot;
+use testkit::snapshot;
 mod snapshots;
 mod stability;
 mod sturm;

@@ -10,9 +10,8 @@ use poly::advanced::stability::{analyze, Stability};
 use poly::{Method, Poly, Sym, Q};
 use proptest::prelude::*;
 
-#[path = "../../../../tests/support/random_program.rs"]
-mod random_program;
 use random_program::program;
+use testkit::random_program;
 
 /// All roots strictly inside the unit circle, by the Schur–Cohn–Jury
 /// recursion over Q: with p(z) = Σ a_k z^k, |a_0| < |a_n| and the same for

@@ -1,5 +1,5 @@
 //! The one helper for insta's snapshot path, shared by every test binary of
-//! the workspace (each includes this file with `#[path]`).
+//! the workspace.
 //!
 //! Snapshots live at the top of the workspace, in `snapshots/<dir>/<name>.snap`,
 //! named explicitly (never after the test module), so moving a test between

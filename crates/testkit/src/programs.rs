@@ -1,5 +1,5 @@
 //! Generated `.zm` programs for the benches and the tests of large
-//! derivations (included by both with `#[path]`).
+//! derivations.
 
 /// RK4 applied to a chain of `n` unit masses joined by unit springs to
 /// each other and to two fixed walls, with Phi = ω₀T as the step. The

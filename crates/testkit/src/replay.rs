@@ -1,7 +1,7 @@
 //! Replays a fuzz target's committed corpus and crash regressions as an
 //! ordinary test: every file under `fuzz/{corpus,regressions}/<target>/`
-//! through the same function the libFuzzer target calls. Included with
-//! `#[path]` by the integration tests of `poly` and of `zcheck`.
+//! through the same function the libFuzzer target calls, from the
+//! integration tests of `poly` and of `zcheck`.
 
 use std::path::{Path, PathBuf};
 

@@ -1,7 +1,6 @@
 //! The generator of issue 10's property tests, shared by `poly`'s exact
 //! half (`random_programs.rs`, Jury's test at rational samples) and
-//! `check`'s numeric half (`stability_scan.rs`, an eigenvalue scan); each
-//! includes this file with `#[path]`.
+//! `check`'s numeric half (`stability_scan.rs`, an eigenvalue scan).
 
 use proptest::prelude::*;
 
