@@ -9,11 +9,34 @@
 //! polynomials over named symbols ([`Poly`]), dense univariate polynomials
 //! ([`UPoly`]) and polynomial matrices ([`PolyMatrix`]).
 //!
-//! On top of the derivation sit the exact analyses: [`stability`] (Sturm
-//! sequences over Q, exact algebraic stability limits and class changes in
-//! Φ, decided without any float), [`series`] (Taylor series of Ψ(Φ) and
-//! |z|² by exact power-series arithmetic) and [`cost`] (operations per step
-//! under a stated constant-folding model).
+//! # The front door
+//!
+//! A [`Method`] comes from `.zm` text ([`Method::parse`]), a Butcher tableau
+//! ([`Method::from_tableau`]) or a built-in's name ([`builtin`]);
+//! [`derive()`] gives its [`Derivation`], which answers every question:
+//! [`Derivation::charpoly`], [`Derivation::transition_matrix`],
+//! [`Derivation::stability`] (exact limits and classes over Φ, boundedness
+//! at a repeated root on the unit circle decided from P),
+//! [`Derivation::psi_series`], [`Derivation::cost`], [`Derivation::region`],
+//! [`Derivation::relate`], [`Derivation::conserved_form`]. Parameters other
+//! than Φ are bound with [`Params`]. What lies past the front door is in
+//! [`advanced`].
+//!
+//! ```
+//! let d = poly::derive(&poly::Method::builtin("gauss_legendre_2")?)?;
+//! let report = d.stability(&poly::Params::new())?;
+//! assert_eq!(report.stability, poly::Stability::BoundedForAllPhi); // A-stable
+//! # Ok::<(), poly::Error>(())
+//! ```
+//!
+//! # Layers
+//!
+//! Inside, the crate is six layers, each importing only from those below:
+//! `arith` (Q, integer gcds, Z/p), `univariate` (UPoly, real roots,
+//! algebraic numbers), `multivariate` (Poly, polynomial matrices, exact
+//! constants), `lang` (the `.zm` language, built-ins, tableaux), `derive`
+//! (the two routes) and `analysis` (stability, series, region, equivalence,
+//! invariants, cost).
 //!
 //! This crate never touches `f64` and never does I/O; numeric work lives in
 //! the `check` crate.

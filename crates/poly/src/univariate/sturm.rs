@@ -542,7 +542,7 @@ fn n_of(ip: &IntPoly) -> usize {
 }
 
 /// Narrows an isolating interval `(lo, hi)` (as returned by
-/// [`isolate_real_roots`]) of a square-free `p` by bisection until its width
+/// `isolate_real_roots`) of a square-free `p` by bisection until its width
 /// is at most `width`. A rational root hit exactly becomes `(r, r)`.
 pub fn refine_interval(p: &UPoly, lo: &Q, hi: &Q, width: &Q) -> (Q, Q) {
     if lo == hi {

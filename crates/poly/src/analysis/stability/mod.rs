@@ -13,7 +13,7 @@
 //!
 //! Between consecutive critical points the counts of roots inside, on and
 //! outside the unit circle, and the class, are constant; one exact
-//! computation at a rational sample decides them ([`point`]: Schur–Cohn
+//! computation at a rational sample decides them (`point.rs`: Schur–Cohn
 //! inertia over Q, real-root isolation, rational brackets of the dominant
 //! modulus). At each critical point the class is exact for rational points
 //! and for second-order χ (signs of polynomials at an algebraic number);
