@@ -11,6 +11,7 @@
 //! The exact algebra lives in `poly`, the numeric witnesses in `check`; this
 //! crate depends on both and neither depends on it.
 
+pub mod cli;
 pub mod drift_figure;
 pub mod emit;
 pub mod located;

@@ -1,57 +1,14 @@
 //! `zcheck`: the command-line face of zcheck.
 //!
-//! Each subcommand lives in its own module under `cli/` with its clap
-//! arguments and a `run` function; this file only dispatches.
+//! The subcommands live in the library (`zcheck::cli`); this file parses
+//! the arguments, runs the command, and turns an error into a message on
+//! stderr and exit code 2.
 
 use std::io::Write as _;
 use std::process::ExitCode;
 
-use clap::{CommandFactory, FromArgMatches, Parser, Subcommand};
-
-mod cli;
-
-/// Characteristic-polynomial verifier for simple time integrators
-/// (Hoffmann, "Simple Integration Algorithms").
-#[derive(Parser)]
-#[command(name = "zcheck", version, about, long_about = None)]
-struct Cli {
-    #[command(subcommand)]
-    command: Command,
-}
-
-#[derive(Subcommand)]
-enum Command {
-    /// List the built-in methods.
-    Methods(cli::methods::Args),
-    /// Derive a method's transition matrix and characteristic polynomial.
-    Derive(cli::derive::Args),
-    /// Check derived polynomials against eigenvalues and long-run simulation.
-    Verify(cli::verify::Args),
-    /// Draw figures (SVG).
-    Plot(cli::plot::Args),
-    /// Every paper method side by side: exact limit, Psi and |z|^2 series, cost.
-    Overview(cli::overview::Args),
-    /// Exact stability limit and class changes of a method.
-    Stability(cli::stability::Args),
-    /// Print the executable proof of the paper (the main job).
-    Paper(cli::paper::Args),
-    /// Cost, accuracy and admissible step of every method, side by side.
-    Tradeoff(cli::tradeoff::Args),
-    /// Advise a method and substeps for a spring in a game scene.
-    Advise(cli::advise::Args),
-    /// Run an appendix scene (three bodies, aircraft).
-    Scene(cli::scene::Args),
-    /// The strongest identity between two methods (equal, permuted, scaled, same chi).
-    Equiv(cli::equiv::Args),
-    /// Exact stability region in (Phi, D), drawn over a grid of root classes.
-    Map(cli::map::Args),
-    /// Round-off drift of a method's exact conserved form over long runs.
-    Drift(cli::drift::Args),
-    /// Print a method's step as a Rust or C function.
-    Emit(cli::emit::Args),
-    /// Write the .zm program of a Runge-Kutta method from its Butcher tableau (TOML).
-    FromTableau(cli::from_tableau::Args),
-}
+use clap::{CommandFactory, FromArgMatches};
+use zcheck::cli::Cli;
 
 /// The most bytes of an error message printed: enough for any real error,
 /// and a bound on what a hostile input can put on the terminal.
@@ -64,24 +21,7 @@ fn main() -> ExitCode {
         Ok(cli) => cli,
         Err(e) => return clap_exit(&e),
     };
-    let result = match cli.command {
-        Command::Methods(a) => cli::methods::run(a),
-        Command::Derive(a) => cli::derive::run(a),
-        Command::Verify(a) => cli::verify::run(a),
-        Command::Plot(a) => cli::plot::run(a),
-        Command::Overview(a) => cli::overview::run(a),
-        Command::Stability(a) => cli::stability::run(a),
-        Command::Paper(a) => cli::paper::run(a),
-        Command::Tradeoff(a) => cli::tradeoff::run(a),
-        Command::Advise(a) => cli::advise::run(a),
-        Command::Scene(a) => cli::scene::run(a),
-        Command::Equiv(a) => cli::equiv::run(a),
-        Command::Map(a) => cli::map::run(a),
-        Command::Drift(a) => cli::drift::run(a),
-        Command::Emit(a) => cli::emit::run(a),
-        Command::FromTableau(a) => cli::from_tableau::run(a),
-    };
-    match result {
+    match cli.run() {
         Ok(code) => code,
         // The reader closed stdout early: nothing is wrong.
         Err(e) if is_broken_pipe(&e) => ExitCode::SUCCESS,
@@ -98,10 +38,12 @@ fn clap_exit(e: &clap::Error) -> ExitCode {
     use clap::error::ErrorKind;
     let text = e.render().to_string();
     match e.kind() {
-        ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => match cli::output::emit(&text) {
-            Ok(()) => ExitCode::SUCCESS,
-            Err(_) => ExitCode::from(2),
-        },
+        ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => {
+            match zcheck::cli::output::emit(&text) {
+                Ok(()) => ExitCode::SUCCESS,
+                Err(_) => ExitCode::from(2),
+            }
+        }
         _ => {
             print_error(&text);
             ExitCode::from(2)

@@ -5,8 +5,8 @@
 use std::process::ExitCode;
 use std::time::Duration;
 
+use crate::tradeoff::{self, family, kernels, Advice, Candidate, Scene};
 use poly::Q;
-use zcheck::tradeoff::{self, family, kernels, Advice, Candidate, Scene};
 
 use super::values::Exact;
 
@@ -120,7 +120,7 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
     // The same spring as a one-mode scene, through the scene advisor: its
     // modes, candidates (with the simulation that checks the prediction)
     // and recommendation, in the scene JSON's keys.
-    let one_mode = zcheck::scene::file::SceneFile::one_mode(
+    let one_mode = crate::scene::file::SceneFile::one_mode(
         freq_hz,
         d,
         tick_hz,
@@ -165,26 +165,26 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
 struct OneSpring<'a> {
     #[serde(flatten)]
     advice: &'a Advice,
-    modes: &'a [zcheck::scene::advisor::ModeReport],
-    candidates: &'a [zcheck::scene::advisor::CandidateAdvice],
-    recommended: &'a Option<zcheck::scene::advisor::Recommended>,
+    modes: &'a [crate::scene::advisor::ModeReport],
+    candidates: &'a [crate::scene::advisor::CandidateAdvice],
+    recommended: &'a Option<crate::scene::advisor::Recommended>,
 }
 
 /// The scene advisor on `scene` with `methods` (default: the seven direct
 /// methods on the damped spring).
 fn scene_advice(
-    scene: &zcheck::scene::file::SceneFile,
+    scene: &crate::scene::file::SceneFile,
     methods: &[String],
     simulate: bool,
     gauss_seidel: bool,
-) -> anyhow::Result<zcheck::scene::advisor::SceneAdvice> {
-    use zcheck::scene::advisor::{self, MethodSpec, Options};
+) -> anyhow::Result<crate::scene::advisor::SceneAdvice> {
+    use crate::scene::advisor::{self, MethodSpec, Options};
     let shapes = if simulate {
-        zcheck::scene::modal::Shapes::Compute
+        crate::scene::modal::Shapes::Compute
     } else {
-        zcheck::scene::modal::Shapes::WhenNeeded
+        crate::scene::modal::Shapes::WhenNeeded
     };
-    let modal = zcheck::scene::modal::reduce_with(scene, shapes)?;
+    let modal = crate::scene::modal::reduce_with(scene, shapes)?;
     let specs = if methods.is_empty() {
         MethodSpec::builtins()?
     } else {
@@ -296,7 +296,7 @@ pub fn text(a: &Advice) -> String {
 
 /// `zcheck advise --scene FILE`.
 fn run_scene(path: &std::path::Path, args: &Args) -> anyhow::Result<ExitCode> {
-    use zcheck::scene::file::SceneFile;
+    use crate::scene::file::SceneFile;
     let scene = SceneFile::load(path)?;
     if args.duration != Scene::DEFAULT_DURATION_S
         || args.phase_tol != Scene::DEFAULT_PHASE_TOL
@@ -313,18 +313,18 @@ fn run_scene(path: &std::path::Path, args: &Args) -> anyhow::Result<ExitCode> {
 }
 
 /// The scene advice as text: the modes that matter, a table, a sentence.
-pub fn scene_text(name: &str, a: &zcheck::scene::advisor::SceneAdvice) -> String {
+pub fn scene_text(name: &str, a: &crate::scene::advisor::SceneAdvice) -> String {
     let mut out = format!(
         "scene {name}: {} degrees of freedom, {} modes ({} rigid left out), damping {}\n",
         a.dof,
         a.modes.len(),
         a.rigid_modes,
         match a.damping {
-            zcheck::scene::modal::DampingKind::Undamped => "none".to_owned(),
-            zcheck::scene::modal::DampingKind::Rayleigh { alpha, beta } =>
+            crate::scene::modal::DampingKind::Undamped => "none".to_owned(),
+            crate::scene::modal::DampingKind::Rayleigh { alpha, beta } =>
                 format!("Rayleigh (alpha = {alpha:.4} 1/s, beta = {beta:.3e} s)"),
-            zcheck::scene::modal::DampingKind::Proportional => "proportional".to_owned(),
-            zcheck::scene::modal::DampingKind::NonProportional =>
+            crate::scene::modal::DampingKind::Proportional => "proportional".to_owned(),
+            crate::scene::modal::DampingKind::NonProportional =>
                 "non-proportional (stability from the full-step matrix)".to_owned(),
         }
     );
@@ -380,7 +380,7 @@ pub fn scene_text(name: &str, a: &zcheck::scene::advisor::SceneAdvice) -> String
     out += &table(&header, &rows);
     out += &format!(
         "\nagreement: simulated within {} of the target (plus 1e-9) of the prediction\n",
-        zcheck::scene::advisor::AGREE_FRACTION
+        crate::scene::advisor::AGREE_FRACTION
     );
     for c in &a.candidates {
         if let Some(s) = &c.simulated {

@@ -23,7 +23,7 @@ pub struct Args {
 }
 
 pub fn run(args: Args) -> anyhow::Result<ExitCode> {
-    let method = zcheck::tableau::load_method(&args.method)?;
+    let method = crate::tableau::load_method(&args.method)?;
     let d = poly::derive(&method)?;
     let out = match args.format {
         Format::Text => text(&d),

@@ -142,7 +142,7 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
         }
     }
     if let Some(path) = &args.svg {
-        zcheck::drift_figure::draw(path, &reports_for_figure(&reports))
+        crate::drift_figure::draw(path, &reports_for_figure(&reports))
             .map_err(|e| anyhow::anyhow!("{e}"))?;
     }
     match args.format {
@@ -157,10 +157,10 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
     Ok(ExitCode::SUCCESS)
 }
 
-fn reports_for_figure(reports: &[Report]) -> Vec<zcheck::drift_figure::Line> {
+fn reports_for_figure(reports: &[Report]) -> Vec<crate::drift_figure::Line> {
     reports
         .iter()
-        .map(|r| zcheck::drift_figure::Line {
+        .map(|r| crate::drift_figure::Line {
             label: format!("{} ({})", r.method, r.precision),
             measured: r.run.checkpoints.iter().map(|c| (c.steps as f64, c.rms_eps)).collect(),
             predicted: r
@@ -181,7 +181,7 @@ fn study<T: Real>(
     threads: usize,
     stop: &AtomicBool,
 ) -> anyhow::Result<Report> {
-    let method = zcheck::tableau::load_method(name)?;
+    let method = crate::tableau::load_method(name)?;
     let mut exact: HashMap<Sym, Q> = HashMap::new();
     let mut params = Params::new();
     for sym in method.params() {

@@ -3,9 +3,9 @@
 
 use std::process::ExitCode;
 
+use crate::emit::{emit, Binding, Lang};
 use anyhow::bail;
 use poly::{Sym, Q};
-use zcheck::emit::{emit, Binding, Lang};
 
 /// The language to emit.
 #[derive(Clone, Copy, clap::ValueEnum)]
@@ -31,7 +31,7 @@ pub struct Args {
 }
 
 pub fn run(args: Args) -> anyhow::Result<ExitCode> {
-    let method = zcheck::tableau::load_method(&args.method)?;
+    let method = crate::tableau::load_method(&args.method)?;
     let lang = match args.lang {
         Language::Rust => Lang::Rust,
         Language::C => Lang::C,

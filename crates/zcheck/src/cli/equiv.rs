@@ -68,8 +68,8 @@ pub fn describe(r: &Relation, a: &poly::Method, b: &poly::Method) -> String {
 }
 
 pub fn run(args: Args) -> anyhow::Result<ExitCode> {
-    let ma = zcheck::tableau::load_method(&args.a)?;
-    let mb = zcheck::tableau::load_method(&args.b)?;
+    let ma = crate::tableau::load_method(&args.a)?;
+    let mb = crate::tableau::load_method(&args.b)?;
     let (da, db) = (poly::derive(&ma)?, poly::derive(&mb)?);
     let relation = equiv::relate(&da, &db);
     let reordered = equiv::reordered_updates(&ma, &mb);

@@ -3,7 +3,7 @@
 
 use std::process::ExitCode;
 
-use zcheck::tableau::Tableau;
+use crate::tableau::Tableau;
 
 /// Arguments of `zcheck from-tableau`.
 #[derive(clap::Args)]

@@ -58,7 +58,7 @@ pub fn parse_range(flag: &str, s: &str) -> anyhow::Result<(Q, Q)> {
 }
 
 pub fn run(args: Args) -> anyhow::Result<ExitCode> {
-    let method = zcheck::tableau::load_method(&args.method)?;
+    let method = crate::tableau::load_method(&args.method)?;
     let phi = parse_range("--phi", &args.phi)?;
     if phi.0 < Q::from_integer(0.into()) {
         bail!("--phi {}: expected Phi >= 0", args.phi);
@@ -74,10 +74,10 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
             args.samples
         );
     }
-    let window = zcheck::map::MapWindow { phi, d, grid: args.grid, samples: args.samples };
-    let m = zcheck::map::map(&method, &window)?;
+    let window = crate::map::MapWindow { phi, d, grid: args.grid, samples: args.samples };
+    let m = crate::map::map(&method, &window)?;
     if let Some(path) = &args.svg {
-        zcheck::map::draw_svg(&m, path)?;
+        crate::map::draw_svg(&m, path)?;
     }
     match args.format {
         Format::Json => super::output::emitln(&serde_json::to_string_pretty(&m)?)?,

@@ -30,22 +30,20 @@ pub struct Args {
 pub fn run(args: Args) -> anyhow::Result<ExitCode> {
     anyhow::ensure!(args.order <= 64, "--order {} is too large: expected at most 64", args.order);
     let mut rows = if args.methods.is_empty() {
-        zcheck::overview::paper_overview(args.order)?
+        crate::overview::paper_overview(args.order)?
     } else {
         args.methods
             .iter()
-            .map(|m| {
-                Ok(zcheck::overview::summarize(&zcheck::tableau::load_method(m)?, args.order)?)
-            })
+            .map(|m| Ok(crate::overview::summarize(&crate::tableau::load_method(m)?, args.order)?))
             .collect::<anyhow::Result<Vec<_>>>()?
     };
     if args.implicit {
         for name in poly::IMPLICIT_METHODS {
-            rows.push(zcheck::overview::summarize(&poly::builtin(name)?, args.order)?);
+            rows.push(crate::overview::summarize(&poly::builtin(name)?, args.order)?);
         }
     }
     match args.format {
-        Format::Markdown => super::output::emit(&zcheck::overview::to_markdown(&rows))?,
+        Format::Markdown => super::output::emit(&crate::overview::to_markdown(&rows))?,
         Format::Json => super::output::emitln(&serde_json::to_string_pretty(&rows)?)?,
     }
     Ok(ExitCode::SUCCESS)

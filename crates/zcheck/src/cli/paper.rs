@@ -4,7 +4,7 @@
 
 use std::process::ExitCode;
 
-use zcheck::paper::{all_claims, report};
+use crate::paper::{all_claims, report};
 
 /// Output format of `zcheck paper`.
 #[derive(Clone, Copy, clap::ValueEnum)]
@@ -25,14 +25,14 @@ pub struct Args {
 
 pub fn run(args: Args) -> anyhow::Result<ExitCode> {
     let claims = all_claims();
-    let overview = zcheck::overview::paper_overview(OVERVIEW_ORDER)?;
+    let overview = crate::overview::paper_overview(OVERVIEW_ORDER)?;
     let out = match args.format {
         Format::Markdown => format!(
             "{}\n## Beyond the paper: every method side by side\n\n\
              Appendix A derives Ψ(Φ) for two methods; here it is for all seven, exact, with the \
              exact stability limit and the operations per step (`zcheck overview`).\n\n{}",
             report::to_markdown(&claims),
-            zcheck::overview::to_markdown(&overview)
+            crate::overview::to_markdown(&overview)
         ),
         Format::Json => {
             let mut doc = report::to_json(&claims);

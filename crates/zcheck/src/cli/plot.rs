@@ -5,9 +5,9 @@ use check::numeric::ParamsF64;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
+use crate::plot::{yt_figure, yt_grid, zplane_figure};
 use anyhow::{bail, Context};
 use check::numeric::Params;
-use zcheck::plot::{yt_figure, yt_grid, zplane_figure};
 
 /// Arguments of `zcheck plot`.
 #[derive(clap::Args)]
@@ -53,7 +53,7 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
         args.methods.clone()
     };
     let methods =
-        names.iter().map(|n| zcheck::tableau::load_method(n)).collect::<Result<Vec<_>, _>>()?;
+        names.iter().map(|n| crate::tableau::load_method(n)).collect::<Result<Vec<_>, _>>()?;
     std::fs::create_dir_all(&args.out)
         .with_context(|| format!("{}: cannot create", args.out.display()))?;
     let params = Params::new().try_with("Phi", args.phi)?;

@@ -7,14 +7,14 @@ use std::io::{IsTerminal, Write as _};
 use std::path::PathBuf;
 use std::process::ExitCode;
 
+use crate::scene::aircraft::{self, AircraftRun};
+use crate::scene::three_body::{
+    self, EnergyControl, EnergyDefinition, FirstStep, ForceLaw, InitialVelocities, ThreeBodyRun,
+};
+use crate::scene::{figure, Scene};
 use anyhow::Context;
 use indicatif::{ProgressBar, ProgressStyle};
 use serde_json::json;
-use zcheck::scene::aircraft::{self, AircraftRun};
-use zcheck::scene::three_body::{
-    self, EnergyControl, EnergyDefinition, FirstStep, ForceLaw, InitialVelocities, ThreeBodyRun,
-};
-use zcheck::scene::{figure, Scene};
 
 use super::values::{Exact, DEFAULT_BUDGET};
 
@@ -195,7 +195,7 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
 fn three_body_json(
     name: &str,
     run: &ThreeBodyRun,
-    accuracy: &Result<three_body::Accuracy, zcheck::scene::reference::ReferenceError>,
+    accuracy: &Result<three_body::Accuracy, crate::scene::reference::ReferenceError>,
 ) -> serde_json::Value {
     json!({
         "scene": name,
@@ -286,7 +286,7 @@ fn render_text(value: &serde_json::Value, indent: &str, out: &mut String) {
 mod tests {
     #[test]
     fn every_scene_name_resolves() {
-        for name in zcheck::scene::SCENES {
+        for name in crate::scene::SCENES {
             assert!(super::Scene::by_name(name).is_ok(), "{name}");
         }
     }

@@ -40,7 +40,7 @@ pub struct Args {
 }
 
 pub fn run(args: Args) -> anyhow::Result<ExitCode> {
-    let method = zcheck::tableau::load_method(&args.method)?;
+    let method = crate::tableau::load_method(&args.method)?;
     let chi = poly::charpoly(&method)?;
     values::check_declared(&args.params, &[&method])?;
     let mut values = HashMap::new();

@@ -5,9 +5,9 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Duration;
 
+use crate::tradeoff::{self, family, figure, kernels, Candidate, Spring, Target, TradeRow};
 use anyhow::{bail, Context};
 use check::numeric::{q_to_f64, Params, ParamsF64};
-use zcheck::tradeoff::{self, family, figure, kernels, Candidate, Spring, Target, TradeRow};
 
 /// Output format of `zcheck tradeoff`.
 #[derive(Clone, Copy, clap::ValueEnum)]
@@ -143,7 +143,7 @@ fn user_candidates(
         if family.iter().chain(&out).any(|c| &c.display == arg) {
             bail!("--method {arg}: already in the comparison");
         }
-        let method = zcheck::tableau::load_method(arg)?;
+        let method = crate::tableau::load_method(arg)?;
         let mut values = Vec::new();
         for sym in method.params().iter().filter(|s| s.name() != "Phi") {
             let Some((_, q)) = parsed.iter().find(|(n, _)| n == sym.name()) else {

@@ -69,7 +69,7 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
     let methods = args
         .methods
         .iter()
-        .map(|name| zcheck::tableau::load_method(name))
+        .map(|name| crate::tableau::load_method(name))
         .collect::<Result<Vec<_>, _>>()?;
     values::check_declared(&args.params, &methods.iter().collect::<Vec<_>>())?;
     let mut base = Params::default();
