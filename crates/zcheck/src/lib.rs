@@ -14,7 +14,7 @@
 pub mod cli;
 pub mod drift_figure;
 pub mod emit;
-pub mod located;
+mod error;
 pub mod map;
 pub mod overview;
 pub mod paper;
@@ -22,3 +22,5 @@ pub mod plot;
 pub mod scene;
 pub mod tableau;
 pub mod tradeoff;
+
+pub use error::{Error, ErrorKind, Location};

@@ -26,7 +26,7 @@ fn main() -> ExitCode {
         // The reader closed stdout early: nothing is wrong.
         Err(e) if is_broken_pipe(&e) => ExitCode::SUCCESS,
         Err(e) => {
-            print_error(&format!("error: {e:#}"));
+            print_error(&format!("error: {}", with_sources(&e)));
             ExitCode::from(2)
         }
     }
@@ -51,11 +51,19 @@ fn clap_exit(e: &clap::Error) -> ExitCode {
     }
 }
 
-fn is_broken_pipe(e: &anyhow::Error) -> bool {
-    e.chain().any(|c| {
-        c.downcast_ref::<std::io::Error>()
-            .is_some_and(|io| io.kind() == std::io::ErrorKind::BrokenPipe)
-    })
+fn is_broken_pipe(e: &zcheck::Error) -> bool {
+    e.io_error().is_some_and(|io| io.kind() == std::io::ErrorKind::BrokenPipe)
+}
+
+/// The error's message, then each of its sources after `: `.
+fn with_sources(e: &zcheck::Error) -> String {
+    let mut text = e.to_string();
+    let mut next = std::error::Error::source(e);
+    while let Some(source) = next {
+        text.push_str(&format!(": {source}"));
+        next = source.source();
+    }
+    text
 }
 
 /// Prints an error on stderr: control and invisible characters (other than

@@ -5,6 +5,7 @@
 use std::process::ExitCode;
 use std::time::Duration;
 
+use crate::error::Error;
 use crate::tradeoff::{self, family, kernels, Advice, Candidate, Scene};
 use poly::Q;
 
@@ -58,7 +59,7 @@ pub struct Args {
 
 /// The candidates for a scene: the seven direct methods, on the spring with
 /// the exact damping ratio `damping` when there is one.
-pub fn candidates(damping: Option<&Q>) -> anyhow::Result<Vec<Candidate>> {
+pub fn candidates(damping: Option<&Q>) -> Result<Vec<Candidate>, Error> {
     Ok(match damping {
         Some(q) => family::damped_family(q)?,
         None => family::undamped_family()?
@@ -75,24 +76,24 @@ pub enum SweepArg {
     GaussSeidel,
 }
 
-pub fn run(args: Args) -> anyhow::Result<ExitCode> {
+pub fn run(args: Args) -> Result<ExitCode, Error> {
     if let Some(path) = &args.scene {
         return run_scene(path, &args);
     }
     let (Some(freq_hz), Some(tick_hz)) = (args.freq, args.tick) else {
-        anyhow::bail!("expected --freq and --tick, or --scene FILE");
+        return Err(Error::usage("expected --freq and --tick, or --scene FILE"));
     };
     // The one-spring table compares the seven direct methods (with
     // --damping, each on the damped spring); --methods would be ignored.
     if !args.methods.is_empty() {
-        anyhow::bail!(
+        return Err(Error::usage(format!(
             "--methods {}: the candidates of a scene (--scene FILE); with --freq and --tick \
              zcheck advise compares the seven direct methods. Expected --scene FILE (a one-mode \
              scene is one body and one spring), or zcheck tradeoff --method {} to rank a method \
              of your own",
             args.methods.join(","),
             args.methods[0]
-        );
+        )));
     }
     let scene = Scene {
         freq_hz,
@@ -107,7 +108,7 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
     let d = scene.damping.unwrap_or(0.0);
     let budget = Duration::from_millis(3);
     let ns: Vec<f64> =
-        cands.iter().map(|c| super::tradeoff::measure(c, budget)).collect::<anyhow::Result<_>>()?;
+        cands.iter().map(|c| super::tradeoff::measure(c, budget)).collect::<Result<_, Error>>()?;
     let mut k = 0;
     let mut advice = tradeoff::advise(&scene, &cands, |_| {
         k += 1;
@@ -177,7 +178,7 @@ fn scene_advice(
     methods: &[String],
     simulate: bool,
     gauss_seidel: bool,
-) -> anyhow::Result<crate::scene::advisor::SceneAdvice> {
+) -> Result<crate::scene::advisor::SceneAdvice, Error> {
     use crate::scene::advisor::{self, MethodSpec, Options};
     let shapes = if simulate {
         crate::scene::modal::Shapes::Compute
@@ -188,7 +189,7 @@ fn scene_advice(
     let specs = if methods.is_empty() {
         MethodSpec::builtins()?
     } else {
-        methods.iter().map(|m| MethodSpec::load(m)).collect::<anyhow::Result<_>>()?
+        methods.iter().map(|m| MethodSpec::load(m)).collect::<Result<_, Error>>()?
     };
     advisor::advise(scene, &modal, specs, Options { simulate, gauss_seidel })
 }
@@ -295,14 +296,14 @@ pub fn text(a: &Advice) -> String {
 }
 
 /// `zcheck advise --scene FILE`.
-fn run_scene(path: &std::path::Path, args: &Args) -> anyhow::Result<ExitCode> {
+fn run_scene(path: &std::path::Path, args: &Args) -> Result<ExitCode, Error> {
     use crate::scene::file::SceneFile;
     let scene = SceneFile::load(path)?;
     if args.duration != Scene::DEFAULT_DURATION_S
         || args.phase_tol != Scene::DEFAULT_PHASE_TOL
         || args.amp_tol != Scene::DEFAULT_AMP_TOL
     {
-        anyhow::bail!("--duration, --phase-tol and --amp-tol belong in the scene file with --scene (duration_s, [accuracy])");
+        return Err(Error::usage("--duration, --phase-tol and --amp-tol belong in the scene file with --scene (duration_s, [accuracy])"));
     }
     let advice = scene_advice(&scene, &args.methods, !args.no_simulate, args.sweep.is_some())?;
     match args.format {

@@ -5,6 +5,8 @@ use std::process::ExitCode;
 use poly::{Derivation, Poly};
 use serde_json::json;
 
+use crate::error::Error;
+
 /// Output format of `zcheck derive`.
 #[derive(Clone, Copy, clap::ValueEnum)]
 pub enum Format {
@@ -22,7 +24,7 @@ pub struct Args {
     pub format: Format,
 }
 
-pub fn run(args: Args) -> anyhow::Result<ExitCode> {
+pub fn run(args: Args) -> Result<ExitCode, Error> {
     let method = crate::tableau::load_method(&args.method)?;
     let d = poly::derive(&method)?;
     let out = match args.format {

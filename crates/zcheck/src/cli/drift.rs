@@ -7,13 +7,14 @@ use std::process::ExitCode;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
 
-use anyhow::{bail, Context};
 use check::drift::{Run, Study};
 use check::kernel::{Kernel, Real};
 use check::numeric::{q_to_f64, Params, ParamsF64, Step};
 use poly::invariant::{conserved_form, form_text, is_positive_definite, transition_matrix_at};
 use poly::{Sym, Q};
 use serde_json::{json, Value};
+
+use crate::error::Error;
 
 /// Output format of `zcheck drift`.
 #[derive(Clone, Copy, clap::ValueEnum)]
@@ -98,23 +99,23 @@ impl Report {
     }
 }
 
-pub fn run(args: Args) -> anyhow::Result<ExitCode> {
+pub fn run(args: Args) -> Result<ExitCode, Error> {
     if args.starts == 0 {
-        bail!("--starts 0: expected at least one start");
+        return Err(Error::usage("--starts 0: expected at least one start"));
     }
     let phi = args
         .phi
         .parse::<super::values::Exact>()
-        .map_err(|e| anyhow::anyhow!("--phi {}: {e}", args.phi))?
+        .map_err(|e| Error::usage(format!("--phi {}: {e}", args.phi)))?
         .value;
     if phi <= Q::from_integer(0.into()) {
-        bail!("--phi {}: expected a step > 0", args.phi);
+        return Err(Error::usage(format!("--phi {}: expected a step > 0", args.phi)));
     }
     let mut extra = Vec::new();
     for p in &args.params {
         let (name, value) = super::values::parse_param(p)?;
         if name == "Phi" {
-            bail!("--param {p}: give the step with --phi");
+            return Err(Error::usage(format!("--param {p}: give the step with --phi")));
         }
         extra.push((name, value));
     }
@@ -143,7 +144,7 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
     }
     if let Some(path) = &args.svg {
         crate::drift_figure::draw(path, &reports_for_figure(&reports))
-            .map_err(|e| anyhow::anyhow!("{e}"))?;
+            .map_err(|e| Error::usage(format!("{e}")))?;
     }
     match args.format {
         Format::Text => print!("{}", reports.iter().map(text).collect::<Vec<_>>().join("\n")),
@@ -180,7 +181,7 @@ fn study<T: Real>(
     args: &Args,
     threads: usize,
     stop: &AtomicBool,
-) -> anyhow::Result<Report> {
+) -> Result<Report, Error> {
     let method = crate::tableau::load_method(name)?;
     let mut exact: HashMap<Sym, Q> = HashMap::new();
     let mut params = Params::new();
@@ -188,11 +189,9 @@ fn study<T: Real>(
         let value = if sym.name() == "Phi" {
             phi.clone()
         } else {
-            extra
-                .iter()
-                .find(|(n, _)| n == sym.name())
-                .map(|(_, v)| v.clone())
-                .with_context(|| format!("method {name} needs --param {}=VALUE", sym.name()))?
+            extra.iter().find(|(n, _)| n == sym.name()).map(|(_, v)| v.clone()).ok_or_else(
+                || Error::usage(format!("method {name} needs --param {}=VALUE", sym.name())),
+            )?
         };
         params.set(sym.name(), q_to_f64(&value));
         exact.insert(*sym, value);
@@ -201,14 +200,18 @@ fn study<T: Real>(
     let names = Step::compile(&method, &params)?.slot_names().to_vec();
     let form = match conserved_form(&p) {
         Ok(f) if is_positive_definite(&f) => f,
-        Ok(_) => bail!(
-            "{name}: at Phi = {phi} the roots are real (the conserved form is indefinite): \
+        Ok(_) => {
+            return Err(Error::usage(format!(
+                "{name}: at Phi = {phi} the roots are real (the conserved form is indefinite): \
              expected a method with |z| = 1 at Phi, e.g. false_euler or verlet below Phi = 2"
-        ),
-        Err(e) => bail!(
-            "{name}: no single conserved quadratic form at Phi = {phi} ({e:?}): expected a \
+            )))
+        }
+        Err(e) => {
+            return Err(Error::usage(format!(
+                "{name}: no single conserved quadratic form at Phi = {phi} ({e:?}): expected a \
              method with |z| = 1 at Phi, e.g. false_euler or verlet below Phi = 2"
-        ),
+            )))
+        }
     };
     let step = Step::compile(&method, &params)?;
     let kernel = Kernel::<T>::new(&step);

@@ -4,7 +4,7 @@
 use std::process::ExitCode;
 
 use crate::emit::{emit, Binding, Lang};
-use anyhow::bail;
+use crate::error::Error;
 use poly::{Sym, Q};
 
 /// The language to emit.
@@ -30,7 +30,7 @@ pub struct Args {
     pub params: Vec<String>,
 }
 
-pub fn run(args: Args) -> anyhow::Result<ExitCode> {
+pub fn run(args: Args) -> Result<ExitCode, Error> {
     let method = crate::tableau::load_method(&args.method)?;
     let lang = match args.lang {
         Language::Rust => Lang::Rust,
@@ -39,7 +39,9 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
     let binding = match &args.phi {
         None => {
             if !args.params.is_empty() {
-                bail!("--param needs --phi: without --phi every parameter is an argument");
+                return Err(Error::usage(
+                    "--param needs --phi: without --phi every parameter is an argument",
+                ));
             }
             Binding::Parametric
         }
@@ -51,13 +53,20 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
             let mut values: Vec<(Sym, Q)> = Vec::new();
             for sym in method.params() {
                 let Some((_, v)) = given.iter().find(|(n, _)| n == sym.name()) else {
-                    bail!("method {} needs --param {}=VALUE", method.name(), sym.name());
+                    return Err(Error::usage(format!(
+                        "method {} needs --param {}=VALUE",
+                        method.name(),
+                        sym.name()
+                    )));
                 };
                 values.push((*sym, v.clone()));
             }
             for (n, _) in &given {
                 if !method.params().iter().any(|s| s.name() == n) {
-                    bail!("--param {n}=...: method {} has no parameter {n}", method.name());
+                    return Err(Error::usage(format!(
+                        "--param {n}=...: method {} has no parameter {n}",
+                        method.name()
+                    )));
                 }
             }
             Binding::Folded(values)

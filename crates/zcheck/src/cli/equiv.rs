@@ -6,6 +6,8 @@ use std::process::ExitCode;
 use poly::equiv::{self, Relation};
 use serde_json::json;
 
+use crate::error::Error;
+
 /// Output format of `zcheck equiv`.
 #[derive(Clone, Copy, clap::ValueEnum)]
 pub enum Format {
@@ -67,7 +69,7 @@ pub fn describe(r: &Relation, a: &poly::Method, b: &poly::Method) -> String {
     }
 }
 
-pub fn run(args: Args) -> anyhow::Result<ExitCode> {
+pub fn run(args: Args) -> Result<ExitCode, Error> {
     let ma = crate::tableau::load_method(&args.a)?;
     let mb = crate::tableau::load_method(&args.b)?;
     let (da, db) = (poly::derive(&ma)?, poly::derive(&mb)?);

@@ -3,6 +3,7 @@
 
 use std::process::ExitCode;
 
+use crate::error::Error;
 use crate::tableau::Tableau;
 
 /// Arguments of `zcheck from-tableau`.
@@ -17,12 +18,16 @@ pub struct Args {
     pub damped: bool,
 }
 
-pub fn run(args: Args) -> anyhow::Result<ExitCode> {
+pub fn run(args: Args) -> Result<ExitCode, Error> {
     let tableau = Tableau::load(std::path::Path::new(&args.file))?;
     let src = tableau.to_zm(args.damped);
     // The program parses (and derives) before it is printed.
     poly::Method::parse(&args.file, &src).map_err(|e| {
-        anyhow::anyhow!("{}: the generated program does not parse: {}", args.file, e.message())
+        Error::usage(format!(
+            "{}: the generated program does not parse: {}",
+            args.file,
+            e.message()
+        ))
     })?;
     print!("{src}");
     Ok(ExitCode::SUCCESS)

@@ -4,10 +4,10 @@
 
 use std::process::ExitCode;
 
-use anyhow::{bail, Context};
 use poly::Q;
 
 use super::values::Exact;
+use crate::error::Error;
 
 /// Output format of `zcheck map`.
 #[derive(Clone, Copy, clap::ValueEnum)]
@@ -41,41 +41,42 @@ pub struct Args {
 }
 
 /// `LO..HI` as exact rationals with LO < HI.
-pub fn parse_range(flag: &str, s: &str) -> anyhow::Result<(Q, Q)> {
+pub fn parse_range(flag: &str, s: &str) -> Result<(Q, Q), Error> {
     let Some((lo, hi)) = s.split_once("..") else {
-        bail!("{flag} {s}: expected LO..HI, e.g. 0..2.5");
+        return Err(Error::usage(format!("{flag} {s}: expected LO..HI, e.g. 0..2.5")));
     };
-    let read = |part: &str, which: &str| -> anyhow::Result<Q> {
-        part.parse::<Exact>().map(|e| e.value).map_err(|e| anyhow::anyhow!("{e}")).with_context(
-            || format!("{flag} {s}: {which}: expected a number such as 2, 5/2 or 2.5"),
-        )
+    let read = |part: &str, which: &str| -> Result<Q, Error> {
+        part.parse::<Exact>().map(|e| e.value).map_err(|e| {
+            Error::usage(format!(
+                "{flag} {s}: {which}: expected a number such as 2, 5/2 or 2.5: {e}"
+            ))
+        })
     };
     let (lo, hi) = (read(lo, "LO")?, read(hi, "HI")?);
     if lo >= hi {
-        bail!("{flag} {s}: expected LO < HI");
+        return Err(Error::usage(format!("{flag} {s}: expected LO < HI")));
     }
     Ok((lo, hi))
 }
 
-pub fn run(args: Args) -> anyhow::Result<ExitCode> {
+pub fn run(args: Args) -> Result<ExitCode, Error> {
     let method = crate::tableau::load_method(&args.method)?;
     let phi = parse_range("--phi", &args.phi)?;
     if phi.0 < Q::from_integer(0.into()) {
-        bail!("--phi {}: expected Phi >= 0", args.phi);
+        return Err(Error::usage(format!("--phi {}: expected Phi >= 0", args.phi)));
     }
     let Some(("D", range)) = args.param.split_once('=').map(|(n, r)| (n.trim(), r)) else {
-        bail!("--param {}: expected D=LO..HI", args.param);
+        return Err(Error::usage(format!("--param {}: expected D=LO..HI", args.param)));
     };
     let d = parse_range("--param D", range)?;
     if !(2..=400).contains(&args.grid) || !(2..=5000).contains(&args.samples) {
-        bail!(
+        return Err(Error::usage(format!(
             "--grid {} --samples {}: expected 2..=400 grid points and 2..=5000 samples",
-            args.grid,
-            args.samples
-        );
+            args.grid, args.samples
+        )));
     }
     let window = crate::map::MapWindow { phi, d, grid: args.grid, samples: args.samples };
-    let m = crate::map::map(&method, &window)?;
+    let m = crate::map::map(&poly::derive(&method)?, &window)?;
     if let Some(path) = &args.svg {
         crate::map::draw_svg(&m, path)?;
     }

@@ -5,6 +5,8 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 
+use crate::error::Error;
+
 pub mod advise;
 pub mod derive;
 pub mod drift;
@@ -69,7 +71,7 @@ enum Command {
 impl Cli {
     /// Runs the subcommand: its exit code (a verification that disagrees
     /// is a failure, not an error), or why it could not run.
-    pub fn run(self) -> anyhow::Result<ExitCode> {
+    pub fn run(self) -> Result<ExitCode, Error> {
         match self.command {
             Command::Methods(a) => methods::run(a),
             Command::Derive(a) => derive::run(a),

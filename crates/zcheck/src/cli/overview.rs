@@ -3,6 +3,8 @@
 
 use std::process::ExitCode;
 
+use crate::error::Error;
+
 /// Output format of `zcheck overview`.
 #[derive(Clone, Copy, clap::ValueEnum)]
 pub enum Format {
@@ -27,15 +29,20 @@ pub struct Args {
     pub implicit: bool,
 }
 
-pub fn run(args: Args) -> anyhow::Result<ExitCode> {
-    anyhow::ensure!(args.order <= 64, "--order {} is too large: expected at most 64", args.order);
+pub fn run(args: Args) -> Result<ExitCode, Error> {
+    if args.order > 64 {
+        return Err(Error::usage(format!(
+            "--order {} is too large: expected at most 64",
+            args.order
+        )));
+    }
     let mut rows = if args.methods.is_empty() {
         crate::overview::paper_overview(args.order)?
     } else {
         args.methods
             .iter()
-            .map(|m| Ok(crate::overview::summarize(&crate::tableau::load_method(m)?, args.order)?))
-            .collect::<anyhow::Result<Vec<_>>>()?
+            .map(|m| crate::overview::summarize(&crate::tableau::load_method(m)?, args.order))
+            .collect::<Result<Vec<_>, Error>>()?
     };
     if args.implicit {
         for name in poly::IMPLICIT_METHODS {

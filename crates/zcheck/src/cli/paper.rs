@@ -4,6 +4,7 @@
 
 use std::process::ExitCode;
 
+use crate::error::Error;
 use crate::paper::{all_claims, report};
 
 /// Output format of `zcheck paper`.
@@ -23,7 +24,7 @@ pub struct Args {
     pub format: Format,
 }
 
-pub fn run(args: Args) -> anyhow::Result<ExitCode> {
+pub fn run(args: Args) -> Result<ExitCode, Error> {
     let claims = all_claims();
     let overview = crate::overview::paper_overview(OVERVIEW_ORDER)?;
     let out = match args.format {

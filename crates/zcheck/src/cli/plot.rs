@@ -5,8 +5,8 @@ use check::numeric::ParamsF64;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
+use crate::error::Error;
 use crate::plot::{yt_figure, yt_grid, zplane_figure};
-use anyhow::{bail, Context};
 use check::numeric::Params;
 
 /// Arguments of `zcheck plot`.
@@ -40,12 +40,15 @@ enum What {
     All,
 }
 
-pub fn run(args: Args) -> anyhow::Result<ExitCode> {
+pub fn run(args: Args) -> Result<ExitCode, Error> {
     if !(args.phi > 0.0 && args.phi.is_finite()) {
-        bail!("--phi {}: expected a positive number", args.phi);
+        return Err(Error::usage(format!("--phi {}: expected a positive number", args.phi)));
     }
     if !(args.t_max > 0.0 && args.t_max / args.phi <= 1e6) {
-        bail!("--t-max {}: expected a positive span of at most 1e6 steps", args.t_max);
+        return Err(Error::usage(format!(
+            "--t-max {}: expected a positive span of at most 1e6 steps",
+            args.t_max
+        )));
     }
     let names: Vec<String> = if args.methods.is_empty() {
         poly::PAPER_METHODS.iter().map(|s| s.to_string()).collect()
@@ -55,7 +58,7 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
     let methods =
         names.iter().map(|n| crate::tableau::load_method(n)).collect::<Result<Vec<_>, _>>()?;
     std::fs::create_dir_all(&args.out)
-        .with_context(|| format!("{}: cannot create", args.out.display()))?;
+        .map_err(|e| Error::io(format!("{}: cannot create", args.out.display()), e))?;
     let params = Params::new().try_with("Phi", args.phi)?;
     let mut written = Vec::new();
     if matches!(args.what, What::Yt | What::All) {

@@ -7,12 +7,12 @@ use std::io::{IsTerminal, Write as _};
 use std::path::PathBuf;
 use std::process::ExitCode;
 
+use crate::error::Error;
 use crate::scene::aircraft::{self, AircraftRun};
 use crate::scene::three_body::{
     self, EnergyControl, EnergyDefinition, FirstStep, ForceLaw, InitialVelocities, ThreeBodyRun,
 };
 use crate::scene::{figure, Scene};
-use anyhow::Context;
 use indicatif::{ProgressBar, ProgressStyle};
 use serde_json::json;
 
@@ -109,17 +109,19 @@ fn progress_bar(n: u64) -> ProgressBar {
     bar
 }
 
-pub fn run(args: Args) -> anyhow::Result<ExitCode> {
+pub fn run(args: Args) -> Result<ExitCode, Error> {
     let scene = Scene::by_name(&args.name)?;
     let n = args.steps.unwrap_or_else(|| scene.default_steps());
-    anyhow::ensure!(n > 0, "--steps: expected a positive number of steps, got 0");
+    if n == 0 {
+        return Err(Error::usage("--steps: expected a positive number of steps, got 0"));
+    }
     let budget = args.budget.to_count("--budget")?;
-    anyhow::ensure!(
-        n <= budget,
-        "--steps {n} is beyond the budget of {budget} steps: pass --budget {n} to run it anyway"
-    );
+    if n > budget {
+        return Err(Error::usage(format!("--steps {n} is beyond the budget of {budget} steps: pass --budget {n} to run it anyway")));
+    }
     if let Some(dir) = &args.plot {
-        std::fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
+        std::fs::create_dir_all(dir)
+            .map_err(|e| Error::io(format!("cannot create {}", dir.display()), e))?;
     }
     let bar = progress_bar(n);
     bar.set_message(args.name.clone());
@@ -150,7 +152,11 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
                 };
             }
             if let Some(eps) = args.eps {
-                anyhow::ensure!(eps.is_finite(), "--eps: expected a finite number, got {eps}");
+                if !(eps.is_finite()) {
+                    return Err(Error::usage(format!(
+                        "--eps: expected a finite number, got {eps}"
+                    )));
+                }
                 config.eps = eps;
             }
             let run = three_body::simulate(&config, n, &mut progress);
@@ -166,17 +172,19 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
         }
         Scene::Aircraft(mut config) => {
             if let Some(phic) = args.phic {
-                anyhow::ensure!(
-                    phic.is_finite(),
-                    "--phic: expected a finite angle in degrees, got {phic}"
-                );
+                if !(phic.is_finite()) {
+                    return Err(Error::usage(format!(
+                        "--phic: expected a finite angle in degrees, got {phic}"
+                    )));
+                }
                 config.phi_command = phic;
             }
             if let Some(thec) = args.thec {
-                anyhow::ensure!(
-                    thec.is_finite(),
-                    "--thec: expected a finite angle in degrees, got {thec}"
-                );
+                if !(thec.is_finite()) {
+                    return Err(Error::usage(format!(
+                        "--thec: expected a finite angle in degrees, got {thec}"
+                    )));
+                }
                 config.theta_command = thec;
             }
             let run = aircraft::simulate(&config, n, &mut progress);
@@ -195,7 +203,7 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
 fn three_body_json(
     name: &str,
     run: &ThreeBodyRun,
-    accuracy: &Result<three_body::Accuracy, crate::scene::reference::ReferenceError>,
+    accuracy: &Result<three_body::Accuracy, crate::error::Error>,
 ) -> serde_json::Value {
     json!({
         "scene": name,
@@ -242,7 +250,7 @@ fn aircraft_json(run: &AircraftRun) -> serde_json::Value {
     })
 }
 
-fn print(args: &Args, report: &serde_json::Value) -> anyhow::Result<()> {
+fn print(args: &Args, report: &serde_json::Value) -> Result<(), Error> {
     match args.format {
         Format::Json => {
             super::output::emitln(&serde_json::to_string_pretty(report)?)?;

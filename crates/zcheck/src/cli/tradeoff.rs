@@ -5,8 +5,8 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Duration;
 
+use crate::error::Error;
 use crate::tradeoff::{self, family, figure, kernels, Candidate, Spring, Target, TradeRow};
-use anyhow::{bail, Context};
 use check::numeric::{q_to_f64, Params, ParamsF64};
 
 /// Output format of `zcheck tradeoff`.
@@ -51,14 +51,16 @@ pub struct Args {
     pub svg: Option<PathBuf>,
 }
 
-pub fn run(args: Args) -> anyhow::Result<ExitCode> {
+pub fn run(args: Args) -> Result<ExitCode, Error> {
     let target = Target { phase_tol: args.phase_tol, amp_tol: args.amp_tol, periods: args.periods };
     for (name, x) in [
         ("--phase-tol", target.phase_tol),
         ("--amp-tol", target.amp_tol),
         ("--periods", target.periods),
     ] {
-        anyhow::ensure!(x.is_finite() && x > 0.0, "{name} {x}: expected a finite number > 0");
+        if !(x.is_finite() && x > 0.0) {
+            return Err(Error::usage(format!("{name} {x}: expected a finite number > 0")));
+        }
     }
     let budget = Duration::from_millis(args.budget_ms.max(1));
     let mut candidates = family::undamped_family()?;
@@ -117,13 +119,13 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
 
 /// The compiled step of `c` timed at the timing Φ (and `c`'s other
 /// parameters).
-pub fn measure(c: &Candidate, budget: Duration) -> anyhow::Result<f64> {
+pub fn measure(c: &Candidate, budget: Duration) -> Result<f64, Error> {
     let mut params = Params::phi(kernels::TIMING_PHI);
     for (sym, q) in &c.params {
         params.set(sym.name(), q_to_f64(q));
     }
     tradeoff::measure_ns_per_step_within(&c.method, &params, budget)
-        .with_context(|| format!("method {}", c.display))
+        .map_err(|e| e.context(format!("method {}", c.display)))
 }
 
 /// The `--method` candidates: each shown by its argument (a path or a
@@ -132,30 +134,33 @@ fn user_candidates(
     methods: &[String],
     params: &[String],
     family: &[Candidate],
-) -> anyhow::Result<Vec<Candidate>> {
+) -> Result<Vec<Candidate>, Error> {
     let parsed: Vec<(String, poly::Q)> =
         params.iter().map(|p| super::values::parse_param(p)).collect::<Result<_, _>>()?;
     if let Some((name, _)) = parsed.iter().find(|(n, _)| n == "Phi") {
-        bail!("--param {name}=...: Phi is the step size the trade chooses; it cannot be fixed");
+        return Err(Error::usage(format!(
+            "--param {name}=...: Phi is the step size the trade chooses; it cannot be fixed"
+        )));
     }
     let mut out: Vec<Candidate> = Vec::new();
     for arg in methods {
         if family.iter().chain(&out).any(|c| &c.display == arg) {
-            bail!("--method {arg}: already in the comparison");
+            return Err(Error::usage(format!("--method {arg}: already in the comparison")));
         }
         let method = crate::tableau::load_method(arg)?;
         let mut values = Vec::new();
         for sym in method.params().iter().filter(|s| s.name() != "Phi") {
             let Some((_, q)) = parsed.iter().find(|(n, _)| n == sym.name()) else {
-                bail!(
+                return Err(Error::usage(format!(
                     "--method {arg}: parameter {} has no value: expected --param {}=VALUE",
                     sym.name(),
                     sym.name()
-                );
+                )));
             };
             values.push((*sym, q.clone()));
         }
-        let mut c = Candidate::new(method, values).with_context(|| format!("--method {arg}"))?;
+        let mut c =
+            Candidate::new(method, values).map_err(|e| e.context(format!("--method {arg}")))?;
         c.display = arg.clone();
         out.push(c);
     }

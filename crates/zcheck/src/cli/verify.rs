@@ -6,7 +6,6 @@ use std::io::IsTerminal;
 use std::process::ExitCode;
 use std::time::Instant;
 
-use anyhow::{bail, Context};
 use check::classify::psi_of;
 use check::numeric::{Params, ParamsF64};
 use check::sweep;
@@ -17,6 +16,7 @@ use serde_json::{json, Value};
 
 use super::output;
 use super::values::{self, show_f64, Exact, ParamArg};
+use crate::error::Error;
 
 /// Arguments of `zcheck verify`.
 #[derive(clap::Args)]
@@ -57,7 +57,7 @@ enum Format {
     Json,
 }
 
-pub fn run(args: Args) -> anyhow::Result<ExitCode> {
+pub fn run(args: Args) -> Result<ExitCode, Error> {
     let steps = args.steps.to_count("--steps")?;
     let budget = args.budget.to_count("--budget")?;
     // The Φ typed are exact (the exact class is taken there); the numeric
@@ -93,7 +93,7 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
     let n_points: u64 = jobs.iter().map(|(_, p)| p.len() as u64).sum();
     let total = n_points.saturating_mul(steps);
     if total > budget {
-        bail!(
+        return Err(Error::usage(format!(
             "this run is {} state-steps ({n_points} points × {} steps), {}; the budget is {}: \
              pass --budget {} to run it anyway, or ask for fewer --steps",
             show_count(total),
@@ -101,7 +101,7 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
             estimate(&jobs, &base, total),
             show_count(budget),
             total
-        );
+        )));
     }
     let bar = if std::io::stderr().is_terminal() && total >= 10_000_000 {
         let b = ProgressBar::new(total);
@@ -130,11 +130,11 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
             };
             let r = w
                 .at_with_progress(&params, steps, &mut |k| bar.set_position(done_before + k))
-                .with_context(|| {
-                    format!(
+                .map_err(|e| {
+                    Error::from(e).context(format!(
                         "{name} at Phi = {} (other parameters: --param NAME=VALUE)",
                         show_f64(phi)
-                    )
+                    ))
                 })?;
             done_before += steps;
             bar.set_position(done_before);

@@ -41,7 +41,7 @@ pub fn sig(x: f64) -> String {
 }
 
 /// Relative change from the first to the last value.
-fn end_drift(t: &crate::scene::Track) -> f64 {
+fn end_drift(t: &crate::scene::track::Track) -> f64 {
     (t.last - t.initial) / t.initial.abs()
 }
 

@@ -43,8 +43,9 @@ use poly::{Method, Poly, Sym};
 use serde::Serialize;
 
 use super::file::SceneFile;
-use super::modal::{DampingKind, Modal, Mode, Sparse, System};
+use super::modal::{continuous_eigenvalues, DampingKind, Modal, Mode, Sparse, System};
 use super::vector::{self, Kernel, Sweep, VState};
+use crate::error::Error;
 use crate::tradeoff::accuracy::{Accuracy, Spring, Target};
 use crate::tradeoff::kernels;
 
@@ -74,7 +75,7 @@ pub struct MethodSpec {
 impl MethodSpec {
     /// A built-in by its undamped or damped name (`false_euler` or
     /// `false_euler_damped`), or a `.zm` file.
-    pub fn load(arg: &str) -> anyhow::Result<MethodSpec> {
+    pub fn load(arg: &str) -> Result<MethodSpec, Error> {
         let damped = match arg {
             "standard_euler" => Some("damped_euler_d".to_owned()),
             a if poly::DAMPED_METHODS.contains(&a) => Some(a.to_owned()),
@@ -106,7 +107,7 @@ impl MethodSpec {
     }
 
     /// The seven direct methods on the damped spring.
-    pub fn builtins() -> anyhow::Result<Vec<MethodSpec>> {
+    pub fn builtins() -> Result<Vec<MethodSpec>, Error> {
         poly::DAMPED_METHODS.iter().map(|n| MethodSpec::load(n)).collect()
     }
 }
@@ -285,19 +286,19 @@ type AtParam = (Poly, Option<Vec<poly::stability::StableInterval>>);
 const FLOAT_MARGIN: f64 = 1e-6;
 
 impl Analysed {
-    fn new(spec: MethodSpec) -> anyhow::Result<Analysed> {
+    fn new(spec: MethodSpec) -> Result<Analysed, Error> {
         let d = Sym::new("D");
         if let Some(extra) =
             spec.method.params().iter().find(|s| s.name() != "Phi" && s.name() != "D")
         {
-            anyhow::bail!(
+            return Err(Error::unsupported(format!(
                 "method {}: parameter {extra} has no value in a scene: expected only Phi and D",
                 spec.display
-            );
+            )));
         }
         let chi = poly::charpoly(&spec.method)?;
-        let region =
-            region(&chi, d).map_err(|e| anyhow::anyhow!("method {}: {e}", spec.display))?;
+        let region = region(&chi, d)
+            .map_err(|e| Error::from(e).context(format!("method {}", spec.display)))?;
         let zc = chi.coeffs_in(Sym::z());
         let coeffs = zc.iter().map(|c| BiPoly::new(c, d)).collect();
         let second = (zc.len() == 3 && zc[2].is_one()).then(|| {
@@ -528,7 +529,7 @@ pub fn advise(
     modal: &Modal,
     specs: Vec<MethodSpec>,
     options: Options,
-) -> anyhow::Result<SceneAdvice> {
+) -> Result<SceneAdvice, Error> {
     let tick = scene.tick_hz;
     let target = target_of(scene);
     let dof = scene.dof();
@@ -539,11 +540,11 @@ pub fn advise(
         if !spec.method.params().iter().any(|s| s.name() == "D")
             && modal.modes.iter().any(|m| m.ratio != 0.0)
         {
-            anyhow::bail!(
+            return Err(Error::unsupported(format!(
                 "method {}: the scene is damped but the method has no parameter D: expected `param D` \
                  (the test equation v' = -2*D*v - y, y' = v)",
                 spec.display
-            );
+            )));
         }
         let mut a = Analysed::new(spec)?;
         let adv = advise_one(&mut a, scene, modal, &system, &shapes, &target, options.simulate)?;
@@ -589,7 +590,7 @@ pub fn advise(
                         c.substeps_stable,
                     ))
                 })
-                .collect::<anyhow::Result<Vec<_>>>()?,
+                .collect::<Result<Vec<_>, Error>>()?,
         )
     } else {
         None
@@ -617,7 +618,7 @@ fn advise_one(
     shapes: &[Vec<f64>],
     target: &Target,
     simulate: bool,
-) -> anyhow::Result<CandidateAdvice> {
+) -> Result<CandidateAdvice, Error> {
     let tick = scene.tick_hz;
     let modes = &modal.modes;
     // Float estimates for every mode, then exact answers for the limiting
@@ -990,29 +991,6 @@ fn fit_root(q: &[f64]) -> Option<(f64, f64)> {
     Some(((a / (2.0 * r)).clamp(-1.0, 1.0).acos(), r.ln()))
 }
 
-/// The eigenvalues λ of the continuous system ẏ = v, v̇ = −M⁻¹(K y + C v)
-/// with Im λ ≥ 0.
-pub fn continuous_eigenvalues(sys: &System) -> Vec<C64> {
-    let n = sys.n();
-    let mut a = DMatrix::zeros(2 * n, 2 * n);
-    for i in 0..n {
-        a[(i, n + i)] = 1.0;
-        for &(j, k) in sys.k.row(i) {
-            a[(n + i, j)] = -k / sys.mass[i];
-        }
-        for &(j, c) in sys.c.row(i) {
-            a[(n + i, n + j)] = -c / sys.mass[i];
-        }
-    }
-    let mut l: Vec<C64> = check::witness::eigenvalues_nalgebra(&a)
-        .unwrap_or_default()
-        .into_iter()
-        .filter(|z| z.im >= 0.0)
-        .collect();
-    l.sort_by(|x, y| x.norm().total_cmp(&y.norm()));
-    l
-}
-
 /// For each λ, the eigenvalue μ of the full step nearest e^{λT}.
 fn matched(p: &DMatrix<f64>, lambdas: &[C64], t: f64) -> Option<Vec<C64>> {
     let mu = check::witness::eigenvalues_faer(p).ok()?;
@@ -1191,12 +1169,12 @@ fn sweep_report(
     sys: &System,
     tick: f64,
     modal: Option<u64>,
-) -> anyhow::Result<SweepReport> {
+) -> Result<SweepReport, Error> {
     if sys.n() > MAX_FULL_DOF {
-        anyhow::bail!(
+        return Err(Error::usage(format!(
             "--sweep gauss-seidel: the scene has {} degrees of freedom: the full-step analysis takes at most {MAX_FULL_DOF}",
             sys.n()
-        );
+        )));
     }
     let gs = full_stable(kernel, Sweep::GaussSeidel, sys, tick, modal.unwrap_or(1));
     let vec_n = full_stable(kernel, Sweep::Vector, sys, tick, modal.unwrap_or(1));

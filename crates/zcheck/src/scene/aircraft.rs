@@ -11,7 +11,8 @@ use nalgebra::{SMatrix, SVector};
 use serde::Serialize;
 
 use super::reference::rk4_step;
-use super::{SceneError, Track};
+use super::track::Track;
+use crate::error::Error;
 
 /// Principal moments of inertia.
 pub const JX: f64 = 0.6;
@@ -196,7 +197,7 @@ pub struct SteadyTurn {
 
 /// Solve for the steady turn of the continuous equations by Newton's method
 /// from the command (an independent route to the simulated end state).
-pub fn steady_turn(config: &AircraftConfig) -> Result<SteadyTurn, SceneError> {
+pub fn steady_turn(config: &AircraftConfig) -> Result<SteadyTurn, Error> {
     let residual = |x: &SVector<f64, 5>| {
         let d = derivative(config, &[x[0], x[1], x[2], x[3], x[4], 0.0]);
         SVector::<f64, 5>::from([d[0], d[1], d[2], d[3], d[4]])
@@ -222,10 +223,14 @@ pub fn steady_turn(config: &AircraftConfig) -> Result<SteadyTurn, SceneError> {
             xm[j] -= h;
             jacobian.set_column(j, &((residual(&xp) - residual(&xm)) / (2.0 * h)));
         }
-        let dx = jacobian.lu().solve(&r).ok_or(SceneError::NoSteadyState)?;
+        let dx = jacobian.lu().solve(&r).ok_or_else(no_steady_turn)?;
         x -= dx;
     }
-    Err(SceneError::NoSteadyState)
+    Err(no_steady_turn())
+}
+
+fn no_steady_turn() -> Error {
+    Error::numeric("no steady turn found for the aircraft's command")
 }
 
 /// One sample of a run.

@@ -28,6 +28,8 @@ use std::path::Path;
 use serde::Deserialize;
 use toml::Spanned;
 
+use crate::error::{line_col, Error};
+
 /// The name that fixes a spring's end to the world.
 pub const GROUND: &str = "ground";
 
@@ -91,9 +93,6 @@ pub struct ModeSpec {
     pub ratio: f64,
 }
 
-/// A mistake in a scene file, with its location.
-pub type SceneFileError = crate::located::FileError;
-
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct Raw {
@@ -147,22 +146,18 @@ pub const DEFAULT_AMPLITUDE: f64 = 0.01;
 
 impl SceneFile {
     /// Reads and checks a scene file.
-    pub fn load(path: &Path) -> Result<SceneFile, SceneFileError> {
+    pub fn load(path: &Path) -> Result<SceneFile, Error> {
         let shown = path.display().to_string();
-        let text = std::fs::read_to_string(path).map_err(|e| SceneFileError {
-            path: shown.clone(),
-            line: 0,
-            col: 0,
-            message: format!("cannot read the scene file: {e}"),
-        })?;
+        let text = std::fs::read_to_string(path)
+            .map_err(|e| Error::file(&shown, 0, 0, &format!("cannot read the scene file: {e}")))?;
         SceneFile::parse(&shown, &text)
     }
 
     /// Parses and checks the text of a scene file; `path` names it in errors.
-    pub fn parse(path: &str, text: &str) -> Result<SceneFile, SceneFileError> {
+    pub fn parse(path: &str, text: &str) -> Result<SceneFile, Error> {
         let err = |span: Option<Range<usize>>, message: String| {
             let (line, col) = line_col(text, span.map_or(0, |s| s.start));
-            SceneFileError { path: path.to_owned(), line, col, message }
+            Error::file(path, line, col, &message)
         };
         let raw: Raw = toml::from_str(text).map_err(|e| {
             err(e.span(), e.message().trim_end_matches('\n').replace('\n', "; ").to_string())
@@ -363,17 +358,16 @@ impl SceneFile {
     }
 }
 
-use crate::located::line_col;
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::error::Location;
 
     #[track_caller]
     fn bad(text: &str, line: usize, col: usize, needle: &str) {
         let e = SceneFile::parse("s.toml", text).expect_err("a bad scene");
-        assert_eq!((e.line(), e.col()), (line, col), "{e}");
-        assert!(e.message().contains(needle), "{e}");
+        assert_eq!(e.location(), Some(Location { line, col }), "{e}");
+        assert!(e.to_string().contains(needle), "{e}");
     }
 
     /// Each listed mistake is located at the offending value.

@@ -18,8 +18,11 @@
 //! rigidly: Φ = 0 for every step, so they limit nothing and are dropped.
 
 use faer::Side;
+use nalgebra::DMatrix;
+use num_complex::Complex64 as C64;
 
 use super::file::{Body, SceneFile};
+use crate::error::Error;
 
 /// A symmetric sparse matrix: for each row, its `(column, value)` entries.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -210,24 +213,12 @@ pub struct Modal {
     pub damping: DampingKind,
 }
 
-/// Why a scene could not be reduced.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct ModalError(String);
-
-impl std::fmt::Display for ModalError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(&self.0)
-    }
-}
-
-impl std::error::Error for ModalError {}
-
 /// Relative tolerance of the structural tests (Rayleigh fit, commutation,
 /// rigid modes): a few hundred ulps of the largest entry.
 const STRUCTURE_TOL: f64 = 1e-10;
 
 /// Reduces a scene to its modes, with mode shapes.
-pub fn reduce(scene: &SceneFile) -> Result<Modal, ModalError> {
+pub fn reduce(scene: &SceneFile) -> Result<Modal, Error> {
     reduce_with(scene, Shapes::Compute)
 }
 
@@ -243,7 +234,7 @@ pub enum Shapes {
 }
 
 /// Reduces a scene to its modes.
-pub fn reduce_with(scene: &SceneFile, shapes: Shapes) -> Result<Modal, ModalError> {
+pub fn reduce_with(scene: &SceneFile, shapes: Shapes) -> Result<Modal, Error> {
     match &scene.body {
         Body::Modes(list) => {
             let mut modes: Vec<Mode> = list
@@ -270,12 +261,12 @@ pub fn reduce_with(scene: &SceneFile, shapes: Shapes) -> Result<Modal, ModalErro
 }
 
 /// Reduces an assembled system to its modes, with shapes.
-pub fn reduce_system(system: System) -> Result<Modal, ModalError> {
+pub fn reduce_system(system: System) -> Result<Modal, Error> {
     reduce_system_with(system, Shapes::Compute)
 }
 
 /// Reduces an assembled system to its modes.
-pub fn reduce_system_with(system: System, shapes: Shapes) -> Result<Modal, ModalError> {
+pub fn reduce_system_with(system: System, shapes: Shapes) -> Result<Modal, Error> {
     let n = system.n();
     let inv_sqrt: Vec<f64> = system.mass.iter().map(|m| 1.0 / m.sqrt()).collect();
     let kt = system.k.scaled(&inv_sqrt);
@@ -291,7 +282,7 @@ pub fn reduce_system_with(system: System, shapes: Shapes) -> Result<Modal, Modal
     }
     let vectors = shapes == Shapes::Compute || damping == DampingKind::Proportional;
     let fail = |e: faer::linalg::evd::EvdError| {
-        ModalError(format!("the eigenproblem K phi = w^2 M phi did not converge: {e:?}"))
+        Error::numeric(format!("the eigenproblem K phi = w^2 M phi did not converge: {e:?}"))
     };
     let (s, u) = if vectors {
         let evd = dense.self_adjoint_eigen(Side::Lower).map_err(fail)?;
@@ -328,7 +319,7 @@ pub fn reduce_system_with(system: System, shapes: Shapes) -> Result<Modal, Modal
         // Coupled by the damping: the modes are the continuous system's
         // complex eigenvalues λ = −ζω ± jω√(1−ζ²), ω = |λ|, ζ = −Re λ/|λ|
         // (real λ, overdamped, count as ζ = 1).
-        let lambdas = super::advisor::continuous_eigenvalues(&system);
+        let lambdas = continuous_eigenvalues(&system);
         modes = lambdas
             .iter()
             .filter(|l| l.norm() > 0.0)
@@ -392,6 +383,29 @@ fn damping_kind(kt: &Sparse, ct: &Sparse) -> DampingKind {
     } else {
         DampingKind::NonProportional
     }
+}
+
+/// The eigenvalues λ of the continuous system ẏ = v, v̇ = −M⁻¹(K y + C v)
+/// with Im λ ≥ 0.
+pub fn continuous_eigenvalues(sys: &System) -> Vec<C64> {
+    let n = sys.n();
+    let mut a = DMatrix::zeros(2 * n, 2 * n);
+    for i in 0..n {
+        a[(i, n + i)] = 1.0;
+        for &(j, k) in sys.k.row(i) {
+            a[(n + i, j)] = -k / sys.mass[i];
+        }
+        for &(j, c) in sys.c.row(i) {
+            a[(n + i, n + j)] = -c / sys.mass[i];
+        }
+    }
+    let mut l: Vec<C64> = check::witness::eigenvalues_nalgebra(&a)
+        .unwrap_or_default()
+        .into_iter()
+        .filter(|z| z.im >= 0.0)
+        .collect();
+    l.sort_by(|x, y| x.norm().total_cmp(&y.norm()));
+    l
 }
 
 #[cfg(test)]

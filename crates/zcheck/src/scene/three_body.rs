@@ -10,8 +10,9 @@
 
 use serde::Serialize;
 
-use super::reference::{dopri5, ReferenceError, Tolerance};
-use super::Track;
+use super::reference::{dopri5, Tolerance};
+use super::track::Track;
+use crate::error::Error;
 
 /// Positions or velocities of the three bodies.
 pub type Bodies = [[f64; 2]; 3];
@@ -529,7 +530,7 @@ pub fn simulate(
 /// The reference solution of the scene's physics (no control, no first-step
 /// defect) at every step `0..=n_steps`, by Dormand–Prince at a tight
 /// tolerance.
-pub fn reference(config: &ThreeBodyConfig, n_steps: u64) -> Result<Vec<State>, ReferenceError> {
+pub fn reference(config: &ThreeBodyConfig, n_steps: u64) -> Result<Vec<State>, Error> {
     let law = config.force_law;
     let f = move |y: &[f64; 12]| derivative(y, law);
     let mut y = config.initial_state().to_array();
@@ -559,7 +560,7 @@ pub struct Accuracy {
 }
 
 /// Compare the first `n_steps` of the scene with the reference.
-pub fn accuracy(config: &ThreeBodyConfig, n_steps: u64) -> Result<Accuracy, ReferenceError> {
+pub fn accuracy(config: &ThreeBodyConfig, n_steps: u64) -> Result<Accuracy, Error> {
     let reference = reference(config, n_steps)?;
     let mut state = config.initial_state();
     let law = config.force_law;

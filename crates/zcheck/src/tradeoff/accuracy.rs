@@ -24,7 +24,7 @@ use std::f64::consts::PI;
 
 use poly::{Poly, Sym, Q};
 
-use super::TradeoffError;
+use crate::error::Error;
 
 /// The smallest step the admissible-Φ search considers.
 pub const PHI_MIN: f64 = 1e-5;
@@ -34,9 +34,9 @@ pub const PHI_MIN: f64 = 1e-5;
 struct PhiPoly(check::sweep::HornerPoly);
 
 impl PhiPoly {
-    fn from_exact(p: &Poly) -> Result<PhiPoly, TradeoffError> {
+    fn from_exact(p: &Poly) -> Result<PhiPoly, Error> {
         check::sweep::HornerPoly::new(p, Sym::phi()).map(PhiPoly).ok_or_else(|| {
-            TradeoffError::new(format!("coefficient {p} depends on more than Phi: expected every other parameter to have a value"))
+            Error::unsupported(format!("coefficient {p} depends on more than Phi: expected every other parameter to have a value"))
         })
     }
 
@@ -158,12 +158,12 @@ impl Accuracy {
 impl SecondOrder {
     /// The model of `charpoly` (a polynomial in z and the parameters) with
     /// every parameter but Φ given a value. Errs unless χ is monic of degree 2.
-    pub fn new(charpoly: &Poly, params: &[(Sym, Q)]) -> Result<SecondOrder, TradeoffError> {
+    pub fn new(charpoly: &Poly, params: &[(Sym, Q)]) -> Result<SecondOrder, Error> {
         let values: HashMap<Sym, Q> = params.iter().cloned().collect();
         let chi = charpoly.eval_partial(&values);
         let c = chi.coeffs_in(Sym::z());
         if c.len() != 3 {
-            return Err(TradeoffError::new(format!(
+            return Err(Error::unsupported(format!(
                 "characteristic polynomial {chi} is not of degree 2 in z: expected a second-order method"
             )));
         }

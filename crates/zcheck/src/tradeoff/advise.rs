@@ -22,7 +22,8 @@ use std::f64::consts::PI;
 use serde::Serialize;
 
 use super::rank::Ops;
-use super::{Candidate, Spring, Target, TradeoffError};
+use super::{Candidate, Spring, Target};
+use crate::error::Error;
 
 /// A spring in a game scene.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -51,7 +52,7 @@ impl Scene {
 
     /// Checks the scene's numbers; the error names the bad value and what
     /// was expected.
-    pub fn validate(&self) -> Result<(), TradeoffError> {
+    pub fn validate(&self) -> Result<(), Error> {
         let positive = [
             ("--freq", self.freq_hz),
             ("--tick", self.tick_hz),
@@ -61,14 +62,12 @@ impl Scene {
         ];
         for (name, x) in positive {
             if !(x.is_finite() && x > 0.0) {
-                return Err(TradeoffError::new(format!(
-                    "{name} {x}: expected a finite number > 0"
-                )));
+                return Err(Error::usage(format!("{name} {x}: expected a finite number > 0")));
             }
         }
         if let Some(d) = self.damping {
             if !(0.0..1.0).contains(&d) {
-                return Err(TradeoffError::new(format!(
+                return Err(Error::usage(format!(
                     "--damping {d}: expected a damping ratio with 0 <= D < 1 (an oscillating spring)"
                 )));
             }
@@ -148,7 +147,7 @@ pub fn advise(
     scene: &Scene,
     candidates: &[Candidate],
     mut ns_per_step: impl FnMut(&Candidate) -> f64,
-) -> Result<Advice, TradeoffError> {
+) -> Result<Advice, Error> {
     scene.validate()?;
     let phi = scene.phi();
     let (spring, target) = (scene.spring(), scene.target());

@@ -15,7 +15,8 @@ use std::f64::consts::PI;
 use poly::cost::StepCost;
 use poly::{Algebraic, Method, Sym, Q};
 
-use super::{SecondOrder, TradeoffError};
+use super::SecondOrder;
+use crate::error::Error;
 use check::numeric::{f64_to_q, q_to_f64};
 
 /// The exact stability limit of one method (at fixed other parameters).
@@ -125,20 +126,20 @@ pub struct Candidate {
 
 impl Candidate {
     /// Builds a candidate: derive, count, model and analyse exactly.
-    pub fn new(method: Method, params: Vec<(Sym, Q)>) -> Result<Candidate, TradeoffError> {
+    pub fn new(method: Method, params: Vec<(Sym, Q)>) -> Result<Candidate, Error> {
         let name = method.name().to_owned();
         let derivation = poly::derive(&method)
-            .map_err(|e| TradeoffError::new(format!("method `{name}`: {e}")))?;
+            .map_err(|e| Error::from(e).context(format!("method `{name}`")))?;
         let values: HashMap<Sym, Q> = params.iter().cloned().collect();
         let charpoly = derivation.charpoly.eval_partial(&values);
         // From the derivation, so a repeated root on the circle is decided
         // from P (Gauss–Legendre stays bounded through Φ = 2√3).
         let report = poly::stability::analyze_derivation(&derivation, &values)
-            .map_err(|e| TradeoffError::new(format!("method `{name}`: stability: {e}")))?;
+            .map_err(|e| Error::from(e).context(format!("method `{name}`: stability")))?;
         let limit =
             Limit { phi_max: report.phi_max().cloned(), bounded_for_all: report.bounded_for_all() };
-        let model = SecondOrder::new(&charpoly, &[])
-            .map_err(|e| TradeoffError::new(format!("method `{name}`: {e}")))?;
+        let model =
+            SecondOrder::new(&charpoly, &[]).map_err(|e| e.context(format!("method `{name}`")))?;
         let display = match name.as_str() {
             "damped_euler_d" => "standard_euler".to_owned(),
             n => n.strip_suffix("_damped").unwrap_or(n).to_owned(),
@@ -156,12 +157,12 @@ impl Candidate {
     }
 }
 
-fn builtin(name: &str) -> Result<Method, TradeoffError> {
-    poly::builtin(name).map_err(|e| TradeoffError::new(format!("built-in `{name}`: {e}")))
+fn builtin(name: &str) -> Result<Method, Error> {
+    poly::builtin(name).map_err(|e| Error::from(e).context(format!("built-in `{name}`")))
 }
 
 /// Every paper built-in with no free parameter but Φ, in built-in order.
-pub fn undamped_family() -> Result<Vec<Candidate>, TradeoffError> {
+pub fn undamped_family() -> Result<Vec<Candidate>, Error> {
     poly::paper_builtin_names()
         .filter(|n| builtin(n).map(|m| m.params().len() == 1).unwrap_or(false))
         .map(|n| Candidate::new(builtin(n)?, Vec::new()))
@@ -175,7 +176,7 @@ pub fn direct_names() -> [&'static str; 7] {
 
 /// The seven direct methods applied to a spring with damping ratio `d`
 /// (an exact rational).
-pub fn damped_family(d: &Q) -> Result<Vec<Candidate>, TradeoffError> {
+pub fn damped_family(d: &Q) -> Result<Vec<Candidate>, Error> {
     let dsym = Sym::new("D");
     poly::DAMPED_METHODS
         .iter()

@@ -14,7 +14,8 @@ use std::path::Path;
 
 use plotters::prelude::*;
 
-use super::{Candidate, Spring, Target, TradeoffError};
+use super::{Candidate, Spring, Target};
+use crate::error::Error;
 
 /// One line of the figure: (error, ns per period) points, cheap steps last.
 pub fn line(c: &Candidate, spring: Spring, target: &Target, ns_per_step: f64) -> Vec<(f64, f64)> {
@@ -37,8 +38,8 @@ pub fn draw(
     candidates: &[(&Candidate, f64)],
     spring: Spring,
     target: &Target,
-) -> Result<(), TradeoffError> {
-    let err = |e: &dyn std::fmt::Display| TradeoffError::new(format!("{}: {e}", path.display()));
+) -> Result<(), Error> {
+    let err = |e: &dyn std::fmt::Display| Error::figure(format!("{}: {e}", path.display()));
     let lines: Vec<(String, Vec<(f64, f64)>)> = candidates
         .iter()
         .map(|(c, ns)| {
@@ -55,7 +56,7 @@ pub fn draw(
         ymax = ymax.max(y);
     }
     if !ymin.is_finite() {
-        return Err(TradeoffError::new("no method meets any error below 1: nothing to draw"));
+        return Err(Error::figure("no method meets any error below 1: nothing to draw"));
     }
     let root = SVGBackend::new(path, (900, 600)).into_drawing_area();
     root.fill(&WHITE).map_err(|e| err(&e))?;

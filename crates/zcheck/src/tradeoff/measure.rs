@@ -16,10 +16,10 @@
 use std::hint::black_box;
 use std::time::Duration;
 
+use crate::error::Error;
 #[cfg(not(feature = "jit"))]
 use check::kernel::Kernel;
 use check::numeric::{Params, Step};
-use check::Error;
 use poly::Method;
 
 use super::kernels::time_ns_per_step;

@@ -17,8 +17,6 @@
 //! - a scene advisor in game units: spring frequency and tick rate in Hz
 //!   ([`advise`]).
 
-use std::fmt;
-
 pub mod accuracy;
 pub mod advise;
 pub mod family;
@@ -32,23 +30,3 @@ pub use advise::{advise, Advice, MethodAdvice, Scene};
 pub use family::{damped_family, undamped_family, Candidate, Limit};
 pub use measure::{measure_ns_per_step, measure_ns_per_step_within};
 pub use rank::{trade, TradeRow};
-
-/// Why a trade-off could not be computed.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct TradeoffError {
-    message: String,
-}
-
-impl TradeoffError {
-    pub(crate) fn new(message: impl Into<String>) -> TradeoffError {
-        TradeoffError { message: message.into() }
-    }
-}
-
-impl fmt::Display for TradeoffError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&self.message)
-    }
-}
-
-impl std::error::Error for TradeoffError {}
