@@ -5,18 +5,12 @@
 use std::process::ExitCode;
 use std::time::Duration;
 
+use super::output::{Format, TEXT_JSON};
 use crate::error::Error;
 use crate::tradeoff::{self, family, kernels, Advice, Candidate, Scene};
 use poly::Q;
 
 use super::values::Exact;
-
-/// Output format of `zcheck advise`.
-#[derive(Clone, Copy, clap::ValueEnum)]
-pub enum Format {
-    Text,
-    Json,
-}
 
 /// Arguments of `zcheck advise`.
 #[derive(clap::Args)]
@@ -53,7 +47,7 @@ pub struct Args {
     /// 1/10); without it the spring is undamped.
     #[arg(long, allow_negative_numbers = true)]
     pub damping: Option<Exact>,
-    #[arg(long, value_enum, default_value = "text")]
+    #[arg(long, value_parser = Format::parser(TEXT_JSON), default_value = "text")]
     pub format: Format,
 }
 
@@ -140,7 +134,7 @@ pub fn run(args: Args) -> Result<ExitCode, Error> {
             };
             super::output::emitln(&serde_json::to_string_pretty(&out)?)?
         }
-        Format::Text => {
+        _ => {
             let mut t = text(&advice);
             t += &format!(
                 "as a one-mode scene (zcheck advise --scene): {}\n",
@@ -308,7 +302,7 @@ fn run_scene(path: &std::path::Path, args: &Args) -> Result<ExitCode, Error> {
     let advice = scene_advice(&scene, &args.methods, !args.no_simulate, args.sweep.is_some())?;
     match args.format {
         Format::Json => super::output::emitln(&serde_json::to_string_pretty(&advice)?)?,
-        Format::Text => super::output::emit(&scene_text(&path.display().to_string(), &advice))?,
+        _ => super::output::emit(&scene_text(&path.display().to_string(), &advice))?,
     }
     Ok(ExitCode::SUCCESS)
 }

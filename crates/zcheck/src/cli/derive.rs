@@ -5,22 +5,15 @@ use std::process::ExitCode;
 use poly::{Derivation, Poly};
 use serde_json::json;
 
+use super::output::Format;
 use crate::error::Error;
-
-/// Output format of `zcheck derive`.
-#[derive(Clone, Copy, clap::ValueEnum)]
-pub enum Format {
-    Text,
-    Json,
-    Latex,
-}
 
 /// Arguments of `zcheck derive`.
 #[derive(clap::Args)]
 pub struct Args {
     /// A built-in method name or a path to a `.zm` file.
     pub method: String,
-    #[arg(long, value_enum, default_value = "text")]
+    #[arg(long, value_parser = Format::parser(&[Format::Text, Format::Json, Format::Latex]), default_value = "text")]
     pub format: Format,
 }
 
@@ -28,9 +21,9 @@ pub fn run(args: Args) -> Result<ExitCode, Error> {
     let method = crate::tableau::load_method(&args.method)?;
     let d = poly::derive(&method)?;
     let out = match args.format {
-        Format::Text => text(&d),
         Format::Json => serde_json::to_string_pretty(&to_json(&d))? + "\n",
         Format::Latex => latex(&d),
+        _ => text(&d),
     };
     super::output::emit(&out)?;
     Ok(ExitCode::SUCCESS)

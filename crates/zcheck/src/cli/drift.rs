@@ -14,14 +14,8 @@ use poly::invariant::{conserved_form, form_text, is_positive_definite, transitio
 use poly::{Sym, Q};
 use serde_json::{json, Value};
 
+use super::output::{Format, TEXT_JSON};
 use crate::error::Error;
-
-/// Output format of `zcheck drift`.
-#[derive(Clone, Copy, clap::ValueEnum)]
-pub enum Format {
-    Text,
-    Json,
-}
 
 /// Floating-point precision of the run.
 #[derive(Clone, Copy, clap::ValueEnum)]
@@ -57,7 +51,7 @@ pub struct Args {
     /// Also draw RMS drift against N (SVG).
     #[arg(long)]
     pub svg: Option<PathBuf>,
-    #[arg(long, value_enum, default_value = "text")]
+    #[arg(long, value_parser = Format::parser(TEXT_JSON), default_value = "text")]
     pub format: Format,
 }
 
@@ -147,13 +141,13 @@ pub fn run(args: Args) -> Result<ExitCode, Error> {
             .map_err(|e| Error::usage(format!("{e}")))?;
     }
     match args.format {
-        Format::Text => print!("{}", reports.iter().map(text).collect::<Vec<_>>().join("\n")),
         Format::Json => println!(
             "{}",
             serde_json::to_string_pretty(
                 &json!({ "runs": reports.iter().map(to_json).collect::<Vec<_>>() })
             )?
         ),
+        _ => print!("{}", reports.iter().map(text).collect::<Vec<_>>().join("\n")),
     }
     Ok(ExitCode::SUCCESS)
 }

@@ -6,14 +6,8 @@ use std::process::ExitCode;
 use poly::equiv::{self, Relation};
 use serde_json::json;
 
+use super::output::{Format, TEXT_JSON};
 use crate::error::Error;
-
-/// Output format of `zcheck equiv`.
-#[derive(Clone, Copy, clap::ValueEnum)]
-pub enum Format {
-    Text,
-    Json,
-}
 
 /// Arguments of `zcheck equiv`.
 #[derive(clap::Args)]
@@ -22,7 +16,7 @@ pub struct Args {
     pub a: String,
     /// The second method: a built-in name or a `.zm` path.
     pub b: String,
-    #[arg(long, value_enum, default_value = "text")]
+    #[arg(long, value_parser = Format::parser(TEXT_JSON), default_value = "text")]
     pub format: Format,
 }
 
@@ -77,15 +71,6 @@ pub fn run(args: Args) -> Result<ExitCode, Error> {
     let reordered = equiv::reordered_updates(&ma, &mb);
     let words = describe(&relation, &ma, &mb);
     let out = match args.format {
-        Format::Text => {
-            let mut out = format!("{} and {}: {words}\n", ma.name(), mb.name());
-            if reordered {
-                out.push_str("the second program is the first with its updates reordered\n");
-            }
-            out.push_str(&format!("chi({}) = {}\n", ma.name(), da.charpoly));
-            out.push_str(&format!("chi({}) = {}\n", mb.name(), db.charpoly));
-            out
-        }
         Format::Json => {
             let doc = json!({
                 "a": ma.name(),
@@ -98,6 +83,15 @@ pub fn run(args: Args) -> Result<ExitCode, Error> {
                 "charpoly_b": db.charpoly.to_string(),
             });
             serde_json::to_string_pretty(&doc)? + "\n"
+        }
+        _ => {
+            let mut out = format!("{} and {}: {words}\n", ma.name(), mb.name());
+            if reordered {
+                out.push_str("the second program is the first with its updates reordered\n");
+            }
+            out.push_str(&format!("chi({}) = {}\n", ma.name(), da.charpoly));
+            out.push_str(&format!("chi({}) = {}\n", mb.name(), db.charpoly));
+            out
         }
     };
     // A closed pipe (`| head`) is not an error of ours.

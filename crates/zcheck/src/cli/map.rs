@@ -6,15 +6,9 @@ use std::process::ExitCode;
 
 use poly::Q;
 
+use super::output::{Format, TEXT_JSON};
 use super::values::Exact;
 use crate::error::Error;
-
-/// Output format of `zcheck map`.
-#[derive(Clone, Copy, clap::ValueEnum)]
-pub enum Format {
-    Text,
-    Json,
-}
 
 /// Arguments of `zcheck map`.
 #[derive(clap::Args)]
@@ -36,7 +30,7 @@ pub struct Args {
     /// Curve samples per axis.
     #[arg(long, default_value_t = 200)]
     pub samples: usize,
-    #[arg(long, value_enum, default_value = "text")]
+    #[arg(long, value_parser = Format::parser(TEXT_JSON), default_value = "text")]
     pub format: Format,
 }
 
@@ -82,7 +76,7 @@ pub fn run(args: Args) -> Result<ExitCode, Error> {
     }
     match args.format {
         Format::Json => super::output::emitln(&serde_json::to_string_pretty(&m)?)?,
-        Format::Text => {
+        _ => {
             use std::fmt::Write as _;
             let mut out = String::new();
             let _ = writeln!(

@@ -3,14 +3,8 @@
 
 use std::process::ExitCode;
 
+use super::output::{Format, MARKDOWN_JSON};
 use crate::error::Error;
-
-/// Output format of `zcheck overview`.
-#[derive(Clone, Copy, clap::ValueEnum)]
-pub enum Format {
-    Markdown,
-    Json,
-}
 
 /// Arguments of `zcheck overview`.
 #[derive(clap::Args)]
@@ -20,7 +14,7 @@ pub struct Args {
     /// The highest power of Phi shown in the series.
     #[arg(long, default_value_t = 5)]
     pub order: usize,
-    #[arg(long, value_enum, default_value = "markdown")]
+    #[arg(long, value_parser = Format::parser(MARKDOWN_JSON), default_value = "markdown")]
     pub format: Format,
     /// Also every implicit and algebraic built-in (trapezoidal, backward
     /// Euler, BDF2, Newmark, Gauss-Legendre, Radau IIA, SDIRK, Forest-Ruth,
@@ -50,8 +44,8 @@ pub fn run(args: Args) -> Result<ExitCode, Error> {
         }
     }
     match args.format {
-        Format::Markdown => super::output::emit(&crate::overview::to_markdown(&rows))?,
         Format::Json => super::output::emitln(&serde_json::to_string_pretty(&rows)?)?,
+        _ => super::output::emit(&crate::overview::to_markdown(&rows))?,
     }
     Ok(ExitCode::SUCCESS)
 }

@@ -7,6 +7,7 @@ use std::io::{IsTerminal, Write as _};
 use std::path::PathBuf;
 use std::process::ExitCode;
 
+use super::output::{Format, TEXT_JSON};
 use crate::error::Error;
 use crate::scene::aircraft::{self, AircraftRun};
 use crate::scene::three_body::{
@@ -17,13 +18,6 @@ use indicatif::{ProgressBar, ProgressStyle};
 use serde_json::json;
 
 use super::values::{Exact, DEFAULT_BUDGET};
-
-/// Output format.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum Format {
-    Text,
-    Json,
-}
 
 /// Force law of the three-body scenes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -62,7 +56,7 @@ pub struct Args {
     #[arg(long)]
     pub steps: Option<u64>,
     /// Output format.
-    #[arg(long, value_enum, default_value_t = Format::Text)]
+    #[arg(long, value_parser = Format::parser(TEXT_JSON), default_value = "text")]
     pub format: Format,
     /// Write SVG figures into this directory.
     #[arg(long)]
@@ -255,7 +249,7 @@ fn print(args: &Args, report: &serde_json::Value) -> Result<(), Error> {
         Format::Json => {
             super::output::emitln(&serde_json::to_string_pretty(report)?)?;
         }
-        Format::Text => {
+        _ => {
             let mut text = String::new();
             render_text(report, "", &mut text);
             super::output::emit(&text)?;

@@ -15,16 +15,9 @@ use poly::stability::{analyze_derivation, Stability, StabilityReport};
 use poly::{Algebraic, Sym, Q};
 use serde_json::{json, Value};
 
-use super::output;
+use super::output::{self, Format, TEXT_JSON};
 use super::values::{self, ParamArg};
 use crate::error::Error;
-
-/// Output format of `zcheck stability`.
-#[derive(Clone, Copy, clap::ValueEnum)]
-pub enum Format {
-    Text,
-    Json,
-}
 
 /// Arguments of `zcheck stability`.
 #[derive(clap::Args)]
@@ -35,7 +28,7 @@ pub struct Args {
     /// (`1/2`) or a decimal (`0.5`, `1e-12`, read exactly); repeatable.
     #[arg(long = "param", value_name = "NAME=VALUE", allow_hyphen_values = true)]
     pub params: Vec<ParamArg>,
-    #[arg(long, value_enum, default_value = "text")]
+    #[arg(long, value_parser = Format::parser(TEXT_JSON), default_value = "text")]
     pub format: Format,
 }
 
@@ -57,18 +50,18 @@ pub fn run(args: Args) -> Result<ExitCode, Error> {
         .map_err(|e| Error::from(e).context(format!("method {}", method.name())))?;
     let facts = ImplicitFacts::of(&derivation, &chi)?;
     let out = match args.format {
-        Format::Text => {
-            let mut names = Names::default();
-            text(method.name(), &shown, &chi, &report, &mut names)
-                + &facts.as_ref().map_or(String::new(), |f| f.text(&mut names))
-                + &names.definitions()
-        }
         Format::Json => {
             let mut v = to_json(method.name(), &shown, &chi, &report);
             if let Some(f) = &facts {
                 f.add_json(&mut v);
             }
             serde_json::to_string_pretty(&v)? + "\n"
+        }
+        _ => {
+            let mut names = Names::default();
+            text(method.name(), &shown, &chi, &report, &mut names)
+                + &facts.as_ref().map_or(String::new(), |f| f.text(&mut names))
+                + &names.definitions()
         }
     };
     output::emit(&out)?;

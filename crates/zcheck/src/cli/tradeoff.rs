@@ -5,21 +5,15 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Duration;
 
+use super::output::{Format, TEXT_JSON};
 use crate::error::Error;
 use crate::tradeoff::{self, family, figure, kernels, Candidate, Spring, Target, TradeRow};
 use check::numeric::{q_to_f64, Params, ParamsF64};
 
-/// Output format of `zcheck tradeoff`.
-#[derive(Clone, Copy, clap::ValueEnum)]
-pub enum Format {
-    Text,
-    Json,
-}
-
 /// Arguments of `zcheck tradeoff`.
 #[derive(clap::Args)]
 pub struct Args {
-    #[arg(long, value_enum, default_value = "text")]
+    #[arg(long, value_parser = Format::parser(TEXT_JSON), default_value = "text")]
     pub format: Format,
     /// Largest accumulated phase error over the duration, radians.
     #[arg(long, default_value_t = Target::DEFAULT.phase_tol)]
@@ -112,7 +106,7 @@ pub fn run(args: Args) -> Result<ExitCode, Error> {
                 "phase_tol": target.phase_tol, "amp_tol": target.amp_tol, "periods": target.periods },
                 "methods": rows }))?)?
         }
-        Format::Text => super::output::emit(&text(&rows, &target))?,
+        _ => super::output::emit(&text(&rows, &target))?,
     }
     Ok(ExitCode::SUCCESS)
 }

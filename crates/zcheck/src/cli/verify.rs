@@ -14,7 +14,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 use poly::Q;
 use serde_json::{json, Value};
 
-use super::output;
+use super::output::{self, Format, TEXT_JSON};
 use super::values::{self, show_f64, Exact, ParamArg};
 use crate::error::Error;
 
@@ -44,18 +44,12 @@ pub struct Args {
     #[arg(long, default_value_t = Exact::count(values::DEFAULT_BUDGET), allow_hyphen_values = true)]
     budget: Exact,
     /// Output format.
-    #[arg(long, value_enum, default_value_t = Format::Text)]
+    #[arg(long, value_parser = Format::parser(TEXT_JSON), default_value = "text")]
     format: Format,
 }
 
 /// A Φ to verify at: its `f64`, and its exact value when the user typed it.
 type Point = (f64, Option<Q>);
-
-#[derive(Clone, Copy, clap::ValueEnum)]
-enum Format {
-    Text,
-    Json,
-}
 
 pub fn run(args: Args) -> Result<ExitCode, Error> {
     let steps = args.steps.to_count("--steps")?;
@@ -148,13 +142,13 @@ pub fn run(args: Args) -> Result<ExitCode, Error> {
                 "points": points.iter().map(point_json).collect::<Vec<_>>(),
                 "agree": agree,
             })),
-            Format::Text => out_text.push_str(&text_table(&name, &points, agree)),
+            _ => out_text.push_str(&text_table(&name, &points, agree)),
         }
     }
     bar.finish_and_clear();
     let text = match args.format {
         Format::Json => serde_json::to_string_pretty(&Value::Array(out_json))? + "\n",
-        Format::Text => out_text,
+        _ => out_text,
     };
     output::emit(&text)?;
     Ok(if all_agree { ExitCode::SUCCESS } else { ExitCode::FAILURE })
