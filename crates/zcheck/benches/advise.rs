@@ -6,7 +6,8 @@
 //! Run: `cargo bench -p zcheck --bench advise -- --warm-up-time 1 --measurement-time 3`
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use zcheck::scene::advisor::{advise, MethodSpec, Options};
+use zcheck::load::LoadedMethod;
+use zcheck::scene::advisor::{advise, Options};
 use zcheck::scene::file::SceneFile;
 use zcheck::scene::modal::{reduce_with, Shapes};
 
@@ -35,7 +36,7 @@ fn bench(c: &mut Criterion) {
         g.bench_function(name, |b| {
             b.iter(|| {
                 let modal = reduce_with(&scene, Shapes::WhenNeeded).unwrap();
-                let specs = MethodSpec::builtins().unwrap();
+                let specs = LoadedMethod::damped_builtins().unwrap();
                 advise(&scene, &modal, specs, Options { simulate: false, gauss_seidel: false })
                     .unwrap()
             })

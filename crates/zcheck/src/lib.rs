@@ -15,6 +15,7 @@ pub mod cli;
 pub mod drift_figure;
 pub mod emit;
 mod error;
+pub mod load;
 pub mod map;
 pub mod overview;
 pub mod paper;

@@ -16,11 +16,12 @@ use check::numeric::{f64_to_q, q_to_f64, Params, ParamsF64};
 use check::witness::Witnesses;
 use plotters::prelude::*;
 use poly::region::{region, CurveKind, PhiLimit, Unconditional};
-use poly::{Derivation, RootClass, Sym, Q};
+use poly::{RootClass, Sym, Q};
 use rayon::prelude::*;
 use serde::Serialize;
 
 use crate::error::Error;
+use crate::load::LoadedMethod;
 
 /// One grid point.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -111,9 +112,10 @@ fn centre(lo: &Q, hi: &Q, k: usize, n: usize) -> Q {
     lo + &((hi - lo) * t)
 }
 
-/// Computes the map of a derived method (which must have the parameter D).
-pub fn map(derivation: &Derivation, w: &MapWindow) -> Result<StabilityMap, Error> {
-    let method = &derivation.method;
+/// Computes the map of a method (which must have the parameter D), from
+/// its one derivation.
+pub fn map(loaded: &LoadedMethod, w: &MapWindow) -> Result<StabilityMap, Error> {
+    let method = loaded.method();
     let d_sym = Sym::new("D");
     if !method.params().contains(&d_sym) {
         return Err(Error::unsupported(format!(
@@ -127,6 +129,7 @@ pub fn map(derivation: &Derivation, w: &MapWindow) -> Result<StabilityMap, Error
             method.name()
         )));
     }
+    let derivation = loaded.derivation()?;
     let chi = &derivation.charpoly;
     let r = region(chi, d_sym)
         .map_err(|e| Error::from(e).context(format!("method {}", method.name())))?;

@@ -9,10 +9,11 @@
 //! deviation, calculations per step, largest step) in one place.
 
 use poly::series::{self, LeadingTerm};
-use poly::{Poly, Q};
+use poly::{Derivation, Poly, Q};
 use serde::Serialize;
 
 use crate::error::Error;
+use crate::load::builtin_derivation;
 
 /// One row of the overview.
 #[derive(Clone, Debug, Serialize)]
@@ -71,11 +72,16 @@ fn leading(t: Option<LeadingTerm>) -> String {
 
 /// The overview row of a method whose χ is in z and Φ only.
 pub fn summarize(method: &poly::Method, order: usize) -> Result<MethodSummary, Error> {
-    let d = poly::derive(method)?;
+    summary_of(&poly::derive(method)?, order)
+}
+
+/// The overview row of a derived method whose χ is in z and Φ only.
+pub fn summary_of(d: &Derivation, order: usize) -> Result<MethodSummary, Error> {
+    let method = &d.method;
     let chi = &d.charpoly;
     // From the derivation: a repeated root on the circle is decided from P
     // (Gauss–Legendre's P is −I at Φ = 2√3: bounded through it).
-    let report = poly::stability::analyze_derivation(&d, &Default::default())?;
+    let report = poly::stability::analyze_derivation(d, &Default::default())?;
     let (phi_max_exact, phi_max) = match report.phi_max() {
         Some(a) => {
             let exact = a.closed_form().unwrap_or_else(|| a.describe("Phi"));
@@ -132,9 +138,10 @@ pub fn summarize(method: &poly::Method, order: usize) -> Result<MethodSummary, E
     })
 }
 
-/// The overview of the paper's seven methods.
+/// The overview of the paper's seven methods (derived once per process,
+/// with the paper's claims).
 pub fn paper_overview(order: usize) -> Result<Vec<MethodSummary>, Error> {
-    poly::PAPER_METHODS.iter().map(|name| summarize(&poly::builtin(name)?, order)).collect()
+    poly::PAPER_METHODS.iter().map(|name| summary_of(&builtin_derivation(name), order)).collect()
 }
 
 /// The overview as a Markdown table (numbers rounded to 4 decimals). When

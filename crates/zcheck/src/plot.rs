@@ -16,6 +16,7 @@ use check::numeric::{initial_slots, Params, Step};
 use check::witness::ExactCharpoly;
 
 use crate::error::Error;
+use crate::load::LoadedMethod;
 
 fn draw_err(path: &Path) -> impl Fn(&dyn std::error::Error) -> Error + '_ {
     move |e| Error::figure(format!("{}: cannot draw: {e}", path.display()))
@@ -62,12 +63,17 @@ pub fn yt_figure(method: &Method, params: &Params, t_max: f64, path: &Path) -> R
 }
 
 /// Draws y(t) of every method in `methods` as a grid of panels.
-pub fn yt_grid(methods: &[Method], params: &Params, t_max: f64, path: &Path) -> Result<(), Error> {
+pub fn yt_grid(
+    methods: &[LoadedMethod],
+    params: &Params,
+    t_max: f64,
+    path: &Path,
+) -> Result<(), Error> {
     let rows = methods.len().div_ceil(2);
     let root = SVGBackend::new(path, (1200, 300 * rows as u32)).into_drawing_area();
     root.fill(&WHITE).map_err(|e| draw_err(path)(&e))?;
     for (area, m) in root.split_evenly((rows, 2)).iter().zip(methods) {
-        draw_yt(area, m, params, t_max).map_err(|e| draw_err(path)(e.as_ref()))?;
+        draw_yt(area, m.method(), params, t_max).map_err(|e| draw_err(path)(e.as_ref()))?;
     }
     root.present().map_err(|e| draw_err(path)(&e))?;
     Ok(())
@@ -137,7 +143,7 @@ where
 /// Draws the z-plane: the unit circle and the roots of each method's χ as
 /// Φ runs from 0 to `phi_max` (`points` values), one colour per method.
 pub fn zplane_figure(
-    methods: &[Method],
+    methods: &[LoadedMethod],
     params: &Params,
     phi_max: f64,
     points: usize,
@@ -145,14 +151,14 @@ pub fn zplane_figure(
 ) -> Result<(), Error> {
     let mut loci = Vec::new();
     for m in methods {
-        let chi = ExactCharpoly::new(m)?;
+        let chi = ExactCharpoly::from_derivation(m.derivation()?);
         let mut pts = Vec::new();
         for i in 0..=points {
             let phi = phi_max * i as f64 / points as f64;
             let f = chi.at(&params.clone().with("Phi", phi))?;
             pts.extend(f.roots.iter().map(|z| (z.re, z.im)));
         }
-        loci.push((m.name().to_owned(), pts));
+        loci.push((m.method().name().to_owned(), pts));
     }
     let root = SVGBackend::new(path, (720, 720)).into_drawing_area();
     let err = draw_err(path);

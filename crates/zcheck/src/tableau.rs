@@ -448,26 +448,3 @@ fn probe(expr: &str, constants: &[(String, String)]) -> Result<bool, String> {
     let m = poly::Method::parse("entry", &src).map_err(|e| e.message().to_owned())?;
     Ok(m.assigns().last().is_none_or(|a| a.terms.is_empty()))
 }
-
-/// Loads a method argument: a tableau when it ends in `.toml` (its program
-/// on the undamped oscillator), otherwise what [`check::load::load_method`]
-/// loads (a built-in name or a `.zm` file).
-pub fn load_method(arg: &str) -> Result<poly::Method, Error> {
-    load_method_with(arg, false)
-}
-
-/// As [`load_method`], with a tableau's program on the damped oscillator
-/// (`param D`) when `damped`.
-pub fn load_method_with(arg: &str, damped: bool) -> Result<poly::Method, Error> {
-    if arg.ends_with(".toml") {
-        let t = Tableau::load(Path::new(arg))?;
-        let src = t.to_zm(damped);
-        return poly::Method::parse(arg, &src).map_err(|e| {
-            Error::method(format!(
-                "{arg}: the program generated from the tableau does not parse: {}",
-                e.message()
-            ))
-        });
-    }
-    Ok(check::load::load_method(arg)?)
-}

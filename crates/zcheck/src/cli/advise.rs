@@ -7,8 +7,11 @@ use std::time::Duration;
 
 use super::output::{Format, TEXT_JSON};
 use crate::error::Error;
-use crate::tradeoff::{self, family, kernels, Advice, Candidate, Scene};
-use poly::Q;
+use crate::load::LoadedMethod;
+use crate::scene::advisor::{self, Options};
+use crate::scene::file::SceneFile;
+use crate::scene::modal::{self, Modal, Shapes};
+use crate::tradeoff::{self, family, kernels, Advice, Scene};
 
 use super::values::Exact;
 
@@ -51,18 +54,6 @@ pub struct Args {
     pub format: Format,
 }
 
-/// The candidates for a scene: the seven direct methods, on the spring with
-/// the exact damping ratio `damping` when there is one.
-pub fn candidates(damping: Option<&Q>) -> Result<Vec<Candidate>, Error> {
-    Ok(match damping {
-        Some(q) => family::damped_family(q)?,
-        None => family::undamped_family()?
-            .into_iter()
-            .filter(|c| family::direct_names().contains(&c.name.as_str()))
-            .collect(),
-    })
-}
-
 /// Update orders `--sweep` can analyse.
 #[derive(Clone, Copy, clap::ValueEnum)]
 pub enum SweepArg {
@@ -98,7 +89,17 @@ pub fn run(args: Args) -> Result<ExitCode, Error> {
         damping: args.damping.as_ref().map(|d| d.to_f64("--damping")).transpose()?,
     };
     scene.validate()?;
-    let cands = candidates(args.damping.as_ref().map(|d| &d.value))?;
+    // The seven direct methods on the damped spring: the scene advisor's
+    // candidates below and, with --damping, the table's too, derived once
+    // for both.
+    let damped = LoadedMethod::damped_builtins()?;
+    let cands = match &args.damping {
+        Some(d) => family::damped_candidates(&damped, &d.value)?,
+        None => family::undamped_family()?
+            .into_iter()
+            .filter(|c| family::direct_names().contains(&c.name.as_str()))
+            .collect(),
+    };
     let d = scene.damping.unwrap_or(0.0);
     let budget = Duration::from_millis(3);
     let ns: Vec<f64> =
@@ -110,20 +111,17 @@ pub fn run(args: Args) -> Result<ExitCode, Error> {
     })?;
     // advise keeps the candidates' order.
     for (m, c) in advice.methods.iter_mut().zip(&cands) {
-        m.ns_per_step_hand = kernels::time_hand_kernel(c.kernel_name(), d, budget);
+        m.ns_per_step_hand = c.hand_kernel.and_then(|h| kernels::time_hand_kernel(h, d, budget));
     }
     // The same spring as a one-mode scene, through the scene advisor: its
     // modes, candidates (with the simulation that checks the prediction)
     // and recommendation, in the scene JSON's keys.
-    let one_mode = crate::scene::file::SceneFile::one_mode(
-        freq_hz,
-        d,
-        tick_hz,
-        args.duration,
-        args.phase_tol,
-        args.amp_tol,
-    );
-    let as_scene = scene_advice(&one_mode, &[], !args.no_simulate, false)?;
+    let one_mode =
+        SceneFile::one_mode(freq_hz, d, tick_hz, args.duration, args.phase_tol, args.amp_tol);
+    let simulate = !args.no_simulate;
+    let modal = modal_of(&one_mode, simulate)?;
+    let options = Options { simulate, gauss_seidel: false };
+    let as_scene = advisor::advise(&one_mode, &modal, damped, options)?;
     match args.format {
         Format::Json => {
             let out = OneSpring {
@@ -160,32 +158,16 @@ pub fn run(args: Args) -> Result<ExitCode, Error> {
 struct OneSpring<'a> {
     #[serde(flatten)]
     advice: &'a Advice,
-    modes: &'a [crate::scene::advisor::ModeReport],
-    candidates: &'a [crate::scene::advisor::CandidateAdvice],
-    recommended: &'a Option<crate::scene::advisor::Recommended>,
+    modes: &'a [advisor::ModeReport],
+    candidates: &'a [advisor::CandidateAdvice],
+    recommended: &'a Option<advisor::Recommended>,
 }
 
-/// The scene advisor on `scene` with `methods` (default: the seven direct
-/// methods on the damped spring).
-fn scene_advice(
-    scene: &crate::scene::file::SceneFile,
-    methods: &[String],
-    simulate: bool,
-    gauss_seidel: bool,
-) -> Result<crate::scene::advisor::SceneAdvice, Error> {
-    use crate::scene::advisor::{self, MethodSpec, Options};
-    let shapes = if simulate {
-        crate::scene::modal::Shapes::Compute
-    } else {
-        crate::scene::modal::Shapes::WhenNeeded
-    };
-    let modal = crate::scene::modal::reduce_with(scene, shapes)?;
-    let specs = if methods.is_empty() {
-        MethodSpec::builtins()?
-    } else {
-        methods.iter().map(|m| MethodSpec::load(m)).collect::<Result<_, Error>>()?
-    };
-    advisor::advise(scene, &modal, specs, Options { simulate, gauss_seidel })
+/// The scene reduced to its modes, with mode shapes when the prediction
+/// is to be checked by simulation.
+fn modal_of(scene: &SceneFile, simulate: bool) -> Result<Modal, Error> {
+    let shapes = if simulate { Shapes::Compute } else { Shapes::WhenNeeded };
+    modal::reduce_with(scene, shapes)
 }
 
 /// Rows under a header, each column as wide as its widest cell (phi_max
@@ -291,7 +273,6 @@ pub fn text(a: &Advice) -> String {
 
 /// `zcheck advise --scene FILE`.
 fn run_scene(path: &std::path::Path, args: &Args) -> Result<ExitCode, Error> {
-    use crate::scene::file::SceneFile;
     let scene = SceneFile::load(path)?;
     if args.duration != Scene::DEFAULT_DURATION_S
         || args.phase_tol != Scene::DEFAULT_PHASE_TOL
@@ -299,7 +280,15 @@ fn run_scene(path: &std::path::Path, args: &Args) -> Result<ExitCode, Error> {
     {
         return Err(Error::usage("--duration, --phase-tol and --amp-tol belong in the scene file with --scene (duration_s, [accuracy])"));
     }
-    let advice = scene_advice(&scene, &args.methods, !args.no_simulate, args.sweep.is_some())?;
+    let simulate = !args.no_simulate;
+    let modal = modal_of(&scene, simulate)?;
+    let specs = if args.methods.is_empty() {
+        LoadedMethod::damped_builtins()?
+    } else {
+        args.methods.iter().map(|m| LoadedMethod::load_damped(m)).collect::<Result<_, _>>()?
+    };
+    let options = Options { simulate, gauss_seidel: args.sweep.is_some() };
+    let advice = advisor::advise(&scene, &modal, specs, options)?;
     match args.format {
         Format::Json => super::output::emitln(&serde_json::to_string_pretty(&advice)?)?,
         _ => super::output::emit(&scene_text(&path.display().to_string(), &advice))?,
@@ -308,18 +297,18 @@ fn run_scene(path: &std::path::Path, args: &Args) -> Result<ExitCode, Error> {
 }
 
 /// The scene advice as text: the modes that matter, a table, a sentence.
-pub fn scene_text(name: &str, a: &crate::scene::advisor::SceneAdvice) -> String {
+pub fn scene_text(name: &str, a: &advisor::SceneAdvice) -> String {
     let mut out = format!(
         "scene {name}: {} degrees of freedom, {} modes ({} rigid left out), damping {}\n",
         a.dof,
         a.modes.len(),
         a.rigid_modes,
         match a.damping {
-            crate::scene::modal::DampingKind::Undamped => "none".to_owned(),
-            crate::scene::modal::DampingKind::Rayleigh { alpha, beta } =>
+            modal::DampingKind::Undamped => "none".to_owned(),
+            modal::DampingKind::Rayleigh { alpha, beta } =>
                 format!("Rayleigh (alpha = {alpha:.4} 1/s, beta = {beta:.3e} s)"),
-            crate::scene::modal::DampingKind::Proportional => "proportional".to_owned(),
-            crate::scene::modal::DampingKind::NonProportional =>
+            modal::DampingKind::Proportional => "proportional".to_owned(),
+            modal::DampingKind::NonProportional =>
                 "non-proportional (stability from the full-step matrix)".to_owned(),
         }
     );
@@ -375,7 +364,7 @@ pub fn scene_text(name: &str, a: &crate::scene::advisor::SceneAdvice) -> String 
     out += &table(&header, &rows);
     out += &format!(
         "\nagreement: simulated within {} of the target (plus 1e-9) of the prediction\n",
-        crate::scene::advisor::AGREE_FRACTION
+        advisor::AGREE_FRACTION
     );
     for c in &a.candidates {
         if let Some(s) = &c.simulated {

@@ -7,6 +7,7 @@ use serde_json::json;
 
 use super::output::Format;
 use crate::error::Error;
+use crate::load::LoadedMethod;
 
 /// Arguments of `zcheck derive`.
 #[derive(clap::Args)]
@@ -18,12 +19,12 @@ pub struct Args {
 }
 
 pub fn run(args: Args) -> Result<ExitCode, Error> {
-    let method = crate::tableau::load_method(&args.method)?;
-    let d = poly::derive(&method)?;
+    let method = LoadedMethod::load(&args.method)?;
+    let d = method.derivation()?;
     let out = match args.format {
-        Format::Json => serde_json::to_string_pretty(&to_json(&d))? + "\n",
-        Format::Latex => latex(&d),
-        _ => text(&d),
+        Format::Json => serde_json::to_string_pretty(&to_json(d))? + "\n",
+        Format::Latex => latex(d),
+        _ => text(d),
     };
     super::output::emit(&out)?;
     Ok(ExitCode::SUCCESS)

@@ -10,12 +10,14 @@ use std::sync::Arc;
 use check::drift::{Run, Study};
 use check::kernel::{Kernel, Real};
 use check::numeric::{q_to_f64, Params, ParamsF64, Step};
-use poly::invariant::{conserved_form, form_text, is_positive_definite, transition_matrix_at};
-use poly::{Sym, Q};
+use num_traits::Zero;
+use poly::invariant::{conserved_form, form_text, is_positive_definite};
+use poly::{Derivation, Sym, Q};
 use serde_json::{json, Value};
 
 use super::output::{Format, TEXT_JSON};
 use crate::error::Error;
+use crate::load::LoadedMethod;
 
 /// Floating-point precision of the run.
 #[derive(Clone, Copy, clap::ValueEnum)]
@@ -176,7 +178,8 @@ fn study<T: Real>(
     threads: usize,
     stop: &AtomicBool,
 ) -> Result<Report, Error> {
-    let method = crate::tableau::load_method(name)?;
+    let loaded = LoadedMethod::load(name)?;
+    let method = loaded.method();
     let mut exact: HashMap<Sym, Q> = HashMap::new();
     let mut params = Params::new();
     for sym in method.params() {
@@ -190,8 +193,10 @@ fn study<T: Real>(
         params.set(sym.name(), q_to_f64(&value));
         exact.insert(*sym, value);
     }
-    let p = transition_matrix_at(&method, &exact).expect("every parameter has a value");
-    let names = Step::compile(&method, &params)?.slot_names().to_vec();
+    let p =
+        transition_matrix_at(loaded.derivation()?, &exact).expect("every parameter has a value");
+    let step = Step::compile(method, &params)?;
+    let names = step.slot_names().to_vec();
     let form = match conserved_form(&p) {
         Ok(f) if is_positive_definite(&f) => f,
         Ok(_) => {
@@ -207,7 +212,6 @@ fn study<T: Real>(
             )))
         }
     };
-    let step = Step::compile(&method, &params)?;
     let kernel = Kernel::<T>::new(&step);
     // The form the rounded program conserves exactly, else the exact Φ's.
     let (study, measured_form) = match Study::new(kernel.clone(), args.starts) {
@@ -248,6 +252,20 @@ fn study<T: Real>(
         one_step,
         run,
     })
+}
+
+/// P at exact values of every parameter, from the derivation's d·P and d
+/// (d = det A of an implicit step, 1 otherwise); `None` where the step's
+/// system is singular.
+fn transition_matrix_at(d: &Derivation, values: &HashMap<Sym, Q>) -> Option<Vec<Vec<Q>>> {
+    let den = d.p_denominator.eval(values)?;
+    if den.is_zero() {
+        return None;
+    }
+    let p = &d.transition_matrix;
+    (0..p.rows())
+        .map(|i| p.row(i).iter().map(|e| e.eval(values).map(|x| x / &den)).collect())
+        .collect()
 }
 
 fn sci(x: f64) -> String {

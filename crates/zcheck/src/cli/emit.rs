@@ -5,6 +5,7 @@ use std::process::ExitCode;
 
 use crate::emit::{emit, Binding, Lang};
 use crate::error::Error;
+use crate::load::LoadedMethod;
 use poly::{Sym, Q};
 
 /// The language to emit.
@@ -31,7 +32,8 @@ pub struct Args {
 }
 
 pub fn run(args: Args) -> Result<ExitCode, Error> {
-    let method = crate::tableau::load_method(&args.method)?;
+    let loaded = LoadedMethod::load(&args.method)?;
+    let method = loaded.method();
     let lang = match args.lang {
         Language::Rust => Lang::Rust,
         Language::C => Lang::C,
@@ -72,6 +74,6 @@ pub fn run(args: Args) -> Result<ExitCode, Error> {
             Binding::Folded(values)
         }
     };
-    print!("{}", emit(&method, lang, &binding)?);
+    print!("{}", emit(method, lang, &binding)?);
     Ok(ExitCode::SUCCESS)
 }

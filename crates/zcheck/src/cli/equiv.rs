@@ -8,6 +8,7 @@ use serde_json::json;
 
 use super::output::{Format, TEXT_JSON};
 use crate::error::Error;
+use crate::load::LoadedMethod;
 
 /// Arguments of `zcheck equiv`.
 #[derive(clap::Args)]
@@ -64,12 +65,13 @@ pub fn describe(r: &Relation, a: &poly::Method, b: &poly::Method) -> String {
 }
 
 pub fn run(args: Args) -> Result<ExitCode, Error> {
-    let ma = crate::tableau::load_method(&args.a)?;
-    let mb = crate::tableau::load_method(&args.b)?;
-    let (da, db) = (poly::derive(&ma)?, poly::derive(&mb)?);
-    let relation = equiv::relate(&da, &db);
-    let reordered = equiv::reordered_updates(&ma, &mb);
-    let words = describe(&relation, &ma, &mb);
+    let a = LoadedMethod::load(&args.a)?;
+    let b = LoadedMethod::load(&args.b)?;
+    let (da, db) = (a.derivation()?, b.derivation()?);
+    let (ma, mb) = (&da.method, &db.method);
+    let relation = equiv::relate(da, db);
+    let reordered = equiv::reordered_updates(ma, mb);
+    let words = describe(&relation, ma, mb);
     let out = match args.format {
         Format::Json => {
             let doc = json!({

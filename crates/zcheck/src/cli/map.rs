@@ -9,6 +9,7 @@ use poly::Q;
 use super::output::{Format, TEXT_JSON};
 use super::values::Exact;
 use crate::error::Error;
+use crate::load::LoadedMethod;
 
 /// Arguments of `zcheck map`.
 #[derive(clap::Args)]
@@ -54,7 +55,7 @@ pub fn parse_range(flag: &str, s: &str) -> Result<(Q, Q), Error> {
 }
 
 pub fn run(args: Args) -> Result<ExitCode, Error> {
-    let method = crate::tableau::load_method(&args.method)?;
+    let method = LoadedMethod::load(&args.method)?;
     let phi = parse_range("--phi", &args.phi)?;
     if phi.0 < Q::from_integer(0.into()) {
         return Err(Error::usage(format!("--phi {}: expected Phi >= 0", args.phi)));
@@ -70,7 +71,7 @@ pub fn run(args: Args) -> Result<ExitCode, Error> {
         )));
     }
     let window = crate::map::MapWindow { phi, d, grid: args.grid, samples: args.samples };
-    let m = crate::map::map(&poly::derive(&method)?, &window)?;
+    let m = crate::map::map(&method, &window)?;
     if let Some(path) = &args.svg {
         crate::map::draw_svg(&m, path)?;
     }

@@ -5,6 +5,7 @@ use std::process::ExitCode;
 
 use super::output::{Format, MARKDOWN_JSON};
 use crate::error::Error;
+use crate::load::LoadedMethod;
 
 /// Arguments of `zcheck overview`.
 #[derive(clap::Args)]
@@ -35,7 +36,7 @@ pub fn run(args: Args) -> Result<ExitCode, Error> {
     } else {
         args.methods
             .iter()
-            .map(|m| crate::overview::summarize(&crate::tableau::load_method(m)?, args.order))
+            .map(|m| crate::overview::summary_of(LoadedMethod::load(m)?.derivation()?, args.order))
             .collect::<Result<Vec<_>, Error>>()?
     };
     if args.implicit {

@@ -6,6 +6,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use crate::error::Error;
+use crate::load::LoadedMethod;
 use crate::plot::{yt_figure, yt_grid, zplane_figure};
 use check::numeric::Params;
 
@@ -55,16 +56,15 @@ pub fn run(args: Args) -> Result<ExitCode, Error> {
     } else {
         args.methods.clone()
     };
-    let methods =
-        names.iter().map(|n| crate::tableau::load_method(n)).collect::<Result<Vec<_>, _>>()?;
+    let methods = names.iter().map(|n| LoadedMethod::load(n)).collect::<Result<Vec<_>, _>>()?;
     std::fs::create_dir_all(&args.out)
         .map_err(|e| Error::io(format!("{}: cannot create", args.out.display()), e))?;
     let params = Params::new().try_with("Phi", args.phi)?;
     let mut written = Vec::new();
     if matches!(args.what, What::Yt | What::All) {
         for m in &methods {
-            let path = args.out.join(format!("yt_{}.svg", m.name()));
-            yt_figure(m, &params, args.t_max, &path)?;
+            let path = args.out.join(format!("yt_{}.svg", m.method().name()));
+            yt_figure(m.method(), &params, args.t_max, &path)?;
             written.push(path);
         }
         let path = args.out.join("yt_all.svg");

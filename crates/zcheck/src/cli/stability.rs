@@ -18,6 +18,7 @@ use serde_json::{json, Value};
 use super::output::{self, Format, TEXT_JSON};
 use super::values::{self, ParamArg};
 use crate::error::Error;
+use crate::load::LoadedMethod;
 
 /// Arguments of `zcheck stability`.
 #[derive(clap::Args)]
@@ -33,10 +34,11 @@ pub struct Args {
 }
 
 pub fn run(args: Args) -> Result<ExitCode, Error> {
-    let method = crate::tableau::load_method(&args.method)?;
+    let loaded = LoadedMethod::load(&args.method)?;
     // The one derivation: χ, the report and the implicit facts all read it.
-    let derivation = poly::derive(&method)?;
-    values::check_declared(&args.params, &[&method])?;
+    let derivation = loaded.derivation()?;
+    let method = &derivation.method;
+    values::check_declared(&args.params, &[method])?;
     let mut values = HashMap::new();
     let mut shown = Vec::new();
     for p in &args.params {
@@ -46,9 +48,9 @@ pub fn run(args: Args) -> Result<ExitCode, Error> {
     let chi = derivation.charpoly.eval_partial(&values);
     // With the transition matrix, boundedness at a repeated root on the
     // circle is decided from P's Jordan structure (Merson at 2√3: P = I).
-    let report = analyze_derivation(&derivation, &values)
+    let report = analyze_derivation(derivation, &values)
         .map_err(|e| Error::from(e).context(format!("method {}", method.name())))?;
-    let facts = ImplicitFacts::of(&derivation, &chi)?;
+    let facts = ImplicitFacts::of(derivation, &chi)?;
     let out = match args.format {
         Format::Json => {
             let mut v = to_json(method.name(), &shown, &chi, &report);

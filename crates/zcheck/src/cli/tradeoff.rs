@@ -7,6 +7,7 @@ use std::time::Duration;
 
 use super::output::{Format, TEXT_JSON};
 use crate::error::Error;
+use crate::load::LoadedMethod;
 use crate::tradeoff::{self, family, figure, kernels, Candidate, Spring, Target, TradeRow};
 use check::numeric::{q_to_f64, Params, ParamsF64};
 
@@ -58,7 +59,6 @@ pub fn run(args: Args) -> Result<ExitCode, Error> {
     }
     let budget = Duration::from_millis(args.budget_ms.max(1));
     let mut candidates = family::undamped_family()?;
-    let n_builtin = candidates.len();
     let mut wanted = args.methods.clone();
     if args.implicit {
         for name in poly::IMPLICIT_METHODS {
@@ -73,13 +73,11 @@ pub fn run(args: Args) -> Result<ExitCode, Error> {
     candidates.extend(user_candidates(&wanted, &args.params, &candidates)?);
     let mut ns = Vec::with_capacity(candidates.len());
     let mut hand = Vec::with_capacity(candidates.len());
-    for (i, c) in candidates.iter().enumerate() {
+    for c in &candidates {
         ns.push(measure(c, budget)?);
-        hand.push(if i < n_builtin {
-            kernels::time_hand_kernel(c.kernel_name(), 0.0, budget)
-        } else {
-            None
-        });
+        // A built-in's hand kernel; a user's method (built-ins named by
+        // --method too) has none.
+        hand.push(c.hand_kernel.and_then(|name| kernels::time_hand_kernel(name, 0.0, budget)));
     }
     let mut k = 0;
     let mut rows = tradeoff::trade(&candidates, Spring::UNDAMPED, &target, |_| {
@@ -141,9 +139,9 @@ fn user_candidates(
         if family.iter().chain(&out).any(|c| &c.display == arg) {
             return Err(Error::usage(format!("--method {arg}: already in the comparison")));
         }
-        let method = crate::tableau::load_method(arg)?;
+        let method = LoadedMethod::load(arg)?;
         let mut values = Vec::new();
-        for sym in method.params().iter().filter(|s| s.name() != "Phi") {
+        for sym in method.method().params().iter().filter(|s| s.name() != "Phi") {
             let Some((_, q)) = parsed.iter().find(|(n, _)| n == sym.name()) else {
                 return Err(Error::usage(format!(
                     "--method {arg}: parameter {} has no value: expected --param {}=VALUE",
@@ -153,10 +151,9 @@ fn user_candidates(
             };
             values.push((*sym, q.clone()));
         }
-        let mut c =
-            Candidate::new(method, values).map_err(|e| e.context(format!("--method {arg}")))?;
-        c.display = arg.clone();
-        out.push(c);
+        out.push(
+            Candidate::new(&method, values).map_err(|e| e.context(format!("--method {arg}")))?,
+        );
     }
     Ok(out)
 }

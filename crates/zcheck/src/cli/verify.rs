@@ -17,6 +17,7 @@ use serde_json::{json, Value};
 use super::output::{self, Format, TEXT_JSON};
 use super::values::{self, show_f64, Exact, ParamArg};
 use crate::error::Error;
+use crate::load::LoadedMethod;
 
 /// Arguments of `zcheck verify`.
 #[derive(clap::Args)]
@@ -60,12 +61,9 @@ pub fn run(args: Args) -> Result<ExitCode, Error> {
     for phi in &args.phi {
         phis.push((phi.to_f64("--phi")?, Some(phi.value.clone())));
     }
-    let methods = args
-        .methods
-        .iter()
-        .map(|name| crate::tableau::load_method(name))
-        .collect::<Result<Vec<_>, _>>()?;
-    values::check_declared(&args.params, &methods.iter().collect::<Vec<_>>())?;
+    let methods =
+        args.methods.iter().map(|name| LoadedMethod::load(name)).collect::<Result<Vec<_>, _>>()?;
+    values::check_declared(&args.params, &methods.iter().map(|m| m.method()).collect::<Vec<_>>())?;
     let mut base = Params::default();
     for p in &args.params {
         p.value.to_f64(&format!("--param {}", p.name))?;
@@ -73,10 +71,12 @@ pub fn run(args: Args) -> Result<ExitCode, Error> {
     }
     let mut jobs = Vec::new();
     for method in &methods {
-        let w = Witnesses::new(method)?;
+        let w = Witnesses::from_derivation(method.derivation()?);
         let mut phis = phis.clone();
         if args.boundaries {
-            let s = sweep::sweep(method, &base, &sweep::default_grid())?;
+            // `check::sweep` takes the method and derives it again: its
+            // classifier has no constructor from a derivation.
+            let s = sweep::sweep(method.method(), &base, &sweep::default_grid())?;
             for b in &s.boundaries {
                 phis.push((b.below, None));
                 phis.push((b.above, None));

@@ -39,13 +39,14 @@ use check::numeric::{f64_to_q, Params, ParamsF64, Step};
 use nalgebra::DMatrix;
 use num_complex::Complex64 as C64;
 use poly::region::{region, PhiLimit, Region};
-use poly::{Method, Poly, Sym};
+use poly::{Poly, Sym};
 use serde::Serialize;
 
 use super::file::SceneFile;
 use super::modal::{continuous_eigenvalues, DampingKind, Modal, Mode, Sparse, System};
 use super::vector::{self, Kernel, Sweep, VState};
 use crate::error::Error;
+use crate::load::LoadedMethod;
 use crate::tradeoff::accuracy::{Accuracy, Spring, Target};
 use crate::tradeoff::kernels;
 
@@ -58,59 +59,6 @@ const MAX_SUBSTEPS: u64 = 1 << 24;
 
 /// Largest system for the dense full-step analysis (2n × 2n eigenvalues).
 pub const MAX_FULL_DOF: usize = 400;
-
-/// A candidate method.
-#[derive(Clone, Debug)]
-pub struct MethodSpec {
-    /// The name shown.
-    pub display: String,
-    /// The method.
-    pub method: Method,
-    /// The system kernel of a built-in.
-    pub kernel: Option<Kernel>,
-    /// Its hand-written scalar kernel's name, for timing.
-    pub hand_kernel: Option<String>,
-}
-
-impl MethodSpec {
-    /// A built-in by its undamped or damped name (`false_euler` or
-    /// `false_euler_damped`), or a `.zm` file.
-    pub fn load(arg: &str) -> Result<MethodSpec, Error> {
-        let damped = match arg {
-            "standard_euler" => Some("damped_euler_d".to_owned()),
-            a if poly::DAMPED_METHODS.contains(&a) => Some(a.to_owned()),
-            a if poly::DAMPED_METHODS.contains(&format!("{a}_damped").as_str()) => {
-                Some(format!("{a}_damped"))
-            }
-            _ => None,
-        };
-        if let Some(name) = damped {
-            let method = poly::builtin(&name)?;
-            let display = match name.as_str() {
-                "damped_euler_d" => "standard_euler".to_owned(),
-                n => n.trim_end_matches("_damped").to_owned(),
-            };
-            let hand = if name == "damped_euler_d" {
-                "standard_euler_damped".to_owned()
-            } else {
-                name.clone()
-            };
-            return Ok(MethodSpec {
-                display,
-                method,
-                kernel: Kernel::for_method(&name),
-                hand_kernel: Some(hand),
-            });
-        }
-        let method = crate::tableau::load_method_with(arg, true)?;
-        Ok(MethodSpec { display: arg.to_owned(), method, kernel: None, hand_kernel: None })
-    }
-
-    /// The seven direct methods on the damped spring.
-    pub fn builtins() -> Result<Vec<MethodSpec>, Error> {
-        poly::DAMPED_METHODS.iter().map(|n| MethodSpec::load(n)).collect()
-    }
-}
 
 /// Predicted or simulated errors over the duration (largest over modes).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -266,7 +214,7 @@ impl BiPoly {
 
 /// Everything per candidate that does not depend on the mode.
 struct Analysed {
-    spec: MethodSpec,
+    spec: LoadedMethod,
     region: Region,
     /// χ's coefficients in z (lowest first), in (Φ, D).
     coeffs: Vec<BiPoly>,
@@ -286,19 +234,19 @@ type AtParam = (Poly, Option<Vec<poly::stability::StableInterval>>);
 const FLOAT_MARGIN: f64 = 1e-6;
 
 impl Analysed {
-    fn new(spec: MethodSpec) -> Result<Analysed, Error> {
+    fn new(spec: LoadedMethod) -> Result<Analysed, Error> {
         let d = Sym::new("D");
         if let Some(extra) =
-            spec.method.params().iter().find(|s| s.name() != "Phi" && s.name() != "D")
+            spec.method().params().iter().find(|s| s.name() != "Phi" && s.name() != "D")
         {
             return Err(Error::unsupported(format!(
                 "method {}: parameter {extra} has no value in a scene: expected only Phi and D",
-                spec.display
+                spec.display()
             )));
         }
-        let chi = poly::charpoly(&spec.method)?;
-        let region = region(&chi, d)
-            .map_err(|e| Error::from(e).context(format!("method {}", spec.display)))?;
+        let chi = &spec.derivation()?.charpoly;
+        let region = region(chi, d)
+            .map_err(|e| Error::from(e).context(format!("method {}", spec.display())))?;
         let zc = chi.coeffs_in(Sym::z());
         let coeffs = zc.iter().map(|c| BiPoly::new(c, d)).collect();
         let second = (zc.len() == 3 && zc[2].is_one()).then(|| {
@@ -472,15 +420,15 @@ fn target_of(scene: &SceneFile) -> Target {
 }
 
 /// ns per step of one degree of freedom.
-fn ns_per_step(spec: &MethodSpec, d: f64) -> f64 {
+fn ns_per_step(spec: &LoadedMethod, d: f64) -> f64 {
     let budget = Duration::from_millis(3);
-    if let Some(h) = &spec.hand_kernel {
+    if let Some(h) = spec.hand_kernel() {
         if let Some(ns) = kernels::time_hand_kernel(h, d, budget) {
             return ns;
         }
     }
     let params = Params::phi(kernels::TIMING_PHI).with("D", d);
-    match Step::compile(&spec.method, &params) {
+    match Step::compile(spec.method(), &params) {
         Ok(step) => {
             let start: Vec<f64> =
                 (0..step.order()).map(|i| if i == 0 { 1.0 } else { 0.0 }).collect();
@@ -527,7 +475,7 @@ pub struct Options {
 pub fn advise(
     scene: &SceneFile,
     modal: &Modal,
-    specs: Vec<MethodSpec>,
+    specs: Vec<LoadedMethod>,
     options: Options,
 ) -> Result<SceneAdvice, Error> {
     let tick = scene.tick_hz;
@@ -537,13 +485,13 @@ pub fn advise(
     let mut candidates = Vec::new();
     let mut analysed_all = Vec::new();
     for spec in specs {
-        if !spec.method.params().iter().any(|s| s.name() == "D")
+        if !spec.method().params().iter().any(|s| s.name() == "D")
             && modal.modes.iter().any(|m| m.ratio != 0.0)
         {
             return Err(Error::unsupported(format!(
                 "method {}: the scene is damped but the method has no parameter D: expected `param D` \
                  (the test equation v' = -2*D*v - y, y' = v)",
-                spec.display
+                spec.display()
             )));
         }
         let mut a = Analysed::new(spec)?;
@@ -583,8 +531,8 @@ pub fn advise(
                 .zip(&candidates)
                 .filter_map(|(a, c)| {
                     Some(sweep_report(
-                        a.spec.kernel?,
-                        &a.spec.display,
+                        a.spec.system_kernel()?,
+                        a.spec.display(),
                         &system,
                         tick,
                         c.substeps_stable,
@@ -669,7 +617,7 @@ fn advise_one(
         limiting = mode_stable.iter().position(|s| *s == Some(n));
     }
     if modal.damping == DampingKind::NonProportional {
-        match a.spec.kernel {
+        match a.spec.system_kernel() {
             Some(k) if system.n() <= MAX_FULL_DOF => {
                 substeps_stable = full_stable(k, Sweep::Vector, system, tick, substeps_stable.unwrap_or(1));
                 stability_from = "full-step matrix (non-proportional damping)".to_owned();
@@ -706,7 +654,7 @@ fn advise_one(
     let d_timing = modes.iter().map(|m| m.ratio).fold(0.0, f64::max).min(1.0);
     let ns = ns_per_step(&a.spec, d_timing);
     let dof = scene.dof() as f64;
-    let full = match a.spec.kernel {
+    let full = match a.spec.system_kernel() {
         Some(k) if modal.damping == DampingKind::NonProportional && system.n() <= MAX_FULL_DOF => {
             Some(k)
         }
@@ -739,7 +687,7 @@ fn advise_one(
         (predicted, simulated)
     };
     Ok(CandidateAdvice {
-        method: a.spec.display.clone(),
+        method: a.spec.display().to_owned(),
         substeps_stable,
         substeps_accurate,
         ns_per_step: ns,
@@ -860,7 +808,7 @@ fn simulate_check(
     let steps = wanted.min(total_steps.max(enough)).min((SIM_WORK / dim as f64) as u64).max(1);
     let mut seqs: Vec<Vec<f64>> = vec![Vec::with_capacity(FIT_SAMPLES); checked.len()];
     let how;
-    match a.spec.kernel {
+    match a.spec.system_kernel() {
         Some(kernel) => {
             how = "whole scene, system kernel".to_owned();
             // Start: each checked mode with unit modal amplitude, at rest.
@@ -893,7 +841,7 @@ fn simulate_check(
             // A .zm file has no system form: each checked mode runs the
             // compiled scalar step at its own (Phi, D).
             how = "per mode, compiled .zm step".to_owned();
-            let m = &a.spec.method;
+            let m = a.spec.method();
             let y_slot = m
                 .slots()
                 .iter()
@@ -1235,7 +1183,7 @@ mod tests {
     /// including points within 10⁻⁹ of the exact limit.
     #[test]
     fn the_float_filter_agrees_with_the_exact_membership() {
-        for spec in MethodSpec::builtins().unwrap() {
+        for spec in LoadedMethod::damped_builtins().unwrap() {
             let a = Analysed::new(spec).unwrap();
             for d in [0.0, 0.05, 0.3, 0.9] {
                 let mut phis: Vec<f64> = (1..=40).map(|k| k as f64 * 0.1).collect();
@@ -1248,7 +1196,7 @@ mod tests {
                         a.inside(phi, d),
                         a.inside_exact(phi, d),
                         "{} at Phi = {phi}, D = {d}",
-                        a.spec.display
+                        a.spec.display()
                     );
                 }
             }

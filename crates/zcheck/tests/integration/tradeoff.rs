@@ -11,6 +11,7 @@ use std::f64::consts::PI;
 use check::numeric::{f64_to_q, q_to_f64, Params, Step};
 use check::witness;
 use poly::{Sym, Q};
+use zcheck::load::LoadedMethod;
 use zcheck::tradeoff::{
     self, advise, family, kernels, Candidate, Scene, SecondOrder, Spring, Target, TradeRow,
 };
@@ -156,11 +157,11 @@ fn accuracy_matches_numeric_eigenvalues() {
 #[test]
 fn accuracy_of_implicit_methods_matches_eigenvalues_and_closed_forms() {
     for name in poly::IMPLICIT_METHODS {
-        let m = poly::builtin(name).unwrap();
-        if m.order() != 2 {
+        let m = LoadedMethod::builtin(name).unwrap();
+        if m.method().order() != 2 {
             continue;
         }
-        let c = Candidate::new(m, Vec::new()).expect("second order");
+        let c = Candidate::new(&m, Vec::new()).expect("second order");
         for phi in [0.05, 0.3, 0.9, 1.3, 2.5] {
             let acc = c.model.accuracy(phi, Spring::UNDAMPED);
             let step = Step::compile(&c.method, &Params::phi(phi)).unwrap();
@@ -179,8 +180,8 @@ fn accuracy_of_implicit_methods_matches_eigenvalues_and_closed_forms() {
             );
         }
     }
-    let trap = Candidate::new(poly::builtin("trapezoidal").unwrap(), Vec::new()).unwrap();
-    let be = Candidate::new(poly::builtin("backward_euler").unwrap(), Vec::new()).unwrap();
+    let trap = Candidate::new(&LoadedMethod::builtin("trapezoidal").unwrap(), Vec::new()).unwrap();
+    let be = Candidate::new(&LoadedMethod::builtin("backward_euler").unwrap(), Vec::new()).unwrap();
     for phi in [1e-3, 0.1, 1.0, 3.0, 10.0] {
         let t = trap.model.accuracy(phi, Spring::UNDAMPED);
         assert!((t.psi - 2.0 * (phi / 2.0).atan()).abs() <= 4.0 * EPS * t.psi, "{phi}");
@@ -200,7 +201,7 @@ fn hand_kernels_follow_their_definitions() {
     let mut cands = undamped();
     cands.extend(family::damped_family(&f64_to_q(d_value).unwrap()).unwrap());
     for c in &cands {
-        let name = c.kernel_name();
+        let name = c.hand_kernel.expect("every built-in has a hand kernel");
         for phi in [0.125, 0.75, 1.5] {
             let mut values: HashMap<Sym, Q> = c.params.iter().cloned().collect();
             values.insert(Sym::phi(), f64_to_q(phi).unwrap());

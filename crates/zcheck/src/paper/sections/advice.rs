@@ -9,8 +9,8 @@ use num_traits::Signed;
 
 use poly::{Algebraic, Q};
 
-use super::common::derivation;
 use super::ranges;
+use crate::load::builtin_derivation;
 
 /// The criteria of one method.
 pub struct Criteria {
@@ -33,7 +33,7 @@ fn leading(c: &[Q], skip: usize) -> Option<(usize, Q)> {
 
 /// The criteria of a built-in, from its exact χ.
 pub fn criteria(method: &'static str) -> Criteria {
-    let d = derivation(method);
+    let d = builtin_derivation(method);
     let mut psi = poly::series::psi_series(&d.charpoly, 7).expect("Ψ series");
     if psi.len() > 1 {
         psi[1] -= poly::q(1, 1);

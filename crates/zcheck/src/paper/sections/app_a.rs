@@ -6,6 +6,7 @@ use poly::{Poly, Sym};
 
 use super::common::*;
 use super::frequency;
+use crate::load::builtin_derivation;
 use crate::paper::{Claim, Finding};
 
 pub fn claims() -> Vec<Claim> {
@@ -18,7 +19,8 @@ pub fn claims() -> Vec<Claim> {
         "Phi^2*(1 - Phi^2/4)",
         "1 - Phi^2/2",
     );
-    let same = derivation("damped_euler").charpoly == derivation("false_euler").charpoly;
+    let same =
+        builtin_derivation("damped_euler").charpoly == builtin_derivation("false_euler").charpoly;
     s.append_evidence(&format!(
         "; Damped Euler (D = Φ/2) and False Euler have {} χ",
         if same { "the same" } else { "different" }

@@ -8,10 +8,10 @@
 
 use std::collections::HashMap;
 use std::fmt::Write as _;
-use std::sync::{Mutex, OnceLock};
 
 use poly::{Derivation, Method, Operand, Poly, PolyMatrix, Sym, Q};
 
+use crate::load::builtin_derivation;
 use crate::paper::{Claim, Finding};
 
 /// The claims of one section, in the paper's order.
@@ -94,22 +94,6 @@ pub fn roots_once(text: &str) -> String {
     }
     out.push_str(rest);
     out
-}
-
-/// A built-in method's derivation, derived once per process (the report
-/// asks for the same few methods many times). The built-ins are part of the
-/// binary, so a failure is a programmer error.
-#[track_caller]
-pub fn derivation(name: &str) -> Derivation {
-    static CACHE: OnceLock<Mutex<HashMap<String, Derivation>>> = OnceLock::new();
-    let cache = CACHE.get_or_init(Default::default);
-    if let Some(d) = cache.lock().expect("cache lock").get(name) {
-        return d.clone();
-    }
-    let method = poly::builtin(name).unwrap_or_else(|e| panic!("built-in {name}: {e}"));
-    let d = poly::derive(&method).unwrap_or_else(|e| panic!("built-in {name}: {e}"));
-    cache.lock().expect("cache lock").insert(name.to_owned(), d.clone());
-    d
 }
 
 /// One of our own transcriptions in `Poly::parse` syntax; a parse failure
@@ -396,7 +380,7 @@ pub fn is_zero_matrix(m: &PolyMatrix) -> bool {
 /// Records the claim that a section's printed ODE is the one its method
 /// integrates.
 pub fn ode_claim(s: &mut Section, method: &str, printed: &str, a: [[&str; 2]; 2], scheme: Scheme) {
-    let d = derivation(method);
+    let d = builtin_derivation(method);
     let printed_a = ode_matrix(a);
     let defect = scheme_defect(&d, &printed_a, scheme);
     let ok = is_zero_matrix(&defect);
@@ -444,7 +428,7 @@ pub fn always_unstable_claim(s: &mut Section, method: &str) {
     use super::ranges;
     let (finding, map, failing) =
         ranges::always(method, |c| c == poly::RootClass::UnstableOscillation, None);
-    let (p, q) = p_q(&derivation(method));
+    let (p, q) = p_q(&builtin_derivation(method));
     let disc = &q - &(&p * &p);
     s.push(
         "always_unstable",
@@ -466,7 +450,7 @@ pub fn always_unstable_claim(s: &mut Section, method: &str) {
 
 /// Records a printed characteristic equation against the derived χ.
 pub fn charpoly_claim(s: &mut Section, key: &str, method: &str, printed: &str, parse: &str) {
-    let d = derivation(method);
+    let d = builtin_derivation(method);
     let got = paper(parse);
     let ok = got == d.charpoly;
     let finding = Finding::same(&got, &d.charpoly);
@@ -494,7 +478,7 @@ pub fn stages_claim(
     printed: &str,
     lines: &[(&str, Printed)],
 ) {
-    let m = derivation(method).method;
+    let m = builtin_derivation(method).method;
     let (finding, derived, diffs) = compare_stages(&m, lines);
     let evidence = if diffs.is_empty() {
         format!("symbolic execution of the {method} program (Appendix B) gives every printed value exactly")
@@ -506,7 +490,7 @@ pub fn stages_claim(
 
 /// Records printed z-domain rows against the derived transition matrix.
 pub fn z_rows_claim(s: &mut Section, method: &str, printed: &str, rows: &[ZRow]) {
-    let d = derivation(method);
+    let d = builtin_derivation(method);
     let (finding, derived, diffs) = compare_z_rows(&d, rows);
     let evidence = if diffs.is_empty() {
         format!("the rows of P from poly::derive({method}) equal the printed coefficients exactly")
@@ -518,7 +502,7 @@ pub fn z_rows_claim(s: &mut Section, method: &str, printed: &str, rows: &[ZRow])
 
 /// Records a printed r² against q (section 4: r1² = q for a conjugate pair).
 pub fn r_squared_claim(s: &mut Section, method: &str, printed: &str, parse: &str) {
-    let d = derivation(method);
+    let d = builtin_derivation(method);
     let (p, q) = p_q(&d);
     let ok = paper(parse) == q;
     let range = super::ranges::sign_text(
@@ -548,7 +532,7 @@ pub fn eigen_claim(
     p_text: &str,
     im_sq: &str,
 ) {
-    let d = derivation(method);
+    let d = builtin_derivation(method);
     let (p, q) = p_q(&d);
     let disc = &q - &(&p * &p);
     let ok_p = paper(p_text) == p;
@@ -581,7 +565,7 @@ pub fn eigen_claim(
 /// Records a printed tan Ψ = num/den against the roots: tan Ψ = sqrt(q − p²)/p,
 /// so den must be p and num² must be q − p².
 pub fn tan_claim(s: &mut Section, key: &str, method: &str, printed: &str, num_sq: &str, den: &str) {
-    let d = derivation(method);
+    let d = builtin_derivation(method);
     let (p, q) = p_q(&d);
     let disc = &q - &(&p * &p);
     let ok = paper(den) == p && paper(num_sq) == disc;

@@ -11,12 +11,13 @@ use std::f64::consts::PI;
 use poly::{Poly, Sym, Q};
 
 use super::common::*;
+use crate::load::builtin_derivation;
 use crate::paper::{Finding, Scope};
 
 /// Ψ(Φ)'s Taylor coefficients of Φ^0..=Φ^order.
 #[track_caller]
 pub fn psi_coeffs(method: &str, order: usize) -> Vec<Q> {
-    let d = derivation(method);
+    let d = builtin_derivation(method);
     poly::series::psi_series(&d.charpoly, order)
         .unwrap_or_else(|e| panic!("Ψ series of {method}: {e}"))
 }
@@ -30,7 +31,7 @@ pub fn series_poly(c: &[Q]) -> Poly {
 /// The largest Φ (at most `cap`) up to which a method's roots stay a
 /// complex pair, in floating point; `cap` when they never stop.
 fn oscillating_until(method: &str, cap: f64) -> f64 {
-    let psi = PsiF64::new(&derivation(method));
+    let psi = PsiF64::new(&builtin_derivation(method));
     let n = 4000;
     let mut last = 0.0;
     for k in 1..=n {
@@ -46,7 +47,7 @@ fn oscillating_until(method: &str, cap: f64) -> f64 {
 /// The first Φ in (0, hi] where Ψ(Φ) − Φ changes sign, by a grid and
 /// bisection; `None` when Ψ > Φ on the whole grid.
 pub fn first_crossing(method: &str, hi: f64) -> Option<f64> {
-    let psi = PsiF64::new(&derivation(method));
+    let psi = PsiF64::new(&builtin_derivation(method));
     let f = |phi: f64| psi.at(phi).map(|psi| psi - phi);
     let n = 4000;
     let mut prev = hi / n as f64;
@@ -77,7 +78,7 @@ pub fn too_high(s: &mut Section, method: &str, statement: &str) {
     let c = psi_coeffs(method, 3);
     let hi = oscillating_until(method, 2.0 * PI);
     let crossing = first_crossing(method, hi);
-    let q_is_one = p_q(&derivation(method)).1.is_one();
+    let q_is_one = p_q(&builtin_derivation(method)).1.is_one();
     let near_zero = format!("near Φ = 0, Ψ − Φ = {}·Φ³ + O(Φ⁵) > 0", c[3]);
     // Section 6 states the range of the frequency approximations, Φ < 1;
     // "always too high" is read off those approximations.
@@ -142,7 +143,7 @@ pub fn approximation(s: &mut Section, method: &str, statement: &str, parse: &str
 
 /// "The approximation is valid for Φ < 1 or more than 2π samples per period."
 pub fn validity(s: &mut Section, method: &str, approx: &str) {
-    let d = derivation(method);
+    let d = builtin_derivation(method);
     let a = paper(approx);
     let at = |phi: f64| {
         let psi = psi_f64(&d, phi).expect("oscillating at Φ ≤ 1");
@@ -179,7 +180,7 @@ pub fn validity(s: &mut Section, method: &str, approx: &str) {
 
 /// The table of section 6: true and approximate Ψ at given Φ, to 3 decimals.
 pub fn table(s: &mut Section, method: &str, approx: &str, rows: &[(&str, &str, f64, &str, &str)]) {
-    let d = derivation(method);
+    let d = builtin_derivation(method);
     let a = paper(approx);
     for &(key, statement, phi, true_printed, approx_printed) in rows {
         let psi = psi_f64(&d, phi).expect("oscillating");

@@ -10,7 +10,7 @@ use std::sync::{Mutex, OnceLock};
 use poly::stability::{self, StabilityReport};
 use poly::{Algebraic, Poly, RootClass, Sym, UPoly, Q};
 
-use super::common::derivation;
+use crate::load::builtin_derivation;
 
 /// An exact number written for a reader: the closed form when known, with
 /// its decimal value ("sqrt(2) ≈ 1.4142", "2").
@@ -123,7 +123,7 @@ pub fn report(method: &str) -> StabilityReport {
     if let Some(r) = cache.lock().expect("cache lock").get(method) {
         return r.clone();
     }
-    let d = derivation(method);
+    let d = builtin_derivation(method);
     let r =
         stability::analyze(&d.charpoly).unwrap_or_else(|e| panic!("stability of {method}: {e}"));
     cache.lock().expect("cache lock").insert(method.to_owned(), r.clone());
@@ -194,7 +194,7 @@ pub fn classes_outside(known: &[RootClass]) -> String {
 pub fn negative_real_part_text() -> String {
     let mut out = Vec::new();
     for method in METHODS.iter().filter(|m| !matches!(**m, "damped_euler_d" | "verlet")) {
-        let d = derivation(method);
+        let d = builtin_derivation(method);
         let (p, q) = super::common::p_q(&d);
         let disc = &q - &(&p * &p);
         let mut cuts = positive_roots(&p);

@@ -8,6 +8,7 @@ use poly::RootClass;
 
 use super::common::*;
 use super::{frequency, ranges};
+use crate::load::builtin_derivation;
 use crate::paper::{Claim, Finding, Scope};
 
 pub fn claims() -> Vec<Claim> {
@@ -86,7 +87,7 @@ pub fn claims() -> Vec<Claim> {
 }
 
 fn unit_circle(s: &mut Section) {
-    let (p, q) = p_q(&derivation("false_euler"));
+    let (p, q) = p_q(&builtin_derivation("false_euler"));
     let disc = &q - &(&p * &p);
     s.push(
         "cos_sin",
@@ -105,7 +106,7 @@ fn unit_circle(s: &mut Section) {
 fn stability_limit(s: &mut Section) {
     let r = ranges::report("false_euler");
     let phi_max = ranges::limit_of(&r);
-    let (p, q) = p_q(&derivation("false_euler"));
+    let (p, q) = p_q(&builtin_derivation("false_euler"));
     let im_sq = &q - &(&p * &p);
     let im_zero = ranges::positive_roots(&im_sq);
     // What the paper prints, as numbers: Φ² = 4; T/T0 = 1/π, i.e.

@@ -5,6 +5,7 @@
 use poly::{Poly, Sym, Q};
 
 use super::common::*;
+use crate::load::builtin_derivation;
 use crate::paper::{Claim, Finding, Scope};
 
 pub fn claims() -> Vec<Claim> {
@@ -44,7 +45,7 @@ fn recursion(s: &mut Section) {
 }
 
 fn oscillator(s: &mut Section) {
-    let m = derivation("verlet").method;
+    let m = builtin_derivation("verlet").method;
     let step = stage_value(&m, "y");
     let printed = paper("2*(1 - Phi^2/2)*y - y_lag1");
     s.push(
@@ -57,8 +58,8 @@ fn oscillator(s: &mut Section) {
 }
 
 fn same_as_false_euler(s: &mut Section) {
-    let fe = derivation("false_euler");
-    let ve = derivation("verlet");
+    let fe = builtin_derivation("false_euler");
+    let ve = builtin_derivation("verlet");
     let samples = same_samples(&[poly::q(1, 10), poly::q(1, 1), poly::q(2, 1), poly::q(5, 2)], 24);
     s.push(
         "same_as_false_euler",
@@ -76,7 +77,7 @@ fn same_as_false_euler(s: &mut Section) {
 /// False Euler's y samples and Verlet's, started from y_{−1} = y_0 − Φ v_0,
 /// agree exactly.
 pub fn same_samples(phis: &[Q], n: usize) -> bool {
-    let fe = derivation("false_euler");
+    let fe = builtin_derivation("false_euler");
     let starts = [
         (poly::q(0, 1), poly::q(1, 1)),
         (poly::q(1, 3), poly::q(-2, 1)),
@@ -108,7 +109,7 @@ pub fn verlet_samples(phi: &Q, y0: &Q, y_minus_one: &Q, n: usize) -> Vec<Q> {
 fn initial_velocity(s: &mut Section) {
     let ok = same_samples(&[poly::q(1, 2), poly::q(3, 2)], 16);
     let damped = damped_spring();
-    let verlet_state: Vec<String> = derivation("verlet").method.state().to_vec();
+    let verlet_state: Vec<String> = builtin_derivation("verlet").method.state().to_vec();
     s.push(
         "initial_velocity",
         "Verlet Integration doesn't use the state variable v explicitly. This causes big problems for the \

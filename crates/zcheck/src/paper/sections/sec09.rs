@@ -4,6 +4,7 @@
 
 use super::common::*;
 use super::frequency;
+use crate::load::builtin_derivation;
 use crate::paper::{Claim, Finding, Scope};
 
 pub fn claims() -> Vec<Claim> {
@@ -69,11 +70,12 @@ pub fn claims() -> Vec<Claim> {
 }
 
 fn scheme(s: &mut Section) {
-    let defect = scheme_defect(&derivation("standard_heun"), &ode_matrix(OSCILLATOR), Scheme::Heun);
+    let defect =
+        scheme_defect(&builtin_derivation("standard_heun"), &ode_matrix(OSCILLATOR), Scheme::Heun);
     s.push(
         "scheme",
         "dy(1) = τ(Ay + Bx); y(1) = y + dy(1); dy(2) = τ(Ay(1) + Bx); dy = 0.5(dy(1) + dy(2)); y = y + dy",
-        format!("standard_heun: P = {}", matrix_text(&derivation("standard_heun").transition_matrix)),
+        format!("standard_heun: P = {}", matrix_text(&builtin_derivation("standard_heun").transition_matrix)),
         Finding::same(matrix_text(&defect), matrix_text(&poly::PolyMatrix::zeros(2, 2))),
         "for x = 0 the scheme is y ← (I + τA + (τA)²/2) y; the built-in program (Appendix B case 5) gives \
          exactly that P with A = [[0, −1], [1, 0]] and τ·ω0 = Φ",
@@ -86,7 +88,7 @@ pub fn growth_per_period(r_squared: f64, phi: f64) -> f64 {
 }
 
 fn weak_instability(s: &mut Section) {
-    let (_, q) = p_q(&derivation("standard_heun"));
+    let (_, q) = p_q(&builtin_derivation("standard_heun"));
     let steps = [10.0, 20.0, 50.0, 100.0];
     let growth: Vec<f64> = steps
         .iter()

@@ -6,6 +6,7 @@ use poly::{PolyMatrix, RootClass};
 
 use super::common::*;
 use super::{advice, ranges};
+use crate::load::builtin_derivation;
 use crate::paper::{Claim, Finding};
 
 pub fn claims() -> Vec<Claim> {
@@ -123,7 +124,7 @@ fn z_rows(s: &mut Section) {
     );
     // The printed χ is right although the printed rows are not.
     let from_rows = printed_rows_charpoly();
-    let d = derivation("false_heun");
+    let d = builtin_derivation("false_heun");
     s.append_evidence(&format!(
         "; the printed rows would give χ = {from_rows}, not the printed (and derived) χ = {}, so the \
          section's χ was derived from the correct rows",
@@ -148,7 +149,7 @@ fn charpoly(s: &mut Section) {
 }
 
 fn not_recommended(s: &mut Section) {
-    let (_, q) = p_q(&derivation("false_heun"));
+    let (_, q) = p_q(&builtin_derivation("false_heun"));
     let rows: Vec<String> = [10.0, 20.0, 50.0]
         .iter()
         .map(|&n: &f64| {

@@ -5,6 +5,7 @@ use poly::RootClass;
 
 use super::common::*;
 use super::{advice, frequency, ranges};
+use crate::load::builtin_derivation;
 use crate::paper::{Claim, Finding};
 
 pub fn claims() -> Vec<Claim> {
@@ -84,7 +85,7 @@ fn always_stable(s: &mut Section) {
     let boundary =
         r.boundary().map(|b| b.to_string().replace('_', " ")).unwrap_or_else(|| "none".to_owned());
     let chi_minus_one =
-        derivation("semi_false_heun").charpoly.subs(poly::Sym::z(), &poly::Poly::int(-1));
+        builtin_derivation("semi_false_heun").charpoly.subs(poly::Sym::z(), &poly::Poly::int(-1));
     let crossings: Vec<String> =
         ranges::positive_roots(&chi_minus_one).iter().map(ranges::show).collect();
     s.push(
@@ -103,7 +104,7 @@ fn always_stable(s: &mut Section) {
 fn damped_small(s: &mut Section) {
     let map = ranges::class_map("semi_false_heun");
     let first = map.first().and_then(|(_, c)| *c);
-    let (p, q) = p_q(&derivation("semi_false_heun"));
+    let (p, q) = p_q(&builtin_derivation("semi_false_heun"));
     let disc = &q - &(&p * &p);
     s.push(
         "damped_small_steps",
@@ -122,8 +123,8 @@ fn damped_small(s: &mut Section) {
 }
 
 fn as_accurate(s: &mut Section) {
-    let d_sf = derivation("semi_false_heun");
-    let d_sh = derivation("standard_heun");
+    let d_sf = builtin_derivation("semi_false_heun");
+    let d_sh = builtin_derivation("standard_heun");
     let psi_sf = frequency::psi_coeffs("semi_false_heun", 5);
     let psi_sh = frequency::psi_coeffs("standard_heun", 5);
     let m_sf = poly::series::modulus_sq_series(&d_sf.charpoly, 6).expect("series");

@@ -11,6 +11,7 @@ use poly::RootClass;
 
 use super::common::*;
 use super::{advice, ranges};
+use crate::load::builtin_derivation;
 use crate::paper::{Claim, Finding, Scope};
 use crate::scene::reference::{dopri5, rk4_step, Tolerance};
 use crate::scene::three_body::{self, ThreeBodyConfig};
@@ -55,7 +56,7 @@ fn false_euler(s: &mut Section) {
 }
 
 fn standard_heun(s: &mut Section) {
-    let (_, q) = p_q(&derivation("standard_heun"));
+    let (_, q) = p_q(&builtin_derivation("standard_heun"));
     let limit = ranges::limit_of(&ranges::report("standard_heun"));
     let growth: Vec<(f64, f64)> = [10.0, 20.0, 50.0, 100.0]
         .iter()
