@@ -8,7 +8,7 @@ use plotters::prelude::*;
 use crate::error::Error;
 
 /// One method's measured and modelled RMS drift, `(N, drift in ε)`.
-pub struct Line {
+pub(crate) struct Line {
     /// The legend label.
     pub label: String,
     /// Measured RMS drift at each checkpoint.
@@ -18,7 +18,7 @@ pub struct Line {
 }
 
 /// Draws `lines` to `path`.
-pub fn draw(path: &Path, lines: &[Line]) -> Result<(), Error> {
+pub(crate) fn draw(path: &Path, lines: &[Line]) -> Result<(), Error> {
     let err =
         |e: &dyn std::fmt::Display| Error::figure(format!("{}: cannot draw: {e}", path.display()));
     let pts =

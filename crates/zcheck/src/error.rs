@@ -153,7 +153,7 @@ impl Error {
     }
 
     /// The I/O error underneath, if any (a closed pipe, a full disk).
-    pub fn io_error(&self) -> Option<&std::io::Error> {
+    pub(crate) fn io_error(&self) -> Option<&std::io::Error> {
         let mut next: Option<&(dyn std::error::Error + 'static)> = match &self.inner.source {
             Some(s) => Some(s.as_ref()),
             None => None,

@@ -12,11 +12,11 @@
 //! crate depends on both and neither depends on it.
 
 pub mod cli;
-pub mod drift_figure;
+mod drift_figure;
 pub mod emit;
 mod error;
 pub mod load;
-pub mod map;
+mod map;
 pub mod overview;
 pub mod paper;
 pub mod plot;

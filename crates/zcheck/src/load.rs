@@ -50,7 +50,7 @@ enum Oscillator {
 impl LoadedMethod {
     /// The method `arg` names, shown as `arg`: a built-in, a `.zm` file, or
     /// a Butcher tableau's program on the undamped oscillator.
-    pub fn load(arg: &str) -> Result<LoadedMethod, Error> {
+    pub(crate) fn load(arg: &str) -> Result<LoadedMethod, Error> {
         let method = resolve(arg, Oscillator::Undamped)?;
         Ok(LoadedMethod::new(method, arg.to_owned(), None, None))
     }
@@ -59,7 +59,7 @@ impl LoadedMethod {
     /// scene advisor: a built-in's damped twin, shown by its base name and
     /// with its system kernel; a tableau's program on the damped
     /// oscillator; anything else as [`LoadedMethod::load`] reads it.
-    pub fn load_damped(arg: &str) -> Result<LoadedMethod, Error> {
+    pub(crate) fn load_damped(arg: &str) -> Result<LoadedMethod, Error> {
         match damped_twin(arg) {
             Some(name) => LoadedMethod::builtin(name),
             None => {
@@ -106,7 +106,7 @@ impl LoadedMethod {
 
     /// The name shown for it: the argument as typed, or a built-in's base
     /// name.
-    pub fn display(&self) -> &str {
+    pub(crate) fn display(&self) -> &str {
         &self.display
     }
 
@@ -115,18 +115,18 @@ impl LoadedMethod {
     /// Euler's damped kernel), the baseline its compiled step is timed
     /// against. A user's method has none; a name without a kernel times
     /// nothing.
-    pub fn hand_kernel(&self) -> Option<&'static str> {
+    pub(crate) fn hand_kernel(&self) -> Option<&'static str> {
         self.hand_kernel
     }
 
     /// The kernel that steps a whole scene (all bodies at once), for the
     /// damped direct methods loaded as built-ins.
-    pub fn system_kernel(&self) -> Option<Kernel> {
+    pub(crate) fn system_kernel(&self) -> Option<Kernel> {
         self.system_kernel
     }
 
     /// The derivation, made on the first call and kept.
-    pub fn derivation(&self) -> Result<&Derivation, Error> {
+    pub(crate) fn derivation(&self) -> Result<&Derivation, Error> {
         self.derivation
             .get_or_init(|| poly::derive(&self.method))
             .as_ref()

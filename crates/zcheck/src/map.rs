@@ -25,7 +25,7 @@ use crate::load::LoadedMethod;
 
 /// One grid point.
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct GridPoint {
+pub(crate) struct GridPoint {
     /// Φ (the f64 whose exact value was classified).
     pub phi: f64,
     /// D.
@@ -43,7 +43,7 @@ fn class_name<S: serde::Serializer>(c: &RootClass, s: S) -> Result<S::Ok, S::Err
 
 /// One critical curve, traced.
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct TracedCurve {
+pub(crate) struct TracedCurve {
     /// Which condition.
     pub kind: String,
     /// Its polynomial in Φ and D (the monomial factor split off).
@@ -56,7 +56,7 @@ pub struct TracedCurve {
 
 /// Φ_max at one D.
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct LimitAt {
+pub(crate) struct LimitAt {
     /// D.
     pub d: f64,
     /// Φ_max to 12 decimals, "every" or "none".
@@ -67,7 +67,7 @@ pub struct LimitAt {
 
 /// The map.
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct StabilityMap {
+pub(crate) struct StabilityMap {
     /// The method.
     pub method: String,
     /// Φ window.
@@ -90,7 +90,7 @@ pub struct StabilityMap {
 
 /// Options of [`map`].
 #[derive(Clone, Debug)]
-pub struct MapWindow {
+pub(crate) struct MapWindow {
     /// Φ range, exact.
     pub phi: (Q, Q),
     /// D range, exact.
@@ -114,7 +114,7 @@ fn centre(lo: &Q, hi: &Q, k: usize, n: usize) -> Q {
 
 /// Computes the map of a method (which must have the parameter D), from
 /// its one derivation.
-pub fn map(loaded: &LoadedMethod, w: &MapWindow) -> Result<StabilityMap, Error> {
+pub(crate) fn map(loaded: &LoadedMethod, w: &MapWindow) -> Result<StabilityMap, Error> {
     let method = loaded.method();
     let d_sym = Sym::new("D");
     if !method.params().contains(&d_sym) {
@@ -253,7 +253,7 @@ fn curve_colour(kind: &str) -> RGBColor {
 }
 
 /// Draws the map as SVG.
-pub fn draw_svg(m: &StabilityMap, path: &Path) -> Result<(), Error> {
+pub(crate) fn draw_svg(m: &StabilityMap, path: &Path) -> Result<(), Error> {
     let err =
         |e: &dyn std::fmt::Display| Error::figure(format!("{}: cannot draw: {e}", path.display()));
     let root = SVGBackend::new(path, (900, 680)).into_drawing_area();

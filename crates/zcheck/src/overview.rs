@@ -76,7 +76,7 @@ pub fn summarize(method: &poly::Method, order: usize) -> Result<MethodSummary, E
 }
 
 /// The overview row of a derived method whose χ is in z and Φ only.
-pub fn summary_of(d: &Derivation, order: usize) -> Result<MethodSummary, Error> {
+pub(crate) fn summary_of(d: &Derivation, order: usize) -> Result<MethodSummary, Error> {
     let method = &d.method;
     let chi = &d.charpoly;
     // From the derivation: a repeated root on the circle is decided from P

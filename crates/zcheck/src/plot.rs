@@ -54,7 +54,12 @@ pub fn samples(
 
 /// Draws y(t) of `method` at `params` over `t_max` (in units of 1/ω₀) into
 /// an SVG at `path`.
-pub fn yt_figure(method: &Method, params: &Params, t_max: f64, path: &Path) -> Result<(), Error> {
+pub(crate) fn yt_figure(
+    method: &Method,
+    params: &Params,
+    t_max: f64,
+    path: &Path,
+) -> Result<(), Error> {
     let root = SVGBackend::new(path, (720, 360)).into_drawing_area();
     root.fill(&WHITE).map_err(|e| draw_err(path)(&e))?;
     draw_yt(&root, method, params, t_max).map_err(|e| draw_err(path)(e.as_ref()))?;
@@ -63,7 +68,7 @@ pub fn yt_figure(method: &Method, params: &Params, t_max: f64, path: &Path) -> R
 }
 
 /// Draws y(t) of every method in `methods` as a grid of panels.
-pub fn yt_grid(
+pub(crate) fn yt_grid(
     methods: &[LoadedMethod],
     params: &Params,
     t_max: f64,
@@ -142,7 +147,7 @@ where
 
 /// Draws the z-plane: the unit circle and the roots of each method's χ as
 /// Φ runs from 0 to `phi_max` (`points` values), one colour per method.
-pub fn zplane_figure(
+pub(crate) fn zplane_figure(
     methods: &[LoadedMethod],
     params: &Params,
     phi_max: f64,

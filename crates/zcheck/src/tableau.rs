@@ -34,7 +34,7 @@ use toml::Spanned;
 
 /// The most stages read: beyond any published method, and a bound on the
 /// size of the generated program.
-pub const MAX_STAGES: usize = 64;
+pub(crate) const MAX_STAGES: usize = 64;
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -245,11 +245,6 @@ impl Tableau {
     /// Whether `A` is strictly lower triangular (an explicit method).
     pub fn is_explicit(&self) -> bool {
         self.a.iter().enumerate().all(|(i, row)| row[i..].iter().all(|e| e.zero))
-    }
-
-    /// The method's name.
-    pub fn name(&self) -> &str {
-        &self.name
     }
 
     /// The `.zm` program of the method on the oscillator, or on the damped

@@ -11,13 +11,14 @@ use crate::load::LoadedMethod;
 use crate::scene::advisor::{self, Options};
 use crate::scene::file::SceneFile;
 use crate::scene::modal::{self, Modal, Shapes};
-use crate::tradeoff::{self, family, kernels, Advice, Scene};
+use crate::tradeoff::spring_advisor::{advise_spring, SpringAdvice, SpringScene};
+use crate::tradeoff::{family, kernels};
 
 use super::values::Exact;
 
 /// Arguments of `zcheck advise`.
 #[derive(clap::Args)]
-pub struct Args {
+pub(crate) struct Args {
     /// The spring's natural frequency, Hz.
     #[arg(long, required_unless_present = "scene")]
     pub freq: Option<f64>,
@@ -38,13 +39,13 @@ pub struct Args {
     #[arg(long)]
     pub no_simulate: bool,
     /// How long the scene must stay within tolerance, seconds.
-    #[arg(long, default_value_t = Scene::DEFAULT_DURATION_S)]
+    #[arg(long, default_value_t = SpringScene::DEFAULT_DURATION_S)]
     pub duration: f64,
     /// Largest accumulated phase error over the duration, radians.
-    #[arg(long, default_value_t = Scene::DEFAULT_PHASE_TOL)]
+    #[arg(long, default_value_t = SpringScene::DEFAULT_PHASE_TOL)]
     pub phase_tol: f64,
     /// Largest relative amplitude error over the duration (0.01 = 1 %).
-    #[arg(long, default_value_t = Scene::DEFAULT_AMP_TOL)]
+    #[arg(long, default_value_t = SpringScene::DEFAULT_AMP_TOL)]
     pub amp_tol: f64,
     /// Physical damping ratio D (0 <= D < 1), an exact decimal (`0.1` is
     /// 1/10); without it the spring is undamped.
@@ -56,12 +57,12 @@ pub struct Args {
 
 /// Update orders `--sweep` can analyse.
 #[derive(Clone, Copy, clap::ValueEnum)]
-pub enum SweepArg {
+pub(crate) enum SweepArg {
     /// Bodies updated in sequence, each seeing those already updated.
     GaussSeidel,
 }
 
-pub fn run(args: Args) -> Result<ExitCode, Error> {
+pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     if let Some(path) = &args.scene {
         return run_scene(path, &args);
     }
@@ -80,7 +81,7 @@ pub fn run(args: Args) -> Result<ExitCode, Error> {
             args.methods[0]
         )));
     }
-    let scene = Scene {
+    let scene = SpringScene {
         freq_hz,
         tick_hz,
         duration_s: args.duration,
@@ -97,7 +98,7 @@ pub fn run(args: Args) -> Result<ExitCode, Error> {
         Some(d) => family::damped_candidates(&damped, &d.value)?,
         None => family::undamped_family()?
             .into_iter()
-            .filter(|c| family::direct_names().contains(&c.name.as_str()))
+            .filter(|c| poly::PAPER_METHODS.contains(&c.name.as_str()))
             .collect(),
     };
     let d = scene.damping.unwrap_or(0.0);
@@ -105,7 +106,7 @@ pub fn run(args: Args) -> Result<ExitCode, Error> {
     let ns: Vec<f64> =
         cands.iter().map(|c| super::tradeoff::measure(c, budget)).collect::<Result<_, Error>>()?;
     let mut k = 0;
-    let mut advice = tradeoff::advise(&scene, &cands, |_| {
+    let mut advice = advise_spring(&scene, &cands, |_| {
         k += 1;
         ns[k - 1]
     })?;
@@ -157,7 +158,7 @@ pub fn run(args: Args) -> Result<ExitCode, Error> {
 #[derive(serde::Serialize)]
 struct OneSpring<'a> {
     #[serde(flatten)]
-    advice: &'a Advice,
+    advice: &'a SpringAdvice,
     modes: &'a [advisor::ModeReport],
     candidates: &'a [advisor::CandidateAdvice],
     recommended: &'a Option<advisor::Recommended>,
@@ -201,7 +202,7 @@ fn table(header: &[String; 7], rows: &[[String; 7]]) -> String {
 }
 
 /// The advice as a table and a sentence.
-pub fn text(a: &Advice) -> String {
+pub(crate) fn text(a: &SpringAdvice) -> String {
     let s = &a.scene;
     let f = |x: f64| super::values::show_f64(x);
     let mut out = format!(
@@ -274,9 +275,9 @@ pub fn text(a: &Advice) -> String {
 /// `zcheck advise --scene FILE`.
 fn run_scene(path: &std::path::Path, args: &Args) -> Result<ExitCode, Error> {
     let scene = SceneFile::load(path)?;
-    if args.duration != Scene::DEFAULT_DURATION_S
-        || args.phase_tol != Scene::DEFAULT_PHASE_TOL
-        || args.amp_tol != Scene::DEFAULT_AMP_TOL
+    if args.duration != SpringScene::DEFAULT_DURATION_S
+        || args.phase_tol != SpringScene::DEFAULT_PHASE_TOL
+        || args.amp_tol != SpringScene::DEFAULT_AMP_TOL
     {
         return Err(Error::usage("--duration, --phase-tol and --amp-tol belong in the scene file with --scene (duration_s, [accuracy])"));
     }
@@ -297,7 +298,7 @@ fn run_scene(path: &std::path::Path, args: &Args) -> Result<ExitCode, Error> {
 }
 
 /// The scene advice as text: the modes that matter, a table, a sentence.
-pub fn scene_text(name: &str, a: &advisor::SceneAdvice) -> String {
+pub(crate) fn scene_text(name: &str, a: &advisor::SceneAdvice) -> String {
     let mut out = format!(
         "scene {name}: {} degrees of freedom, {} modes ({} rigid left out), damping {}\n",
         a.dof,

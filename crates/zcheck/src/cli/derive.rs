@@ -11,14 +11,14 @@ use crate::load::LoadedMethod;
 
 /// Arguments of `zcheck derive`.
 #[derive(clap::Args)]
-pub struct Args {
+pub(crate) struct Args {
     /// A built-in method name or a path to a `.zm` file.
     pub method: String,
     #[arg(long, value_parser = Format::parser(&[Format::Text, Format::Json, Format::Latex]), default_value = "text")]
     pub format: Format,
 }
 
-pub fn run(args: Args) -> Result<ExitCode, Error> {
+pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     let method = LoadedMethod::load(&args.method)?;
     let d = method.derivation()?;
     let out = match args.format {
@@ -32,7 +32,7 @@ pub fn run(args: Args) -> Result<ExitCode, Error> {
 
 /// The JSON document of a derivation (`routes_agree` is true: [`poly::derive`]
 /// refuses to return a derivation whose routes disagree).
-pub fn to_json(d: &Derivation) -> serde_json::Value {
+pub(crate) fn to_json(d: &Derivation) -> serde_json::Value {
     let m = &d.method;
     let rows = |mat: &poly::PolyMatrix, f: &dyn Fn(&Poly) -> String| -> Vec<Vec<String>> {
         (0..mat.rows()).map(|i| mat.row(i).iter().map(f).collect()).collect()
@@ -68,7 +68,7 @@ pub fn to_json(d: &Derivation) -> serde_json::Value {
 }
 
 /// The human-readable derivation.
-pub fn text(d: &Derivation) -> String {
+pub(crate) fn text(d: &Derivation) -> String {
     use std::fmt::Write;
     let m = &d.method;
     let mut s = String::new();
@@ -119,7 +119,7 @@ pub fn text(d: &Derivation) -> String {
 /// Every read of a state variable that an earlier line of the same step has
 /// already updated: a transcription meant to use the old values sees at
 /// once that it does not.
-pub fn gauss_seidel_text(m: &poly::Method) -> String {
+pub(crate) fn gauss_seidel_text(m: &poly::Method) -> String {
     let reads = m.gauss_seidel_reads();
     if reads.is_empty() {
         return "\nGauss-Seidel reads: none (every line reads the values the step started from)\n"
@@ -138,7 +138,7 @@ pub fn gauss_seidel_text(m: &poly::Method) -> String {
 }
 
 /// LaTeX source of the derivation.
-pub fn latex(d: &Derivation) -> String {
+pub(crate) fn latex(d: &Derivation) -> String {
     use std::fmt::Write;
     let mat = |m: &poly::PolyMatrix, f: &dyn Fn(&Poly) -> String| -> String {
         let rows: Vec<String> =

@@ -21,14 +21,14 @@ use crate::load::LoadedMethod;
 
 /// Floating-point precision of the run.
 #[derive(Clone, Copy, clap::ValueEnum)]
-pub enum Precision {
+pub(crate) enum Precision {
     F64,
     F32,
 }
 
 /// Arguments of `zcheck drift`.
 #[derive(clap::Args)]
-pub struct Args {
+pub(crate) struct Args {
     /// Built-in method names or paths to `.zm` files (each needs |z| = 1
     /// at Phi); several are studied in turn and drawn together.
     #[arg(required = true)]
@@ -58,7 +58,7 @@ pub struct Args {
 }
 
 /// One method's study, ready to print.
-pub struct Report {
+pub(crate) struct Report {
     pub method: String,
     pub phi: Q,
     pub form: String,
@@ -72,11 +72,11 @@ pub struct Report {
 }
 
 /// Checkpoints from this many steps on are held against the model.
-pub const MODEL_FROM: u64 = 100;
+pub(crate) const MODEL_FROM: u64 = 100;
 
 impl Report {
     /// Which term of the model dominates at the run's length.
-    pub fn model(&self) -> &'static str {
+    pub(crate) fn model(&self) -> &'static str {
         if self.run.linear() {
             "linear, N*b*eps (biased rounding dominates)"
         } else {
@@ -85,17 +85,17 @@ impl Report {
     }
 
     /// The largest factor between measured and modelled RMS (N >= 100).
-    pub fn ratio(&self) -> Option<f64> {
+    pub(crate) fn ratio(&self) -> Option<f64> {
         self.run.worst_ratio(MODEL_FROM)
     }
 
     /// Whether every checkpoint (N >= 100) lies within a factor 3 of the model.
-    pub fn within_model(&self) -> bool {
+    pub(crate) fn within_model(&self) -> bool {
         self.ratio().is_some_and(|r| r <= 3.0)
     }
 }
 
-pub fn run(args: Args) -> Result<ExitCode, Error> {
+pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     if args.starts == 0 {
         return Err(Error::usage("--starts 0: expected at least one start"));
     }
@@ -273,7 +273,7 @@ fn sci(x: f64) -> String {
 }
 
 /// The report as text.
-pub fn text(r: &Report) -> String {
+pub(crate) fn text(r: &Report) -> String {
     let mut out = format!(
         "{} at Phi = {} in {} ({} starts, eps = {:e})\n",
         r.method, r.phi, r.precision, r.starts, r.epsilon
@@ -336,7 +336,7 @@ pub fn text(r: &Report) -> String {
 }
 
 /// The report as JSON.
-pub fn to_json(r: &Report) -> Value {
+pub(crate) fn to_json(r: &Report) -> Value {
     json!({
         "method": r.method,
         "phi": r.phi.to_string(),

@@ -10,14 +10,14 @@ use poly::{Sym, Q};
 
 /// The language to emit.
 #[derive(Clone, Copy, clap::ValueEnum)]
-pub enum Language {
+pub(crate) enum Language {
     Rust,
     C,
 }
 
 /// Arguments of `zcheck emit`.
 #[derive(clap::Args)]
-pub struct Args {
+pub(crate) struct Args {
     /// A built-in method name or a path to a `.zm` file.
     pub method: String,
     #[arg(long, value_enum)]
@@ -31,7 +31,7 @@ pub struct Args {
     pub params: Vec<String>,
 }
 
-pub fn run(args: Args) -> Result<ExitCode, Error> {
+pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     let loaded = LoadedMethod::load(&args.method)?;
     let method = loaded.method();
     let lang = match args.lang {

@@ -12,7 +12,7 @@ use crate::load::LoadedMethod;
 
 /// Arguments of `zcheck equiv`.
 #[derive(clap::Args)]
-pub struct Args {
+pub(crate) struct Args {
     /// The first method: a built-in name or a `.zm` path.
     pub a: String,
     /// The second method: a built-in name or a `.zm` path.
@@ -22,7 +22,7 @@ pub struct Args {
 }
 
 /// The relation in words, with the permutation and scaling when there are.
-pub fn describe(r: &Relation, a: &poly::Method, b: &poly::Method) -> String {
+pub(crate) fn describe(r: &Relation, a: &poly::Method, b: &poly::Method) -> String {
     let slot = |m: &poly::Method, k: usize| {
         m.slots()
             .get(k)
@@ -64,7 +64,7 @@ pub fn describe(r: &Relation, a: &poly::Method, b: &poly::Method) -> String {
     }
 }
 
-pub fn run(args: Args) -> Result<ExitCode, Error> {
+pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     let a = LoadedMethod::load(&args.a)?;
     let b = LoadedMethod::load(&args.b)?;
     let (da, db) = (a.derivation()?, b.derivation()?);

@@ -8,7 +8,7 @@ use crate::tableau::Tableau;
 
 /// Arguments of `zcheck from-tableau`.
 #[derive(clap::Args)]
-pub struct Args {
+pub(crate) struct Args {
     /// A TOML file with `A`, `b` (and optionally `c`, `name`); entries are
     /// integers or strings of exact numbers and constant expressions, such
     /// as "1/4 - sqrt(3)/6".
@@ -18,7 +18,7 @@ pub struct Args {
     pub damped: bool,
 }
 
-pub fn run(args: Args) -> Result<ExitCode, Error> {
+pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     let tableau = Tableau::load(std::path::Path::new(&args.file))?;
     let src = tableau.to_zm(args.damped);
     // The program parses (and derives) before it is printed.

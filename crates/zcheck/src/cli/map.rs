@@ -13,7 +13,7 @@ use crate::load::LoadedMethod;
 
 /// Arguments of `zcheck map`.
 #[derive(clap::Args)]
-pub struct Args {
+pub(crate) struct Args {
     /// A built-in method with `param D` (e.g. false_euler_damped) or a `.zm` file.
     pub method: String,
     /// The Phi window, LO..HI (exact: 0..5/2 or 0..2.5).
@@ -36,7 +36,7 @@ pub struct Args {
 }
 
 /// `LO..HI` as exact rationals with LO < HI.
-pub fn parse_range(flag: &str, s: &str) -> Result<(Q, Q), Error> {
+pub(crate) fn parse_range(flag: &str, s: &str) -> Result<(Q, Q), Error> {
     let Some((lo, hi)) = s.split_once("..") else {
         return Err(Error::usage(format!("{flag} {s}: expected LO..HI, e.g. 0..2.5")));
     };
@@ -54,7 +54,7 @@ pub fn parse_range(flag: &str, s: &str) -> Result<(Q, Q), Error> {
     Ok((lo, hi))
 }
 
-pub fn run(args: Args) -> Result<ExitCode, Error> {
+pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     let method = LoadedMethod::load(&args.method)?;
     let phi = parse_range("--phi", &args.phi)?;
     if phi.0 < Q::from_integer(0.into()) {

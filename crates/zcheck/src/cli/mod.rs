@@ -3,33 +3,55 @@
 
 use std::process::ExitCode;
 
-use clap::{Parser, Subcommand};
+use clap::{CommandFactory, FromArgMatches, Parser, Subcommand};
 
 use crate::error::Error;
 
-pub mod advise;
-pub mod derive;
-pub mod drift;
-pub mod emit;
-pub mod equiv;
-pub mod from_tableau;
-pub mod map;
-pub mod methods;
-pub mod output;
-pub mod overview;
-pub mod paper;
-pub mod plot;
-pub mod scene;
-pub mod stability;
-pub mod tradeoff;
-pub mod values;
-pub mod verify;
+pub(crate) mod advise;
+pub(crate) mod derive;
+pub(crate) mod drift;
+pub(crate) mod emit;
+pub(crate) mod equiv;
+pub(crate) mod from_tableau;
+pub(crate) mod map;
+pub(crate) mod methods;
+pub(crate) mod output;
+pub(crate) mod overview;
+pub(crate) mod paper;
+pub(crate) mod plot;
+pub(crate) mod scene;
+pub(crate) mod stability;
+pub(crate) mod tradeoff;
+pub(crate) mod values;
+pub(crate) mod verify;
+
+/// Runs the command line: parses the arguments, runs the command, and exits
+/// 0 on success (a verification that disagrees exits 1). Help and version
+/// go to stdout; a usage error or a failed command is reported on stderr
+/// with exit code 2. A reader that closes stdout early is no error.
+pub fn main() -> ExitCode {
+    // `--phi -1`, `--eps -0.5`: a negative number is a value, never a flag.
+    let command = Cli::command().mut_subcommands(|s| s.allow_negative_numbers(true));
+    let cli = match command.try_get_matches().and_then(|m| Cli::from_arg_matches(&m)) {
+        Ok(cli) => cli,
+        Err(e) => return output::clap_exit(&e),
+    };
+    match cli.run() {
+        Ok(code) => code,
+        // The reader closed stdout early: nothing is wrong.
+        Err(e) if output::is_broken_pipe(&e) => ExitCode::SUCCESS,
+        Err(e) => {
+            output::print_error(&format!("error: {}", output::with_sources(&e)));
+            ExitCode::from(2)
+        }
+    }
+}
 
 /// Characteristic-polynomial verifier for simple time integrators
 /// (Hoffmann, "Simple Integration Algorithms").
 #[derive(Parser)]
 #[command(name = "zcheck", version, about, long_about = None)]
-pub struct Cli {
+pub(crate) struct Cli {
     #[command(subcommand)]
     command: Command,
 }
@@ -71,7 +93,7 @@ enum Command {
 impl Cli {
     /// Runs the subcommand: its exit code (a verification that disagrees
     /// is a failure, not an error), or why it could not run.
-    pub fn run(self) -> Result<ExitCode, Error> {
+    pub(crate) fn run(self) -> Result<ExitCode, Error> {
         match self.command {
             Command::Methods(a) => methods::run(a),
             Command::Derive(a) => derive::run(a),

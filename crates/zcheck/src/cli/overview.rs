@@ -9,7 +9,7 @@ use crate::load::LoadedMethod;
 
 /// Arguments of `zcheck overview`.
 #[derive(clap::Args)]
-pub struct Args {
+pub(crate) struct Args {
     /// Built-in names or `.zm` paths (default: the paper's seven methods).
     pub methods: Vec<String>,
     /// The highest power of Phi shown in the series.
@@ -24,7 +24,7 @@ pub struct Args {
     pub implicit: bool,
 }
 
-pub fn run(args: Args) -> Result<ExitCode, Error> {
+pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     if args.order > 64 {
         return Err(Error::usage(format!(
             "--order {} is too large: expected at most 64",

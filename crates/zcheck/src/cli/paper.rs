@@ -13,12 +13,12 @@ const OVERVIEW_ORDER: usize = 5;
 
 /// Arguments of `zcheck paper`.
 #[derive(clap::Args)]
-pub struct Args {
+pub(crate) struct Args {
     #[arg(long, value_parser = Format::parser(MARKDOWN_JSON), default_value = "markdown")]
     pub format: Format,
 }
 
-pub fn run(args: Args) -> Result<ExitCode, Error> {
+pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     let claims = all_claims();
     let overview = crate::overview::paper_overview(OVERVIEW_ORDER)?;
     let out = match args.format {

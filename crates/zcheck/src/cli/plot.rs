@@ -12,7 +12,7 @@ use check::numeric::Params;
 
 /// Arguments of `zcheck plot`.
 #[derive(clap::Args)]
-pub struct Args {
+pub(crate) struct Args {
     /// What to draw: `yt` (one file per method plus `yt_all.svg`), `zplane`,
     /// or `all`.
     #[arg(value_enum)]
@@ -41,7 +41,7 @@ enum What {
     All,
 }
 
-pub fn run(args: Args) -> Result<ExitCode, Error> {
+pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     if !(args.phi > 0.0 && args.phi.is_finite()) {
         return Err(Error::usage(format!("--phi {}: expected a positive number", args.phi)));
     }

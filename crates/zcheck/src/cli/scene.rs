@@ -21,7 +21,7 @@ use super::values::{Exact, DEFAULT_BUDGET};
 
 /// Force law of the three-body scenes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum Law {
+pub(crate) enum Law {
     /// |F| = 1/r, the paper's code.
     InverseDistance,
     /// |F| = 1/r^2, Newton.
@@ -30,7 +30,7 @@ pub enum Law {
 
 /// Energy the control term measures.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum Energy {
+pub(crate) enum Energy {
     /// Appendix D as printed (kinetic - sum 1/r).
     Paper,
     /// The energy the force law conserves.
@@ -39,7 +39,7 @@ pub enum Energy {
 
 /// Initial velocities of the three-body scenes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum Velocities {
+pub(crate) enum Velocities {
     /// Appendix C: tangential.
     Tangential,
     /// Appendix D as printed: radial.
@@ -48,7 +48,7 @@ pub enum Velocities {
 
 /// Arguments of `zcheck scene`.
 #[derive(clap::Args)]
-pub struct Args {
+pub(crate) struct Args {
     /// The scene: three_body_false_euler (C), three_body_euler,
     /// three_body_euler_energy (D) or aircraft (E).
     pub name: String,
@@ -103,7 +103,7 @@ fn progress_bar(n: u64) -> ProgressBar {
     bar
 }
 
-pub fn run(args: Args) -> Result<ExitCode, Error> {
+pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     let scene = Scene::by_name(&args.name)?;
     let n = args.steps.unwrap_or_else(|| scene.default_steps());
     if n == 0 {

@@ -22,7 +22,7 @@ use crate::load::LoadedMethod;
 
 /// Arguments of `zcheck stability`.
 #[derive(clap::Args)]
-pub struct Args {
+pub(crate) struct Args {
     /// A built-in method name or a path to a `.zm` file.
     pub method: String,
     /// A parameter value, `NAME=VALUE`, with VALUE an integer, a fraction
@@ -33,7 +33,7 @@ pub struct Args {
     pub format: Format,
 }
 
-pub fn run(args: Args) -> Result<ExitCode, Error> {
+pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     let loaded = LoadedMethod::load(&args.method)?;
     // The one derivation: χ, the report and the implicit facts all read it.
     let derivation = loaded.derivation()?;
@@ -141,7 +141,12 @@ fn number_json(a: &Algebraic) -> Value {
 }
 
 /// The JSON document of a stability report.
-pub fn to_json(name: &str, params: &[(String, Q)], chi: &poly::Poly, r: &StabilityReport) -> Value {
+pub(crate) fn to_json(
+    name: &str,
+    params: &[(String, Q)],
+    chi: &poly::Poly,
+    r: &StabilityReport,
+) -> Value {
     let params: serde_json::Map<String, Value> =
         params.iter().map(|(n, v)| (n.clone(), json!(v.to_string()))).collect();
     json!({

@@ -8,12 +8,16 @@ use std::time::Duration;
 use super::output::{Format, TEXT_JSON};
 use crate::error::Error;
 use crate::load::LoadedMethod;
-use crate::tradeoff::{self, family, figure, kernels, Candidate, Spring, Target, TradeRow};
+use crate::tradeoff::accuracy::{Spring, Target};
+use crate::tradeoff::family::{self, Candidate};
+use crate::tradeoff::measure::measure_ns_per_step_within;
+use crate::tradeoff::rank::{trade, TradeRow};
+use crate::tradeoff::{figure, kernels};
 use check::numeric::{q_to_f64, Params, ParamsF64};
 
 /// Arguments of `zcheck tradeoff`.
 #[derive(clap::Args)]
-pub struct Args {
+pub(crate) struct Args {
     #[arg(long, value_parser = Format::parser(TEXT_JSON), default_value = "text")]
     pub format: Format,
     /// Largest accumulated phase error over the duration, radians.
@@ -46,7 +50,7 @@ pub struct Args {
     pub svg: Option<PathBuf>,
 }
 
-pub fn run(args: Args) -> Result<ExitCode, Error> {
+pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     let target = Target { phase_tol: args.phase_tol, amp_tol: args.amp_tol, periods: args.periods };
     for (name, x) in [
         ("--phase-tol", target.phase_tol),
@@ -80,7 +84,7 @@ pub fn run(args: Args) -> Result<ExitCode, Error> {
         hand.push(c.hand_kernel.and_then(|name| kernels::time_hand_kernel(name, 0.0, budget)));
     }
     let mut k = 0;
-    let mut rows = tradeoff::trade(&candidates, Spring::UNDAMPED, &target, |_| {
+    let mut rows = trade(&candidates, Spring::UNDAMPED, &target, |_| {
         k += 1;
         ns[k - 1]
     });
@@ -90,10 +94,10 @@ pub fn run(args: Args) -> Result<ExitCode, Error> {
         row.ns_per_step_hand = hand[i];
     }
     if let Some(path) = &args.svg {
-        let direct: Vec<(&tradeoff::Candidate, f64)> = candidates
+        let direct: Vec<(&Candidate, f64)> = candidates
             .iter()
             .zip(&ns)
-            .filter(|(c, _)| family::direct_names().contains(&c.name.as_str()))
+            .filter(|(c, _)| poly::PAPER_METHODS.contains(&c.name.as_str()))
             .map(|(c, &n)| (c, n))
             .collect();
         figure::draw(path, &direct, Spring::UNDAMPED, &target)?;
@@ -111,12 +115,12 @@ pub fn run(args: Args) -> Result<ExitCode, Error> {
 
 /// The compiled step of `c` timed at the timing Φ (and `c`'s other
 /// parameters).
-pub fn measure(c: &Candidate, budget: Duration) -> Result<f64, Error> {
+pub(crate) fn measure(c: &Candidate, budget: Duration) -> Result<f64, Error> {
     let mut params = Params::phi(kernels::TIMING_PHI);
     for (sym, q) in &c.params {
         params.set(sym.name(), q_to_f64(q));
     }
-    tradeoff::measure_ns_per_step_within(&c.method, &params, budget)
+    measure_ns_per_step_within(&c.method, &params, budget)
         .map_err(|e| e.context(format!("method {}", c.display)))
 }
 
@@ -163,7 +167,7 @@ fn opt(x: Option<f64>, digits: usize) -> String {
 }
 
 /// The ranked table.
-pub fn text(rows: &[TradeRow], target: &Target) -> String {
+pub(crate) fn text(rows: &[TradeRow], target: &Target) -> String {
     let mut out = format!(
         "target over {} periods: phase drift <= {} rad, amplitude drift <= {}; undamped spring\n\
          ns/step: the compiled step of each method, one state, measured now on this machine \

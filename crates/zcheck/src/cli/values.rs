@@ -16,7 +16,7 @@ use crate::error::Error;
 
 /// An exact number from the command line, with the text the user typed.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Exact {
+pub(crate) struct Exact {
     /// The exact value.
     pub value: Q,
     /// The text as typed (trimmed).
@@ -43,23 +43,23 @@ impl fmt::Display for Exact {
 
 /// The default budget of a long run, in state-steps (one state advanced by
 /// one step): about a minute of simulation on a laptop core.
-pub const DEFAULT_BUDGET: u64 = 10_000_000_000;
+pub(crate) const DEFAULT_BUDGET: u64 = 10_000_000_000;
 
 impl Exact {
     /// The count `n`, as if typed.
-    pub fn count(n: u64) -> Exact {
+    pub(crate) fn count(n: u64) -> Exact {
         Exact { value: Q::from_integer(n.into()), text: n.to_string() }
     }
 
     /// The nearest `f64`, or an error naming `what` when no finite `f64`
     /// represents the value (overflow) or a nonzero value rounds to 0
     /// (underflow).
-    pub fn to_f64(&self, what: &str) -> Result<f64, Error> {
+    pub(crate) fn to_f64(&self, what: &str) -> Result<f64, Error> {
         q_to_f64_checked(&self.value, &format!("{what} {}", self.text))
     }
 
     /// The value as a count: a non-negative integer that fits in `u64`.
-    pub fn to_count(&self, what: &str) -> Result<u64, Error> {
+    pub(crate) fn to_count(&self, what: &str) -> Result<u64, Error> {
         if !self.value.is_integer() || self.value.is_negative() {
             return Err(Error::usage(format!(
                 "{what} {}: expected a non-negative whole number",
@@ -74,7 +74,7 @@ impl Exact {
 
 /// The nearest `f64` to `q`, or an error naming `what` when `q` is beyond
 /// the finite `f64` range or is nonzero and rounds to zero.
-pub fn q_to_f64_checked(q: &Q, what: &str) -> Result<f64, Error> {
+pub(crate) fn q_to_f64_checked(q: &Q, what: &str) -> Result<f64, Error> {
     let x = q.to_f64().unwrap_or(f64::INFINITY);
     if !x.is_finite() {
         return Err(Error::usage(format!(
@@ -91,7 +91,7 @@ pub fn q_to_f64_checked(q: &Q, what: &str) -> Result<f64, Error> {
 
 /// `--param NAME=VALUE`: a parameter's exact value.
 #[derive(Clone, Debug, PartialEq)]
-pub struct ParamArg {
+pub(crate) struct ParamArg {
     /// The parameter's name.
     pub name: String,
     /// Its value.
@@ -128,7 +128,7 @@ impl FromStr for ParamArg {
 
 /// Checks that every `--param` names a parameter that one of `methods`
 /// declares, and that no parameter is given twice.
-pub fn check_declared(params: &[ParamArg], methods: &[&Method]) -> Result<(), Error> {
+pub(crate) fn check_declared(params: &[ParamArg], methods: &[&Method]) -> Result<(), Error> {
     for (k, p) in params.iter().enumerate() {
         if params[..k].iter().any(|q| q.name == p.name) {
             return Err(Error::usage(format!("--param {}: given twice", p.name)));
@@ -161,7 +161,7 @@ pub fn check_declared(params: &[ParamArg], methods: &[&Method]) -> Result<(), Er
 
 /// An `f64` for a table: plain decimal between 1e-4 and 1e16, otherwise in
 /// exponent form (never a 309-digit integer).
-pub fn show_f64(x: f64) -> String {
+pub(crate) fn show_f64(x: f64) -> String {
     if x == 0.0 || !x.is_finite() || (1e-4..1e16).contains(&x.abs()) {
         format!("{x}")
     } else {
@@ -170,7 +170,7 @@ pub fn show_f64(x: f64) -> String {
 }
 
 /// [`show_f64`] with `digits` digits after the point (in either form).
-pub fn show_f64_digits(x: f64, digits: usize) -> String {
+pub(crate) fn show_f64_digits(x: f64, digits: usize) -> String {
     if x == 0.0 || !x.is_finite() || (1e-4..1e16).contains(&x.abs()) {
         format!("{x:.digits$}")
     } else {
@@ -179,7 +179,7 @@ pub fn show_f64_digits(x: f64, digits: usize) -> String {
 }
 
 /// Parses `NAME=VALUE` with an exact VALUE into its parts.
-pub fn parse_param(s: &str) -> Result<(String, poly::Q), Error> {
+pub(crate) fn parse_param(s: &str) -> Result<(String, poly::Q), Error> {
     let p: ParamArg = s.parse().map_err(|e: String| Error::usage(format!("--param {s}: {e}")))?;
     Ok((p.name, p.value.value))
 }

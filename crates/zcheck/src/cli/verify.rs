@@ -21,7 +21,7 @@ use crate::load::LoadedMethod;
 
 /// Arguments of `zcheck verify`.
 #[derive(clap::Args)]
-pub struct Args {
+pub(crate) struct Args {
     /// Methods: built-in names or `.zm` files.
     #[arg(required = true)]
     methods: Vec<String>,
@@ -52,7 +52,7 @@ pub struct Args {
 /// A Φ to verify at: its `f64`, and its exact value when the user typed it.
 type Point = (f64, Option<Q>);
 
-pub fn run(args: Args) -> Result<ExitCode, Error> {
+pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     let steps = args.steps.to_count("--steps")?;
     let budget = args.budget.to_count("--budget")?;
     // The Φ typed are exact (the exact class is taken there); the numeric
@@ -203,7 +203,7 @@ fn finite_or_null(x: f64) -> Value {
 
 /// One point as JSON; `sim` is null when no simulation ran, and
 /// `growth_per_step` is null when the state vanished (ln 0).
-pub fn point_json(r: &PointReport) -> Value {
+pub(crate) fn point_json(r: &PointReport) -> Value {
     let sim = r.sim.as_ref().map(|s| {
         json!({
             "steps": s.steps,
@@ -231,7 +231,7 @@ pub fn point_json(r: &PointReport) -> Value {
 }
 
 /// The text table of one method (values rounded for reading).
-pub fn text_table(name: &str, points: &[PointReport], agree: bool) -> String {
+pub(crate) fn text_table(name: &str, points: &[PointReport], agree: bool) -> String {
     let mut s =
         format!("{name}: {}\n", if agree { "witnesses agree" } else { "WITNESSES DISAGREE" });
     s.push_str(&format!(

@@ -9,7 +9,7 @@
 //! - `Slip`: the text is what was meant: confirmed; it is not, but the
 //!   program computes the same: typo; it computes something else: errata.
 
-use super::claim::{Finding, Scope, Verdict};
+use super::finding::{Finding, Scope, Verdict};
 
 /// The verdict of a finding.
 pub fn verdict(finding: &Finding) -> Verdict {
@@ -47,7 +47,7 @@ pub fn verdict(finding: &Finding) -> Verdict {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::paper::claim::Case;
+    use crate::paper::finding::Case;
 
     fn case(holds: bool, scope: Scope) -> Case {
         Case { case: String::new(), holds, scope }

@@ -52,17 +52,17 @@ use crate::tradeoff::kernels;
 
 /// Agreement of predicted and simulated drifts: within this fraction of the
 /// target (phase in radians, amplitude relative), plus 1e-9 absolute.
-pub const AGREE_FRACTION: f64 = 1e-3;
+pub(crate) const AGREE_FRACTION: f64 = 1e-3;
 
 /// Largest number of substeps searched.
 const MAX_SUBSTEPS: u64 = 1 << 24;
 
 /// Largest system for the dense full-step analysis (2n × 2n eigenvalues).
-pub const MAX_FULL_DOF: usize = 400;
+pub(crate) const MAX_FULL_DOF: usize = 400;
 
 /// Predicted or simulated errors over the duration (largest over modes).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-pub struct Errors {
+pub(crate) struct Errors {
     /// Phase error, radians.
     pub phase_rad: f64,
     /// Relative amplitude error.
@@ -71,54 +71,54 @@ pub struct Errors {
 
 /// The simulation's verdict.
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct Simulated {
+pub(crate) struct Simulated {
     /// Errors measured from the simulation (modes simulated only).
-    pub phase_rad: f64,
+    pub(crate) phase_rad: f64,
     /// Relative amplitude error measured.
-    pub amplitude: f64,
+    pub(crate) amplitude: f64,
     /// Whether they agree with the prediction for the same modes.
-    pub agree: bool,
+    pub(crate) agree: bool,
     /// How it was simulated.
-    pub how: String,
+    pub(crate) how: String,
     /// Modes projected and fitted.
-    pub modes_checked: usize,
+    pub(crate) modes_checked: usize,
     /// Steps simulated.
-    pub steps: u64,
+    pub(crate) steps: u64,
 }
 
 /// One candidate's answer.
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct CandidateAdvice {
+pub(crate) struct CandidateAdvice {
     /// The method.
-    pub method: String,
+    pub(crate) method: String,
     /// Fewest substeps per tick with every mode inside the region (`None`:
     /// none found).
-    pub substeps_stable: Option<u64>,
+    pub(crate) substeps_stable: Option<u64>,
     /// Fewest substeps meeting the target (`None`: none found).
-    pub substeps_accurate: Option<u64>,
+    pub(crate) substeps_accurate: Option<u64>,
     /// Measured ns per step of one degree of freedom.
-    pub ns_per_step: f64,
+    pub(crate) ns_per_step: f64,
     /// ns per tick at `substeps_accurate`: ns per step × substeps × DOF.
-    pub ns_per_tick: Option<f64>,
+    pub(crate) ns_per_tick: Option<f64>,
     /// Predicted errors at `substeps_accurate`.
-    pub predicted: Option<Errors>,
+    pub(crate) predicted: Option<Errors>,
     /// Simulated errors at `substeps_accurate`.
-    pub simulated: Option<Simulated>,
+    pub(crate) simulated: Option<Simulated>,
     /// Exact Φ_max at the stability-limiting mode's ζ.
-    pub phi_max: Option<String>,
+    pub(crate) phi_max: Option<String>,
     /// How `substeps_stable` was decided.
-    pub stability_from: String,
+    pub(crate) stability_from: String,
     /// Per mode: own fewest stable substeps.
     #[serde(skip)]
-    pub mode_stable: Vec<Option<u64>>,
+    pub(crate) mode_stable: Vec<Option<u64>>,
     /// Per mode: own fewest accurate substeps.
     #[serde(skip)]
-    pub mode_accurate: Vec<Option<u64>>,
+    pub(crate) mode_accurate: Vec<Option<u64>>,
 }
 
 /// One mode in the report.
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct ModeReport {
+pub(crate) struct ModeReport {
     /// Undamped frequency, Hz.
     pub hz: f64,
     /// Damping ratio.
@@ -131,7 +131,7 @@ pub struct ModeReport {
 
 /// The recommendation.
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct Recommended {
+pub(crate) struct Recommended {
     /// The method.
     pub method: String,
     /// Substeps per tick.
@@ -140,7 +140,7 @@ pub struct Recommended {
 
 /// Gauss–Seidel analysis of one candidate.
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct SweepReport {
+pub(crate) struct SweepReport {
     /// The method.
     pub method: String,
     /// Fewest substeps stable with all bodies at once (modal).
@@ -164,28 +164,28 @@ pub struct SweepReport {
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct SceneAdvice {
     /// Tick rate, Hz.
-    pub tick_hz: f64,
+    pub(crate) tick_hz: f64,
     /// Duration, s.
-    pub duration_s: f64,
+    pub(crate) duration_s: f64,
     /// Phase target, rad.
-    pub phase_rad: f64,
+    pub(crate) phase_rad: f64,
     /// Amplitude target.
-    pub amplitude: f64,
+    pub(crate) amplitude: f64,
     /// Degrees of freedom.
-    pub dof: usize,
+    pub(crate) dof: usize,
     /// Rigid-body modes left out.
-    pub rigid_modes: usize,
+    pub(crate) rigid_modes: usize,
     /// The damping's structure.
-    pub damping: DampingKind,
+    pub(crate) damping: DampingKind,
     /// The modes, increasing frequency.
-    pub modes: Vec<ModeReport>,
+    pub(crate) modes: Vec<ModeReport>,
     /// Every candidate.
-    pub candidates: Vec<CandidateAdvice>,
+    pub(crate) candidates: Vec<CandidateAdvice>,
     /// The cheapest candidate meeting the target.
-    pub recommended: Option<Recommended>,
+    pub(crate) recommended: Option<Recommended>,
     /// The Gauss–Seidel analysis, when asked for.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub sweep: Option<Vec<SweepReport>>,
+    pub(crate) sweep: Option<Vec<SweepReport>>,
 }
 
 /// A polynomial in (Φ, D) with f64 coefficients.
@@ -1076,13 +1076,13 @@ fn radii(p: &DMatrix<f64>) -> Option<(f64, f64)> {
 /// Numeric tolerance on ρ of a full step: eigenvalues on the unit circle
 /// come out within a few hundred ulps of it for these small, well
 /// conditioned matrices.
-pub const FULL_RHO_TOL: f64 = 1e-12;
+pub(crate) const FULL_RHO_TOL: f64 = 1e-12;
 
 /// The largest substep count a full-step search reports: beyond it a
 /// growth of ρ − 1 below [`FULL_RHO_TOL`] cannot be told from none (the
 /// exact analysis says "never" for Standard Euler; the numeric one would
 /// find a step with ρ − 1 < 1e-12).
-pub const MAX_FULL_SUBSTEPS: u64 = 1 << 16;
+pub(crate) const MAX_FULL_SUBSTEPS: u64 = 1 << 16;
 
 /// Numeric stability of a full step: ρ ≤ 1 + [`FULL_RHO_TOL`] by both witnesses.
 fn full_ok(kernel: Kernel, sweep: Sweep, sys: &System, t: f64) -> bool {

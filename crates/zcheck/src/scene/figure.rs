@@ -31,7 +31,11 @@ fn range(values: impl Iterator<Item = f64>) -> (f64, f64) {
 
 /// Draw the trajectory and energy figures of a three-body run into `dir`;
 /// returns the files written.
-pub fn three_body(dir: &Path, name: &str, run: &ThreeBodyRun) -> Result<Vec<PathBuf>, Error> {
+pub(crate) fn three_body(
+    dir: &Path,
+    name: &str,
+    run: &ThreeBodyRun,
+) -> Result<Vec<PathBuf>, Error> {
     let trajectory = dir.join(format!("{name}_trajectory.svg"));
     let energy = dir.join(format!("{name}_energy.svg"));
     draw_trajectory(&trajectory, name, run)?;
@@ -141,7 +145,7 @@ fn draw_energy(path: &Path, name: &str, run: &ThreeBodyRun) -> Result<(), Error>
 
 /// Draw the aircraft's angles over time (False Euler against the reference,
 /// with the command) into `dir`.
-pub fn aircraft(dir: &Path, run: &AircraftRun) -> Result<Vec<PathBuf>, Error> {
+pub(crate) fn aircraft(dir: &Path, run: &AircraftRun) -> Result<Vec<PathBuf>, Error> {
     let path = dir.join("aircraft_angles.svg");
     let err = figure_error(&path);
     let root = SVGBackend::new(&path, (900, 700)).into_drawing_area();

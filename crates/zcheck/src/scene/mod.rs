@@ -13,32 +13,32 @@
 
 pub mod advisor;
 pub mod aircraft;
-pub mod figure;
+pub(crate) mod figure;
 pub mod file;
 pub mod modal;
-pub mod reference;
+pub(crate) mod reference;
 pub mod three_body;
-pub mod track;
-pub mod vector;
+pub(crate) mod track;
+pub(crate) mod vector;
 
 use crate::error::Error;
 use aircraft::AircraftConfig;
 use three_body::ThreeBodyConfig;
 
 /// The scene names, in the paper's order.
-pub const SCENES: [&str; 4] =
+pub(crate) const SCENES: [&str; 4] =
     ["three_body_false_euler", "three_body_euler", "three_body_euler_energy", "aircraft"];
 
 /// A scene with its configuration.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Scene {
+pub(crate) enum Scene {
     ThreeBody(ThreeBodyConfig),
     Aircraft(AircraftConfig),
 }
 
 impl Scene {
     /// The scene called `name`, configured as its appendix does.
-    pub fn by_name(name: &str) -> Result<Scene, Error> {
+    pub(crate) fn by_name(name: &str) -> Result<Scene, Error> {
         match name {
             "three_body_false_euler" => Ok(Scene::ThreeBody(ThreeBodyConfig::appendix_c())),
             "three_body_euler" => Ok(Scene::ThreeBody(ThreeBodyConfig::appendix_d())),
@@ -52,7 +52,7 @@ impl Scene {
     }
 
     /// The appendix the scene belongs to.
-    pub fn appendix(name: &str) -> Option<&'static str> {
+    pub(crate) fn appendix(name: &str) -> Option<&'static str> {
         match name {
             "three_body_false_euler" => Some("C"),
             "three_body_euler" | "three_body_euler_energy" => Some("D"),
@@ -63,7 +63,7 @@ impl Scene {
 
     /// The default number of steps: 10^6 for C (its "ad infinitum"), the
     /// paper's 100,000 for D, 60 s of flight for E.
-    pub fn default_steps(&self) -> u64 {
+    pub(crate) fn default_steps(&self) -> u64 {
         match self {
             Scene::ThreeBody(c) if c.integrator == three_body::Integrator::FalseEuler => 1_000_000,
             Scene::ThreeBody(_) => 100_000,

@@ -21,7 +21,7 @@ fn axpy<const N: usize>(y: &[f64; N], terms: &[(f64, &[f64; N])]) -> [f64; N] {
 }
 
 /// One step of the classic fourth-order Runge–Kutta method.
-pub fn rk4_step<const N: usize>(
+pub(crate) fn rk4_step<const N: usize>(
     f: &impl Fn(&[f64; N]) -> [f64; N],
     y: &[f64; N],
     h: f64,
@@ -36,7 +36,7 @@ pub fn rk4_step<const N: usize>(
 /// Mixed error tolerance of the adaptive integrator: a component's local
 /// error may be `absolute + relative * |y|`.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Tolerance {
+pub(crate) struct Tolerance {
     pub relative: f64,
     pub absolute: f64,
 }
@@ -44,7 +44,7 @@ pub struct Tolerance {
 impl Tolerance {
     /// The tolerance the scenes use for their references: far below every
     /// error the paper's methods make at the paper's steps.
-    pub const TIGHT: Tolerance = Tolerance { relative: 1e-12, absolute: 1e-12 };
+    pub(crate) const TIGHT: Tolerance = Tolerance { relative: 1e-12, absolute: 1e-12 };
 }
 
 /// Adaptive Dormand–Prince 5(4) (local extrapolation, PI-free classic step
@@ -53,7 +53,7 @@ impl Tolerance {
 /// `step` carries the step size between calls, so a run over a sample grid
 /// does not restart its step selection at every sample; start it at a
 /// modest guess such as `1e-3`.
-pub fn dopri5<const N: usize>(
+pub(crate) fn dopri5<const N: usize>(
     f: &impl Fn(&[f64; N]) -> [f64; N],
     y: &[f64; N],
     duration: f64,

@@ -32,16 +32,6 @@ pub enum ForceLaw {
     InverseSquare,
 }
 
-impl ForceLaw {
-    /// The name used on the command line and in reports.
-    pub fn name(self) -> &'static str {
-        match self {
-            ForceLaw::InverseDistance => "inverse_distance",
-            ForceLaw::InverseSquare => "inverse_square",
-        }
-    }
-}
-
 /// Which "total energy" the energy control and the reports use.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
@@ -183,7 +173,7 @@ impl State {
 
     /// Kinetic energy (unit masses), summed in the paper's order
     /// `(sqr(v1o)+sqr(w1o)+...+sqr(w3o))/2`.
-    pub fn kinetic_energy(&self) -> f64 {
+    pub(crate) fn kinetic_energy(&self) -> f64 {
         let mut sum = 0.0;
         for v in &self.velocity {
             sum += v[0] * v[0];
@@ -193,7 +183,7 @@ impl State {
     }
 
     /// The squared distances r12, r13, r23, as the paper's `r12` holds them.
-    pub fn squared_distances(&self) -> [f64; 3] {
+    pub(crate) fn squared_distances(&self) -> [f64; 3] {
         let p = &self.position;
         PAIRS.map(|(i, j)| {
             let (dx, dy) = (p[j][0] - p[i][0], p[j][1] - p[i][1]);
@@ -202,7 +192,7 @@ impl State {
     }
 
     /// The three pair distances r12, r13, r23 (not squared).
-    pub fn distances(&self) -> [f64; 3] {
+    pub(crate) fn distances(&self) -> [f64; 3] {
         PAIRS.map(|(i, j)| distance(&self.position[i], &self.position[j]))
     }
 
@@ -237,7 +227,7 @@ impl State {
     }
 
     /// Total momentum.
-    pub fn momentum(&self) -> [f64; 2] {
+    pub(crate) fn momentum(&self) -> [f64; 2] {
         let mut m = [0.0; 2];
         for v in &self.velocity {
             m[0] += v[0];
@@ -247,7 +237,7 @@ impl State {
     }
 
     /// Centre of mass.
-    pub fn centre_of_mass(&self) -> [f64; 2] {
+    pub(crate) fn centre_of_mass(&self) -> [f64; 2] {
         let mut c = [0.0; 2];
         for p in &self.position {
             c[0] += p[0] / 3.0;
@@ -377,7 +367,7 @@ pub fn step(config: &ThreeBodyConfig, state: &mut State, reference_energy: f64, 
 
 /// The equations of motion without any control: the physics the scene
 /// approximates, for the reference integrator.
-pub fn derivative(y: &[f64; 12], law: ForceLaw) -> [f64; 12] {
+pub(crate) fn derivative(y: &[f64; 12], law: ForceLaw) -> [f64; 12] {
     let s = State::from_array(y);
     let a = s.acceleration(law);
     let mut d = [0.0; 12];
@@ -390,7 +380,7 @@ pub fn derivative(y: &[f64; 12], law: ForceLaw) -> [f64; 12] {
 
 /// One sample of a run, kept for figures.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-pub struct Sample {
+pub(crate) struct Sample {
     pub step: u64,
     pub time: f64,
     pub position: Bodies,
@@ -426,7 +416,7 @@ pub struct ThreeBodyRun {
     /// The first 100 steps in full (the paper's Appendix C image).
     pub first_steps: Vec<Bodies>,
     /// At most ~4000 samples over the whole run, for figures.
-    pub samples: Vec<Sample>,
+    pub(crate) samples: Vec<Sample>,
     pub final_state: State,
 }
 

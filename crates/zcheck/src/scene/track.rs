@@ -16,12 +16,12 @@ pub struct Track {
 
 impl Track {
     /// Start following a quantity at `initial`.
-    pub fn new(initial: f64) -> Self {
+    pub(crate) fn new(initial: f64) -> Self {
         Track { initial, last: initial, min: initial, max: initial, max_abs_drift: 0.0 }
     }
 
     /// Record the next value (a NaN makes the drift NaN, so it shows).
-    pub fn push(&mut self, value: f64) {
+    pub(crate) fn push(&mut self, value: f64) {
         self.last = value;
         self.min = self.min.min(value);
         self.max = self.max.max(value);
@@ -30,7 +30,7 @@ impl Track {
     }
 
     /// The summary the JSON report carries.
-    pub fn summary(&self) -> Summary {
+    pub(crate) fn summary(&self) -> Summary {
         Summary {
             initial: self.initial,
             r#final: self.last,
@@ -47,7 +47,7 @@ impl Track {
 /// An invariant over a run: initial and final value and the largest drift,
 /// absolute and relative to |initial| (none when the initial value is 0).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-pub struct Summary {
+pub(crate) struct Summary {
     pub initial: f64,
     pub r#final: f64,
     pub max_abs_drift: f64,

@@ -27,7 +27,7 @@ use poly::{Poly, Sym, Q};
 use crate::error::Error;
 
 /// The smallest step the admissible-Φ search considers.
-pub const PHI_MIN: f64 = 1e-5;
+pub(crate) const PHI_MIN: f64 = 1e-5;
 
 /// A polynomial in Φ with f64 coefficients: `check`'s one evaluator.
 #[derive(Clone, Debug)]
@@ -118,7 +118,7 @@ pub struct Accuracy {
 
 impl Accuracy {
     /// Steps in `periods` periods: P·2π/Φ (not rounded: a duration is time).
-    pub fn steps(&self, periods: f64) -> f64 {
+    pub(crate) fn steps(&self, periods: f64) -> f64 {
         periods * 2.0 * PI / self.phi
     }
 
@@ -128,7 +128,7 @@ impl Accuracy {
     }
 
     /// The accumulated phase error over `periods`, in radians.
-    pub fn phase_drift(&self, periods: f64) -> f64 {
+    pub(crate) fn phase_drift(&self, periods: f64) -> f64 {
         if !self.oscillating {
             return f64::INFINITY;
         }
@@ -136,7 +136,7 @@ impl Accuracy {
     }
 
     /// The relative amplitude change over `periods`, |e^{n·δln r} − 1|.
-    pub fn amplitude_drift(&self, periods: f64) -> f64 {
+    pub(crate) fn amplitude_drift(&self, periods: f64) -> f64 {
         (self.ln_growth_per_step * self.steps(periods)).exp_m1().abs()
     }
 
@@ -185,15 +185,10 @@ impl SecondOrder {
         self.lead.as_ref().map_or(1.0, |a| a.eval(phi))
     }
 
-    /// p(Φ), the real part of the complex pair.
-    pub fn p(&self, phi: f64) -> f64 {
-        self.p.eval(phi) / self.a(phi)
-    }
-
     /// The principal root's angle and log modulus at Φ: `(psi, ln_r,
     /// oscillating)`. For real roots, the root of largest modulus, at angle
     /// 0 or π.
-    pub fn principal_root(&self, phi: f64) -> (f64, f64, bool) {
+    pub(crate) fn principal_root(&self, phi: f64) -> (f64, f64, bool) {
         let a = self.a(phi);
         let p = self.p.eval(phi) / a;
         let disc = self.disc.eval(phi) / (4.0 * a * a);

@@ -15,7 +15,7 @@ use std::f64::consts::PI;
 use poly::cost::StepCost;
 use poly::{Algebraic, Method, Sym, Q};
 
-use super::SecondOrder;
+use super::accuracy::SecondOrder;
 use crate::error::Error;
 use crate::load::LoadedMethod;
 use check::numeric::{f64_to_q, q_to_f64};
@@ -49,7 +49,7 @@ impl Limit {
     /// To relative precision: an absolute 10⁻¹⁸ is only 10⁻¹¹ relative at
     /// Φ_max ≈ 10⁻⁷ (a tiny damping ratio), and [`Limit::search_cap`] would
     /// then step down thousands of ulps one exact comparison at a time.
-    pub fn phi_max_f64(&self) -> Option<f64> {
+    pub(crate) fn phi_max_f64(&self) -> Option<f64> {
         let m = self.phi_max.as_ref()?;
         let coarse = q_to_f64(&m.approx(&poly::q(1, 1_000_000_000_000_000)));
         let width = f64_to_q(coarse.abs() * 2f64.powi(-60))
@@ -75,7 +75,7 @@ impl Limit {
     /// The smallest number of substeps k with Φ/k strictly below Φ_max
     /// (exact comparison); `None` when no Φ > 0 is stable, or when more than
     /// [`MAX_SUBSTEPS`] would be needed.
-    pub fn substeps_for(&self, phi: f64) -> Option<u64> {
+    pub(crate) fn substeps_for(&self, phi: f64) -> Option<u64> {
         if self.bounded_for_all {
             return Some(1);
         }
@@ -101,7 +101,7 @@ impl Limit {
 
 /// The most substeps per tick ever counted: beyond it a step is "never"
 /// practical, and the count would leave the exact range of `f64`.
-pub const MAX_SUBSTEPS: u64 = 1_000_000_000_000_000;
+pub(crate) const MAX_SUBSTEPS: u64 = 1_000_000_000_000_000;
 
 /// One method ready to trade: its definition, exact cost, accuracy model
 /// and stability limit, at fixed values of its parameters other than Φ.
@@ -174,11 +174,6 @@ pub fn undamped_family() -> Result<Vec<Candidate>, Error> {
     Ok(family)
 }
 
-/// The seven direct methods of sections 5–11 (no transition-matrix twins).
-pub fn direct_names() -> [&'static str; 7] {
-    poly::PAPER_METHODS
-}
-
 /// The seven direct methods applied to a spring with damping ratio `d`
 /// (an exact rational).
 pub fn damped_family(d: &Q) -> Result<Vec<Candidate>, Error> {
@@ -187,7 +182,7 @@ pub fn damped_family(d: &Q) -> Result<Vec<Candidate>, Error> {
 
 /// The damped `methods` (with `param D`) as candidates at the damping
 /// ratio `d`.
-pub fn damped_candidates(methods: &[LoadedMethod], d: &Q) -> Result<Vec<Candidate>, Error> {
+pub(crate) fn damped_candidates(methods: &[LoadedMethod], d: &Q) -> Result<Vec<Candidate>, Error> {
     let dsym = Sym::new("D");
     methods.iter().map(|m| Candidate::new(m, vec![(dsym, d.clone())])).collect()
 }

@@ -6,7 +6,7 @@
 //! cap (just below Φ_max, or π); a point is (error over the target's
 //! duration, ns per period = ns_per_step · 2π/Φ). The error is the larger of
 //! the phase drift (radians) and the relative amplitude drift
-//! ([`Accuracy::error`](super::Accuracy::error)). Points with an error
+//! ([`Accuracy::error`](super::accuracy::Accuracy::error)). Points with an error
 //! outside [10⁻¹⁰, 1] or without oscillation are left out.
 
 use std::f64::consts::PI;
@@ -14,11 +14,17 @@ use std::path::Path;
 
 use plotters::prelude::*;
 
-use super::{Candidate, Spring, Target};
+use super::accuracy::{Spring, Target};
+use super::family::Candidate;
 use crate::error::Error;
 
 /// One line of the figure: (error, ns per period) points, cheap steps last.
-pub fn line(c: &Candidate, spring: Spring, target: &Target, ns_per_step: f64) -> Vec<(f64, f64)> {
+pub(crate) fn line(
+    c: &Candidate,
+    spring: Spring,
+    target: &Target,
+    ns_per_step: f64,
+) -> Vec<(f64, f64)> {
     let cap = c.limit.search_cap().unwrap_or(PI).min(PI);
     let n = 240;
     let lo: f64 = 1e-3;
@@ -33,7 +39,7 @@ pub fn line(c: &Candidate, spring: Spring, target: &Target, ns_per_step: f64) ->
 
 /// Draws the figure for `candidates` (with their measured ns per step) to
 /// `path`.
-pub fn draw(
+pub(crate) fn draw(
     path: &Path,
     candidates: &[(&Candidate, f64)],
     spring: Spring,

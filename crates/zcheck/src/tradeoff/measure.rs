@@ -25,7 +25,7 @@ use poly::Method;
 use super::kernels::time_ns_per_step;
 
 /// The default time budget of one measurement.
-pub const DEFAULT_BUDGET: Duration = Duration::from_millis(3);
+pub(crate) const DEFAULT_BUDGET: Duration = Duration::from_millis(3);
 
 /// Steps between two renormalisations of the timed state.
 const CHUNK: u64 = 1024;
@@ -46,7 +46,7 @@ pub fn measure_ns_per_step(method: &Method, params: &Params) -> Result<f64, Erro
 }
 
 /// [`measure_ns_per_step`] with a time budget.
-pub fn measure_ns_per_step_within(
+pub(crate) fn measure_ns_per_step_within(
     method: &Method,
     params: &Params,
     budget: Duration,

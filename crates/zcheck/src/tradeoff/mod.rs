@@ -14,19 +14,22 @@
 //! - the trade: the largest admissible Φ for a target, steps per period, cost
 //!   per simulated period, a ranking and a work-precision figure
 //!   ([`rank`], [`figure`]);
-//! - a scene advisor in game units: spring frequency and tick rate in Hz
-//!   ([`advise`]).
+//! - the single-spring advisor, in game units: spring frequency and tick
+//!   rate in Hz ([`spring_advisor`]; a whole scene is
+//!   [`crate::scene::advisor`]'s).
+//!
+//! The submodules import one another directly, never through this file,
+//! which only re-exports what the tests use.
 
-pub mod accuracy;
-pub mod advise;
+pub(crate) mod accuracy;
 pub mod family;
-pub mod figure;
+pub(crate) mod figure;
 pub mod kernels;
-pub mod measure;
-pub mod rank;
+pub(crate) mod measure;
+pub(crate) mod rank;
+pub(crate) mod spring_advisor;
 
-pub use accuracy::{Accuracy, SecondOrder, Spring, Target};
-pub use advise::{advise, Advice, MethodAdvice, Scene};
-pub use family::{damped_family, undamped_family, Candidate, Limit};
-pub use measure::{measure_ns_per_step, measure_ns_per_step_within};
+pub use accuracy::{SecondOrder, Spring, Target};
+pub use measure::measure_ns_per_step;
 pub use rank::{trade, TradeRow};
+pub use spring_advisor::{advise_spring, SpringScene};

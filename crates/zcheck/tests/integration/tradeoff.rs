@@ -12,8 +12,9 @@ use check::numeric::{f64_to_q, q_to_f64, Params, Step};
 use check::witness;
 use poly::{Sym, Q};
 use zcheck::load::LoadedMethod;
+use zcheck::tradeoff::family::Candidate;
 use zcheck::tradeoff::{
-    self, advise, family, kernels, Candidate, Scene, SecondOrder, Spring, Target, TradeRow,
+    self, advise_spring, family, kernels, SecondOrder, Spring, SpringScene, Target, TradeRow,
 };
 
 const EPS: f64 = f64::EPSILON;
@@ -27,7 +28,7 @@ fn candidate(name: &str) -> Candidate {
 }
 
 fn direct_undamped() -> Vec<Candidate> {
-    undamped().into_iter().filter(|c| family::direct_names().contains(&c.name.as_str())).collect()
+    undamped().into_iter().filter(|c| poly::PAPER_METHODS.contains(&c.name.as_str())).collect()
 }
 
 #[track_caller]
@@ -326,18 +327,18 @@ fn trade_summary_snapshot() {
         .bind(|| insta::assert_snapshot!("tradeoff_default_target", lines.join("\n")));
 }
 
-fn scene(freq: f64, tick: f64, damping: Option<f64>) -> Scene {
-    Scene {
+fn scene(freq: f64, tick: f64, damping: Option<f64>) -> SpringScene {
+    SpringScene {
         freq_hz: freq,
         tick_hz: tick,
-        duration_s: Scene::DEFAULT_DURATION_S,
-        phase_tol: Scene::DEFAULT_PHASE_TOL,
-        amp_tol: Scene::DEFAULT_AMP_TOL,
+        duration_s: SpringScene::DEFAULT_DURATION_S,
+        phase_tol: SpringScene::DEFAULT_PHASE_TOL,
+        amp_tol: SpringScene::DEFAULT_AMP_TOL,
         damping,
     }
 }
 
-fn candidates_for(s: &Scene) -> Vec<Candidate> {
+fn candidates_for(s: &SpringScene) -> Vec<Candidate> {
     match s.damping {
         Some(d) => family::damped_family(&f64_to_q(d).unwrap()).unwrap(),
         None => direct_undamped(),
@@ -361,7 +362,7 @@ fn advisor_agrees_with_stability_and_classification() {
     ];
     for s in scenes {
         let cands = candidates_for(&s);
-        let advice = advise(&s, &cands, |_| 1.0).unwrap();
+        let advice = advise_spring(&s, &cands, |_| 1.0).unwrap();
         for (c, m) in cands.iter().zip(&advice.methods) {
             let report = poly::stability::analyze(&c.charpoly).unwrap();
             let below_max = report.phi_max().is_some_and(|max| {
@@ -412,7 +413,8 @@ fn numeric_class(c: &Candidate, phi: f64) -> poly::RootClass {
 fn advisor_120_hz_on_60_hz_tick() {
     let s = scene(120.0, 60.0, None);
     let advice =
-        advise(&s, &direct_undamped(), |c| 1.0 + c.cost.program.arithmetic() as f64).unwrap();
+        advise_spring(&s, &direct_undamped(), |c| 1.0 + c.cost.program.arithmetic() as f64)
+            .unwrap();
     assert!((advice.phi - 4.0 * PI).abs() <= 4.0 * EPS * advice.phi);
     let by: HashMap<&str, _> = advice.methods.iter().map(|m| (m.method.as_str(), m)).collect();
     for (m, k) in [
@@ -458,14 +460,14 @@ fn damped_scene_is_judged_against_the_damped_oscillator() {
 #[test]
 fn scene_validation() {
     #[track_caller]
-    fn check(s: Scene, expected: &str) {
-        let err = advise(&s, &[], |_| 1.0).unwrap_err().to_string();
+    fn check(s: SpringScene, expected: &str) {
+        let err = advise_spring(&s, &[], |_| 1.0).unwrap_err().to_string();
         assert!(err.contains(expected), "{err}");
     }
     check(scene(0.0, 60.0, None), "--freq 0: expected a finite number > 0");
     check(scene(10.0, f64::NAN, None), "--tick NaN: expected a finite number > 0");
     check(scene(10.0, 60.0, Some(1.0)), "--damping 1: expected a damping ratio with 0 <= D < 1");
-    check(Scene { amp_tol: -1.0, ..scene(10.0, 60.0, None) }, "--amp-tol -1");
+    check(SpringScene { amp_tol: -1.0, ..scene(10.0, 60.0, None) }, "--amp-tol -1");
 }
 
 /// The second-order model refuses what it cannot model.

@@ -5,11 +5,13 @@
 use poly::{Poly, Sym};
 
 use super::common::*;
+use super::exact::paper;
 use super::frequency;
 use crate::load::builtin_derivation;
-use crate::paper::{Claim, Finding};
+use crate::paper::claim::Claim;
+use crate::paper::finding::Finding;
 
-pub fn claims() -> Vec<Claim> {
+pub(crate) fn claims() -> Vec<Claim> {
     let mut s = Section::new("A", "appA");
     tan_claim(
         &mut s,

@@ -6,12 +6,14 @@
 use poly::{Operand, Sym};
 
 use super::common::*;
+use super::exact::paper;
 use super::pascal;
 use super::sec08;
 use crate::load::builtin_derivation;
-use crate::paper::{Claim, Finding};
+use crate::paper::claim::Claim;
+use crate::paper::finding::Finding;
 
-pub fn claims() -> Vec<Claim> {
+pub(crate) fn claims() -> Vec<Claim> {
     let mut s = Section::new("B", "appB");
     for matrix in poly::builtin_names().filter(|n| poly::direct_twin(n).is_some()) {
         twins(&mut s, matrix);

@@ -6,9 +6,10 @@ use poly::{Poly, RootClass, Sym};
 use super::common::*;
 use super::ranges;
 use crate::load::builtin_derivation;
-use crate::paper::{Claim, Finding, Scope};
+use crate::paper::claim::Claim;
+use crate::paper::finding::{Finding, Scope};
 
-pub fn claims() -> Vec<Claim> {
+pub(crate) fn claims() -> Vec<Claim> {
     let mut s = Section::new("4", "sec04");
     euler_transition(&mut s);
     delay_operator(&mut s);

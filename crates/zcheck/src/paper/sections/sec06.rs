@@ -5,11 +5,13 @@
 use poly::{Poly, RootClass, Sym};
 
 use super::common::*;
+use super::exact::{p_q, paper};
 use super::{frequency, ranges};
 use crate::load::builtin_derivation;
-use crate::paper::{Claim, Finding};
+use crate::paper::claim::Claim;
+use crate::paper::finding::Finding;
 
-pub fn claims() -> Vec<Claim> {
+pub(crate) fn claims() -> Vec<Claim> {
     let mut s = Section::new("6", "sec06");
     ode_claim(
         &mut s,

@@ -7,11 +7,13 @@ use std::f64::consts::PI;
 use poly::RootClass;
 
 use super::common::*;
+use super::exact::{at_phi, p_q, paper};
 use super::{frequency, ranges};
 use crate::load::builtin_derivation;
-use crate::paper::{Claim, Finding, Scope};
+use crate::paper::claim::Claim;
+use crate::paper::finding::{Finding, Scope};
 
-pub fn claims() -> Vec<Claim> {
+pub(crate) fn claims() -> Vec<Claim> {
     let mut s = Section::new("7", "sec07");
     ode_claim(&mut s, "false_euler", "v̇ = −ω0 y, ẏ = ω0 v", OSCILLATOR, Scheme::Consistent);
     stages_claim(

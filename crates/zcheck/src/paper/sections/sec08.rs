@@ -5,10 +5,12 @@
 use poly::{Poly, Sym, Q};
 
 use super::common::*;
+use super::exact::paper;
 use crate::load::builtin_derivation;
-use crate::paper::{Claim, Finding, Scope};
+use crate::paper::claim::Claim;
+use crate::paper::finding::{Finding, Scope};
 
-pub fn claims() -> Vec<Claim> {
+pub(crate) fn claims() -> Vec<Claim> {
     let mut s = Section::new("8", "sec08");
     recursion(&mut s);
     oscillator(&mut s);
@@ -76,7 +78,7 @@ fn same_as_false_euler(s: &mut Section) {
 
 /// False Euler's y samples and Verlet's, started from y_{−1} = y_0 − Φ v_0,
 /// agree exactly.
-pub fn same_samples(phis: &[Q], n: usize) -> bool {
+pub(crate) fn same_samples(phis: &[Q], n: usize) -> bool {
     let fe = builtin_derivation("false_euler");
     let starts = [
         (poly::q(0, 1), poly::q(1, 1)),
@@ -94,7 +96,7 @@ pub fn same_samples(phis: &[Q], n: usize) -> bool {
 }
 
 /// Verlet's samples y_0..y_n from y_0 and y_{−1}, Appendix B case 4.
-pub fn verlet_samples(phi: &Q, y0: &Q, y_minus_one: &Q, n: usize) -> Vec<Q> {
+pub(crate) fn verlet_samples(phi: &Q, y0: &Q, y_minus_one: &Q, n: usize) -> Vec<Q> {
     let mut out = vec![y0.clone()];
     let (mut prev, mut cur) = (y_minus_one.clone(), y0.clone());
     for _ in 0..n {
@@ -173,7 +175,7 @@ fn operations(s: &mut Section) {
 /// the damped variants of the trade-off (Verlet takes v as the secant
 /// (y − y@1)/T), compared by their exact χ with D free, and by their roots
 /// and limits at D = 1/10.
-pub struct DampedComparison {
+pub(crate) struct DampedComparison {
     /// Whether the two χ are the same polynomial in z, Φ and D.
     pub same_chi: bool,
     /// Whether False Euler is strictly better (more accurate or more stable).
@@ -182,7 +184,7 @@ pub struct DampedComparison {
     pub text: String,
 }
 
-pub fn damped_spring() -> DampedComparison {
+pub(crate) fn damped_spring() -> DampedComparison {
     let damping = poly::q(1, 10);
     let phi = 0.1f64;
     let d = 0.1f64;

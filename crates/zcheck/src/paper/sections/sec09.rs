@@ -3,11 +3,13 @@
 //! "always an unstable oscillation", tan Ψ and the frequency.
 
 use super::common::*;
+use super::exact::p_q;
 use super::frequency;
 use crate::load::builtin_derivation;
-use crate::paper::{Claim, Finding, Scope};
+use crate::paper::claim::Claim;
+use crate::paper::finding::{Finding, Scope};
 
-pub fn claims() -> Vec<Claim> {
+pub(crate) fn claims() -> Vec<Claim> {
     let mut s = Section::new("9", "sec09");
     scheme(&mut s);
     scheme_with_input(&mut s);
@@ -83,7 +85,7 @@ fn scheme(s: &mut Section) {
 }
 
 /// The growth of the amplitude over one true period, r^(2π/Φ).
-pub fn growth_per_period(r_squared: f64, phi: f64) -> f64 {
+pub(crate) fn growth_per_period(r_squared: f64, phi: f64) -> f64 {
     r_squared.powf(std::f64::consts::PI / phi)
 }
 

@@ -5,11 +5,13 @@
 use poly::{PolyMatrix, RootClass};
 
 use super::common::*;
+use super::exact::{p_q, paper};
 use super::{advice, ranges};
 use crate::load::builtin_derivation;
-use crate::paper::{Claim, Finding};
+use crate::paper::claim::Claim;
+use crate::paper::finding::Finding;
 
-pub fn claims() -> Vec<Claim> {
+pub(crate) fn claims() -> Vec<Claim> {
     let mut s = Section::new("10", "sec10");
     ode_claim(&mut s, "false_heun", "v̇ = −ω0 y, ẏ = ω0 v", OSCILLATOR, Scheme::Consistent);
     stages_claim(
@@ -133,7 +135,7 @@ fn z_rows(s: &mut Section) {
 }
 
 /// χ of the matrix the printed rows describe.
-pub fn printed_rows_charpoly() -> poly::Poly {
+pub(crate) fn printed_rows_charpoly() -> poly::Poly {
     let m = PolyMatrix::from_rows(ROWS.iter().map(|r| vec![paper(r.v), paper(r.y)]).collect());
     poly::charpoly_state_route(&m)
 }

@@ -4,11 +4,13 @@
 use poly::RootClass;
 
 use super::common::*;
+use super::exact::p_q;
 use super::{advice, frequency, ranges};
 use crate::load::builtin_derivation;
-use crate::paper::{Claim, Finding};
+use crate::paper::claim::Claim;
+use crate::paper::finding::Finding;
 
-pub fn claims() -> Vec<Claim> {
+pub(crate) fn claims() -> Vec<Claim> {
     let mut s = Section::new("11", "sec11");
     ode_claim(&mut s, "semi_false_heun", "v̇ = −ω0 y, ẏ = ω0 v", OSCILLATOR, Scheme::Consistent);
     stages_claim(

@@ -10,13 +10,15 @@ use std::f64::consts::PI;
 use poly::RootClass;
 
 use super::common::*;
+use super::exact::p_q;
 use super::{advice, ranges};
 use crate::load::builtin_derivation;
-use crate::paper::{Claim, Finding, Scope};
+use crate::paper::claim::Claim;
+use crate::paper::finding::{Finding, Scope};
 use crate::scene::reference::{dopri5, rk4_step, Tolerance};
 use crate::scene::three_body::{self, ThreeBodyConfig};
 
-pub fn claims() -> Vec<Claim> {
+pub(crate) fn claims() -> Vec<Claim> {
     let mut s = Section::new("12", "sec12");
     false_euler(&mut s);
     standard_heun(&mut s);
@@ -32,7 +34,7 @@ fn false_euler(s: &mut Section) {
     let fe = advice::criteria("false_euler");
     let sh = advice::criteria("standard_heun");
     let Finding::Cases { mut cases } = finding else { unreachable!("always() gives cases") };
-    cases.push(crate::paper::Case {
+    cases.push(crate::paper::finding::Case {
         case: "low accuracy: a phase error Ψ − Φ ≠ 0".to_owned(),
         holds: fe.phase.is_some(),
         scope: Scope::Stated,
