@@ -36,7 +36,10 @@ fn bench(c: &mut Criterion) {
         g.bench_function(name, |b| {
             b.iter(|| {
                 let modal = reduce_with(&scene, Shapes::WhenNeeded).unwrap();
-                let specs = LoadedMethod::damped_builtins().unwrap();
+                let specs: Vec<LoadedMethod> = poly::DAMPED_METHODS
+                    .iter()
+                    .map(|n| LoadedMethod::builtin(n).unwrap())
+                    .collect();
                 advise(&scene, &modal, specs, Options { simulate: false, gauss_seidel: false })
                     .unwrap()
             })

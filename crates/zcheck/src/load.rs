@@ -86,7 +86,7 @@ impl LoadedMethod {
 
     /// The seven direct methods on the damped spring, the scene advisor's
     /// default candidates.
-    pub fn damped_builtins() -> Result<Vec<LoadedMethod>, Error> {
+    pub(crate) fn damped_builtins() -> Result<Vec<LoadedMethod>, Error> {
         poly::DAMPED_METHODS.iter().map(|n| LoadedMethod::builtin(n)).collect()
     }
 

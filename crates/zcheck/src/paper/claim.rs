@@ -7,8 +7,9 @@
 
 use serde::Serialize;
 
-use super::finding::{Finding, Verdict};
+use super::finding::Finding;
 use super::policy;
+use super::policy::Verdict;
 
 /// One claim of the paper and zcheck's verdict on it.
 #[derive(Clone, Debug, PartialEq, Serialize)]

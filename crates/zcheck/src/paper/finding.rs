@@ -1,38 +1,8 @@
-//! What zcheck computed about a claim ([`Finding`]: an object against its
-//! transcription, a statement case by case, a slip) and the verdicts the
-//! policy draws from it ([`Verdict`]).
+//! What zcheck computed about a claim ([`Finding`]): an object against its
+//! transcription, a statement case by case, or a slip. The policy draws the
+//! verdict from it.
 
 use serde::Serialize;
-
-/// How a claim of the paper fares against the derivation (DESIGN.md, "the
-/// verdict policy").
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Verdict {
-    /// The claim holds as printed.
-    Confirmed,
-    /// True on the range the paper states, or under a condition it leaves
-    /// implicit, but not as worded.
-    Refined,
-    /// False somewhere within what the paper asserts, or a misprint that
-    /// changes the mathematics.
-    Errata,
-    /// A slip that changes nothing (a comment, a name); counted apart from
-    /// the errata.
-    Typo,
-}
-
-impl Verdict {
-    /// The lower-case name used in reports.
-    pub(crate) fn name(self) -> &'static str {
-        match self {
-            Verdict::Confirmed => "confirmed",
-            Verdict::Refined => "refined",
-            Verdict::Errata => "errata",
-            Verdict::Typo => "typo",
-        }
-    }
-}
 
 /// Where a case lies relative to what the paper asserts.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]

@@ -10,7 +10,8 @@ mod finding;
 pub mod policy;
 
 pub use claim::Claim;
-pub use finding::{Case, Finding, Scope, Verdict};
+pub use finding::{Case, Finding, Scope};
+pub use policy::Verdict;
 
 pub mod appendix;
 pub mod report;

@@ -10,7 +10,7 @@ use serde_json::json;
 
 use crate::paper::claim::Claim;
 
-use crate::paper::finding::Verdict;
+use crate::paper::policy::Verdict;
 
 /// The paper's sections that carry claims, in the paper's order, with their
 /// titles as the table of contents prints them.

@@ -635,7 +635,7 @@ mod tests {
     //! The claim builders fed perturbed statements: the verdict follows the
     //! statement, not the code path.
     use super::*;
-    use crate::paper::finding::Verdict;
+    use crate::paper::policy::Verdict;
     use poly::RootClass;
 
     fn verdict_of(build: impl FnOnce(&mut Section)) -> Verdict {
