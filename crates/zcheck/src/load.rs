@@ -139,15 +139,21 @@ impl LoadedMethod {
 /// built-ins are part of the binary, so a failure is a programmer error.
 #[track_caller]
 pub(crate) fn builtin_derivation(name: &str) -> Derivation {
+    try_builtin_derivation(name).unwrap_or_else(|e| panic!("built-in {name}: {e}"))
+}
+
+/// [`builtin_derivation`], with a failure to parse or derive returned (and
+/// not kept): for the claim that every built-in derives, and for a command
+/// that lists built-ins.
+pub(crate) fn try_builtin_derivation(name: &str) -> Result<Derivation, poly::Error> {
     static CACHE: OnceLock<Mutex<HashMap<String, Derivation>>> = OnceLock::new();
     let cache = CACHE.get_or_init(Default::default);
     if let Some(d) = cache.lock().expect("cache lock").get(name) {
-        return d.clone();
+        return Ok(d.clone());
     }
-    let method = poly::builtin(name).unwrap_or_else(|e| panic!("built-in {name}: {e}"));
-    let d = poly::derive(&method).unwrap_or_else(|e| panic!("built-in {name}: {e}"));
+    let d = poly::derive(&poly::builtin(name)?)?;
     cache.lock().expect("cache lock").insert(name.to_owned(), d.clone());
-    d
+    Ok(d)
 }
 
 /// The method `arg` names.

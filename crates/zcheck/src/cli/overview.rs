@@ -5,7 +5,7 @@ use std::process::ExitCode;
 
 use super::output::{Format, MARKDOWN_JSON};
 use crate::error::Error;
-use crate::load::LoadedMethod;
+use crate::load::{try_builtin_derivation, LoadedMethod};
 
 /// Arguments of `zcheck overview`.
 #[derive(clap::Args)]
@@ -41,7 +41,7 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     };
     if args.implicit {
         for name in poly::IMPLICIT_METHODS {
-            rows.push(crate::overview::summarize(&poly::builtin(name)?, args.order)?);
+            rows.push(crate::overview::summary_of(&try_builtin_derivation(name)?, args.order)?);
         }
     }
     match args.format {

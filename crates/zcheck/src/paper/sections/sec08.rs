@@ -188,10 +188,7 @@ pub(crate) fn damped_spring() -> DampedComparison {
     let damping = poly::q(1, 10);
     let phi = 0.1f64;
     let d = 0.1f64;
-    let chi_of = |name: &str| {
-        let m = poly::builtin(name).expect("damped built-in");
-        poly::derive(&m).expect("derivation").charpoly
-    };
+    let chi_of = |name: &str| builtin_derivation(name).charpoly;
     let measure = |chi_d: &Poly| {
         let chi = chi_d.subs(Sym::new("D"), &Poly::constant(damping.clone()));
         let limit = poly::stability::analyze(&chi).ok().and_then(|r| super::ranges::limit_of(&r));
