@@ -1,4 +1,4 @@
-//! The scene advisor on a 1000-mass chain: modal reduction (eigenvalues of
+//! The whole-scene advisor on a 1000-mass chain: modal reduction (eigenvalues of
 //! a 1000×1000 symmetric matrix), the exact (Φ, D) region of the seven
 //! direct methods, exact membership of every mode, accuracy per mode and a
 //! brief timing of each method's kernel; no checking simulation.

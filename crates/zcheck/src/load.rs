@@ -11,8 +11,8 @@
 //! linear-multistep TOML of the complex-plane issue becomes one more arm of
 //! `resolve`, next to the tableau's.
 //!
-//! The scene advisor asks for the method on the damped spring
-//! ([`LoadedMethod::load_damped`]): a built-in's damped twin
+//! The whole-scene advisor asks for the method on the damped spring
+//! (`LoadedMethod::load_damped`): a built-in's damped twin
 //! (`false_euler` → `false_euler_damped`, `standard_euler` →
 //! `damped_euler_d`), shown by its base name and with its system kernel;
 //! a tableau's program with `param D`; a `.zm` file as it is.
@@ -56,7 +56,7 @@ impl LoadedMethod {
     }
 
     /// The method `arg` names, on the damped spring (`param D`), for the
-    /// scene advisor: a built-in's damped twin, shown by its base name and
+    /// whole-scene advisor: a built-in's damped twin, shown by its base name and
     /// with its system kernel; a tableau's program on the damped
     /// oscillator; anything else as [`LoadedMethod::load`] reads it.
     pub(crate) fn load_damped(arg: &str) -> Result<LoadedMethod, Error> {
@@ -84,7 +84,7 @@ impl LoadedMethod {
         Ok(LoadedMethod::new(method, base_name(name).to_owned(), hand, system))
     }
 
-    /// The seven direct methods on the damped spring, the scene advisor's
+    /// The seven direct methods on the damped spring, the whole-scene advisor's
     /// default candidates.
     pub(crate) fn damped_builtins() -> Result<Vec<LoadedMethod>, Error> {
         poly::DAMPED_METHODS.iter().map(|n| LoadedMethod::builtin(n)).collect()

@@ -90,7 +90,7 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
         damping: args.damping.as_ref().map(|d| d.to_f64("--damping")).transpose()?,
     };
     scene.validate()?;
-    // The seven direct methods on the damped spring: the scene advisor's
+    // The seven direct methods on the damped spring: the whole-scene advisor's
     // candidates below and, with --damping, the table's too, derived once
     // for both.
     let damped = LoadedMethod::damped_builtins()?;
@@ -114,7 +114,7 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     for (m, c) in advice.methods.iter_mut().zip(&cands) {
         m.ns_per_step_hand = c.hand_kernel.and_then(|h| kernels::time_hand_kernel(h, d, budget));
     }
-    // The same spring as a one-mode scene, through the scene advisor: its
+    // The same spring as a one-mode scene, through the whole-scene advisor: its
     // modes, candidates (with the simulation that checks the prediction)
     // and recommendation, in the scene JSON's keys.
     let one_mode =
@@ -154,7 +154,7 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
 }
 
 /// `zcheck advise --freq --tick` as JSON: the one-spring advice, plus the
-/// scene advisor's keys for the same spring as a one-mode scene.
+/// whole-scene advisor's keys for the same spring as a one-mode scene.
 #[derive(serde::Serialize)]
 struct OneSpring<'a> {
     #[serde(flatten)]

@@ -1,4 +1,4 @@
-//! The command line: the [`Cli`] clap parses, and one module per subcommand
+//! The command line: the `Cli` clap parses, and one module per subcommand
 //! with its clap `Args` and its `run`.
 
 use std::process::ExitCode;

@@ -1,5 +1,8 @@
-//! The scene advisor: which method, how many substeps per tick, for a whole
-//! scene of modes.
+//! The whole-scene advisor: which method, how many substeps per tick, for a
+//! whole scene of masses and springs, or of modes (`zcheck advise --scene`).
+//! A single spring in game units is the single-spring advisor's
+//! (`tradeoff::spring_advisor`); `zcheck advise --freq --tick`
+//! runs both, this one on the spring as a one-mode scene.
 //!
 //! For every candidate method and every mode (ω, ζ) the substep is
 //! Φ = ω/(tick·n). Per candidate:

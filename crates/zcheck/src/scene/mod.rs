@@ -2,10 +2,11 @@
 //! rotation (Appendix E), each with only the state, parameters and forces it
 //! needs, a high-accuracy reference, and the invariants it is judged by.
 //!
-//! And a user's scene of masses and springs: [`file`] reads it (TOML),
-//! [`modal`] reduces it to modes, [`vector`] runs the paper's methods on the
-//! whole system (all bodies at once, or Gauss–Seidel), and [`advisor`]
-//! picks method and substeps from the exact (Φ, D) regions.
+//! And a user's scene of masses and springs: [`file`](mod@file) reads it (TOML),
+//! [`modal`] reduces it to modes, `vector` runs the paper's methods on the
+//! whole system (all bodies at once, or Gauss–Seidel), and [`advisor`], the
+//! whole-scene advisor, picks method and substeps from the exact (Φ, D)
+//! regions.
 //!
 //! Names: `three_body_false_euler` (C), `three_body_euler` and
 //! `three_body_euler_energy` (D), `aircraft` (E). Each scene's module says

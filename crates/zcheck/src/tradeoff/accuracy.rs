@@ -17,7 +17,7 @@
 //! precision at small Φ (no `1 − (1 − Φ²/2)²` cancellation); ln r uses
 //! `ln_1p(q − 1)`. Only δΨ = Ψ − Φ cancels: its absolute error is a few ulps
 //! of Ψ, i.e. a relative error of about ε·Φ/|δΨ| (≈ 24ε/Φ² for False Euler),
-//! below 1e-6 for Φ ≥ 1e-4. The search below never goes under [`PHI_MIN`].
+//! below 1e-6 for Φ ≥ 1e-4. The search below never goes under `PHI_MIN`.
 
 use std::collections::HashMap;
 use std::f64::consts::PI;
@@ -217,7 +217,7 @@ impl SecondOrder {
     /// The largest Φ below `phi_cap` such that every step in [PHI_MIN, Φ]
     /// meets `target` (the first failure on a log grid of 64 points per
     /// decade, then bisection to a relative width of 1e-12). `None` when
-    /// even [`PHI_MIN`] fails or the cap is below it.
+    /// even `PHI_MIN` fails or the cap is below it.
     ///
     /// The caller passes a cap strictly below the exact stability limit, so
     /// the answer is never a step at or beyond `phi_max`.

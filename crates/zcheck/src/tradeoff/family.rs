@@ -115,7 +115,7 @@ pub struct Candidate {
     /// The lowered method.
     pub method: Method,
     /// Its hand-written kernel, for a built-in (see
-    /// [`LoadedMethod::hand_kernel`]).
+    /// `LoadedMethod::hand_kernel`).
     pub hand_kernel: Option<&'static str>,
     /// Values of the parameters other than Φ (the damping D).
     pub params: Vec<(Sym, Q)>,

@@ -32,7 +32,7 @@ const CHUNK: u64 = 1024;
 
 /// Measured nanoseconds per step of `method`'s compiled step at `params`
 /// (which must give every parameter of the method, Φ included), one state,
-/// timed for about [`DEFAULT_BUDGET`].
+/// timed for about `DEFAULT_BUDGET`.
 ///
 /// ```
 /// use check::numeric::{Params, ParamsF64};

@@ -5,17 +5,17 @@
 //! puts the four together for a programmer with a target:
 //!
 //! - cost per step, exact, from the method definition ([`poly::cost`]), and
-//!   measured on the compiled step of any method ([`measure`]), with the
+//!   measured on the compiled step of any method (`measure`), with the
 //!   hand-written kernels ([`kernels`]) as a baseline;
 //! - accuracy per step from the exact characteristic polynomial
-//!   ([`accuracy`]): phase error Ψ − Φ and amplitude factor per period;
+//!   (`accuracy`): phase error Ψ − Φ and amplitude factor per period;
 //! - the exact stability limit Φ_max (`poly::stability`), which no answer
 //!   ever reaches ([`family`]);
 //! - the trade: the largest admissible Φ for a target, steps per period, cost
 //!   per simulated period, a ranking and a work-precision figure
-//!   ([`rank`], [`figure`]);
+//!   (`rank`, `figure`);
 //! - the single-spring advisor, in game units: spring frequency and tick
-//!   rate in Hz ([`spring_advisor`]; a whole scene is
+//!   rate in Hz (`spring_advisor`; a whole scene is
 //!   [`crate::scene::advisor`]'s).
 //!
 //! The submodules import one another directly, never through this file,
