@@ -15,7 +15,7 @@ use poly::invariant::{conserved_form, form_text, is_positive_definite};
 use poly::{Derivation, Sym, Q};
 use serde_json::{json, Value};
 
-use super::output::{Format, TEXT_JSON};
+use super::output::{self, Format, TEXT_JSON};
 use crate::error::Error;
 use crate::load::LoadedMethod;
 
@@ -139,17 +139,13 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
         }
     }
     if let Some(path) = &args.svg {
-        crate::drift_figure::draw(path, &reports_for_figure(&reports))
-            .map_err(|e| Error::usage(format!("{e}")))?;
+        crate::drift_figure::draw(path, &reports_for_figure(&reports))?;
     }
     match args.format {
-        Format::Json => println!(
-            "{}",
-            serde_json::to_string_pretty(
-                &json!({ "runs": reports.iter().map(to_json).collect::<Vec<_>>() })
-            )?
-        ),
-        _ => print!("{}", reports.iter().map(text).collect::<Vec<_>>().join("\n")),
+        Format::Json => output::emitln(&serde_json::to_string_pretty(
+            &json!({ "runs": reports.iter().map(to_json).collect::<Vec<_>>() }),
+        )?)?,
+        _ => output::emit(&reports.iter().map(text).collect::<Vec<_>>().join("\n"))?,
     }
     Ok(ExitCode::SUCCESS)
 }
@@ -200,13 +196,13 @@ fn study<T: Real>(
     let form = match conserved_form(&p) {
         Ok(f) if is_positive_definite(&f) => f,
         Ok(_) => {
-            return Err(Error::usage(format!(
+            return Err(Error::unsupported(format!(
                 "{name}: at Phi = {phi} the roots are real (the conserved form is indefinite): \
              expected a method with |z| = 1 at Phi, e.g. false_euler or verlet below Phi = 2"
             )))
         }
         Err(e) => {
-            return Err(Error::usage(format!(
+            return Err(Error::unsupported(format!(
                 "{name}: no single conserved quadratic form at Phi = {phi} ({e:?}): expected a \
              method with |z| = 1 at Phi, e.g. false_euler or verlet below Phi = 2"
             )))

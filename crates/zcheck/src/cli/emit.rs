@@ -74,6 +74,6 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
             Binding::Folded(values)
         }
     };
-    print!("{}", emit(method, lang, &binding)?);
+    super::output::emit(&emit(method, lang, &binding)?)?;
     Ok(ExitCode::SUCCESS)
 }

@@ -96,7 +96,6 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
             out
         }
     };
-    // A closed pipe (`| head`) is not an error of ours.
-    let _ = std::io::Write::write_all(&mut std::io::stdout().lock(), out.as_bytes());
+    super::output::emit(&out)?;
     Ok(ExitCode::SUCCESS)
 }

@@ -23,12 +23,12 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     let src = tableau.to_zm(args.damped);
     // The program parses (and derives) before it is printed.
     poly::Method::parse(&args.file, &src).map_err(|e| {
-        Error::usage(format!(
+        Error::method(format!(
             "{}: the generated program does not parse: {}",
             args.file,
             e.message()
         ))
     })?;
-    print!("{src}");
+    super::output::emit(&src)?;
     Ok(ExitCode::SUCCESS)
 }
