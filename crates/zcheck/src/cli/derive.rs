@@ -5,7 +5,7 @@ use std::process::ExitCode;
 use poly::{Derivation, Poly};
 use serde_json::json;
 
-use super::output::Format;
+use super::format::Format;
 use crate::error::Error;
 use crate::load::LoadedMethod;
 

@@ -15,7 +15,8 @@ use poly::invariant::{conserved_form, form_text, is_positive_definite};
 use poly::{Derivation, Sym, Q};
 use serde_json::{json, Value};
 
-use super::output::{self, Format, TEXT_JSON};
+use super::format::{Format, TEXT_JSON};
+use super::output;
 use crate::error::Error;
 use crate::load::LoadedMethod;
 

@@ -6,7 +6,7 @@ use std::process::ExitCode;
 use poly::equiv::{self, Relation};
 use serde_json::json;
 
-use super::output::{Format, TEXT_JSON};
+use super::format::{Format, TEXT_JSON};
 use crate::error::Error;
 use crate::load::LoadedMethod;
 

@@ -6,7 +6,7 @@ use std::process::ExitCode;
 
 use poly::Q;
 
-use super::output::{Format, TEXT_JSON};
+use super::format::{Format, TEXT_JSON};
 use super::values::Exact;
 use crate::error::Error;
 use crate::load::LoadedMethod;

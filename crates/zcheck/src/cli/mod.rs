@@ -12,6 +12,7 @@ pub(crate) mod derive;
 pub(crate) mod drift;
 pub(crate) mod emit;
 pub(crate) mod equiv;
+pub(crate) mod format;
 pub(crate) mod from_tableau;
 pub(crate) mod map;
 pub(crate) mod methods;

@@ -3,7 +3,7 @@
 
 use std::process::ExitCode;
 
-use super::output::{Format, MARKDOWN_JSON};
+use super::format::{Format, MARKDOWN_JSON};
 use crate::error::Error;
 use crate::load::{try_builtin_derivation, LoadedMethod};
 

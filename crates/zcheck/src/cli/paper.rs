@@ -4,7 +4,7 @@
 
 use std::process::ExitCode;
 
-use super::output::{Format, MARKDOWN_JSON};
+use super::format::{Format, MARKDOWN_JSON};
 use crate::error::Error;
 use crate::paper::{all_claims, report};
 

@@ -7,7 +7,7 @@ use std::io::{IsTerminal, Write as _};
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use super::output::{Format, TEXT_JSON};
+use super::format::{Format, TEXT_JSON};
 use crate::error::Error;
 use crate::scene::aircraft::{self, AircraftRun};
 use crate::scene::three_body::{

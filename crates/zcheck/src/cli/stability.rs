@@ -15,7 +15,8 @@ use poly::stability::{analyze_derivation, Stability, StabilityReport};
 use poly::{Algebraic, Sym, Q};
 use serde_json::{json, Value};
 
-use super::output::{self, Format, TEXT_JSON};
+use super::format::{Format, TEXT_JSON};
+use super::output;
 use super::values::{self, ParamArg};
 use crate::error::Error;
 use crate::load::LoadedMethod;

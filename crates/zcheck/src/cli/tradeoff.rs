@@ -5,7 +5,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Duration;
 
-use super::output::{Format, TEXT_JSON};
+use super::format::{Format, TEXT_JSON};
 use crate::error::Error;
 use crate::load::LoadedMethod;
 use crate::tradeoff::accuracy::{Spring, Target};

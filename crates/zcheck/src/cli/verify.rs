@@ -14,7 +14,8 @@ use indicatif::{ProgressBar, ProgressStyle};
 use poly::Q;
 use serde_json::{json, Value};
 
-use super::output::{self, Format, TEXT_JSON};
+use super::format::{Format, TEXT_JSON};
+use super::output;
 use super::values::{self, show_f64, Exact, ParamArg};
 use crate::error::Error;
 use crate::load::LoadedMethod;
