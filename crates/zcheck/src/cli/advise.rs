@@ -279,7 +279,10 @@ fn run_scene(path: &std::path::Path, args: &Args) -> Result<ExitCode, Error> {
         || args.phase_tol != SpringScene::DEFAULT_PHASE_TOL
         || args.amp_tol != SpringScene::DEFAULT_AMP_TOL
     {
-        return Err(Error::usage("--duration, --phase-tol and --amp-tol belong in the scene file with --scene (duration_s, [accuracy])"));
+        return Err(Error::usage(
+            "--duration, --phase-tol and --amp-tol belong in the scene file with --scene \
+             (duration_s, [accuracy])",
+        ));
     }
     let simulate = !args.no_simulate;
     let modal = modal_of(&scene, simulate)?;

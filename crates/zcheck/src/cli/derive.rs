@@ -9,12 +9,15 @@ use super::format::Format;
 use crate::error::Error;
 use crate::load::LoadedMethod;
 
+/// The formats `zcheck derive` writes.
+const FORMATS: &[Format] = &[Format::Text, Format::Json, Format::Latex];
+
 /// Arguments of `zcheck derive`.
 #[derive(clap::Args)]
 pub(crate) struct Args {
     /// A built-in method name or a path to a `.zm` file.
     pub method: String,
-    #[arg(long, value_parser = Format::parser(&[Format::Text, Format::Json, Format::Latex]), default_value = "text")]
+    #[arg(long, value_parser = Format::parser(FORMATS), default_value = "text")]
     pub format: Format,
 }
 

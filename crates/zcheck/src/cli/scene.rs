@@ -111,7 +111,9 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     }
     let budget = args.budget.to_count("--budget")?;
     if n > budget {
-        return Err(Error::usage(format!("--steps {n} is beyond the budget of {budget} steps: pass --budget {n} to run it anyway")));
+        return Err(Error::usage(format!(
+            "--steps {n} is beyond the budget of {budget} steps: pass --budget {n} to run it anyway"
+        )));
     }
     if let Some(dir) = &args.plot {
         std::fs::create_dir_all(dir)

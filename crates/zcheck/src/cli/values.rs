@@ -143,17 +143,20 @@ pub(crate) fn check_declared(params: &[ParamArg], methods: &[&Method]) -> Result
             known.sort_unstable();
             known.dedup();
             let declared = if known.is_empty() { "none".to_owned() } else { known.join(", ") };
-            match methods {
-                [m] => return Err(Error::usage(format!("--param {}={}: method {} has no parameter {} (declared: {declared})",
+            return Err(Error::usage(match methods {
+                [m] => format!(
+                    "--param {}={}: method {} has no parameter {} (declared: {declared})",
                     p.name,
                     p.value,
                     m.name(),
-                    p.name))),
-                _ => return Err(Error::usage(format!("--param {}={}: none of the methods declares a parameter {} (declared: {declared})",
-                    p.name,
-                    p.value,
-                    p.name))),
-            }
+                    p.name
+                ),
+                _ => format!(
+                    "--param {}={}: none of the methods declares a parameter {} \
+                     (declared: {declared})",
+                    p.name, p.value, p.name
+                ),
+            }));
         }
     }
     Ok(())

@@ -36,7 +36,10 @@ struct PhiPoly(check::sweep::HornerPoly);
 impl PhiPoly {
     fn from_exact(p: &Poly) -> Result<PhiPoly, Error> {
         check::sweep::HornerPoly::new(p, Sym::phi()).map(PhiPoly).ok_or_else(|| {
-            Error::unsupported(format!("coefficient {p} depends on more than Phi: expected every other parameter to have a value"))
+            Error::unsupported(format!(
+                "coefficient {p} depends on more than Phi: expected every other parameter to have \
+                 a value"
+            ))
         })
     }
 
