@@ -56,8 +56,8 @@ impl LoadedMethod {
     }
 
     /// The method `arg` names, on the damped spring (`param D`), for the
-    /// whole-scene advisor: a built-in's damped twin, shown by its base name and
-    /// with its system kernel; a tableau's program on the damped
+    /// whole-scene advisor: a built-in's damped twin, shown by its base
+    /// name and with its system kernel; a tableau's program on the damped
     /// oscillator; anything else as [`LoadedMethod::load`] reads it.
     pub(crate) fn load_damped(arg: &str) -> Result<LoadedMethod, Error> {
         match damped_twin(arg) {
@@ -84,8 +84,8 @@ impl LoadedMethod {
         Ok(LoadedMethod::new(method, base_name(name).to_owned(), hand, system))
     }
 
-    /// The seven direct methods on the damped spring, the whole-scene advisor's
-    /// default candidates.
+    /// The seven direct methods on the damped spring, the whole-scene
+    /// advisor's default candidates.
     pub(crate) fn damped_builtins() -> Result<Vec<LoadedMethod>, Error> {
         poly::DAMPED_METHODS.iter().map(|n| LoadedMethod::builtin(n)).collect()
     }
@@ -158,6 +158,8 @@ pub(crate) fn try_builtin_derivation(name: &str) -> Result<Derivation, poly::Err
 
 /// The method `arg` names.
 fn resolve(arg: &str, oscillator: Oscillator) -> Result<Method, Error> {
+    // A TOML file is a Butcher tableau. The linear-multistep TOML of the
+    // complex-plane issue is read here too, told apart by its keys.
     if arg.ends_with(".toml") {
         let tableau = Tableau::load(Path::new(arg))?;
         let src = tableau.to_zm(oscillator == Oscillator::Damped);

@@ -90,9 +90,9 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
         damping: args.damping.as_ref().map(|d| d.to_f64("--damping")).transpose()?,
     };
     scene.validate()?;
-    // The seven direct methods on the damped spring: the whole-scene advisor's
-    // candidates below and, with --damping, the table's too, derived once
-    // for both.
+    // The seven direct methods on the damped spring: the whole-scene
+    // advisor's candidates below and, with --damping, the table's too,
+    // derived once for both.
     let damped = LoadedMethod::damped_builtins()?;
     let cands = match &args.damping {
         Some(d) => family::damped_candidates(&damped, &d.value)?,
@@ -114,9 +114,9 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     for (m, c) in advice.methods.iter_mut().zip(&cands) {
         m.ns_per_step_hand = c.hand_kernel.and_then(|h| kernels::time_hand_kernel(h, d, budget));
     }
-    // The same spring as a one-mode scene, through the whole-scene advisor: its
-    // modes, candidates (with the simulation that checks the prediction)
-    // and recommendation, in the scene JSON's keys.
+    // The same spring as a one-mode scene, through the whole-scene advisor:
+    // its modes, candidates (with the simulation that checks the
+    // prediction) and recommendation, in the scene JSON's keys.
     let one_mode =
         SceneFile::one_mode(freq_hz, d, tick_hz, args.duration, args.phase_tol, args.amp_tol);
     let simulate = !args.no_simulate;
