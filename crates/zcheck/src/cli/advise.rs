@@ -110,7 +110,7 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
         k += 1;
         ns[k - 1]
     })?;
-    // advise keeps the candidates' order.
+    // advise_spring keeps the candidates' order.
     for (m, c) in advice.methods.iter_mut().zip(&cands) {
         m.ns_per_step_hand = c.hand_kernel.and_then(|h| kernels::time_hand_kernel(h, d, budget));
     }
