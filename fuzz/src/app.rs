@@ -8,11 +8,13 @@
 const MAX_ERROR_BYTES: usize = 4000;
 
 /// A rendered error: bounded, located in `fuzz.toml`, no control character.
-fn check_error(shown: &str, line: usize, col: usize) {
+fn check_error(e: &zcheck::Error) {
+    let shown = e.to_string();
     assert!(shown.len() <= MAX_ERROR_BYTES, "error of {} bytes", shown.len());
     assert!(!shown.chars().any(|c| c.is_control()), "control character in error: {shown:?}");
-    assert!(line >= 1 && col >= 1, "no location: {shown}");
-    assert!(shown.starts_with(&format!("fuzz.toml:{line}:{col}: ")), "{shown}");
+    let Some(at) = e.location() else { panic!("no location: {shown}") };
+    assert!(at.line >= 1 && at.col >= 1, "no location: {shown}");
+    assert!(shown.starts_with(&format!("fuzz.toml:{}:{}: ", at.line, at.col)), "{shown}");
 }
 
 /// The TOML scene reader: every input parses to a scene or gives a located,
@@ -21,7 +23,7 @@ pub fn scene_toml(data: &[u8]) {
     let Ok(text) = std::str::from_utf8(data) else { return };
     match zcheck::scene::file::SceneFile::parse("fuzz.toml", text) {
         Ok(scene) => assert!(scene.dof() >= 1, "a scene without a degree of freedom"),
-        Err(e) => check_error(&e.to_string(), e.line(), e.col()),
+        Err(e) => check_error(&e),
     }
 }
 
@@ -47,6 +49,6 @@ pub fn tableau(data: &[u8]) {
                 }
             }
         }
-        Err(e) => check_error(&e.to_string(), e.line(), e.col()),
+        Err(e) => check_error(&e),
     }
 }

@@ -5,8 +5,10 @@ use std::path::Path;
 
 use plotters::prelude::*;
 
+use crate::error::Error;
+
 /// One method's measured and modelled RMS drift, `(N, drift in ε)`.
-pub struct Line {
+pub(crate) struct Line {
     /// The legend label.
     pub label: String,
     /// Measured RMS drift at each checkpoint.
@@ -16,15 +18,16 @@ pub struct Line {
 }
 
 /// Draws `lines` to `path`.
-pub fn draw(path: &Path, lines: &[Line]) -> Result<(), Box<dyn std::error::Error + Send + Sync>> {
-    let err = |e: &dyn std::fmt::Display| format!("{}: cannot draw: {e}", path.display());
+pub(crate) fn draw(path: &Path, lines: &[Line]) -> Result<(), Error> {
+    let err =
+        |e: &dyn std::fmt::Display| Error::figure(format!("{}: cannot draw: {e}", path.display()));
     let pts =
         || lines.iter().flat_map(|l| l.measured.iter().chain(&l.predicted)).filter(|p| p.1 > 0.0);
     let xmax = pts().map(|p| p.0).fold(10.0f64, f64::max);
     let ymin = pts().map(|p| p.1).fold(f64::INFINITY, f64::min);
     let ymax = pts().map(|p| p.1).fold(0.0f64, f64::max);
     if !ymin.is_finite() {
-        return Err("no nonzero drift to draw".into());
+        return Err(Error::figure("no nonzero drift to draw"));
     }
     let root = SVGBackend::new(path, (900, 600)).into_drawing_area();
     root.fill(&WHITE).map_err(|e| err(&e))?;

@@ -18,6 +18,8 @@ use std::fmt::Write as _;
 use check::numeric::{ListedMove, Params, ParamsF64, Step};
 use poly::{Method, Poly, Sym, Q};
 
+use crate::error::Error;
+
 /// The language to emit.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Lang {
@@ -34,24 +36,6 @@ pub enum Binding {
     Folded(Vec<(Sym, Q)>),
     /// Every parameter is a function argument.
     Parametric,
-}
-
-/// Why the step could not be emitted.
-#[derive(Debug)]
-pub struct EmitError(String);
-
-impl std::fmt::Display for EmitError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(&self.0)
-    }
-}
-
-impl std::error::Error for EmitError {}
-
-impl From<check::Error> for EmitError {
-    fn from(e: check::Error) -> Self {
-        EmitError(e.to_string())
-    }
 }
 
 /// A C or Rust identifier from a slot or target name (`y@1` → `y_1`).
@@ -127,7 +111,7 @@ fn poly_expr(p: &Poly, lang: Lang) -> String {
 }
 
 /// The step of `method` as a function in `lang`.
-pub fn emit(method: &Method, lang: Lang, binding: &Binding) -> Result<String, EmitError> {
+pub fn emit(method: &Method, lang: Lang, binding: &Binding) -> Result<String, Error> {
     // The instruction list: at the given values, or (parametric) at generic
     // values where no coefficient but a constant 1 equals 1.
     let params: Params = match binding {
@@ -146,7 +130,7 @@ pub fn emit(method: &Method, lang: Lang, binding: &Binding) -> Result<String, Em
     };
     if method.is_implicit() && matches!(binding, Binding::Parametric) {
         let names: Vec<&str> = method.unknowns().iter().map(|u| u.name.as_str()).collect();
-        return Err(EmitError(format!(
+        return Err(Error::unsupported(format!(
             "{} is implicit: each step solves a linear system for {}, whose solution depends on \
              Phi; give --phi (and every --param) to fold that solve into the emitted step",
             method.name(),
@@ -210,7 +194,7 @@ pub fn emit(method: &Method, lang: Lang, binding: &Binding) -> Result<String, Em
             if i == 0 && ins.unit_first {
                 if let (Binding::Parametric, Some((a, k))) = (binding, t.origin) {
                     if !method.assigns()[a].terms[k].1.is_one() {
-                        return Err(EmitError(format!(
+                        return Err(Error::unsupported(format!(
                             "{}: a coefficient equals 1 only at the sample values; give the parameters to fold them",
                             method.name()
                         )));

@@ -1,23 +1,36 @@
 //! The zcheck application: everything only the command-line tool needs.
+//! The binary only calls [`cli::main`]; this library is public for the
+//! tests, benchmarks and fuzz targets, and shows them only what they use.
 //!
+//! - [`cli`]: one module per subcommand, the one output `Format`, and the
+//!   reporting of an [`Error`] (exit code 2);
+//! - [`load`]: a method argument (built-in, `.zm` file, Butcher tableau)
+//!   resolved once, with its one derivation;
+//! - [`tableau`]: Butcher tableaux read from TOML;
 //! - [`paper`]: the proof of Hoffmann's paper as data (claims, verdicts,
 //!   evidence) and its Markdown/JSON report;
 //! - [`overview`]: every method side by side (exact limit, series, cost);
-//! - [`tradeoff`]: the speed/accuracy trade and the spring advisor;
-//! - [`scene`]: the appendix scenes (three bodies, aircraft);
-//! - [`plot`]: SVG figures;
-//! - [`map`]: the exact (Φ, D) stability map of a damped method.
+//! - [`tradeoff`]: the speed/accuracy trade, and the single-spring advisor;
+//! - [`scene`]: the appendix scenes (three bodies, aircraft), and a user's
+//!   scene of masses and springs with the whole-scene advisor;
+//! - [`emit`]: a method's step as Rust or C source;
+//! - [`plot`], `map`, `drift_figure`: SVG figures, and the exact (Φ, D)
+//!   stability map of a damped method.
 //!
 //! The exact algebra lives in `poly`, the numeric witnesses in `check`; this
 //! crate depends on both and neither depends on it.
 
-pub mod drift_figure;
+pub mod cli;
+mod drift_figure;
 pub mod emit;
-pub mod located;
-pub mod map;
+mod error;
+pub mod load;
+mod map;
 pub mod overview;
 pub mod paper;
 pub mod plot;
 pub mod scene;
 pub mod tableau;
 pub mod tradeoff;
+
+pub use error::{Error, ErrorKind, Location};

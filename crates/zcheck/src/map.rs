@@ -15,14 +15,17 @@ use std::path::Path;
 use check::numeric::{f64_to_q, q_to_f64, Params, ParamsF64};
 use check::witness::Witnesses;
 use plotters::prelude::*;
-use poly::region::{region, CurveKind, PhiLimit, Region, Unconditional};
-use poly::{Method, RootClass, Sym, Q};
+use poly::region::{region, CurveKind, PhiLimit, Unconditional};
+use poly::{RootClass, Sym, Q};
 use rayon::prelude::*;
 use serde::Serialize;
 
+use crate::error::Error;
+use crate::load::LoadedMethod;
+
 /// One grid point.
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct GridPoint {
+pub(crate) struct GridPoint {
     /// Φ (the f64 whose exact value was classified).
     pub phi: f64,
     /// D.
@@ -40,7 +43,7 @@ fn class_name<S: serde::Serializer>(c: &RootClass, s: S) -> Result<S::Ok, S::Err
 
 /// One critical curve, traced.
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct TracedCurve {
+pub(crate) struct TracedCurve {
     /// Which condition.
     pub kind: String,
     /// Its polynomial in Φ and D (the monomial factor split off).
@@ -53,7 +56,7 @@ pub struct TracedCurve {
 
 /// Φ_max at one D.
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct LimitAt {
+pub(crate) struct LimitAt {
     /// D.
     pub d: f64,
     /// Φ_max to 12 decimals, "every" or "none".
@@ -64,7 +67,7 @@ pub struct LimitAt {
 
 /// The map.
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct StabilityMap {
+pub(crate) struct StabilityMap {
     /// The method.
     pub method: String,
     /// Φ window.
@@ -87,7 +90,7 @@ pub struct StabilityMap {
 
 /// Options of [`map`].
 #[derive(Clone, Debug)]
-pub struct MapWindow {
+pub(crate) struct MapWindow {
     /// Φ range, exact.
     pub phi: (Q, Q),
     /// D range, exact.
@@ -109,21 +112,28 @@ fn centre(lo: &Q, hi: &Q, k: usize, n: usize) -> Q {
     lo + &((hi - lo) * t)
 }
 
-/// Computes the map of `method` (which must have the parameter D).
-pub fn map(method: &Method, w: &MapWindow) -> anyhow::Result<StabilityMap> {
+/// Computes the map of a method (which must have the parameter D), from
+/// its one derivation.
+pub(crate) fn map(loaded: &LoadedMethod, w: &MapWindow) -> Result<StabilityMap, Error> {
+    let method = loaded.method();
     let d_sym = Sym::new("D");
     if !method.params().contains(&d_sym) {
-        anyhow::bail!(
+        return Err(Error::unsupported(format!(
             "method {} has no parameter D: expected `param D` (the test equation v' = -2*D*v - y, y' = v)",
             method.name()
-        );
+        )));
     }
     if let Some(extra) = method.params().iter().find(|s| s.name() != "Phi" && s.name() != "D") {
-        anyhow::bail!("method {}: parameter {extra} has no value on a (Phi, D) map", method.name());
+        return Err(Error::unsupported(format!(
+            "method {}: parameter {extra} has no value on a (Phi, D) map",
+            method.name()
+        )));
     }
-    let chi = poly::charpoly(method)?;
-    let r = region(&chi, d_sym).map_err(|e| anyhow::anyhow!("method {}: {e}", method.name()))?;
-    let witnesses = Witnesses::new(method)?;
+    let derivation = loaded.derivation()?;
+    let chi = &derivation.charpoly;
+    let r = region(chi, d_sym)
+        .map_err(|e| Error::from(e).context(format!("method {}", method.name())))?;
+    let witnesses = Witnesses::from_derivation(derivation);
     let n = w.grid.max(2);
     let cells: Vec<(usize, usize)> = (0..n).flat_map(|j| (0..n).map(move |i| (i, j))).collect();
     let grid: Vec<GridPoint> = cells
@@ -217,12 +227,6 @@ fn approx(a: &poly::Algebraic) -> f64 {
     q_to_f64(&a.approx(&poly::q(1, 1 << 40)))
 }
 
-/// The region object, for callers who want more than the map.
-pub fn region_of(method: &Method) -> anyhow::Result<Region> {
-    let chi = poly::charpoly(method)?;
-    region(&chi, Sym::new("D")).map_err(|e| anyhow::anyhow!("method {}: {e}", method.name()))
-}
-
 fn class_colour(c: RootClass) -> RGBColor {
     match c {
         RootClass::Deadbeat => RGBColor(200, 200, 200),
@@ -249,8 +253,9 @@ fn curve_colour(kind: &str) -> RGBColor {
 }
 
 /// Draws the map as SVG.
-pub fn draw_svg(m: &StabilityMap, path: &Path) -> anyhow::Result<()> {
-    let err = |e: &dyn std::fmt::Display| anyhow::anyhow!("{}: cannot draw: {e}", path.display());
+pub(crate) fn draw_svg(m: &StabilityMap, path: &Path) -> Result<(), Error> {
+    let err =
+        |e: &dyn std::fmt::Display| Error::figure(format!("{}: cannot draw: {e}", path.display()));
     let root = SVGBackend::new(path, (900, 680)).into_drawing_area();
     root.fill(&WHITE).map_err(|e| err(&e))?;
     let mut chart = ChartBuilder::on(&root)

@@ -9,8 +9,11 @@
 //! deviation, calculations per step, largest step) in one place.
 
 use poly::series::{self, LeadingTerm};
-use poly::{Poly, Q};
+use poly::{Derivation, Poly, Q};
 use serde::Serialize;
+
+use crate::error::Error;
+use crate::load::builtin_derivation;
 
 /// One row of the overview.
 #[derive(Clone, Debug, Serialize)]
@@ -45,20 +48,9 @@ pub struct MethodSummary {
     pub solve: (u32, u32),
 }
 
-/// Why a row could not be computed.
-#[derive(Debug)]
-pub struct OverviewError(String);
-
-impl std::fmt::Display for OverviewError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(&self.0)
-    }
-}
-
-impl std::error::Error for OverviewError {}
-
-fn err(e: impl std::fmt::Display) -> OverviewError {
-    OverviewError(e.to_string())
+/// A series that could not be taken, said as `poly` says it.
+fn series_error(e: impl std::fmt::Display) -> Error {
+    Error::unsupported(e.to_string())
 }
 
 /// `Σ c_k Φ^k + O(Φ^(order+1))` in plain text.
@@ -79,16 +71,24 @@ fn leading(t: Option<LeadingTerm>) -> String {
 }
 
 /// The overview row of a method whose χ is in z and Φ only.
-pub fn summarize(method: &poly::Method, order: usize) -> Result<MethodSummary, OverviewError> {
-    let d = poly::derive(method).map_err(err)?;
+pub fn summarize(method: &poly::Method, order: usize) -> Result<MethodSummary, Error> {
+    summary_of(&poly::derive(method)?, order)
+}
+
+/// The overview row of a derived method whose χ is in z and Φ only.
+pub(crate) fn summary_of(d: &Derivation, order: usize) -> Result<MethodSummary, Error> {
+    let method = &d.method;
     let chi = &d.charpoly;
     // From the derivation: a repeated root on the circle is decided from P
     // (Gauss–Legendre's P is −I at Φ = 2√3: bounded through it).
-    let report = poly::stability::analyze_derivation(&d, &Default::default()).map_err(err)?;
+    let report = poly::stability::analyze_derivation(d, &Default::default())?;
     let (phi_max_exact, phi_max) = match report.phi_max() {
         Some(a) => {
             let exact = a.closed_form().unwrap_or_else(|| a.describe("Phi"));
-            let value: f64 = a.to_decimal(17).parse().map_err(err)?;
+            let value: f64 = a
+                .to_decimal(17)
+                .parse()
+                .map_err(|e: std::num::ParseFloatError| Error::numeric(e.to_string()))?;
             (exact, Some(value))
         }
         None if report.bounded_for_all() => ("none: bounded for every Phi > 0".to_owned(), None),
@@ -102,7 +102,7 @@ pub fn summarize(method: &poly::Method, order: usize) -> Result<MethodSummary, O
     let (psi_series, phase_error) = match series::psi_series_scaled(chi, order) {
         _ if constants => over_q(),
         Ok((d, c)) if d == Q::from_integer(1.into()) => {
-            (series_text(&c, ""), leading(series::dispersion_order(chi).map_err(err)?))
+            (series_text(&c, ""), leading(series::dispersion_order(chi).map_err(series_error)?))
         }
         Ok((d, c)) => (series_text(&c, &format!("sqrt({d})")), "order 1".to_owned()),
         Err(e) => (format!("n/a ({e})"), "n/a".to_owned()),
@@ -113,9 +113,11 @@ pub fn summarize(method: &poly::Method, order: usize) -> Result<MethodSummary, O
         // a polynomial, not a truncated series.
         Ok(_) if d.p_q().is_some_and(|(_, q)| (q.degree_in(poly::Sym::phi()) as usize) < order) => {
             let q = d.p_q().map(|(_, q)| q.to_string()).unwrap_or_default();
-            (q, leading(series::dissipation_order(chi).map_err(err)?))
+            (q, leading(series::dissipation_order(chi).map_err(series_error)?))
         }
-        Ok(c) => (series_text(&c, ""), leading(series::dissipation_order(chi).map_err(err)?)),
+        Ok(c) => {
+            (series_text(&c, ""), leading(series::dissipation_order(chi).map_err(series_error)?))
+        }
         Err(e) => (format!("n/a ({e})"), "n/a".to_owned()),
     };
     let cost = poly::step_cost(method);
@@ -136,12 +138,10 @@ pub fn summarize(method: &poly::Method, order: usize) -> Result<MethodSummary, O
     })
 }
 
-/// The overview of the paper's seven methods.
-pub fn paper_overview(order: usize) -> Result<Vec<MethodSummary>, OverviewError> {
-    poly::PAPER_METHODS
-        .iter()
-        .map(|name| summarize(&poly::builtin(name).map_err(err)?, order))
-        .collect()
+/// The overview of the paper's seven methods (derived once per process,
+/// with the paper's claims).
+pub fn paper_overview(order: usize) -> Result<Vec<MethodSummary>, Error> {
+    poly::PAPER_METHODS.iter().map(|name| summary_of(&builtin_derivation(name), order)).collect()
 }
 
 /// The overview as a Markdown table (numbers rounded to 4 decimals). When

@@ -7,7 +7,6 @@
 //! `y@1 = y₀`, the paper's `y2:=1`), and the exact solution is cos t.
 
 use check::numeric::ParamsF64;
-use std::fmt;
 use std::path::Path;
 
 use plotters::prelude::*;
@@ -16,39 +15,11 @@ use poly::Method;
 use check::numeric::{initial_slots, Params, Step};
 use check::witness::ExactCharpoly;
 
-/// Why a figure could not be drawn.
-#[derive(Debug)]
-pub enum PlotError {
-    /// Numeric work on the method failed.
-    Numeric(check::Error),
-    /// plotters could not draw or write the file.
-    Draw {
-        /// The file.
-        path: String,
-        /// plotters' message.
-        message: String,
-    },
-}
+use crate::error::Error;
+use crate::load::LoadedMethod;
 
-impl fmt::Display for PlotError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            PlotError::Numeric(e) => write!(f, "{e}"),
-            PlotError::Draw { path, message } => write!(f, "{path}: cannot draw: {message}"),
-        }
-    }
-}
-
-impl std::error::Error for PlotError {}
-
-impl From<check::Error> for PlotError {
-    fn from(e: check::Error) -> Self {
-        PlotError::Numeric(e)
-    }
-}
-
-fn draw_err(path: &Path) -> impl Fn(&dyn std::error::Error) -> PlotError + '_ {
-    move |e| PlotError::Draw { path: path.display().to_string(), message: e.to_string() }
+fn draw_err(path: &Path) -> impl Fn(&dyn std::error::Error) -> Error + '_ {
+    move |e| Error::figure(format!("{}: cannot draw: {e}", path.display()))
 }
 
 /// The samples (t_k, y_k), k = 0..=n_steps, of `method` at `params` from
@@ -83,12 +54,12 @@ pub fn samples(
 
 /// Draws y(t) of `method` at `params` over `t_max` (in units of 1/ω₀) into
 /// an SVG at `path`.
-pub fn yt_figure(
+pub(crate) fn yt_figure(
     method: &Method,
     params: &Params,
     t_max: f64,
     path: &Path,
-) -> Result<(), PlotError> {
+) -> Result<(), Error> {
     let root = SVGBackend::new(path, (720, 360)).into_drawing_area();
     root.fill(&WHITE).map_err(|e| draw_err(path)(&e))?;
     draw_yt(&root, method, params, t_max).map_err(|e| draw_err(path)(e.as_ref()))?;
@@ -97,17 +68,17 @@ pub fn yt_figure(
 }
 
 /// Draws y(t) of every method in `methods` as a grid of panels.
-pub fn yt_grid(
-    methods: &[Method],
+pub(crate) fn yt_grid(
+    methods: &[LoadedMethod],
     params: &Params,
     t_max: f64,
     path: &Path,
-) -> Result<(), PlotError> {
+) -> Result<(), Error> {
     let rows = methods.len().div_ceil(2);
     let root = SVGBackend::new(path, (1200, 300 * rows as u32)).into_drawing_area();
     root.fill(&WHITE).map_err(|e| draw_err(path)(&e))?;
     for (area, m) in root.split_evenly((rows, 2)).iter().zip(methods) {
-        draw_yt(area, m, params, t_max).map_err(|e| draw_err(path)(e.as_ref()))?;
+        draw_yt(area, m.method(), params, t_max).map_err(|e| draw_err(path)(e.as_ref()))?;
     }
     root.present().map_err(|e| draw_err(path)(&e))?;
     Ok(())
@@ -176,23 +147,23 @@ where
 
 /// Draws the z-plane: the unit circle and the roots of each method's χ as
 /// Φ runs from 0 to `phi_max` (`points` values), one colour per method.
-pub fn zplane_figure(
-    methods: &[Method],
+pub(crate) fn zplane_figure(
+    methods: &[LoadedMethod],
     params: &Params,
     phi_max: f64,
     points: usize,
     path: &Path,
-) -> Result<(), PlotError> {
+) -> Result<(), Error> {
     let mut loci = Vec::new();
     for m in methods {
-        let chi = ExactCharpoly::new(m)?;
+        let chi = ExactCharpoly::from_derivation(m.derivation()?);
         let mut pts = Vec::new();
         for i in 0..=points {
             let phi = phi_max * i as f64 / points as f64;
             let f = chi.at(&params.clone().with("Phi", phi))?;
             pts.extend(f.roots.iter().map(|z| (z.re, z.im)));
         }
-        loci.push((m.name().to_owned(), pts));
+        loci.push((m.method().name().to_owned(), pts));
     }
     let root = SVGBackend::new(path, (720, 720)).into_drawing_area();
     let err = draw_err(path);

@@ -34,10 +34,7 @@ use toml::Spanned;
 
 /// The most stages read: beyond any published method, and a bound on the
 /// size of the generated program.
-pub const MAX_STAGES: usize = 64;
-
-/// A mistake in a tableau file, with its location.
-pub type TableauError = crate::located::FileError;
+pub(crate) const MAX_STAGES: usize = 64;
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -71,7 +68,7 @@ pub struct Tableau {
     constants: Vec<(String, String)>,
 }
 
-use crate::located::line_col;
+use crate::error::{line_col, Error};
 
 /// A name fit for a `.zm` method: letters, digits and `_`, not starting
 /// with a digit.
@@ -87,9 +84,9 @@ fn method_ident(s: &str) -> String {
 
 impl Tableau {
     /// Reads a tableau file (at most [`check::load::MAX_FILE_BYTES`]).
-    pub fn load(path: &Path) -> Result<Tableau, TableauError> {
+    pub fn load(path: &Path) -> Result<Tableau, Error> {
         let shown = path.display().to_string();
-        let fail = |message: String| TableauError { path: shown.clone(), line: 1, col: 1, message };
+        let fail = |message: String| Error::file(&shown, 1, 1, &message);
         let meta = std::fs::metadata(path).map_err(|e| fail(format!("cannot read: {e}")))?;
         if meta.is_dir() {
             return Err(fail("is a directory: expected a .toml tableau".to_owned()));
@@ -107,12 +104,12 @@ impl Tableau {
                 let good = e.utf8_error().valid_up_to();
                 let text = String::from_utf8_lossy(&e.as_bytes()[..good]).into_owned();
                 let (line, col) = line_col(&text, good);
-                return Err(TableauError {
-                    path: shown,
+                return Err(Error::file(
+                    &shown,
                     line,
                     col,
-                    message: "invalid UTF-8: expected a UTF-8 text file".to_owned(),
-                });
+                    "invalid UTF-8: expected a UTF-8 text file",
+                ));
             }
         };
         let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("tableau");
@@ -121,10 +118,10 @@ impl Tableau {
 
     /// Parses the text of a tableau file; `stem` names the method when the
     /// file has no `name`.
-    pub fn parse(path: &str, stem: &str, text: &str) -> Result<Tableau, TableauError> {
+    pub fn parse(path: &str, stem: &str, text: &str) -> Result<Tableau, Error> {
         let err = |span: Option<Range<usize>>, message: String| {
             let (line, col) = line_col(text, span.map_or(0, |s| s.start));
-            TableauError { path: path.to_owned(), line, col, message }
+            Error::file(path, line, col, &message)
         };
         let raw: Raw = toml::from_str(text).map_err(|e| {
             err(e.span(), e.message().trim_end_matches('\n').replace('\n', "; ").to_string())
@@ -166,7 +163,7 @@ impl Tableau {
         let entry = |v: &Spanned<toml::Value>,
                      what: String,
                      constants: &mut Vec<(String, String)>|
-         -> Result<Entry, TableauError> {
+         -> Result<Entry, Error> {
             let at = |m: String| err(Some(v.span()), format!("{what}: {m}"));
             let text = match v.get_ref() {
                 toml::Value::Integer(i) => i.to_string(),
@@ -248,11 +245,6 @@ impl Tableau {
     /// Whether `A` is strictly lower triangular (an explicit method).
     pub fn is_explicit(&self) -> bool {
         self.a.iter().enumerate().all(|(i, row)| row[i..].iter().all(|e| e.zero))
-    }
-
-    /// The method's name.
-    pub fn name(&self) -> &str {
-        &self.name
     }
 
     /// The `.zm` program of the method on the oscillator, or on the damped
@@ -450,27 +442,4 @@ fn probe(expr: &str, constants: &[(String, String)]) -> Result<bool, String> {
     writeln!(src, "v = ({expr})*v").expect("string");
     let m = poly::Method::parse("entry", &src).map_err(|e| e.message().to_owned())?;
     Ok(m.assigns().last().is_none_or(|a| a.terms.is_empty()))
-}
-
-/// Loads a method argument: a tableau when it ends in `.toml` (its program
-/// on the undamped oscillator), otherwise what [`check::load::load_method`]
-/// loads (a built-in name or a `.zm` file).
-pub fn load_method(arg: &str) -> anyhow::Result<poly::Method> {
-    load_method_with(arg, false)
-}
-
-/// As [`load_method`], with a tableau's program on the damped oscillator
-/// (`param D`) when `damped`.
-pub fn load_method_with(arg: &str, damped: bool) -> anyhow::Result<poly::Method> {
-    if arg.ends_with(".toml") {
-        let t = Tableau::load(Path::new(arg))?;
-        let src = t.to_zm(damped);
-        return poly::Method::parse(arg, &src).map_err(|e| {
-            anyhow::anyhow!(
-                "{arg}: the program generated from the tableau does not parse: {}",
-                e.message()
-            )
-        });
-    }
-    Ok(check::load::load_method(arg)?)
 }

@@ -5,21 +5,20 @@
 use std::process::ExitCode;
 use std::time::Duration;
 
-use poly::Q;
-use zcheck::tradeoff::{self, family, kernels, Advice, Candidate, Scene};
+use super::format::{Format, TEXT_JSON};
+use crate::error::Error;
+use crate::load::LoadedMethod;
+use crate::scene::advisor::{self, Options};
+use crate::scene::file::SceneFile;
+use crate::scene::modal::{self, Modal, Shapes};
+use crate::tradeoff::spring_advisor::{advise_spring, SpringAdvice, SpringScene};
+use crate::tradeoff::{family, kernels};
 
 use super::values::Exact;
 
-/// Output format of `zcheck advise`.
-#[derive(Clone, Copy, clap::ValueEnum)]
-pub enum Format {
-    Text,
-    Json,
-}
-
 /// Arguments of `zcheck advise`.
 #[derive(clap::Args)]
-pub struct Args {
+pub(crate) struct Args {
     /// The spring's natural frequency, Hz.
     #[arg(long, required_unless_present = "scene")]
     pub freq: Option<f64>,
@@ -40,61 +39,49 @@ pub struct Args {
     #[arg(long)]
     pub no_simulate: bool,
     /// How long the scene must stay within tolerance, seconds.
-    #[arg(long, default_value_t = Scene::DEFAULT_DURATION_S)]
+    #[arg(long, default_value_t = SpringScene::DEFAULT_DURATION_S)]
     pub duration: f64,
     /// Largest accumulated phase error over the duration, radians.
-    #[arg(long, default_value_t = Scene::DEFAULT_PHASE_TOL)]
+    #[arg(long, default_value_t = SpringScene::DEFAULT_PHASE_TOL)]
     pub phase_tol: f64,
     /// Largest relative amplitude error over the duration (0.01 = 1 %).
-    #[arg(long, default_value_t = Scene::DEFAULT_AMP_TOL)]
+    #[arg(long, default_value_t = SpringScene::DEFAULT_AMP_TOL)]
     pub amp_tol: f64,
     /// Physical damping ratio D (0 <= D < 1), an exact decimal (`0.1` is
     /// 1/10); without it the spring is undamped.
     #[arg(long, allow_negative_numbers = true)]
     pub damping: Option<Exact>,
-    #[arg(long, value_enum, default_value = "text")]
+    #[arg(long, value_parser = Format::parser(TEXT_JSON), default_value = "text")]
     pub format: Format,
-}
-
-/// The candidates for a scene: the seven direct methods, on the spring with
-/// the exact damping ratio `damping` when there is one.
-pub fn candidates(damping: Option<&Q>) -> anyhow::Result<Vec<Candidate>> {
-    Ok(match damping {
-        Some(q) => family::damped_family(q)?,
-        None => family::undamped_family()?
-            .into_iter()
-            .filter(|c| family::direct_names().contains(&c.name.as_str()))
-            .collect(),
-    })
 }
 
 /// Update orders `--sweep` can analyse.
 #[derive(Clone, Copy, clap::ValueEnum)]
-pub enum SweepArg {
+pub(crate) enum SweepArg {
     /// Bodies updated in sequence, each seeing those already updated.
     GaussSeidel,
 }
 
-pub fn run(args: Args) -> anyhow::Result<ExitCode> {
+pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     if let Some(path) = &args.scene {
         return run_scene(path, &args);
     }
     let (Some(freq_hz), Some(tick_hz)) = (args.freq, args.tick) else {
-        anyhow::bail!("expected --freq and --tick, or --scene FILE");
+        return Err(Error::usage("expected --freq and --tick, or --scene FILE"));
     };
     // The one-spring table compares the seven direct methods (with
     // --damping, each on the damped spring); --methods would be ignored.
     if !args.methods.is_empty() {
-        anyhow::bail!(
+        return Err(Error::usage(format!(
             "--methods {}: the candidates of a scene (--scene FILE); with --freq and --tick \
              zcheck advise compares the seven direct methods. Expected --scene FILE (a one-mode \
              scene is one body and one spring), or zcheck tradeoff --method {} to rank a method \
              of your own",
             args.methods.join(","),
             args.methods[0]
-        );
+        )));
     }
-    let scene = Scene {
+    let scene = SpringScene {
         freq_hz,
         tick_hz,
         duration_s: args.duration,
@@ -103,32 +90,39 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
         damping: args.damping.as_ref().map(|d| d.to_f64("--damping")).transpose()?,
     };
     scene.validate()?;
-    let cands = candidates(args.damping.as_ref().map(|d| &d.value))?;
+    // The seven direct methods on the damped spring: the whole-scene
+    // advisor's candidates below and, with --damping, the table's too,
+    // derived once for both.
+    let damped = LoadedMethod::damped_builtins()?;
+    let cands = match &args.damping {
+        Some(d) => family::damped_candidates(&damped, &d.value)?,
+        None => family::undamped_family()?
+            .into_iter()
+            .filter(|c| poly::PAPER_METHODS.contains(&c.name.as_str()))
+            .collect(),
+    };
     let d = scene.damping.unwrap_or(0.0);
     let budget = Duration::from_millis(3);
     let ns: Vec<f64> =
-        cands.iter().map(|c| super::tradeoff::measure(c, budget)).collect::<anyhow::Result<_>>()?;
+        cands.iter().map(|c| super::tradeoff::measure(c, budget)).collect::<Result<_, Error>>()?;
     let mut k = 0;
-    let mut advice = tradeoff::advise(&scene, &cands, |_| {
+    let mut advice = advise_spring(&scene, &cands, |_| {
         k += 1;
         ns[k - 1]
     })?;
-    // advise keeps the candidates' order.
+    // advise_spring keeps the candidates' order.
     for (m, c) in advice.methods.iter_mut().zip(&cands) {
-        m.ns_per_step_hand = kernels::time_hand_kernel(c.kernel_name(), d, budget);
+        m.ns_per_step_hand = c.hand_kernel.and_then(|h| kernels::time_hand_kernel(h, d, budget));
     }
-    // The same spring as a one-mode scene, through the scene advisor: its
-    // modes, candidates (with the simulation that checks the prediction)
-    // and recommendation, in the scene JSON's keys.
-    let one_mode = zcheck::scene::file::SceneFile::one_mode(
-        freq_hz,
-        d,
-        tick_hz,
-        args.duration,
-        args.phase_tol,
-        args.amp_tol,
-    );
-    let as_scene = scene_advice(&one_mode, &[], !args.no_simulate, false)?;
+    // The same spring as a one-mode scene, through the whole-scene advisor:
+    // its modes, candidates (with the simulation that checks the
+    // prediction) and recommendation, in the scene JSON's keys.
+    let one_mode =
+        SceneFile::one_mode(freq_hz, d, tick_hz, args.duration, args.phase_tol, args.amp_tol);
+    let simulate = !args.no_simulate;
+    let modal = modal_of(&one_mode, simulate)?;
+    let options = Options { simulate, gauss_seidel: false };
+    let as_scene = advisor::advise(&one_mode, &modal, damped, options)?;
     match args.format {
         Format::Json => {
             let out = OneSpring {
@@ -139,7 +133,7 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
             };
             super::output::emitln(&serde_json::to_string_pretty(&out)?)?
         }
-        Format::Text => {
+        _ => {
             let mut t = text(&advice);
             t += &format!(
                 "as a one-mode scene (zcheck advise --scene): {}\n",
@@ -160,37 +154,21 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
 }
 
 /// `zcheck advise --freq --tick` as JSON: the one-spring advice, plus the
-/// scene advisor's keys for the same spring as a one-mode scene.
+/// whole-scene advisor's keys for the same spring as a one-mode scene.
 #[derive(serde::Serialize)]
 struct OneSpring<'a> {
     #[serde(flatten)]
-    advice: &'a Advice,
-    modes: &'a [zcheck::scene::advisor::ModeReport],
-    candidates: &'a [zcheck::scene::advisor::CandidateAdvice],
-    recommended: &'a Option<zcheck::scene::advisor::Recommended>,
+    advice: &'a SpringAdvice,
+    modes: &'a [advisor::ModeReport],
+    candidates: &'a [advisor::CandidateAdvice],
+    recommended: &'a Option<advisor::Recommended>,
 }
 
-/// The scene advisor on `scene` with `methods` (default: the seven direct
-/// methods on the damped spring).
-fn scene_advice(
-    scene: &zcheck::scene::file::SceneFile,
-    methods: &[String],
-    simulate: bool,
-    gauss_seidel: bool,
-) -> anyhow::Result<zcheck::scene::advisor::SceneAdvice> {
-    use zcheck::scene::advisor::{self, MethodSpec, Options};
-    let shapes = if simulate {
-        zcheck::scene::modal::Shapes::Compute
-    } else {
-        zcheck::scene::modal::Shapes::WhenNeeded
-    };
-    let modal = zcheck::scene::modal::reduce_with(scene, shapes)?;
-    let specs = if methods.is_empty() {
-        MethodSpec::builtins()?
-    } else {
-        methods.iter().map(|m| MethodSpec::load(m)).collect::<anyhow::Result<_>>()?
-    };
-    advisor::advise(scene, &modal, specs, Options { simulate, gauss_seidel })
+/// The scene reduced to its modes, with mode shapes when the prediction
+/// is to be checked by simulation.
+fn modal_of(scene: &SceneFile, simulate: bool) -> Result<Modal, Error> {
+    let shapes = if simulate { Shapes::Compute } else { Shapes::WhenNeeded };
+    modal::reduce_with(scene, shapes)
 }
 
 /// Rows under a header, each column as wide as its widest cell (phi_max
@@ -224,7 +202,7 @@ fn table(header: &[String; 7], rows: &[[String; 7]]) -> String {
 }
 
 /// The advice as a table and a sentence.
-pub fn text(a: &Advice) -> String {
+pub(crate) fn text(a: &SpringAdvice) -> String {
     let s = &a.scene;
     let f = |x: f64| super::values::show_f64(x);
     let mut out = format!(
@@ -295,36 +273,46 @@ pub fn text(a: &Advice) -> String {
 }
 
 /// `zcheck advise --scene FILE`.
-fn run_scene(path: &std::path::Path, args: &Args) -> anyhow::Result<ExitCode> {
-    use zcheck::scene::file::SceneFile;
+fn run_scene(path: &std::path::Path, args: &Args) -> Result<ExitCode, Error> {
     let scene = SceneFile::load(path)?;
-    if args.duration != Scene::DEFAULT_DURATION_S
-        || args.phase_tol != Scene::DEFAULT_PHASE_TOL
-        || args.amp_tol != Scene::DEFAULT_AMP_TOL
+    if args.duration != SpringScene::DEFAULT_DURATION_S
+        || args.phase_tol != SpringScene::DEFAULT_PHASE_TOL
+        || args.amp_tol != SpringScene::DEFAULT_AMP_TOL
     {
-        anyhow::bail!("--duration, --phase-tol and --amp-tol belong in the scene file with --scene (duration_s, [accuracy])");
+        return Err(Error::usage(
+            "--duration, --phase-tol and --amp-tol belong in the scene file with --scene \
+             (duration_s, [accuracy])",
+        ));
     }
-    let advice = scene_advice(&scene, &args.methods, !args.no_simulate, args.sweep.is_some())?;
+    let simulate = !args.no_simulate;
+    let modal = modal_of(&scene, simulate)?;
+    let specs = if args.methods.is_empty() {
+        LoadedMethod::damped_builtins()?
+    } else {
+        args.methods.iter().map(|m| LoadedMethod::load_damped(m)).collect::<Result<_, _>>()?
+    };
+    let options = Options { simulate, gauss_seidel: args.sweep.is_some() };
+    let advice = advisor::advise(&scene, &modal, specs, options)?;
     match args.format {
         Format::Json => super::output::emitln(&serde_json::to_string_pretty(&advice)?)?,
-        Format::Text => super::output::emit(&scene_text(&path.display().to_string(), &advice))?,
+        _ => super::output::emit(&scene_text(&path.display().to_string(), &advice))?,
     }
     Ok(ExitCode::SUCCESS)
 }
 
 /// The scene advice as text: the modes that matter, a table, a sentence.
-pub fn scene_text(name: &str, a: &zcheck::scene::advisor::SceneAdvice) -> String {
+pub(crate) fn scene_text(name: &str, a: &advisor::SceneAdvice) -> String {
     let mut out = format!(
         "scene {name}: {} degrees of freedom, {} modes ({} rigid left out), damping {}\n",
         a.dof,
         a.modes.len(),
         a.rigid_modes,
         match a.damping {
-            zcheck::scene::modal::DampingKind::Undamped => "none".to_owned(),
-            zcheck::scene::modal::DampingKind::Rayleigh { alpha, beta } =>
+            modal::DampingKind::Undamped => "none".to_owned(),
+            modal::DampingKind::Rayleigh { alpha, beta } =>
                 format!("Rayleigh (alpha = {alpha:.4} 1/s, beta = {beta:.3e} s)"),
-            zcheck::scene::modal::DampingKind::Proportional => "proportional".to_owned(),
-            zcheck::scene::modal::DampingKind::NonProportional =>
+            modal::DampingKind::Proportional => "proportional".to_owned(),
+            modal::DampingKind::NonProportional =>
                 "non-proportional (stability from the full-step matrix)".to_owned(),
         }
     );
@@ -380,7 +368,7 @@ pub fn scene_text(name: &str, a: &zcheck::scene::advisor::SceneAdvice) -> String
     out += &table(&header, &rows);
     out += &format!(
         "\nagreement: simulated within {} of the target (plus 1e-9) of the prediction\n",
-        zcheck::scene::advisor::AGREE_FRACTION
+        advisor::AGREE_FRACTION
     );
     for c in &a.candidates {
         if let Some(s) = &c.simulated {

@@ -5,30 +5,29 @@ use std::process::ExitCode;
 use poly::{Derivation, Poly};
 use serde_json::json;
 
-/// Output format of `zcheck derive`.
-#[derive(Clone, Copy, clap::ValueEnum)]
-pub enum Format {
-    Text,
-    Json,
-    Latex,
-}
+use super::format::Format;
+use crate::error::Error;
+use crate::load::LoadedMethod;
+
+/// The formats `zcheck derive` writes.
+const FORMATS: &[Format] = &[Format::Text, Format::Json, Format::Latex];
 
 /// Arguments of `zcheck derive`.
 #[derive(clap::Args)]
-pub struct Args {
+pub(crate) struct Args {
     /// A built-in method name or a path to a `.zm` file.
     pub method: String,
-    #[arg(long, value_enum, default_value = "text")]
+    #[arg(long, value_parser = Format::parser(FORMATS), default_value = "text")]
     pub format: Format,
 }
 
-pub fn run(args: Args) -> anyhow::Result<ExitCode> {
-    let method = zcheck::tableau::load_method(&args.method)?;
-    let d = poly::derive(&method)?;
+pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
+    let method = LoadedMethod::load(&args.method)?;
+    let d = method.derivation()?;
     let out = match args.format {
-        Format::Text => text(&d),
-        Format::Json => serde_json::to_string_pretty(&to_json(&d))? + "\n",
-        Format::Latex => latex(&d),
+        Format::Json => serde_json::to_string_pretty(&to_json(d))? + "\n",
+        Format::Latex => latex(d),
+        _ => text(d),
     };
     super::output::emit(&out)?;
     Ok(ExitCode::SUCCESS)
@@ -36,7 +35,7 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
 
 /// The JSON document of a derivation (`routes_agree` is true: [`poly::derive`]
 /// refuses to return a derivation whose routes disagree).
-pub fn to_json(d: &Derivation) -> serde_json::Value {
+pub(crate) fn to_json(d: &Derivation) -> serde_json::Value {
     let m = &d.method;
     let rows = |mat: &poly::PolyMatrix, f: &dyn Fn(&Poly) -> String| -> Vec<Vec<String>> {
         (0..mat.rows()).map(|i| mat.row(i).iter().map(f).collect()).collect()
@@ -72,7 +71,7 @@ pub fn to_json(d: &Derivation) -> serde_json::Value {
 }
 
 /// The human-readable derivation.
-pub fn text(d: &Derivation) -> String {
+pub(crate) fn text(d: &Derivation) -> String {
     use std::fmt::Write;
     let m = &d.method;
     let mut s = String::new();
@@ -123,7 +122,7 @@ pub fn text(d: &Derivation) -> String {
 /// Every read of a state variable that an earlier line of the same step has
 /// already updated: a transcription meant to use the old values sees at
 /// once that it does not.
-pub fn gauss_seidel_text(m: &poly::Method) -> String {
+pub(crate) fn gauss_seidel_text(m: &poly::Method) -> String {
     let reads = m.gauss_seidel_reads();
     if reads.is_empty() {
         return "\nGauss-Seidel reads: none (every line reads the values the step started from)\n"
@@ -142,7 +141,7 @@ pub fn gauss_seidel_text(m: &poly::Method) -> String {
 }
 
 /// LaTeX source of the derivation.
-pub fn latex(d: &Derivation) -> String {
+pub(crate) fn latex(d: &Derivation) -> String {
     use std::fmt::Write;
     let mat = |m: &poly::PolyMatrix, f: &dyn Fn(&Poly) -> String| -> String {
         let rows: Vec<String> =

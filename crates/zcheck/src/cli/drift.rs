@@ -7,31 +7,29 @@ use std::process::ExitCode;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
 
-use anyhow::{bail, Context};
 use check::drift::{Run, Study};
 use check::kernel::{Kernel, Real};
 use check::numeric::{q_to_f64, Params, ParamsF64, Step};
-use poly::invariant::{conserved_form, form_text, is_positive_definite, transition_matrix_at};
-use poly::{Sym, Q};
+use num_traits::Zero;
+use poly::invariant::{conserved_form, form_text, is_positive_definite};
+use poly::{Derivation, Sym, Q};
 use serde_json::{json, Value};
 
-/// Output format of `zcheck drift`.
-#[derive(Clone, Copy, clap::ValueEnum)]
-pub enum Format {
-    Text,
-    Json,
-}
+use super::format::{Format, TEXT_JSON};
+use super::output;
+use crate::error::Error;
+use crate::load::LoadedMethod;
 
 /// Floating-point precision of the run.
 #[derive(Clone, Copy, clap::ValueEnum)]
-pub enum Precision {
+pub(crate) enum Precision {
     F64,
     F32,
 }
 
 /// Arguments of `zcheck drift`.
 #[derive(clap::Args)]
-pub struct Args {
+pub(crate) struct Args {
     /// Built-in method names or paths to `.zm` files (each needs |z| = 1
     /// at Phi); several are studied in turn and drawn together.
     #[arg(required = true)]
@@ -56,12 +54,12 @@ pub struct Args {
     /// Also draw RMS drift against N (SVG).
     #[arg(long)]
     pub svg: Option<PathBuf>,
-    #[arg(long, value_enum, default_value = "text")]
+    #[arg(long, value_parser = Format::parser(TEXT_JSON), default_value = "text")]
     pub format: Format,
 }
 
 /// One method's study, ready to print.
-pub struct Report {
+pub(crate) struct Report {
     pub method: String,
     pub phi: Q,
     pub form: String,
@@ -75,11 +73,11 @@ pub struct Report {
 }
 
 /// Checkpoints from this many steps on are held against the model.
-pub const MODEL_FROM: u64 = 100;
+pub(crate) const MODEL_FROM: u64 = 100;
 
 impl Report {
     /// Which term of the model dominates at the run's length.
-    pub fn model(&self) -> &'static str {
+    pub(crate) fn model(&self) -> &'static str {
         if self.run.linear() {
             "linear, N*b*eps (biased rounding dominates)"
         } else {
@@ -88,33 +86,33 @@ impl Report {
     }
 
     /// The largest factor between measured and modelled RMS (N >= 100).
-    pub fn ratio(&self) -> Option<f64> {
+    pub(crate) fn ratio(&self) -> Option<f64> {
         self.run.worst_ratio(MODEL_FROM)
     }
 
     /// Whether every checkpoint (N >= 100) lies within a factor 3 of the model.
-    pub fn within_model(&self) -> bool {
+    pub(crate) fn within_model(&self) -> bool {
         self.ratio().is_some_and(|r| r <= 3.0)
     }
 }
 
-pub fn run(args: Args) -> anyhow::Result<ExitCode> {
+pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     if args.starts == 0 {
-        bail!("--starts 0: expected at least one start");
+        return Err(Error::usage("--starts 0: expected at least one start"));
     }
     let phi = args
         .phi
         .parse::<super::values::Exact>()
-        .map_err(|e| anyhow::anyhow!("--phi {}: {e}", args.phi))?
+        .map_err(|e| Error::usage(format!("--phi {}: {e}", args.phi)))?
         .value;
     if phi <= Q::from_integer(0.into()) {
-        bail!("--phi {}: expected a step > 0", args.phi);
+        return Err(Error::usage(format!("--phi {}: expected a step > 0", args.phi)));
     }
     let mut extra = Vec::new();
     for p in &args.params {
         let (name, value) = super::values::parse_param(p)?;
         if name == "Phi" {
-            bail!("--param {p}: give the step with --phi");
+            return Err(Error::usage(format!("--param {p}: give the step with --phi")));
         }
         extra.push((name, value));
     }
@@ -142,25 +140,21 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
         }
     }
     if let Some(path) = &args.svg {
-        zcheck::drift_figure::draw(path, &reports_for_figure(&reports))
-            .map_err(|e| anyhow::anyhow!("{e}"))?;
+        crate::drift_figure::draw(path, &reports_for_figure(&reports))?;
     }
     match args.format {
-        Format::Text => print!("{}", reports.iter().map(text).collect::<Vec<_>>().join("\n")),
-        Format::Json => println!(
-            "{}",
-            serde_json::to_string_pretty(
-                &json!({ "runs": reports.iter().map(to_json).collect::<Vec<_>>() })
-            )?
-        ),
+        Format::Json => output::emitln(&serde_json::to_string_pretty(
+            &json!({ "runs": reports.iter().map(to_json).collect::<Vec<_>>() }),
+        )?)?,
+        _ => output::emit(&reports.iter().map(text).collect::<Vec<_>>().join("\n"))?,
     }
     Ok(ExitCode::SUCCESS)
 }
 
-fn reports_for_figure(reports: &[Report]) -> Vec<zcheck::drift_figure::Line> {
+fn reports_for_figure(reports: &[Report]) -> Vec<crate::drift_figure::Line> {
     reports
         .iter()
-        .map(|r| zcheck::drift_figure::Line {
+        .map(|r| crate::drift_figure::Line {
             label: format!("{} ({})", r.method, r.precision),
             measured: r.run.checkpoints.iter().map(|c| (c.steps as f64, c.rms_eps)).collect(),
             predicted: r
@@ -180,37 +174,41 @@ fn study<T: Real>(
     args: &Args,
     threads: usize,
     stop: &AtomicBool,
-) -> anyhow::Result<Report> {
-    let method = zcheck::tableau::load_method(name)?;
+) -> Result<Report, Error> {
+    let loaded = LoadedMethod::load(name)?;
+    let method = loaded.method();
     let mut exact: HashMap<Sym, Q> = HashMap::new();
     let mut params = Params::new();
     for sym in method.params() {
         let value = if sym.name() == "Phi" {
             phi.clone()
         } else {
-            extra
-                .iter()
-                .find(|(n, _)| n == sym.name())
-                .map(|(_, v)| v.clone())
-                .with_context(|| format!("method {name} needs --param {}=VALUE", sym.name()))?
+            extra.iter().find(|(n, _)| n == sym.name()).map(|(_, v)| v.clone()).ok_or_else(
+                || Error::usage(format!("method {name} needs --param {}=VALUE", sym.name())),
+            )?
         };
         params.set(sym.name(), q_to_f64(&value));
         exact.insert(*sym, value);
     }
-    let p = transition_matrix_at(&method, &exact).expect("every parameter has a value");
-    let names = Step::compile(&method, &params)?.slot_names().to_vec();
+    let p =
+        transition_matrix_at(loaded.derivation()?, &exact).expect("every parameter has a value");
+    let step = Step::compile(method, &params)?;
+    let names = step.slot_names().to_vec();
     let form = match conserved_form(&p) {
         Ok(f) if is_positive_definite(&f) => f,
-        Ok(_) => bail!(
-            "{name}: at Phi = {phi} the roots are real (the conserved form is indefinite): \
+        Ok(_) => {
+            return Err(Error::unsupported(format!(
+                "{name}: at Phi = {phi} the roots are real (the conserved form is indefinite): \
              expected a method with |z| = 1 at Phi, e.g. false_euler or verlet below Phi = 2"
-        ),
-        Err(e) => bail!(
-            "{name}: no single conserved quadratic form at Phi = {phi} ({e:?}): expected a \
+            )))
+        }
+        Err(e) => {
+            return Err(Error::unsupported(format!(
+                "{name}: no single conserved quadratic form at Phi = {phi} ({e:?}): expected a \
              method with |z| = 1 at Phi, e.g. false_euler or verlet below Phi = 2"
-        ),
+            )))
+        }
     };
-    let step = Step::compile(&method, &params)?;
     let kernel = Kernel::<T>::new(&step);
     // The form the rounded program conserves exactly, else the exact Φ's.
     let (study, measured_form) = match Study::new(kernel.clone(), args.starts) {
@@ -253,12 +251,26 @@ fn study<T: Real>(
     })
 }
 
+/// P at exact values of every parameter, from the derivation's d·P and d
+/// (d = det A of an implicit step, 1 otherwise); `None` where the step's
+/// system is singular.
+fn transition_matrix_at(d: &Derivation, values: &HashMap<Sym, Q>) -> Option<Vec<Vec<Q>>> {
+    let den = d.p_denominator.eval(values)?;
+    if den.is_zero() {
+        return None;
+    }
+    let p = &d.transition_matrix;
+    (0..p.rows())
+        .map(|i| p.row(i).iter().map(|e| e.eval(values).map(|x| x / &den)).collect())
+        .collect()
+}
+
 fn sci(x: f64) -> String {
     format!("{x:.3e}")
 }
 
 /// The report as text.
-pub fn text(r: &Report) -> String {
+pub(crate) fn text(r: &Report) -> String {
     let mut out = format!(
         "{} at Phi = {} in {} ({} starts, eps = {:e})\n",
         r.method, r.phi, r.precision, r.starts, r.epsilon
@@ -321,7 +333,7 @@ pub fn text(r: &Report) -> String {
 }
 
 /// The report as JSON.
-pub fn to_json(r: &Report) -> Value {
+pub(crate) fn to_json(r: &Report) -> Value {
     json!({
         "method": r.method,
         "phi": r.phi.to_string(),

@@ -3,20 +3,21 @@
 
 use std::process::ExitCode;
 
-use anyhow::bail;
+use crate::emit::{emit, Binding, Lang};
+use crate::error::Error;
+use crate::load::LoadedMethod;
 use poly::{Sym, Q};
-use zcheck::emit::{emit, Binding, Lang};
 
 /// The language to emit.
 #[derive(Clone, Copy, clap::ValueEnum)]
-pub enum Language {
+pub(crate) enum Language {
     Rust,
     C,
 }
 
 /// Arguments of `zcheck emit`.
 #[derive(clap::Args)]
-pub struct Args {
+pub(crate) struct Args {
     /// A built-in method name or a path to a `.zm` file.
     pub method: String,
     #[arg(long, value_enum)]
@@ -30,8 +31,9 @@ pub struct Args {
     pub params: Vec<String>,
 }
 
-pub fn run(args: Args) -> anyhow::Result<ExitCode> {
-    let method = zcheck::tableau::load_method(&args.method)?;
+pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
+    let loaded = LoadedMethod::load(&args.method)?;
+    let method = loaded.method();
     let lang = match args.lang {
         Language::Rust => Lang::Rust,
         Language::C => Lang::C,
@@ -39,7 +41,9 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
     let binding = match &args.phi {
         None => {
             if !args.params.is_empty() {
-                bail!("--param needs --phi: without --phi every parameter is an argument");
+                return Err(Error::usage(
+                    "--param needs --phi: without --phi every parameter is an argument",
+                ));
             }
             Binding::Parametric
         }
@@ -51,18 +55,25 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
             let mut values: Vec<(Sym, Q)> = Vec::new();
             for sym in method.params() {
                 let Some((_, v)) = given.iter().find(|(n, _)| n == sym.name()) else {
-                    bail!("method {} needs --param {}=VALUE", method.name(), sym.name());
+                    return Err(Error::usage(format!(
+                        "method {} needs --param {}=VALUE",
+                        method.name(),
+                        sym.name()
+                    )));
                 };
                 values.push((*sym, v.clone()));
             }
             for (n, _) in &given {
                 if !method.params().iter().any(|s| s.name() == n) {
-                    bail!("--param {n}=...: method {} has no parameter {n}", method.name());
+                    return Err(Error::usage(format!(
+                        "--param {n}=...: method {} has no parameter {n}",
+                        method.name()
+                    )));
                 }
             }
             Binding::Folded(values)
         }
     };
-    print!("{}", emit(&method, lang, &binding)?);
+    super::output::emit(&emit(method, lang, &binding)?)?;
     Ok(ExitCode::SUCCESS)
 }

@@ -6,26 +6,23 @@ use std::process::ExitCode;
 use poly::equiv::{self, Relation};
 use serde_json::json;
 
-/// Output format of `zcheck equiv`.
-#[derive(Clone, Copy, clap::ValueEnum)]
-pub enum Format {
-    Text,
-    Json,
-}
+use super::format::{Format, TEXT_JSON};
+use crate::error::Error;
+use crate::load::LoadedMethod;
 
 /// Arguments of `zcheck equiv`.
 #[derive(clap::Args)]
-pub struct Args {
+pub(crate) struct Args {
     /// The first method: a built-in name or a `.zm` path.
     pub a: String,
     /// The second method: a built-in name or a `.zm` path.
     pub b: String,
-    #[arg(long, value_enum, default_value = "text")]
+    #[arg(long, value_parser = Format::parser(TEXT_JSON), default_value = "text")]
     pub format: Format,
 }
 
 /// The relation in words, with the permutation and scaling when there are.
-pub fn describe(r: &Relation, a: &poly::Method, b: &poly::Method) -> String {
+pub(crate) fn describe(r: &Relation, a: &poly::Method, b: &poly::Method) -> String {
     let slot = |m: &poly::Method, k: usize| {
         m.slots()
             .get(k)
@@ -67,23 +64,15 @@ pub fn describe(r: &Relation, a: &poly::Method, b: &poly::Method) -> String {
     }
 }
 
-pub fn run(args: Args) -> anyhow::Result<ExitCode> {
-    let ma = zcheck::tableau::load_method(&args.a)?;
-    let mb = zcheck::tableau::load_method(&args.b)?;
-    let (da, db) = (poly::derive(&ma)?, poly::derive(&mb)?);
-    let relation = equiv::relate(&da, &db);
-    let reordered = equiv::reordered_updates(&ma, &mb);
-    let words = describe(&relation, &ma, &mb);
+pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
+    let a = LoadedMethod::load(&args.a)?;
+    let b = LoadedMethod::load(&args.b)?;
+    let (da, db) = (a.derivation()?, b.derivation()?);
+    let (ma, mb) = (&da.method, &db.method);
+    let relation = equiv::relate(da, db);
+    let reordered = equiv::reordered_updates(ma, mb);
+    let words = describe(&relation, ma, mb);
     let out = match args.format {
-        Format::Text => {
-            let mut out = format!("{} and {}: {words}\n", ma.name(), mb.name());
-            if reordered {
-                out.push_str("the second program is the first with its updates reordered\n");
-            }
-            out.push_str(&format!("chi({}) = {}\n", ma.name(), da.charpoly));
-            out.push_str(&format!("chi({}) = {}\n", mb.name(), db.charpoly));
-            out
-        }
         Format::Json => {
             let doc = json!({
                 "a": ma.name(),
@@ -97,8 +86,16 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
             });
             serde_json::to_string_pretty(&doc)? + "\n"
         }
+        _ => {
+            let mut out = format!("{} and {}: {words}\n", ma.name(), mb.name());
+            if reordered {
+                out.push_str("the second program is the first with its updates reordered\n");
+            }
+            out.push_str(&format!("chi({}) = {}\n", ma.name(), da.charpoly));
+            out.push_str(&format!("chi({}) = {}\n", mb.name(), db.charpoly));
+            out
+        }
     };
-    // A closed pipe (`| head`) is not an error of ours.
-    let _ = std::io::Write::write_all(&mut std::io::stdout().lock(), out.as_bytes());
+    super::output::emit(&out)?;
     Ok(ExitCode::SUCCESS)
 }

@@ -3,11 +3,12 @@
 
 use std::process::ExitCode;
 
-use zcheck::tableau::Tableau;
+use crate::error::Error;
+use crate::tableau::Tableau;
 
 /// Arguments of `zcheck from-tableau`.
 #[derive(clap::Args)]
-pub struct Args {
+pub(crate) struct Args {
     /// A TOML file with `A`, `b` (and optionally `c`, `name`); entries are
     /// integers or strings of exact numbers and constant expressions, such
     /// as "1/4 - sqrt(3)/6".
@@ -17,13 +18,17 @@ pub struct Args {
     pub damped: bool,
 }
 
-pub fn run(args: Args) -> anyhow::Result<ExitCode> {
+pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     let tableau = Tableau::load(std::path::Path::new(&args.file))?;
     let src = tableau.to_zm(args.damped);
     // The program parses (and derives) before it is printed.
     poly::Method::parse(&args.file, &src).map_err(|e| {
-        anyhow::anyhow!("{}: the generated program does not parse: {}", args.file, e.message())
+        Error::method(format!(
+            "{}: the generated program does not parse: {}",
+            args.file,
+            e.message()
+        ))
     })?;
-    print!("{src}");
+    super::output::emit(&src)?;
     Ok(ExitCode::SUCCESS)
 }

@@ -4,21 +4,16 @@
 
 use std::process::ExitCode;
 
-use anyhow::{bail, Context};
 use poly::Q;
 
+use super::format::{Format, TEXT_JSON};
 use super::values::Exact;
-
-/// Output format of `zcheck map`.
-#[derive(Clone, Copy, clap::ValueEnum)]
-pub enum Format {
-    Text,
-    Json,
-}
+use crate::error::Error;
+use crate::load::LoadedMethod;
 
 /// Arguments of `zcheck map`.
 #[derive(clap::Args)]
-pub struct Args {
+pub(crate) struct Args {
     /// A built-in method with `param D` (e.g. false_euler_damped) or a `.zm` file.
     pub method: String,
     /// The Phi window, LO..HI (exact: 0..5/2 or 0..2.5).
@@ -36,52 +31,53 @@ pub struct Args {
     /// Curve samples per axis.
     #[arg(long, default_value_t = 200)]
     pub samples: usize,
-    #[arg(long, value_enum, default_value = "text")]
+    #[arg(long, value_parser = Format::parser(TEXT_JSON), default_value = "text")]
     pub format: Format,
 }
 
 /// `LO..HI` as exact rationals with LO < HI.
-pub fn parse_range(flag: &str, s: &str) -> anyhow::Result<(Q, Q)> {
+pub(crate) fn parse_range(flag: &str, s: &str) -> Result<(Q, Q), Error> {
     let Some((lo, hi)) = s.split_once("..") else {
-        bail!("{flag} {s}: expected LO..HI, e.g. 0..2.5");
+        return Err(Error::usage(format!("{flag} {s}: expected LO..HI, e.g. 0..2.5")));
     };
-    let read = |part: &str, which: &str| -> anyhow::Result<Q> {
-        part.parse::<Exact>().map(|e| e.value).map_err(|e| anyhow::anyhow!("{e}")).with_context(
-            || format!("{flag} {s}: {which}: expected a number such as 2, 5/2 or 2.5"),
-        )
+    let read = |part: &str, which: &str| -> Result<Q, Error> {
+        part.parse::<Exact>().map(|e| e.value).map_err(|e| {
+            Error::usage(format!(
+                "{flag} {s}: {which}: expected a number such as 2, 5/2 or 2.5: {e}"
+            ))
+        })
     };
     let (lo, hi) = (read(lo, "LO")?, read(hi, "HI")?);
     if lo >= hi {
-        bail!("{flag} {s}: expected LO < HI");
+        return Err(Error::usage(format!("{flag} {s}: expected LO < HI")));
     }
     Ok((lo, hi))
 }
 
-pub fn run(args: Args) -> anyhow::Result<ExitCode> {
-    let method = zcheck::tableau::load_method(&args.method)?;
+pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
+    let method = LoadedMethod::load(&args.method)?;
     let phi = parse_range("--phi", &args.phi)?;
     if phi.0 < Q::from_integer(0.into()) {
-        bail!("--phi {}: expected Phi >= 0", args.phi);
+        return Err(Error::usage(format!("--phi {}: expected Phi >= 0", args.phi)));
     }
     let Some(("D", range)) = args.param.split_once('=').map(|(n, r)| (n.trim(), r)) else {
-        bail!("--param {}: expected D=LO..HI", args.param);
+        return Err(Error::usage(format!("--param {}: expected D=LO..HI", args.param)));
     };
     let d = parse_range("--param D", range)?;
     if !(2..=400).contains(&args.grid) || !(2..=5000).contains(&args.samples) {
-        bail!(
+        return Err(Error::usage(format!(
             "--grid {} --samples {}: expected 2..=400 grid points and 2..=5000 samples",
-            args.grid,
-            args.samples
-        );
+            args.grid, args.samples
+        )));
     }
-    let window = zcheck::map::MapWindow { phi, d, grid: args.grid, samples: args.samples };
-    let m = zcheck::map::map(&method, &window)?;
+    let window = crate::map::MapWindow { phi, d, grid: args.grid, samples: args.samples };
+    let m = crate::map::map(&method, &window)?;
     if let Some(path) = &args.svg {
-        zcheck::map::draw_svg(&m, path)?;
+        crate::map::draw_svg(&m, path)?;
     }
     match args.format {
         Format::Json => super::output::emitln(&serde_json::to_string_pretty(&m)?)?,
-        Format::Text => {
+        _ => {
             use std::fmt::Write as _;
             let mut out = String::new();
             let _ = writeln!(

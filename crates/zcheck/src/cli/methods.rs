@@ -2,11 +2,13 @@
 
 use std::process::ExitCode;
 
+use crate::error::Error;
+
 /// Arguments of `zcheck methods`.
 #[derive(clap::Args)]
-pub struct Args {}
+pub(crate) struct Args {}
 
-pub fn run(_: Args) -> anyhow::Result<ExitCode> {
+pub(crate) fn run(_: Args) -> Result<ExitCode, Error> {
     use std::fmt::Write as _;
     let mut out = format!("{:<24} {:>5}  {:<8} first comment line\n", "method", "order", "params");
     for name in poly::all_builtin_names() {

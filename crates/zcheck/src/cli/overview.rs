@@ -3,22 +3,19 @@
 
 use std::process::ExitCode;
 
-/// Output format of `zcheck overview`.
-#[derive(Clone, Copy, clap::ValueEnum)]
-pub enum Format {
-    Markdown,
-    Json,
-}
+use super::format::{Format, MARKDOWN_JSON};
+use crate::error::Error;
+use crate::load::{try_builtin_derivation, LoadedMethod};
 
 /// Arguments of `zcheck overview`.
 #[derive(clap::Args)]
-pub struct Args {
+pub(crate) struct Args {
     /// Built-in names or `.zm` paths (default: the paper's seven methods).
     pub methods: Vec<String>,
     /// The highest power of Phi shown in the series.
     #[arg(long, default_value_t = 5)]
     pub order: usize,
-    #[arg(long, value_enum, default_value = "markdown")]
+    #[arg(long, value_parser = Format::parser(MARKDOWN_JSON), default_value = "markdown")]
     pub format: Format,
     /// Also every implicit and algebraic built-in (trapezoidal, backward
     /// Euler, BDF2, Newmark, Gauss-Legendre, Radau IIA, SDIRK, Forest-Ruth,
@@ -27,26 +24,29 @@ pub struct Args {
     pub implicit: bool,
 }
 
-pub fn run(args: Args) -> anyhow::Result<ExitCode> {
-    anyhow::ensure!(args.order <= 64, "--order {} is too large: expected at most 64", args.order);
+pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
+    if args.order > 64 {
+        return Err(Error::usage(format!(
+            "--order {} is too large: expected at most 64",
+            args.order
+        )));
+    }
     let mut rows = if args.methods.is_empty() {
-        zcheck::overview::paper_overview(args.order)?
+        crate::overview::paper_overview(args.order)?
     } else {
         args.methods
             .iter()
-            .map(|m| {
-                Ok(zcheck::overview::summarize(&zcheck::tableau::load_method(m)?, args.order)?)
-            })
-            .collect::<anyhow::Result<Vec<_>>>()?
+            .map(|m| crate::overview::summary_of(LoadedMethod::load(m)?.derivation()?, args.order))
+            .collect::<Result<Vec<_>, Error>>()?
     };
     if args.implicit {
         for name in poly::IMPLICIT_METHODS {
-            rows.push(zcheck::overview::summarize(&poly::builtin(name)?, args.order)?);
+            rows.push(crate::overview::summary_of(&try_builtin_derivation(name)?, args.order)?);
         }
     }
     match args.format {
-        Format::Markdown => super::output::emit(&zcheck::overview::to_markdown(&rows))?,
         Format::Json => super::output::emitln(&serde_json::to_string_pretty(&rows)?)?,
+        _ => super::output::emit(&crate::overview::to_markdown(&rows))?,
     }
     Ok(ExitCode::SUCCESS)
 }

@@ -4,41 +4,36 @@
 
 use std::process::ExitCode;
 
-use zcheck::paper::{all_claims, report};
-
-/// Output format of `zcheck paper`.
-#[derive(Clone, Copy, clap::ValueEnum)]
-pub enum Format {
-    Markdown,
-    Json,
-}
+use super::format::{Format, MARKDOWN_JSON};
+use crate::error::Error;
+use crate::paper::{all_claims, report};
 
 /// The highest power of Φ shown in the overview's series.
 const OVERVIEW_ORDER: usize = 5;
 
 /// Arguments of `zcheck paper`.
 #[derive(clap::Args)]
-pub struct Args {
-    #[arg(long, value_enum, default_value = "markdown")]
+pub(crate) struct Args {
+    #[arg(long, value_parser = Format::parser(MARKDOWN_JSON), default_value = "markdown")]
     pub format: Format,
 }
 
-pub fn run(args: Args) -> anyhow::Result<ExitCode> {
+pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     let claims = all_claims();
-    let overview = zcheck::overview::paper_overview(OVERVIEW_ORDER)?;
+    let overview = crate::overview::paper_overview(OVERVIEW_ORDER)?;
     let out = match args.format {
-        Format::Markdown => format!(
-            "{}\n## Beyond the paper: every method side by side\n\n\
-             Appendix A derives Ψ(Φ) for two methods; here it is for all seven, exact, with the \
-             exact stability limit and the operations per step (`zcheck overview`).\n\n{}",
-            report::to_markdown(&claims),
-            zcheck::overview::to_markdown(&overview)
-        ),
         Format::Json => {
             let mut doc = report::to_json(&claims);
             doc["overview"] = serde_json::to_value(&overview)?;
             serde_json::to_string_pretty(&doc)? + "\n"
         }
+        _ => format!(
+            "{}\n## Beyond the paper: every method side by side\n\n\
+             Appendix A derives Ψ(Φ) for two methods; here it is for all seven, exact, with the \
+             exact stability limit and the operations per step (`zcheck overview`).\n\n{}",
+            report::to_markdown(&claims),
+            crate::overview::to_markdown(&overview)
+        ),
     };
     super::output::emit(&out)?;
     Ok(ExitCode::SUCCESS)

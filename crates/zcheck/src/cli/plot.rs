@@ -5,13 +5,14 @@ use check::numeric::ParamsF64;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use anyhow::{bail, Context};
+use crate::error::Error;
+use crate::load::LoadedMethod;
+use crate::plot::{yt_figure, yt_grid, zplane_figure};
 use check::numeric::Params;
-use zcheck::plot::{yt_figure, yt_grid, zplane_figure};
 
 /// Arguments of `zcheck plot`.
 #[derive(clap::Args)]
-pub struct Args {
+pub(crate) struct Args {
     /// What to draw: `yt` (one file per method plus `yt_all.svg`), `zplane`,
     /// or `all`.
     #[arg(value_enum)]
@@ -40,28 +41,30 @@ enum What {
     All,
 }
 
-pub fn run(args: Args) -> anyhow::Result<ExitCode> {
+pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     if !(args.phi > 0.0 && args.phi.is_finite()) {
-        bail!("--phi {}: expected a positive number", args.phi);
+        return Err(Error::usage(format!("--phi {}: expected a positive number", args.phi)));
     }
     if !(args.t_max > 0.0 && args.t_max / args.phi <= 1e6) {
-        bail!("--t-max {}: expected a positive span of at most 1e6 steps", args.t_max);
+        return Err(Error::usage(format!(
+            "--t-max {}: expected a positive span of at most 1e6 steps",
+            args.t_max
+        )));
     }
     let names: Vec<String> = if args.methods.is_empty() {
         poly::PAPER_METHODS.iter().map(|s| s.to_string()).collect()
     } else {
         args.methods.clone()
     };
-    let methods =
-        names.iter().map(|n| zcheck::tableau::load_method(n)).collect::<Result<Vec<_>, _>>()?;
+    let methods = names.iter().map(|n| LoadedMethod::load(n)).collect::<Result<Vec<_>, _>>()?;
     std::fs::create_dir_all(&args.out)
-        .with_context(|| format!("{}: cannot create", args.out.display()))?;
+        .map_err(|e| Error::io(format!("{}: cannot create", args.out.display()), e))?;
     let params = Params::new().try_with("Phi", args.phi)?;
     let mut written = Vec::new();
     if matches!(args.what, What::Yt | What::All) {
         for m in &methods {
-            let path = args.out.join(format!("yt_{}.svg", m.name()));
-            yt_figure(m, &params, args.t_max, &path)?;
+            let path = args.out.join(format!("yt_{}.svg", m.method().name()));
+            yt_figure(m.method(), &params, args.t_max, &path)?;
             written.push(path);
         }
         let path = args.out.join("yt_all.svg");

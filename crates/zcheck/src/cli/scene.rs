@@ -7,27 +7,21 @@ use std::io::{IsTerminal, Write as _};
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use anyhow::Context;
-use indicatif::{ProgressBar, ProgressStyle};
-use serde_json::json;
-use zcheck::scene::aircraft::{self, AircraftRun};
-use zcheck::scene::three_body::{
+use super::format::{Format, TEXT_JSON};
+use crate::error::Error;
+use crate::scene::aircraft::{self, AircraftRun};
+use crate::scene::three_body::{
     self, EnergyControl, EnergyDefinition, FirstStep, ForceLaw, InitialVelocities, ThreeBodyRun,
 };
-use zcheck::scene::{figure, Scene};
+use crate::scene::{figure, Scene};
+use indicatif::{ProgressBar, ProgressStyle};
+use serde_json::json;
 
 use super::values::{Exact, DEFAULT_BUDGET};
 
-/// Output format.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum Format {
-    Text,
-    Json,
-}
-
 /// Force law of the three-body scenes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum Law {
+pub(crate) enum Law {
     /// |F| = 1/r, the paper's code.
     InverseDistance,
     /// |F| = 1/r^2, Newton.
@@ -36,7 +30,7 @@ pub enum Law {
 
 /// Energy the control term measures.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum Energy {
+pub(crate) enum Energy {
     /// Appendix D as printed (kinetic - sum 1/r).
     Paper,
     /// The energy the force law conserves.
@@ -45,7 +39,7 @@ pub enum Energy {
 
 /// Initial velocities of the three-body scenes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum Velocities {
+pub(crate) enum Velocities {
     /// Appendix C: tangential.
     Tangential,
     /// Appendix D as printed: radial.
@@ -54,7 +48,7 @@ pub enum Velocities {
 
 /// Arguments of `zcheck scene`.
 #[derive(clap::Args)]
-pub struct Args {
+pub(crate) struct Args {
     /// The scene: three_body_false_euler (C), three_body_euler,
     /// three_body_euler_energy (D) or aircraft (E).
     pub name: String,
@@ -62,7 +56,7 @@ pub struct Args {
     #[arg(long)]
     pub steps: Option<u64>,
     /// Output format.
-    #[arg(long, value_enum, default_value_t = Format::Text)]
+    #[arg(long, value_parser = Format::parser(TEXT_JSON), default_value = "text")]
     pub format: Format,
     /// Write SVG figures into this directory.
     #[arg(long)]
@@ -109,17 +103,21 @@ fn progress_bar(n: u64) -> ProgressBar {
     bar
 }
 
-pub fn run(args: Args) -> anyhow::Result<ExitCode> {
+pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     let scene = Scene::by_name(&args.name)?;
     let n = args.steps.unwrap_or_else(|| scene.default_steps());
-    anyhow::ensure!(n > 0, "--steps: expected a positive number of steps, got 0");
+    if n == 0 {
+        return Err(Error::usage("--steps: expected a positive number of steps, got 0"));
+    }
     let budget = args.budget.to_count("--budget")?;
-    anyhow::ensure!(
-        n <= budget,
-        "--steps {n} is beyond the budget of {budget} steps: pass --budget {n} to run it anyway"
-    );
+    if n > budget {
+        return Err(Error::usage(format!(
+            "--steps {n} is beyond the budget of {budget} steps: pass --budget {n} to run it anyway"
+        )));
+    }
     if let Some(dir) = &args.plot {
-        std::fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
+        std::fs::create_dir_all(dir)
+            .map_err(|e| Error::io(format!("cannot create {}", dir.display()), e))?;
     }
     let bar = progress_bar(n);
     bar.set_message(args.name.clone());
@@ -150,7 +148,11 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
                 };
             }
             if let Some(eps) = args.eps {
-                anyhow::ensure!(eps.is_finite(), "--eps: expected a finite number, got {eps}");
+                if !(eps.is_finite()) {
+                    return Err(Error::usage(format!(
+                        "--eps: expected a finite number, got {eps}"
+                    )));
+                }
                 config.eps = eps;
             }
             let run = three_body::simulate(&config, n, &mut progress);
@@ -166,17 +168,19 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
         }
         Scene::Aircraft(mut config) => {
             if let Some(phic) = args.phic {
-                anyhow::ensure!(
-                    phic.is_finite(),
-                    "--phic: expected a finite angle in degrees, got {phic}"
-                );
+                if !(phic.is_finite()) {
+                    return Err(Error::usage(format!(
+                        "--phic: expected a finite angle in degrees, got {phic}"
+                    )));
+                }
                 config.phi_command = phic;
             }
             if let Some(thec) = args.thec {
-                anyhow::ensure!(
-                    thec.is_finite(),
-                    "--thec: expected a finite angle in degrees, got {thec}"
-                );
+                if !(thec.is_finite()) {
+                    return Err(Error::usage(format!(
+                        "--thec: expected a finite angle in degrees, got {thec}"
+                    )));
+                }
                 config.theta_command = thec;
             }
             let run = aircraft::simulate(&config, n, &mut progress);
@@ -195,7 +199,7 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
 fn three_body_json(
     name: &str,
     run: &ThreeBodyRun,
-    accuracy: &Result<three_body::Accuracy, zcheck::scene::reference::ReferenceError>,
+    accuracy: &Result<three_body::Accuracy, crate::error::Error>,
 ) -> serde_json::Value {
     json!({
         "scene": name,
@@ -242,12 +246,12 @@ fn aircraft_json(run: &AircraftRun) -> serde_json::Value {
     })
 }
 
-fn print(args: &Args, report: &serde_json::Value) -> anyhow::Result<()> {
+fn print(args: &Args, report: &serde_json::Value) -> Result<(), Error> {
     match args.format {
         Format::Json => {
             super::output::emitln(&serde_json::to_string_pretty(report)?)?;
         }
-        Format::Text => {
+        _ => {
             let mut text = String::new();
             render_text(report, "", &mut text);
             super::output::emit(&text)?;
@@ -286,7 +290,7 @@ fn render_text(value: &serde_json::Value, indent: &str, out: &mut String) {
 mod tests {
     #[test]
     fn every_scene_name_resolves() {
-        for name in zcheck::scene::SCENES {
+        for name in crate::scene::SCENES {
             assert!(super::Scene::by_name(name).is_ok(), "{name}");
         }
     }

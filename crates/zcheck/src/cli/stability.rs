@@ -11,61 +11,60 @@ use std::collections::HashMap;
 use std::fmt::Write as _;
 use std::process::ExitCode;
 
-use anyhow::Context;
 use poly::stability::{analyze_derivation, Stability, StabilityReport};
 use poly::{Algebraic, Sym, Q};
 use serde_json::{json, Value};
 
+use super::format::{Format, TEXT_JSON};
 use super::output;
 use super::values::{self, ParamArg};
-
-/// Output format of `zcheck stability`.
-#[derive(Clone, Copy, clap::ValueEnum)]
-pub enum Format {
-    Text,
-    Json,
-}
+use crate::error::Error;
+use crate::load::LoadedMethod;
 
 /// Arguments of `zcheck stability`.
 #[derive(clap::Args)]
-pub struct Args {
+pub(crate) struct Args {
     /// A built-in method name or a path to a `.zm` file.
     pub method: String,
     /// A parameter value, `NAME=VALUE`, with VALUE an integer, a fraction
     /// (`1/2`) or a decimal (`0.5`, `1e-12`, read exactly); repeatable.
     #[arg(long = "param", value_name = "NAME=VALUE", allow_hyphen_values = true)]
     pub params: Vec<ParamArg>,
-    #[arg(long, value_enum, default_value = "text")]
+    #[arg(long, value_parser = Format::parser(TEXT_JSON), default_value = "text")]
     pub format: Format,
 }
 
-pub fn run(args: Args) -> anyhow::Result<ExitCode> {
-    let method = zcheck::tableau::load_method(&args.method)?;
-    let chi = poly::charpoly(&method)?;
-    values::check_declared(&args.params, &[&method])?;
+pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
+    let loaded = LoadedMethod::load(&args.method)?;
+    // The one derivation: χ, the report and the implicit facts all read it.
+    let derivation = loaded.derivation()?;
+    let method = &derivation.method;
+    values::check_declared(&args.params, &[method])?;
     let mut values = HashMap::new();
     let mut shown = Vec::new();
     for p in &args.params {
         values.insert(Sym::new(&p.name), p.value.value.clone());
         shown.push((p.name.clone(), p.value.value.clone()));
     }
-    let chi = chi.eval_partial(&values);
+    let chi = derivation.charpoly.eval_partial(&values);
     // With the transition matrix, boundedness at a repeated root on the
     // circle is decided from P's Jordan structure (Merson at 2√3: P = I).
-    let derivation = poly::derive(&method)?;
-    let report = analyze_derivation(&derivation, &values)
-        .with_context(|| format!("method {}", method.name()))?;
+    let report = analyze_derivation(derivation, &values)
+        .map_err(|e| Error::from(e).context(format!("method {}", method.name())))?;
+    let facts = ImplicitFacts::of(derivation, &chi)?;
     let out = match args.format {
-        Format::Text => {
-            let mut names = Names::default();
-            text(method.name(), &shown, &chi, &report, &mut names)
-                + &implicit_text(&method, &chi, &mut names)?
-                + &names.definitions()
-        }
         Format::Json => {
             let mut v = to_json(method.name(), &shown, &chi, &report);
-            implicit_json(&method, &chi, &mut v)?;
+            if let Some(f) = &facts {
+                f.add_json(&mut v);
+            }
             serde_json::to_string_pretty(&v)? + "\n"
+        }
+        _ => {
+            let mut names = Names::default();
+            text(method.name(), &shown, &chi, &report, &mut names)
+                + &facts.as_ref().map_or(String::new(), |f| f.text(&mut names))
+                + &names.definitions()
         }
     };
     output::emit(&out)?;
@@ -76,46 +75,43 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
 /// χ in z (det A), the Φ > 0 where the step's system is singular, and what
 /// the roots do as Φ → ∞ (all decided exactly). Explicit methods print
 /// nothing more, so their output is unchanged.
-fn implicit_facts(
-    method: &poly::Method,
-    chi: &poly::Poly,
-) -> anyhow::Result<Option<(String, Vec<Algebraic>, &'static str)>> {
-    if !method.is_implicit() && method.constants().is_empty() {
-        return Ok(None);
-    }
-    let d = poly::derive(method)?;
-    let lead = chi.coeffs_in(Sym::z()).last().cloned().unwrap_or_default();
-    let singular = poly::singular_points(&d);
-    let limit = poly::field_stability::limit_at_infinity(chi)?;
-    Ok(Some((lead.to_string(), singular, limit.name())))
+struct ImplicitFacts {
+    lead: String,
+    singular: Vec<Algebraic>,
+    limit: &'static str,
 }
 
-fn implicit_text(
-    method: &poly::Method,
-    chi: &poly::Poly,
-    names: &mut Names,
-) -> anyhow::Result<String> {
-    let Some((lead, singular, limit)) = implicit_facts(method, chi)? else {
-        return Ok(String::new());
-    };
-    let mut s = format!("\nleading coefficient in z (det A): {lead}\n");
-    if singular.is_empty() {
-        s += "the step's linear system is regular for every Phi > 0\n";
-    } else {
-        let pts: Vec<String> = singular.iter().map(|a| names.show(a)).collect();
-        let _ = writeln!(s, "the step's linear system is singular at Phi = {}", pts.join(", "));
+impl ImplicitFacts {
+    /// The facts of `derivation`, with χ at the given parameters; `None`
+    /// for an explicit method without constants.
+    fn of(derivation: &poly::Derivation, chi: &poly::Poly) -> Result<Option<ImplicitFacts>, Error> {
+        let method = &derivation.method;
+        if !method.is_implicit() && method.constants().is_empty() {
+            return Ok(None);
+        }
+        let lead = chi.coeffs_in(Sym::z()).last().cloned().unwrap_or_default();
+        let singular = poly::singular_points(derivation);
+        let limit = poly::field_stability::limit_at_infinity(chi)?;
+        Ok(Some(ImplicitFacts { lead: lead.to_string(), singular, limit: limit.name() }))
     }
-    let _ = writeln!(s, "as Phi -> infinity: {limit}");
-    Ok(s)
-}
 
-fn implicit_json(method: &poly::Method, chi: &poly::Poly, v: &mut Value) -> anyhow::Result<()> {
-    if let Some((lead, singular, limit)) = implicit_facts(method, chi)? {
-        v["leading_coefficient"] = json!(lead);
-        v["singular_points"] = json!(singular.iter().map(number_json).collect::<Vec<_>>());
-        v["phi_to_infinity"] = json!(limit);
+    fn text(&self, names: &mut Names) -> String {
+        let mut s = format!("\nleading coefficient in z (det A): {}\n", self.lead);
+        if self.singular.is_empty() {
+            s += "the step's linear system is regular for every Phi > 0\n";
+        } else {
+            let pts: Vec<String> = self.singular.iter().map(|a| names.show(a)).collect();
+            let _ = writeln!(s, "the step's linear system is singular at Phi = {}", pts.join(", "));
+        }
+        let _ = writeln!(s, "as Phi -> infinity: {}", self.limit);
+        s
     }
-    Ok(())
+
+    fn add_json(&self, v: &mut Value) {
+        v["leading_coefficient"] = json!(self.lead);
+        v["singular_points"] = json!(self.singular.iter().map(number_json).collect::<Vec<_>>());
+        v["phi_to_infinity"] = json!(self.limit);
+    }
 }
 
 /// 1e-15, the width the issue asks isolating intervals to be narrowed to.
@@ -146,7 +142,12 @@ fn number_json(a: &Algebraic) -> Value {
 }
 
 /// The JSON document of a stability report.
-pub fn to_json(name: &str, params: &[(String, Q)], chi: &poly::Poly, r: &StabilityReport) -> Value {
+pub(crate) fn to_json(
+    name: &str,
+    params: &[(String, Q)],
+    chi: &poly::Poly,
+    r: &StabilityReport,
+) -> Value {
     let params: serde_json::Map<String, Value> =
         params.iter().map(|(n, v)| (n.clone(), json!(v.to_string()))).collect();
     json!({

@@ -5,21 +5,20 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Duration;
 
-use anyhow::{bail, Context};
+use super::format::{Format, TEXT_JSON};
+use crate::error::Error;
+use crate::load::LoadedMethod;
+use crate::tradeoff::accuracy::{Spring, Target};
+use crate::tradeoff::family::{self, Candidate};
+use crate::tradeoff::measure::measure_ns_per_step_within;
+use crate::tradeoff::rank::{trade, TradeRow};
+use crate::tradeoff::{figure, kernels};
 use check::numeric::{q_to_f64, Params, ParamsF64};
-use zcheck::tradeoff::{self, family, figure, kernels, Candidate, Spring, Target, TradeRow};
-
-/// Output format of `zcheck tradeoff`.
-#[derive(Clone, Copy, clap::ValueEnum)]
-pub enum Format {
-    Text,
-    Json,
-}
 
 /// Arguments of `zcheck tradeoff`.
 #[derive(clap::Args)]
-pub struct Args {
-    #[arg(long, value_enum, default_value = "text")]
+pub(crate) struct Args {
+    #[arg(long, value_parser = Format::parser(TEXT_JSON), default_value = "text")]
     pub format: Format,
     /// Largest accumulated phase error over the duration, radians.
     #[arg(long, default_value_t = Target::DEFAULT.phase_tol)]
@@ -51,18 +50,19 @@ pub struct Args {
     pub svg: Option<PathBuf>,
 }
 
-pub fn run(args: Args) -> anyhow::Result<ExitCode> {
+pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     let target = Target { phase_tol: args.phase_tol, amp_tol: args.amp_tol, periods: args.periods };
     for (name, x) in [
         ("--phase-tol", target.phase_tol),
         ("--amp-tol", target.amp_tol),
         ("--periods", target.periods),
     ] {
-        anyhow::ensure!(x.is_finite() && x > 0.0, "{name} {x}: expected a finite number > 0");
+        if !(x.is_finite() && x > 0.0) {
+            return Err(Error::usage(format!("{name} {x}: expected a finite number > 0")));
+        }
     }
     let budget = Duration::from_millis(args.budget_ms.max(1));
     let mut candidates = family::undamped_family()?;
-    let n_builtin = candidates.len();
     let mut wanted = args.methods.clone();
     if args.implicit {
         for name in poly::IMPLICIT_METHODS {
@@ -77,16 +77,14 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
     candidates.extend(user_candidates(&wanted, &args.params, &candidates)?);
     let mut ns = Vec::with_capacity(candidates.len());
     let mut hand = Vec::with_capacity(candidates.len());
-    for (i, c) in candidates.iter().enumerate() {
+    for c in &candidates {
         ns.push(measure(c, budget)?);
-        hand.push(if i < n_builtin {
-            kernels::time_hand_kernel(c.kernel_name(), 0.0, budget)
-        } else {
-            None
-        });
+        // A built-in's hand kernel; a user's method (built-ins named by
+        // --method too) has none.
+        hand.push(c.hand_kernel.and_then(|name| kernels::time_hand_kernel(name, 0.0, budget)));
     }
     let mut k = 0;
-    let mut rows = tradeoff::trade(&candidates, Spring::UNDAMPED, &target, |_| {
+    let mut rows = trade(&candidates, Spring::UNDAMPED, &target, |_| {
         k += 1;
         ns[k - 1]
     });
@@ -96,10 +94,10 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
         row.ns_per_step_hand = hand[i];
     }
     if let Some(path) = &args.svg {
-        let direct: Vec<(&tradeoff::Candidate, f64)> = candidates
+        let direct: Vec<(&Candidate, f64)> = candidates
             .iter()
             .zip(&ns)
-            .filter(|(c, _)| family::direct_names().contains(&c.name.as_str()))
+            .filter(|(c, _)| poly::PAPER_METHODS.contains(&c.name.as_str()))
             .map(|(c, &n)| (c, n))
             .collect();
         figure::draw(path, &direct, Spring::UNDAMPED, &target)?;
@@ -110,20 +108,20 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
                 "phase_tol": target.phase_tol, "amp_tol": target.amp_tol, "periods": target.periods },
                 "methods": rows }))?)?
         }
-        Format::Text => super::output::emit(&text(&rows, &target))?,
+        _ => super::output::emit(&text(&rows, &target))?,
     }
     Ok(ExitCode::SUCCESS)
 }
 
 /// The compiled step of `c` timed at the timing Φ (and `c`'s other
 /// parameters).
-pub fn measure(c: &Candidate, budget: Duration) -> anyhow::Result<f64> {
+pub(crate) fn measure(c: &Candidate, budget: Duration) -> Result<f64, Error> {
     let mut params = Params::phi(kernels::TIMING_PHI);
     for (sym, q) in &c.params {
         params.set(sym.name(), q_to_f64(q));
     }
-    tradeoff::measure_ns_per_step_within(&c.method, &params, budget)
-        .with_context(|| format!("method {}", c.display))
+    measure_ns_per_step_within(&c.method, &params, budget)
+        .map_err(|e| e.context(format!("method {}", c.display)))
 }
 
 /// The `--method` candidates: each shown by its argument (a path or a
@@ -132,32 +130,34 @@ fn user_candidates(
     methods: &[String],
     params: &[String],
     family: &[Candidate],
-) -> anyhow::Result<Vec<Candidate>> {
+) -> Result<Vec<Candidate>, Error> {
     let parsed: Vec<(String, poly::Q)> =
         params.iter().map(|p| super::values::parse_param(p)).collect::<Result<_, _>>()?;
     if let Some((name, _)) = parsed.iter().find(|(n, _)| n == "Phi") {
-        bail!("--param {name}=...: Phi is the step size the trade chooses; it cannot be fixed");
+        return Err(Error::usage(format!(
+            "--param {name}=...: Phi is the step size the trade chooses; it cannot be fixed"
+        )));
     }
     let mut out: Vec<Candidate> = Vec::new();
     for arg in methods {
         if family.iter().chain(&out).any(|c| &c.display == arg) {
-            bail!("--method {arg}: already in the comparison");
+            return Err(Error::usage(format!("--method {arg}: already in the comparison")));
         }
-        let method = zcheck::tableau::load_method(arg)?;
+        let method = LoadedMethod::load(arg)?;
         let mut values = Vec::new();
-        for sym in method.params().iter().filter(|s| s.name() != "Phi") {
+        for sym in method.method().params().iter().filter(|s| s.name() != "Phi") {
             let Some((_, q)) = parsed.iter().find(|(n, _)| n == sym.name()) else {
-                bail!(
+                return Err(Error::usage(format!(
                     "--method {arg}: parameter {} has no value: expected --param {}=VALUE",
                     sym.name(),
                     sym.name()
-                );
+                )));
             };
             values.push((*sym, q.clone()));
         }
-        let mut c = Candidate::new(method, values).with_context(|| format!("--method {arg}"))?;
-        c.display = arg.clone();
-        out.push(c);
+        out.push(
+            Candidate::new(&method, values).map_err(|e| e.context(format!("--method {arg}")))?,
+        );
     }
     Ok(out)
 }
@@ -167,7 +167,7 @@ fn opt(x: Option<f64>, digits: usize) -> String {
 }
 
 /// The ranked table.
-pub fn text(rows: &[TradeRow], target: &Target) -> String {
+pub(crate) fn text(rows: &[TradeRow], target: &Target) -> String {
     let mut out = format!(
         "target over {} periods: phase drift <= {} rad, amplitude drift <= {}; undamped spring\n\
          ns/step: the compiled step of each method, one state, measured now on this machine \

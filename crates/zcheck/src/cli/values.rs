@@ -9,13 +9,14 @@
 use std::fmt;
 use std::str::FromStr;
 
-use anyhow::bail;
 use num_traits::{Signed, ToPrimitive, Zero};
 use poly::{Method, Q};
 
+use crate::error::Error;
+
 /// An exact number from the command line, with the text the user typed.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Exact {
+pub(crate) struct Exact {
     /// The exact value.
     pub value: Q,
     /// The text as typed (trimmed).
@@ -42,49 +43,55 @@ impl fmt::Display for Exact {
 
 /// The default budget of a long run, in state-steps (one state advanced by
 /// one step): about a minute of simulation on a laptop core.
-pub const DEFAULT_BUDGET: u64 = 10_000_000_000;
+pub(crate) const DEFAULT_BUDGET: u64 = 10_000_000_000;
 
 impl Exact {
     /// The count `n`, as if typed.
-    pub fn count(n: u64) -> Exact {
+    pub(crate) fn count(n: u64) -> Exact {
         Exact { value: Q::from_integer(n.into()), text: n.to_string() }
     }
 
     /// The nearest `f64`, or an error naming `what` when no finite `f64`
     /// represents the value (overflow) or a nonzero value rounds to 0
     /// (underflow).
-    pub fn to_f64(&self, what: &str) -> anyhow::Result<f64> {
+    pub(crate) fn to_f64(&self, what: &str) -> Result<f64, Error> {
         q_to_f64_checked(&self.value, &format!("{what} {}", self.text))
     }
 
     /// The value as a count: a non-negative integer that fits in `u64`.
-    pub fn to_count(&self, what: &str) -> anyhow::Result<u64> {
+    pub(crate) fn to_count(&self, what: &str) -> Result<u64, Error> {
         if !self.value.is_integer() || self.value.is_negative() {
-            bail!("{what} {}: expected a non-negative whole number", self.text);
+            return Err(Error::usage(format!(
+                "{what} {}: expected a non-negative whole number",
+                self.text
+            )));
         }
-        match self.value.to_integer().to_u64() {
-            Some(n) => Ok(n),
-            None => bail!("{what} {}: too large: expected at most {}", self.text, u64::MAX),
-        }
+        self.value.to_integer().to_u64().ok_or_else(|| {
+            Error::usage(format!("{what} {}: too large: expected at most {}", self.text, u64::MAX))
+        })
     }
 }
 
 /// The nearest `f64` to `q`, or an error naming `what` when `q` is beyond
 /// the finite `f64` range or is nonzero and rounds to zero.
-pub fn q_to_f64_checked(q: &Q, what: &str) -> anyhow::Result<f64> {
+pub(crate) fn q_to_f64_checked(q: &Q, what: &str) -> Result<f64, Error> {
     let x = q.to_f64().unwrap_or(f64::INFINITY);
     if !x.is_finite() {
-        bail!("{what}: beyond the range of f64 (about ±1.8e308): f64 cannot represent it");
+        return Err(Error::usage(format!(
+            "{what}: beyond the range of f64 (about ±1.8e308): f64 cannot represent it"
+        )));
     }
     if x == 0.0 && !q.is_zero() {
-        bail!("{what}: below the smallest positive f64 (about 4.9e-324): f64 cannot represent it");
+        return Err(Error::usage(format!(
+            "{what}: below the smallest positive f64 (about 4.9e-324): f64 cannot represent it"
+        )));
     }
     Ok(x)
 }
 
 /// `--param NAME=VALUE`: a parameter's exact value.
 #[derive(Clone, Debug, PartialEq)]
-pub struct ParamArg {
+pub(crate) struct ParamArg {
     /// The parameter's name.
     pub name: String,
     /// Its value.
@@ -121,10 +128,10 @@ impl FromStr for ParamArg {
 
 /// Checks that every `--param` names a parameter that one of `methods`
 /// declares, and that no parameter is given twice.
-pub fn check_declared(params: &[ParamArg], methods: &[&Method]) -> anyhow::Result<()> {
+pub(crate) fn check_declared(params: &[ParamArg], methods: &[&Method]) -> Result<(), Error> {
     for (k, p) in params.iter().enumerate() {
         if params[..k].iter().any(|q| q.name == p.name) {
-            bail!("--param {}: given twice", p.name);
+            return Err(Error::usage(format!("--param {}: given twice", p.name)));
         }
         let declared = methods.iter().any(|m| m.params().iter().any(|s| s.name() == p.name));
         if !declared {
@@ -136,21 +143,20 @@ pub fn check_declared(params: &[ParamArg], methods: &[&Method]) -> anyhow::Resul
             known.sort_unstable();
             known.dedup();
             let declared = if known.is_empty() { "none".to_owned() } else { known.join(", ") };
-            match methods {
-                [m] => bail!(
+            return Err(Error::usage(match methods {
+                [m] => format!(
                     "--param {}={}: method {} has no parameter {} (declared: {declared})",
                     p.name,
                     p.value,
                     m.name(),
                     p.name
                 ),
-                _ => bail!(
-                    "--param {}={}: none of the methods declares a parameter {} (declared: {declared})",
-                    p.name,
-                    p.value,
-                    p.name
+                _ => format!(
+                    "--param {}={}: none of the methods declares a parameter {} \
+                     (declared: {declared})",
+                    p.name, p.value, p.name
                 ),
-            }
+            }));
         }
     }
     Ok(())
@@ -158,7 +164,7 @@ pub fn check_declared(params: &[ParamArg], methods: &[&Method]) -> anyhow::Resul
 
 /// An `f64` for a table: plain decimal between 1e-4 and 1e16, otherwise in
 /// exponent form (never a 309-digit integer).
-pub fn show_f64(x: f64) -> String {
+pub(crate) fn show_f64(x: f64) -> String {
     if x == 0.0 || !x.is_finite() || (1e-4..1e16).contains(&x.abs()) {
         format!("{x}")
     } else {
@@ -167,7 +173,7 @@ pub fn show_f64(x: f64) -> String {
 }
 
 /// [`show_f64`] with `digits` digits after the point (in either form).
-pub fn show_f64_digits(x: f64, digits: usize) -> String {
+pub(crate) fn show_f64_digits(x: f64, digits: usize) -> String {
     if x == 0.0 || !x.is_finite() || (1e-4..1e16).contains(&x.abs()) {
         format!("{x:.digits$}")
     } else {
@@ -176,7 +182,7 @@ pub fn show_f64_digits(x: f64, digits: usize) -> String {
 }
 
 /// Parses `NAME=VALUE` with an exact VALUE into its parts.
-pub fn parse_param(s: &str) -> anyhow::Result<(String, poly::Q)> {
-    let p: ParamArg = s.parse().map_err(|e: String| anyhow::anyhow!("--param {s}: {e}"))?;
+pub(crate) fn parse_param(s: &str) -> Result<(String, poly::Q), Error> {
+    let p: ParamArg = s.parse().map_err(|e: String| Error::usage(format!("--param {s}: {e}")))?;
     Ok((p.name, p.value.value))
 }

@@ -6,7 +6,6 @@ use std::io::IsTerminal;
 use std::process::ExitCode;
 use std::time::Instant;
 
-use anyhow::{bail, Context};
 use check::classify::psi_of;
 use check::numeric::{Params, ParamsF64};
 use check::sweep;
@@ -15,12 +14,15 @@ use indicatif::{ProgressBar, ProgressStyle};
 use poly::Q;
 use serde_json::{json, Value};
 
+use super::format::{Format, TEXT_JSON};
 use super::output;
 use super::values::{self, show_f64, Exact, ParamArg};
+use crate::error::Error;
+use crate::load::LoadedMethod;
 
 /// Arguments of `zcheck verify`.
 #[derive(clap::Args)]
-pub struct Args {
+pub(crate) struct Args {
     /// Methods: built-in names or `.zm` files.
     #[arg(required = true)]
     methods: Vec<String>,
@@ -44,20 +46,14 @@ pub struct Args {
     #[arg(long, default_value_t = Exact::count(values::DEFAULT_BUDGET), allow_hyphen_values = true)]
     budget: Exact,
     /// Output format.
-    #[arg(long, value_enum, default_value_t = Format::Text)]
+    #[arg(long, value_parser = Format::parser(TEXT_JSON), default_value = "text")]
     format: Format,
 }
 
 /// A Φ to verify at: its `f64`, and its exact value when the user typed it.
 type Point = (f64, Option<Q>);
 
-#[derive(Clone, Copy, clap::ValueEnum)]
-enum Format {
-    Text,
-    Json,
-}
-
-pub fn run(args: Args) -> anyhow::Result<ExitCode> {
+pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     let steps = args.steps.to_count("--steps")?;
     let budget = args.budget.to_count("--budget")?;
     // The Φ typed are exact (the exact class is taken there); the numeric
@@ -66,12 +62,9 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
     for phi in &args.phi {
         phis.push((phi.to_f64("--phi")?, Some(phi.value.clone())));
     }
-    let methods = args
-        .methods
-        .iter()
-        .map(|name| zcheck::tableau::load_method(name))
-        .collect::<Result<Vec<_>, _>>()?;
-    values::check_declared(&args.params, &methods.iter().collect::<Vec<_>>())?;
+    let methods =
+        args.methods.iter().map(|name| LoadedMethod::load(name)).collect::<Result<Vec<_>, _>>()?;
+    values::check_declared(&args.params, &methods.iter().map(|m| m.method()).collect::<Vec<_>>())?;
     let mut base = Params::default();
     for p in &args.params {
         p.value.to_f64(&format!("--param {}", p.name))?;
@@ -79,10 +72,12 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
     }
     let mut jobs = Vec::new();
     for method in &methods {
-        let w = Witnesses::new(method)?;
+        let w = Witnesses::from_derivation(method.derivation()?);
         let mut phis = phis.clone();
         if args.boundaries {
-            let s = sweep::sweep(method, &base, &sweep::default_grid())?;
+            // `check::sweep` takes the method and derives it again: its
+            // classifier has no constructor from a derivation.
+            let s = sweep::sweep(method.method(), &base, &sweep::default_grid())?;
             for b in &s.boundaries {
                 phis.push((b.below, None));
                 phis.push((b.above, None));
@@ -93,7 +88,7 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
     let n_points: u64 = jobs.iter().map(|(_, p)| p.len() as u64).sum();
     let total = n_points.saturating_mul(steps);
     if total > budget {
-        bail!(
+        return Err(Error::usage(format!(
             "this run is {} state-steps ({n_points} points × {} steps), {}; the budget is {}: \
              pass --budget {} to run it anyway, or ask for fewer --steps",
             show_count(total),
@@ -101,7 +96,7 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
             estimate(&jobs, &base, total),
             show_count(budget),
             total
-        );
+        )));
     }
     let bar = if std::io::stderr().is_terminal() && total >= 10_000_000 {
         let b = ProgressBar::new(total);
@@ -130,11 +125,11 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
             };
             let r = w
                 .at_with_progress(&params, steps, &mut |k| bar.set_position(done_before + k))
-                .with_context(|| {
-                    format!(
+                .map_err(|e| {
+                    Error::from(e).context(format!(
                         "{name} at Phi = {} (other parameters: --param NAME=VALUE)",
                         show_f64(phi)
-                    )
+                    ))
                 })?;
             done_before += steps;
             bar.set_position(done_before);
@@ -148,13 +143,13 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
                 "points": points.iter().map(point_json).collect::<Vec<_>>(),
                 "agree": agree,
             })),
-            Format::Text => out_text.push_str(&text_table(&name, &points, agree)),
+            _ => out_text.push_str(&text_table(&name, &points, agree)),
         }
     }
     bar.finish_and_clear();
     let text = match args.format {
         Format::Json => serde_json::to_string_pretty(&Value::Array(out_json))? + "\n",
-        Format::Text => out_text,
+        _ => out_text,
     };
     output::emit(&text)?;
     Ok(if all_agree { ExitCode::SUCCESS } else { ExitCode::FAILURE })
@@ -209,7 +204,7 @@ fn finite_or_null(x: f64) -> Value {
 
 /// One point as JSON; `sim` is null when no simulation ran, and
 /// `growth_per_step` is null when the state vanished (ln 0).
-pub fn point_json(r: &PointReport) -> Value {
+pub(crate) fn point_json(r: &PointReport) -> Value {
     let sim = r.sim.as_ref().map(|s| {
         json!({
             "steps": s.steps,
@@ -237,7 +232,7 @@ pub fn point_json(r: &PointReport) -> Value {
 }
 
 /// The text table of one method (values rounded for reading).
-pub fn text_table(name: &str, points: &[PointReport], agree: bool) -> String {
+pub(crate) fn text_table(name: &str, points: &[PointReport], agree: bool) -> String {
     let mut s =
         format!("{name}: {}\n", if agree { "witnesses agree" } else { "WITNESSES DISAGREE" });
     s.push_str(&format!(

@@ -8,7 +8,8 @@
 //! references only short windows. The longer checks live in the proof tests.
 
 use super::sections::pascal;
-use super::{Case, Claim, Finding, Scope};
+use crate::paper::claim::Claim;
+use crate::paper::finding::{Case, Finding, Scope};
 use crate::scene::aircraft::{self, AircraftConfig};
 use crate::scene::three_body::{
     self, EnergyControl, EnergyDefinition, FirstStep, ForceLaw, InitialVelocities, State,
@@ -17,15 +18,15 @@ use crate::scene::three_body::{
 
 /// Steps of Appendix C's "ad infinitum" check in the report (the proof test
 /// runs 10^6; a step costs ~0.2 µs with every invariant followed).
-pub const C_STEPS: u64 = 100_000;
+pub(crate) const C_STEPS: u64 = 100_000;
 /// Steps of Appendix D, as printed.
-pub const D_STEPS: u64 = 100_000;
+pub(crate) const D_STEPS: u64 = 100_000;
 /// Steps of the aircraft runs (30 s at dT = 0.1).
-pub const E_STEPS: u64 = 300;
+pub(crate) const E_STEPS: u64 = 300;
 
 /// Four significant digits, in plain or scientific notation; the digits
 /// are chosen after rounding, so 0.99999 prints as 1.000, not 1.0000.
-pub fn sig(x: f64) -> String {
+pub(crate) fn sig(x: f64) -> String {
     if !x.is_finite() {
         return format!("{x}");
     }
@@ -41,7 +42,7 @@ pub fn sig(x: f64) -> String {
 }
 
 /// Relative change from the first to the last value.
-fn end_drift(t: &crate::scene::Track) -> f64 {
+fn end_drift(t: &crate::scene::track::Track) -> f64 {
     (t.last - t.initial) / t.initial.abs()
 }
 

@@ -5,10 +5,13 @@
 //! them. A claim's `statement` transcribes the paper exactly as printed; its
 //! `derived` field says what zcheck found; its `evidence` says how.
 
-pub mod claim;
+mod claim;
+mod finding;
 pub mod policy;
 
-pub use claim::{Case, Claim, Finding, Scope, Verdict};
+pub use claim::Claim;
+pub use finding::{Case, Finding, Scope};
+pub use policy::Verdict;
 
 pub mod appendix;
 pub mod report;

@@ -1,5 +1,6 @@
-//! The verdict policy: the one function that turns what zcheck computed
-//! about a claim into a verdict (DESIGN.md, "the verdict policy").
+//! The verdict policy: the verdicts, and the one function that turns what
+//! zcheck computed about a claim into a verdict (DESIGN.md, "the verdict
+//! policy").
 //!
 //! - `Same`: the printed object equals the derived one: confirmed; else
 //!   errata (a misprint that changes the mathematics).
@@ -9,7 +10,39 @@
 //! - `Slip`: the text is what was meant: confirmed; it is not, but the
 //!   program computes the same: typo; it computes something else: errata.
 
-use super::claim::{Finding, Scope, Verdict};
+use serde::Serialize;
+
+use super::finding::{Finding, Scope};
+
+/// How a claim of the paper fares against the derivation (DESIGN.md, "the
+/// verdict policy").
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Verdict {
+    /// The claim holds as printed.
+    Confirmed,
+    /// True on the range the paper states, or under a condition it leaves
+    /// implicit, but not as worded.
+    Refined,
+    /// False somewhere within what the paper asserts, or a misprint that
+    /// changes the mathematics.
+    Errata,
+    /// A slip that changes nothing (a comment, a name); counted apart from
+    /// the errata.
+    Typo,
+}
+
+impl Verdict {
+    /// The lower-case name used in reports.
+    pub(crate) fn name(self) -> &'static str {
+        match self {
+            Verdict::Confirmed => "confirmed",
+            Verdict::Refined => "refined",
+            Verdict::Errata => "errata",
+            Verdict::Typo => "typo",
+        }
+    }
+}
 
 /// The verdict of a finding.
 pub fn verdict(finding: &Finding) -> Verdict {
@@ -47,7 +80,7 @@ pub fn verdict(finding: &Finding) -> Verdict {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::paper::claim::Case;
+    use crate::paper::finding::Case;
 
     fn case(holds: bool, scope: Scope) -> Case {
         Case { case: String::new(), holds, scope }

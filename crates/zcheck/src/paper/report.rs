@@ -8,11 +8,13 @@ use std::fmt::Write as _;
 use serde::Serialize;
 use serde_json::json;
 
-use super::{Claim, Verdict};
+use crate::paper::claim::Claim;
+
+use crate::paper::policy::Verdict;
 
 /// The paper's sections that carry claims, in the paper's order, with their
 /// titles as the table of contents prints them.
-pub const SECTIONS: [(&str, &str); 14] = [
+pub(crate) const SECTIONS: [(&str, &str); 14] = [
     ("4", "z-Transformation"),
     ("5", "Standard Euler"),
     ("6", "Damped Euler"),
@@ -31,7 +33,7 @@ pub const SECTIONS: [(&str, &str); 14] = [
 
 /// Verdict counts.
 #[derive(Clone, Debug, Default, PartialEq, Eq, Serialize)]
-pub struct Counts {
+pub(crate) struct Counts {
     /// All claims.
     pub claims: usize,
     /// Claims that hold as printed.
@@ -67,7 +69,7 @@ impl Counts {
 
 /// Counts over all claims and per section (every section of [`SECTIONS`],
 /// in order, including those without claims).
-pub fn summary(claims: &[Claim]) -> (Counts, Vec<(&'static str, Counts)>) {
+pub(crate) fn summary(claims: &[Claim]) -> (Counts, Vec<(&'static str, Counts)>) {
     let mut total = Counts::default();
     let mut per: BTreeMap<&str, Counts> = BTreeMap::new();
     for c in claims {

@@ -7,6 +7,7 @@ mod advice;
 mod app_a;
 mod app_b;
 mod common;
+mod exact;
 mod frequency;
 pub(crate) mod pascal;
 mod ranges;
@@ -20,9 +21,7 @@ mod sec10;
 mod sec11;
 mod sec12;
 
-use super::Claim;
-
-pub use sec08::verlet_samples;
+use crate::paper::claim::Claim;
 
 /// The claims of sections 4–12 and Appendices A and B, in the paper's order.
 pub fn claims() -> Vec<Claim> {

@@ -1,5 +1,8 @@
-//! The scene advisor: which method, how many substeps per tick, for a whole
-//! scene of modes.
+//! The whole-scene advisor: which method, how many substeps per tick, for a
+//! whole scene of masses and springs, or of modes (`zcheck advise --scene`).
+//! A single spring in game units is the single-spring advisor's
+//! (`tradeoff::spring_advisor`); `zcheck advise --freq --tick`
+//! runs both, this one on the spring as a one-mode scene.
 //!
 //! For every candidate method and every mode (ω, ζ) the substep is
 //! Φ = ω/(tick·n). Per candidate:
@@ -39,81 +42,30 @@ use check::numeric::{f64_to_q, Params, ParamsF64, Step};
 use nalgebra::DMatrix;
 use num_complex::Complex64 as C64;
 use poly::region::{region, PhiLimit, Region};
-use poly::{Method, Poly, Sym};
+use poly::{Poly, Sym};
 use serde::Serialize;
 
 use super::file::SceneFile;
-use super::modal::{DampingKind, Modal, Mode, Sparse, System};
+use super::modal::{continuous_eigenvalues, DampingKind, Modal, Mode, Sparse, System};
 use super::vector::{self, Kernel, Sweep, VState};
+use crate::error::Error;
+use crate::load::LoadedMethod;
 use crate::tradeoff::accuracy::{Accuracy, Spring, Target};
 use crate::tradeoff::kernels;
 
 /// Agreement of predicted and simulated drifts: within this fraction of the
 /// target (phase in radians, amplitude relative), plus 1e-9 absolute.
-pub const AGREE_FRACTION: f64 = 1e-3;
+pub(crate) const AGREE_FRACTION: f64 = 1e-3;
 
 /// Largest number of substeps searched.
 const MAX_SUBSTEPS: u64 = 1 << 24;
 
 /// Largest system for the dense full-step analysis (2n × 2n eigenvalues).
-pub const MAX_FULL_DOF: usize = 400;
-
-/// A candidate method.
-#[derive(Clone, Debug)]
-pub struct MethodSpec {
-    /// The name shown.
-    pub display: String,
-    /// The method.
-    pub method: Method,
-    /// The system kernel of a built-in.
-    pub kernel: Option<Kernel>,
-    /// Its hand-written scalar kernel's name, for timing.
-    pub hand_kernel: Option<String>,
-}
-
-impl MethodSpec {
-    /// A built-in by its undamped or damped name (`false_euler` or
-    /// `false_euler_damped`), or a `.zm` file.
-    pub fn load(arg: &str) -> anyhow::Result<MethodSpec> {
-        let damped = match arg {
-            "standard_euler" => Some("damped_euler_d".to_owned()),
-            a if poly::DAMPED_METHODS.contains(&a) => Some(a.to_owned()),
-            a if poly::DAMPED_METHODS.contains(&format!("{a}_damped").as_str()) => {
-                Some(format!("{a}_damped"))
-            }
-            _ => None,
-        };
-        if let Some(name) = damped {
-            let method = poly::builtin(&name)?;
-            let display = match name.as_str() {
-                "damped_euler_d" => "standard_euler".to_owned(),
-                n => n.trim_end_matches("_damped").to_owned(),
-            };
-            let hand = if name == "damped_euler_d" {
-                "standard_euler_damped".to_owned()
-            } else {
-                name.clone()
-            };
-            return Ok(MethodSpec {
-                display,
-                method,
-                kernel: Kernel::for_method(&name),
-                hand_kernel: Some(hand),
-            });
-        }
-        let method = crate::tableau::load_method_with(arg, true)?;
-        Ok(MethodSpec { display: arg.to_owned(), method, kernel: None, hand_kernel: None })
-    }
-
-    /// The seven direct methods on the damped spring.
-    pub fn builtins() -> anyhow::Result<Vec<MethodSpec>> {
-        poly::DAMPED_METHODS.iter().map(|n| MethodSpec::load(n)).collect()
-    }
-}
+pub(crate) const MAX_FULL_DOF: usize = 400;
 
 /// Predicted or simulated errors over the duration (largest over modes).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-pub struct Errors {
+pub(crate) struct Errors {
     /// Phase error, radians.
     pub phase_rad: f64,
     /// Relative amplitude error.
@@ -122,54 +74,54 @@ pub struct Errors {
 
 /// The simulation's verdict.
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct Simulated {
+pub(crate) struct Simulated {
     /// Errors measured from the simulation (modes simulated only).
-    pub phase_rad: f64,
+    pub(crate) phase_rad: f64,
     /// Relative amplitude error measured.
-    pub amplitude: f64,
+    pub(crate) amplitude: f64,
     /// Whether they agree with the prediction for the same modes.
-    pub agree: bool,
+    pub(crate) agree: bool,
     /// How it was simulated.
-    pub how: String,
+    pub(crate) how: String,
     /// Modes projected and fitted.
-    pub modes_checked: usize,
+    pub(crate) modes_checked: usize,
     /// Steps simulated.
-    pub steps: u64,
+    pub(crate) steps: u64,
 }
 
 /// One candidate's answer.
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct CandidateAdvice {
+pub(crate) struct CandidateAdvice {
     /// The method.
-    pub method: String,
+    pub(crate) method: String,
     /// Fewest substeps per tick with every mode inside the region (`None`:
     /// none found).
-    pub substeps_stable: Option<u64>,
+    pub(crate) substeps_stable: Option<u64>,
     /// Fewest substeps meeting the target (`None`: none found).
-    pub substeps_accurate: Option<u64>,
+    pub(crate) substeps_accurate: Option<u64>,
     /// Measured ns per step of one degree of freedom.
-    pub ns_per_step: f64,
+    pub(crate) ns_per_step: f64,
     /// ns per tick at `substeps_accurate`: ns per step × substeps × DOF.
-    pub ns_per_tick: Option<f64>,
+    pub(crate) ns_per_tick: Option<f64>,
     /// Predicted errors at `substeps_accurate`.
-    pub predicted: Option<Errors>,
+    pub(crate) predicted: Option<Errors>,
     /// Simulated errors at `substeps_accurate`.
-    pub simulated: Option<Simulated>,
+    pub(crate) simulated: Option<Simulated>,
     /// Exact Φ_max at the stability-limiting mode's ζ.
-    pub phi_max: Option<String>,
+    pub(crate) phi_max: Option<String>,
     /// How `substeps_stable` was decided.
-    pub stability_from: String,
+    pub(crate) stability_from: String,
     /// Per mode: own fewest stable substeps.
     #[serde(skip)]
-    pub mode_stable: Vec<Option<u64>>,
+    pub(crate) mode_stable: Vec<Option<u64>>,
     /// Per mode: own fewest accurate substeps.
     #[serde(skip)]
-    pub mode_accurate: Vec<Option<u64>>,
+    pub(crate) mode_accurate: Vec<Option<u64>>,
 }
 
 /// One mode in the report.
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct ModeReport {
+pub(crate) struct ModeReport {
     /// Undamped frequency, Hz.
     pub hz: f64,
     /// Damping ratio.
@@ -182,7 +134,7 @@ pub struct ModeReport {
 
 /// The recommendation.
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct Recommended {
+pub(crate) struct Recommended {
     /// The method.
     pub method: String,
     /// Substeps per tick.
@@ -191,7 +143,7 @@ pub struct Recommended {
 
 /// Gauss–Seidel analysis of one candidate.
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct SweepReport {
+pub(crate) struct SweepReport {
     /// The method.
     pub method: String,
     /// Fewest substeps stable with all bodies at once (modal).
@@ -215,28 +167,28 @@ pub struct SweepReport {
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct SceneAdvice {
     /// Tick rate, Hz.
-    pub tick_hz: f64,
+    pub(crate) tick_hz: f64,
     /// Duration, s.
-    pub duration_s: f64,
+    pub(crate) duration_s: f64,
     /// Phase target, rad.
-    pub phase_rad: f64,
+    pub(crate) phase_rad: f64,
     /// Amplitude target.
-    pub amplitude: f64,
+    pub(crate) amplitude: f64,
     /// Degrees of freedom.
-    pub dof: usize,
+    pub(crate) dof: usize,
     /// Rigid-body modes left out.
-    pub rigid_modes: usize,
+    pub(crate) rigid_modes: usize,
     /// The damping's structure.
-    pub damping: DampingKind,
+    pub(crate) damping: DampingKind,
     /// The modes, increasing frequency.
-    pub modes: Vec<ModeReport>,
+    pub(crate) modes: Vec<ModeReport>,
     /// Every candidate.
-    pub candidates: Vec<CandidateAdvice>,
+    pub(crate) candidates: Vec<CandidateAdvice>,
     /// The cheapest candidate meeting the target.
-    pub recommended: Option<Recommended>,
+    pub(crate) recommended: Option<Recommended>,
     /// The Gauss–Seidel analysis, when asked for.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub sweep: Option<Vec<SweepReport>>,
+    pub(crate) sweep: Option<Vec<SweepReport>>,
 }
 
 /// A polynomial in (Φ, D) with f64 coefficients.
@@ -265,7 +217,7 @@ impl BiPoly {
 
 /// Everything per candidate that does not depend on the mode.
 struct Analysed {
-    spec: MethodSpec,
+    spec: LoadedMethod,
     region: Region,
     /// χ's coefficients in z (lowest first), in (Φ, D).
     coeffs: Vec<BiPoly>,
@@ -285,19 +237,19 @@ type AtParam = (Poly, Option<Vec<poly::stability::StableInterval>>);
 const FLOAT_MARGIN: f64 = 1e-6;
 
 impl Analysed {
-    fn new(spec: MethodSpec) -> anyhow::Result<Analysed> {
+    fn new(spec: LoadedMethod) -> Result<Analysed, Error> {
         let d = Sym::new("D");
         if let Some(extra) =
-            spec.method.params().iter().find(|s| s.name() != "Phi" && s.name() != "D")
+            spec.method().params().iter().find(|s| s.name() != "Phi" && s.name() != "D")
         {
-            anyhow::bail!(
+            return Err(Error::unsupported(format!(
                 "method {}: parameter {extra} has no value in a scene: expected only Phi and D",
-                spec.display
-            );
+                spec.display()
+            )));
         }
-        let chi = poly::charpoly(&spec.method)?;
-        let region =
-            region(&chi, d).map_err(|e| anyhow::anyhow!("method {}: {e}", spec.display))?;
+        let chi = &spec.derivation()?.charpoly;
+        let region = region(chi, d)
+            .map_err(|e| Error::from(e).context(format!("method {}", spec.display())))?;
         let zc = chi.coeffs_in(Sym::z());
         let coeffs = zc.iter().map(|c| BiPoly::new(c, d)).collect();
         let second = (zc.len() == 3 && zc[2].is_one()).then(|| {
@@ -471,15 +423,15 @@ fn target_of(scene: &SceneFile) -> Target {
 }
 
 /// ns per step of one degree of freedom.
-fn ns_per_step(spec: &MethodSpec, d: f64) -> f64 {
+fn ns_per_step(spec: &LoadedMethod, d: f64) -> f64 {
     let budget = Duration::from_millis(3);
-    if let Some(h) = &spec.hand_kernel {
+    if let Some(h) = spec.hand_kernel() {
         if let Some(ns) = kernels::time_hand_kernel(h, d, budget) {
             return ns;
         }
     }
     let params = Params::phi(kernels::TIMING_PHI).with("D", d);
-    match Step::compile(&spec.method, &params) {
+    match Step::compile(spec.method(), &params) {
         Ok(step) => {
             let start: Vec<f64> =
                 (0..step.order()).map(|i| if i == 0 { 1.0 } else { 0.0 }).collect();
@@ -526,9 +478,9 @@ pub struct Options {
 pub fn advise(
     scene: &SceneFile,
     modal: &Modal,
-    specs: Vec<MethodSpec>,
+    specs: Vec<LoadedMethod>,
     options: Options,
-) -> anyhow::Result<SceneAdvice> {
+) -> Result<SceneAdvice, Error> {
     let tick = scene.tick_hz;
     let target = target_of(scene);
     let dof = scene.dof();
@@ -536,14 +488,14 @@ pub fn advise(
     let mut candidates = Vec::new();
     let mut analysed_all = Vec::new();
     for spec in specs {
-        if !spec.method.params().iter().any(|s| s.name() == "D")
+        if !spec.method().params().iter().any(|s| s.name() == "D")
             && modal.modes.iter().any(|m| m.ratio != 0.0)
         {
-            anyhow::bail!(
+            return Err(Error::unsupported(format!(
                 "method {}: the scene is damped but the method has no parameter D: expected `param D` \
                  (the test equation v' = -2*D*v - y, y' = v)",
-                spec.display
-            );
+                spec.display()
+            )));
         }
         let mut a = Analysed::new(spec)?;
         let adv = advise_one(&mut a, scene, modal, &system, &shapes, &target, options.simulate)?;
@@ -582,14 +534,14 @@ pub fn advise(
                 .zip(&candidates)
                 .filter_map(|(a, c)| {
                     Some(sweep_report(
-                        a.spec.kernel?,
-                        &a.spec.display,
+                        a.spec.system_kernel()?,
+                        a.spec.display(),
                         &system,
                         tick,
                         c.substeps_stable,
                     ))
                 })
-                .collect::<anyhow::Result<Vec<_>>>()?,
+                .collect::<Result<Vec<_>, Error>>()?,
         )
     } else {
         None
@@ -617,7 +569,7 @@ fn advise_one(
     shapes: &[Vec<f64>],
     target: &Target,
     simulate: bool,
-) -> anyhow::Result<CandidateAdvice> {
+) -> Result<CandidateAdvice, Error> {
     let tick = scene.tick_hz;
     let modes = &modal.modes;
     // Float estimates for every mode, then exact answers for the limiting
@@ -668,7 +620,7 @@ fn advise_one(
         limiting = mode_stable.iter().position(|s| *s == Some(n));
     }
     if modal.damping == DampingKind::NonProportional {
-        match a.spec.kernel {
+        match a.spec.system_kernel() {
             Some(k) if system.n() <= MAX_FULL_DOF => {
                 substeps_stable = full_stable(k, Sweep::Vector, system, tick, substeps_stable.unwrap_or(1));
                 stability_from = "full-step matrix (non-proportional damping)".to_owned();
@@ -705,7 +657,7 @@ fn advise_one(
     let d_timing = modes.iter().map(|m| m.ratio).fold(0.0, f64::max).min(1.0);
     let ns = ns_per_step(&a.spec, d_timing);
     let dof = scene.dof() as f64;
-    let full = match a.spec.kernel {
+    let full = match a.spec.system_kernel() {
         Some(k) if modal.damping == DampingKind::NonProportional && system.n() <= MAX_FULL_DOF => {
             Some(k)
         }
@@ -738,7 +690,7 @@ fn advise_one(
         (predicted, simulated)
     };
     Ok(CandidateAdvice {
-        method: a.spec.display.clone(),
+        method: a.spec.display().to_owned(),
         substeps_stable,
         substeps_accurate,
         ns_per_step: ns,
@@ -859,7 +811,7 @@ fn simulate_check(
     let steps = wanted.min(total_steps.max(enough)).min((SIM_WORK / dim as f64) as u64).max(1);
     let mut seqs: Vec<Vec<f64>> = vec![Vec::with_capacity(FIT_SAMPLES); checked.len()];
     let how;
-    match a.spec.kernel {
+    match a.spec.system_kernel() {
         Some(kernel) => {
             how = "whole scene, system kernel".to_owned();
             // Start: each checked mode with unit modal amplitude, at rest.
@@ -892,7 +844,7 @@ fn simulate_check(
             // A .zm file has no system form: each checked mode runs the
             // compiled scalar step at its own (Phi, D).
             how = "per mode, compiled .zm step".to_owned();
-            let m = &a.spec.method;
+            let m = a.spec.method();
             let y_slot = m
                 .slots()
                 .iter()
@@ -988,29 +940,6 @@ fn fit_root(q: &[f64]) -> Option<(f64, f64)> {
     }
     let r = (-b).sqrt();
     Some(((a / (2.0 * r)).clamp(-1.0, 1.0).acos(), r.ln()))
-}
-
-/// The eigenvalues λ of the continuous system ẏ = v, v̇ = −M⁻¹(K y + C v)
-/// with Im λ ≥ 0.
-pub fn continuous_eigenvalues(sys: &System) -> Vec<C64> {
-    let n = sys.n();
-    let mut a = DMatrix::zeros(2 * n, 2 * n);
-    for i in 0..n {
-        a[(i, n + i)] = 1.0;
-        for &(j, k) in sys.k.row(i) {
-            a[(n + i, j)] = -k / sys.mass[i];
-        }
-        for &(j, c) in sys.c.row(i) {
-            a[(n + i, n + j)] = -c / sys.mass[i];
-        }
-    }
-    let mut l: Vec<C64> = check::witness::eigenvalues_nalgebra(&a)
-        .unwrap_or_default()
-        .into_iter()
-        .filter(|z| z.im >= 0.0)
-        .collect();
-    l.sort_by(|x, y| x.norm().total_cmp(&y.norm()));
-    l
 }
 
 /// For each λ, the eigenvalue μ of the full step nearest e^{λT}.
@@ -1150,13 +1079,13 @@ fn radii(p: &DMatrix<f64>) -> Option<(f64, f64)> {
 /// Numeric tolerance on ρ of a full step: eigenvalues on the unit circle
 /// come out within a few hundred ulps of it for these small, well
 /// conditioned matrices.
-pub const FULL_RHO_TOL: f64 = 1e-12;
+pub(crate) const FULL_RHO_TOL: f64 = 1e-12;
 
 /// The largest substep count a full-step search reports: beyond it a
 /// growth of ρ − 1 below [`FULL_RHO_TOL`] cannot be told from none (the
 /// exact analysis says "never" for Standard Euler; the numeric one would
 /// find a step with ρ − 1 < 1e-12).
-pub const MAX_FULL_SUBSTEPS: u64 = 1 << 16;
+pub(crate) const MAX_FULL_SUBSTEPS: u64 = 1 << 16;
 
 /// Numeric stability of a full step: ρ ≤ 1 + [`FULL_RHO_TOL`] by both witnesses.
 fn full_ok(kernel: Kernel, sweep: Sweep, sys: &System, t: f64) -> bool {
@@ -1191,12 +1120,12 @@ fn sweep_report(
     sys: &System,
     tick: f64,
     modal: Option<u64>,
-) -> anyhow::Result<SweepReport> {
+) -> Result<SweepReport, Error> {
     if sys.n() > MAX_FULL_DOF {
-        anyhow::bail!(
+        return Err(Error::usage(format!(
             "--sweep gauss-seidel: the scene has {} degrees of freedom: the full-step analysis takes at most {MAX_FULL_DOF}",
             sys.n()
-        );
+        )));
     }
     let gs = full_stable(kernel, Sweep::GaussSeidel, sys, tick, modal.unwrap_or(1));
     let vec_n = full_stable(kernel, Sweep::Vector, sys, tick, modal.unwrap_or(1));
@@ -1257,7 +1186,7 @@ mod tests {
     /// including points within 10⁻⁹ of the exact limit.
     #[test]
     fn the_float_filter_agrees_with_the_exact_membership() {
-        for spec in MethodSpec::builtins().unwrap() {
+        for spec in LoadedMethod::damped_builtins().unwrap() {
             let a = Analysed::new(spec).unwrap();
             for d in [0.0, 0.05, 0.3, 0.9] {
                 let mut phis: Vec<f64> = (1..=40).map(|k| k as f64 * 0.1).collect();
@@ -1270,7 +1199,7 @@ mod tests {
                         a.inside(phi, d),
                         a.inside_exact(phi, d),
                         "{} at Phi = {phi}, D = {d}",
-                        a.spec.display
+                        a.spec.display()
                     );
                 }
             }

@@ -11,22 +11,23 @@ use nalgebra::{SMatrix, SVector};
 use serde::Serialize;
 
 use super::reference::rk4_step;
-use super::{SceneError, Track};
+use super::track::Track;
+use crate::error::Error;
 
 /// Principal moments of inertia.
-pub const JX: f64 = 0.6;
-pub const JY: f64 = 1.0;
-pub const JZ: f64 = 1.5;
+pub(crate) const JX: f64 = 0.6;
+pub(crate) const JY: f64 = 1.0;
+pub(crate) const JZ: f64 = 1.5;
 /// Dampers (torque per rad/s).
-pub const DAMP_P: f64 = 2.0;
-pub const DAMP_Q: f64 = 3.0;
-pub const DAMP_R: f64 = 1.0;
+pub(crate) const DAMP_P: f64 = 2.0;
+pub(crate) const DAMP_Q: f64 = 3.0;
+pub(crate) const DAMP_R: f64 = 1.0;
 /// Controllers (torque per degree) and the yaw torque per sine of roll.
-pub const CONT_PHI: f64 = 0.06;
-pub const CONT_THE: f64 = 0.10;
-pub const CONT_PSI: f64 = 1.0;
+pub(crate) const CONT_PHI: f64 = 0.06;
+pub(crate) const CONT_THE: f64 = 0.10;
+pub(crate) const CONT_PSI: f64 = 1.0;
 /// The gimbal-lock guard: `|cos The|` is kept at or above this.
-pub const GIMBAL_EPS: f64 = 1e-5;
+pub(crate) const GIMBAL_EPS: f64 = 1e-5;
 const WRAD: f64 = std::f64::consts::PI / 180.0;
 
 /// Commands and step of the aircraft scene.
@@ -159,7 +160,7 @@ pub fn derivative(config: &AircraftConfig, y: &[f64; 6]) -> [f64; 6] {
 }
 
 /// The paper's rotation matrix `o11 .. o33` (body to earth, z-y-x).
-pub fn rotation_matrix(angles: &[f64; 3]) -> [[f64; 3]; 3] {
+pub(crate) fn rotation_matrix(angles: &[f64; 3]) -> [[f64; 3]; 3] {
     let (sphi, cphi) = (WRAD * angles[0]).sin_cos();
     let (sthe, cthe) = (WRAD * angles[1]).sin_cos();
     let (spsi, cpsi) = (WRAD * angles[2]).sin_cos();
@@ -171,7 +172,7 @@ pub fn rotation_matrix(angles: &[f64; 3]) -> [[f64; 3]; 3] {
 }
 
 /// Largest entry of `|O^T O - I|`.
-pub fn orthonormality_error(m: &[[f64; 3]; 3]) -> f64 {
+pub(crate) fn orthonormality_error(m: &[[f64; 3]; 3]) -> f64 {
     let mut worst = 0.0f64;
     for i in 0..3 {
         for j in 0..3 {
@@ -196,7 +197,7 @@ pub struct SteadyTurn {
 
 /// Solve for the steady turn of the continuous equations by Newton's method
 /// from the command (an independent route to the simulated end state).
-pub fn steady_turn(config: &AircraftConfig) -> Result<SteadyTurn, SceneError> {
+pub fn steady_turn(config: &AircraftConfig) -> Result<SteadyTurn, Error> {
     let residual = |x: &SVector<f64, 5>| {
         let d = derivative(config, &[x[0], x[1], x[2], x[3], x[4], 0.0]);
         SVector::<f64, 5>::from([d[0], d[1], d[2], d[3], d[4]])
@@ -222,15 +223,19 @@ pub fn steady_turn(config: &AircraftConfig) -> Result<SteadyTurn, SceneError> {
             xm[j] -= h;
             jacobian.set_column(j, &((residual(&xp) - residual(&xm)) / (2.0 * h)));
         }
-        let dx = jacobian.lu().solve(&r).ok_or(SceneError::NoSteadyState)?;
+        let dx = jacobian.lu().solve(&r).ok_or_else(no_steady_turn)?;
         x -= dx;
     }
-    Err(SceneError::NoSteadyState)
+    Err(no_steady_turn())
+}
+
+fn no_steady_turn() -> Error {
+    Error::numeric("no steady turn found for the aircraft's command")
 }
 
 /// One sample of a run.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-pub struct AircraftSample {
+pub(crate) struct AircraftSample {
     pub time: f64,
     pub angles: [f64; 3],
     pub reference_angles: [f64; 3],
@@ -258,7 +263,7 @@ pub struct AircraftRun {
     pub kinematics_error: f64,
     /// Rotational kinetic energy (not an invariant: dampers and controllers).
     pub kinetic_energy: Track,
-    pub samples: Vec<AircraftSample>,
+    pub(crate) samples: Vec<AircraftSample>,
 }
 
 /// The reference: RK4 with 20 substeps per `dT` (h = 0.005 s, far inside

@@ -9,13 +9,13 @@ use plotters::prelude::*;
 
 use super::aircraft::AircraftRun;
 use super::three_body::{Integrator, ThreeBodyRun};
-use super::SceneError;
+use crate::error::Error;
 
 const BODY_COLOURS: [RGBColor; 3] =
     [RGBColor(214, 39, 40), RGBColor(44, 160, 44), RGBColor(31, 119, 180)];
 
-fn figure_error(path: &Path) -> impl Fn(&dyn std::fmt::Display) -> SceneError + '_ {
-    move |e| SceneError::Figure(format!("{}: {e}", path.display()))
+fn figure_error(path: &Path) -> impl Fn(&dyn std::fmt::Display) -> Error + '_ {
+    move |e| Error::figure(format!("cannot draw figure {}: {e}", path.display()))
 }
 
 fn range(values: impl Iterator<Item = f64>) -> (f64, f64) {
@@ -31,7 +31,11 @@ fn range(values: impl Iterator<Item = f64>) -> (f64, f64) {
 
 /// Draw the trajectory and energy figures of a three-body run into `dir`;
 /// returns the files written.
-pub fn three_body(dir: &Path, name: &str, run: &ThreeBodyRun) -> Result<Vec<PathBuf>, SceneError> {
+pub(crate) fn three_body(
+    dir: &Path,
+    name: &str,
+    run: &ThreeBodyRun,
+) -> Result<Vec<PathBuf>, Error> {
     let trajectory = dir.join(format!("{name}_trajectory.svg"));
     let energy = dir.join(format!("{name}_energy.svg"));
     draw_trajectory(&trajectory, name, run)?;
@@ -39,7 +43,7 @@ pub fn three_body(dir: &Path, name: &str, run: &ThreeBodyRun) -> Result<Vec<Path
     Ok(vec![trajectory, energy])
 }
 
-fn draw_trajectory(path: &Path, name: &str, run: &ThreeBodyRun) -> Result<(), SceneError> {
+fn draw_trajectory(path: &Path, name: &str, run: &ThreeBodyRun) -> Result<(), Error> {
     let err = figure_error(path);
     // Appendix C's image is the first 100 steps; Appendix D's the whole run.
     let clover = run.config.integrator == Integrator::FalseEuler;
@@ -106,7 +110,7 @@ fn draw_trajectory(path: &Path, name: &str, run: &ThreeBodyRun) -> Result<(), Sc
     root.present().map_err(|e| err(&e))
 }
 
-fn draw_energy(path: &Path, name: &str, run: &ThreeBodyRun) -> Result<(), SceneError> {
+fn draw_energy(path: &Path, name: &str, run: &ThreeBodyRun) -> Result<(), Error> {
     let err = figure_error(path);
     let root = SVGBackend::new(path, (900, 600)).into_drawing_area();
     root.fill(&WHITE).map_err(|e| err(&e))?;
@@ -141,7 +145,7 @@ fn draw_energy(path: &Path, name: &str, run: &ThreeBodyRun) -> Result<(), SceneE
 
 /// Draw the aircraft's angles over time (False Euler against the reference,
 /// with the command) into `dir`.
-pub fn aircraft(dir: &Path, run: &AircraftRun) -> Result<Vec<PathBuf>, SceneError> {
+pub(crate) fn aircraft(dir: &Path, run: &AircraftRun) -> Result<Vec<PathBuf>, Error> {
     let path = dir.join("aircraft_angles.svg");
     let err = figure_error(&path);
     let root = SVGBackend::new(&path, (900, 700)).into_drawing_area();

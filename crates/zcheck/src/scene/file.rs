@@ -28,27 +28,29 @@ use std::path::Path;
 use serde::Deserialize;
 use toml::Spanned;
 
+use crate::error::{line_col, Error};
+
 /// The name that fixes a spring's end to the world.
-pub const GROUND: &str = "ground";
+pub(crate) const GROUND: &str = "ground";
 
 /// A scene read from a file.
 #[derive(Clone, Debug, PartialEq)]
 pub struct SceneFile {
     /// The simulation tick rate, Hz.
-    pub tick_hz: f64,
+    pub(crate) tick_hz: f64,
     /// How long the scene must stay within the target, seconds.
-    pub duration_s: f64,
+    pub(crate) duration_s: f64,
     /// Largest phase error of any mode over the duration, radians.
-    pub phase_rad: f64,
+    pub(crate) phase_rad: f64,
     /// Largest relative amplitude error of any mode over the duration.
-    pub amplitude: f64,
+    pub(crate) amplitude: f64,
     /// What moves.
-    pub body: Body,
+    pub(crate) body: Body,
 }
 
 /// The moving parts of a scene.
 #[derive(Clone, Debug, PartialEq)]
-pub enum Body {
+pub(crate) enum Body {
     /// Point masses joined by springs.
     Springs {
         /// The masses, in file order.
@@ -62,7 +64,7 @@ pub enum Body {
 
 /// A point mass.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Mass {
+pub(crate) struct Mass {
     /// Its name.
     pub name: String,
     /// Its mass, kg.
@@ -71,7 +73,7 @@ pub struct Mass {
 
 /// A linear spring with an optional viscous damper in parallel.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Spring {
+pub(crate) struct Spring {
     /// Index of the first end's mass.
     pub a: usize,
     /// Index of the second end's mass; `None` for the ground.
@@ -84,15 +86,12 @@ pub struct Spring {
 
 /// A mode given directly.
 #[derive(Clone, Debug, PartialEq)]
-pub struct ModeSpec {
+pub(crate) struct ModeSpec {
     /// Its undamped natural frequency, Hz.
     pub hz: f64,
     /// Its damping ratio ζ.
     pub ratio: f64,
 }
-
-/// A mistake in a scene file, with its location.
-pub type SceneFileError = crate::located::FileError;
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -139,30 +138,26 @@ struct RawMode {
 }
 
 /// Defaults for a scene file that leaves them out.
-pub const DEFAULT_DURATION_S: f64 = 1.0;
+pub(crate) const DEFAULT_DURATION_S: f64 = 1.0;
 /// Default phase target, radians.
-pub const DEFAULT_PHASE_RAD: f64 = 0.1;
+pub(crate) const DEFAULT_PHASE_RAD: f64 = 0.1;
 /// Default amplitude target.
-pub const DEFAULT_AMPLITUDE: f64 = 0.01;
+pub(crate) const DEFAULT_AMPLITUDE: f64 = 0.01;
 
 impl SceneFile {
     /// Reads and checks a scene file.
-    pub fn load(path: &Path) -> Result<SceneFile, SceneFileError> {
+    pub(crate) fn load(path: &Path) -> Result<SceneFile, Error> {
         let shown = path.display().to_string();
-        let text = std::fs::read_to_string(path).map_err(|e| SceneFileError {
-            path: shown.clone(),
-            line: 0,
-            col: 0,
-            message: format!("cannot read the scene file: {e}"),
-        })?;
+        let text = std::fs::read_to_string(path)
+            .map_err(|e| Error::file(&shown, 0, 0, &format!("cannot read the scene file: {e}")))?;
         SceneFile::parse(&shown, &text)
     }
 
     /// Parses and checks the text of a scene file; `path` names it in errors.
-    pub fn parse(path: &str, text: &str) -> Result<SceneFile, SceneFileError> {
+    pub fn parse(path: &str, text: &str) -> Result<SceneFile, Error> {
         let err = |span: Option<Range<usize>>, message: String| {
             let (line, col) = line_col(text, span.map_or(0, |s| s.start));
-            SceneFileError { path: path.to_owned(), line, col, message }
+            Error::file(path, line, col, &message)
         };
         let raw: Raw = toml::from_str(text).map_err(|e| {
             err(e.span(), e.message().trim_end_matches('\n').replace('\n', "; ").to_string())
@@ -337,7 +332,7 @@ impl SceneFile {
     }
 
     /// A one-mode scene: a spring of `hz` with damping ratio `ratio`.
-    pub fn one_mode(
+    pub(crate) fn one_mode(
         hz: f64,
         ratio: f64,
         tick_hz: f64,
@@ -363,17 +358,16 @@ impl SceneFile {
     }
 }
 
-use crate::located::line_col;
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::error::Location;
 
     #[track_caller]
     fn bad(text: &str, line: usize, col: usize, needle: &str) {
         let e = SceneFile::parse("s.toml", text).expect_err("a bad scene");
-        assert_eq!((e.line(), e.col()), (line, col), "{e}");
-        assert!(e.message().contains(needle), "{e}");
+        assert_eq!(e.location(), Some(Location { line, col }), "{e}");
+        assert!(e.to_string().contains(needle), "{e}");
     }
 
     /// Each listed mistake is located at the offending value.

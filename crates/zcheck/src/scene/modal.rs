@@ -18,12 +18,15 @@
 //! rigidly: Φ = 0 for every step, so they limit nothing and are dropped.
 
 use faer::Side;
+use nalgebra::DMatrix;
+use num_complex::Complex64 as C64;
 
 use super::file::{Body, SceneFile};
+use crate::error::Error;
 
 /// A symmetric sparse matrix: for each row, its `(column, value)` entries.
 #[derive(Clone, Debug, Default, PartialEq)]
-pub struct Sparse {
+pub(crate) struct Sparse {
     rows: Vec<Vec<(usize, f64)>>,
 }
 
@@ -56,17 +59,17 @@ impl Sparse {
     }
 
     /// The size.
-    pub fn n(&self) -> usize {
+    pub(crate) fn n(&self) -> usize {
         self.rows.len()
     }
 
     /// Row i's entries.
-    pub fn row(&self, i: usize) -> &[(usize, f64)] {
+    pub(crate) fn row(&self, i: usize) -> &[(usize, f64)] {
         &self.rows[i]
     }
 
     /// Whether every entry is zero.
-    pub fn is_zero(&self) -> bool {
+    pub(crate) fn is_zero(&self) -> bool {
         self.rows.iter().all(|r| r.iter().all(|&(_, x)| x == 0.0))
     }
 
@@ -85,13 +88,6 @@ impl Sparse {
     /// The largest absolute entry.
     fn max_abs(&self) -> f64 {
         self.rows.iter().flatten().fold(0.0, |m, &(_, x)| m.max(x.abs()))
-    }
-
-    /// A x.
-    pub fn mul_vec(&self, x: &[f64], out: &mut [f64]) {
-        for (o, r) in out.iter_mut().zip(&self.rows) {
-            *o = r.iter().map(|&(j, a)| a * x[j]).sum();
-        }
     }
 
     /// xᵀ A x.
@@ -127,7 +123,7 @@ impl Sparse {
 
 /// M, K and C of a scene.
 #[derive(Clone, Debug, PartialEq)]
-pub struct System {
+pub(crate) struct System {
     /// The masses (M is diagonal).
     pub mass: Vec<f64>,
     /// Stiffness.
@@ -138,7 +134,7 @@ pub struct System {
 
 impl System {
     /// Assembles M, K, C from the masses and springs of a scene.
-    pub fn assemble(masses: &[f64], springs: &[super::file::Spring]) -> System {
+    pub(crate) fn assemble(masses: &[f64], springs: &[super::file::Spring]) -> System {
         let n = masses.len();
         let (mut k, mut c) = (Sparse::new(n), Sparse::new(n));
         for s in springs {
@@ -151,7 +147,7 @@ impl System {
     }
 
     /// Degrees of freedom.
-    pub fn n(&self) -> usize {
+    pub(crate) fn n(&self) -> usize {
         self.mass.len()
     }
 }
@@ -159,7 +155,7 @@ impl System {
 /// How the scene's damping relates to its modes.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 #[serde(rename_all = "snake_case", tag = "kind")]
-pub enum DampingKind {
+pub(crate) enum DampingKind {
     /// No damping at all.
     Undamped,
     /// C = αM + βK.
@@ -179,7 +175,7 @@ use serde::Serialize;
 
 /// One mode of a scene.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Mode {
+pub(crate) struct Mode {
     /// Undamped natural frequency ω, rad/s.
     pub omega: f64,
     /// Damping ratio ζ (a description only when the damping is
@@ -192,7 +188,7 @@ pub struct Mode {
 
 impl Mode {
     /// Frequency in Hz.
-    pub fn hz(&self) -> f64 {
+    pub(crate) fn hz(&self) -> f64 {
         self.omega / (2.0 * std::f64::consts::PI)
     }
 }
@@ -201,35 +197,18 @@ impl Mode {
 #[derive(Clone, Debug)]
 pub struct Modal {
     /// The assembled system (`None` for a scene given as modes).
-    pub system: Option<System>,
+    pub(crate) system: Option<System>,
     /// The modes with ω > 0, increasing ω.
-    pub modes: Vec<Mode>,
+    pub(crate) modes: Vec<Mode>,
     /// Rigid-body modes dropped (ω = 0).
-    pub rigid: usize,
+    pub(crate) rigid: usize,
     /// The damping's structure.
-    pub damping: DampingKind,
+    pub(crate) damping: DampingKind,
 }
-
-/// Why a scene could not be reduced.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct ModalError(String);
-
-impl std::fmt::Display for ModalError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(&self.0)
-    }
-}
-
-impl std::error::Error for ModalError {}
 
 /// Relative tolerance of the structural tests (Rayleigh fit, commutation,
 /// rigid modes): a few hundred ulps of the largest entry.
 const STRUCTURE_TOL: f64 = 1e-10;
-
-/// Reduces a scene to its modes, with mode shapes.
-pub fn reduce(scene: &SceneFile) -> Result<Modal, ModalError> {
-    reduce_with(scene, Shapes::Compute)
-}
 
 /// Whether [`reduce_with`] computes mode shapes (eigenvectors): the check
 /// by simulation needs them, and so do ratios under proportional but not
@@ -243,7 +222,7 @@ pub enum Shapes {
 }
 
 /// Reduces a scene to its modes.
-pub fn reduce_with(scene: &SceneFile, shapes: Shapes) -> Result<Modal, ModalError> {
+pub fn reduce_with(scene: &SceneFile, shapes: Shapes) -> Result<Modal, Error> {
     match &scene.body {
         Body::Modes(list) => {
             let mut modes: Vec<Mode> = list
@@ -269,13 +248,8 @@ pub fn reduce_with(scene: &SceneFile, shapes: Shapes) -> Result<Modal, ModalErro
     }
 }
 
-/// Reduces an assembled system to its modes, with shapes.
-pub fn reduce_system(system: System) -> Result<Modal, ModalError> {
-    reduce_system_with(system, Shapes::Compute)
-}
-
 /// Reduces an assembled system to its modes.
-pub fn reduce_system_with(system: System, shapes: Shapes) -> Result<Modal, ModalError> {
+pub(crate) fn reduce_system_with(system: System, shapes: Shapes) -> Result<Modal, Error> {
     let n = system.n();
     let inv_sqrt: Vec<f64> = system.mass.iter().map(|m| 1.0 / m.sqrt()).collect();
     let kt = system.k.scaled(&inv_sqrt);
@@ -291,7 +265,7 @@ pub fn reduce_system_with(system: System, shapes: Shapes) -> Result<Modal, Modal
     }
     let vectors = shapes == Shapes::Compute || damping == DampingKind::Proportional;
     let fail = |e: faer::linalg::evd::EvdError| {
-        ModalError(format!("the eigenproblem K phi = w^2 M phi did not converge: {e:?}"))
+        Error::numeric(format!("the eigenproblem K phi = w^2 M phi did not converge: {e:?}"))
     };
     let (s, u) = if vectors {
         let evd = dense.self_adjoint_eigen(Side::Lower).map_err(fail)?;
@@ -328,7 +302,7 @@ pub fn reduce_system_with(system: System, shapes: Shapes) -> Result<Modal, Modal
         // Coupled by the damping: the modes are the continuous system's
         // complex eigenvalues λ = −ζω ± jω√(1−ζ²), ω = |λ|, ζ = −Re λ/|λ|
         // (real λ, overdamped, count as ζ = 1).
-        let lambdas = super::advisor::continuous_eigenvalues(&system);
+        let lambdas = continuous_eigenvalues(&system);
         modes = lambdas
             .iter()
             .filter(|l| l.norm() > 0.0)
@@ -394,6 +368,29 @@ fn damping_kind(kt: &Sparse, ct: &Sparse) -> DampingKind {
     }
 }
 
+/// The eigenvalues λ of the continuous system ẏ = v, v̇ = −M⁻¹(K y + C v)
+/// with Im λ ≥ 0.
+pub(crate) fn continuous_eigenvalues(sys: &System) -> Vec<C64> {
+    let n = sys.n();
+    let mut a = DMatrix::zeros(2 * n, 2 * n);
+    for i in 0..n {
+        a[(i, n + i)] = 1.0;
+        for &(j, k) in sys.k.row(i) {
+            a[(n + i, j)] = -k / sys.mass[i];
+        }
+        for &(j, c) in sys.c.row(i) {
+            a[(n + i, n + j)] = -c / sys.mass[i];
+        }
+    }
+    let mut l: Vec<C64> = check::witness::eigenvalues_nalgebra(&a)
+        .unwrap_or_default()
+        .into_iter()
+        .filter(|z| z.im >= 0.0)
+        .collect();
+    l.sort_by(|x, y| x.norm().total_cmp(&y.norm()));
+    l
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -419,14 +416,16 @@ mod tests {
     #[test]
     fn modes_solve_the_generalised_problem() {
         for n in [1, 2, 3, 8] {
-            let modal = reduce(&SceneFile::parse("c.toml", &chain(n, "")).unwrap()).unwrap();
+            let scene = SceneFile::parse("c.toml", &chain(n, "")).unwrap();
+            let modal = reduce_with(&scene, Shapes::Compute).unwrap();
             let sys = modal.system.as_ref().unwrap();
             assert_eq!(modal.modes.len(), n);
             let scale = sys.k.max_abs();
             for m in &modal.modes {
                 let phi = m.shape.as_ref().unwrap();
-                let mut kphi = vec![0.0; n];
-                sys.k.mul_vec(phi, &mut kphi);
+                // K φ, row by row.
+                let kphi: Vec<f64> =
+                    sys.k.rows.iter().map(|r| r.iter().map(|&(j, a)| a * phi[j]).sum()).collect();
                 for i in 0..n {
                     let r = kphi[i] - m.omega * m.omega * sys.mass[i] * phi[i];
                     assert!(r.abs() <= 500.0 * f64::EPSILON * scale, "n {n}: residual {r}");
@@ -447,7 +446,7 @@ mod tests {
         for s in &mut springs {
             s.damping = 0.01 * s.stiffness;
         }
-        let r = reduce_system(System::assemble(&m, &springs)).unwrap();
+        let r = reduce_system_with(System::assemble(&m, &springs), Shapes::Compute).unwrap();
         match r.damping {
             DampingKind::Rayleigh { alpha, beta } => {
                 assert!(alpha.abs() < 1e-9 && (beta - 0.01).abs() < 1e-12, "{alpha} {beta}")
@@ -461,7 +460,7 @@ mod tests {
             s.damping = 0.0;
         }
         springs[2].damping = 3.0;
-        let r = reduce_system(System::assemble(&m, &springs)).unwrap();
+        let r = reduce_system_with(System::assemble(&m, &springs), Shapes::Compute).unwrap();
         assert_eq!(r.damping, DampingKind::NonProportional);
     }
 }

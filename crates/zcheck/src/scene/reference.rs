@@ -8,51 +8,7 @@
 //! scenes need to stop exactly on their own sample grid (every `dT`) with the
 //! step size carried from one sample interval to the next.
 
-use std::fmt;
-
-/// Why a reference integration gave up.
-#[derive(Clone, Debug, PartialEq)]
-pub struct ReferenceError {
-    time: f64,
-    kind: ReferenceErrorKind,
-}
-
-/// The kind of a [`ReferenceError`].
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum ReferenceErrorKind {
-    /// The state or its derivative became NaN or infinite.
-    NonFinite,
-    /// The step size fell below the resolution of the time variable
-    /// (a collision or another singularity of the equations).
-    StepUnderflow,
-}
-
-impl ReferenceError {
-    /// What went wrong.
-    pub fn kind(&self) -> ReferenceErrorKind {
-        self.kind
-    }
-
-    /// The time at which the integration stopped.
-    pub fn time(&self) -> f64 {
-        self.time
-    }
-}
-
-impl fmt::Display for ReferenceError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self.kind {
-            ReferenceErrorKind::NonFinite => {
-                write!(f, "reference state became non-finite at t = {}", self.time)
-            }
-            ReferenceErrorKind::StepUnderflow => {
-                write!(f, "reference step size underflowed at t = {}", self.time)
-            }
-        }
-    }
-}
-
-impl std::error::Error for ReferenceError {}
+use crate::error::Error;
 
 fn axpy<const N: usize>(y: &[f64; N], terms: &[(f64, &[f64; N])]) -> [f64; N] {
     let mut out = *y;
@@ -65,7 +21,7 @@ fn axpy<const N: usize>(y: &[f64; N], terms: &[(f64, &[f64; N])]) -> [f64; N] {
 }
 
 /// One step of the classic fourth-order Runge–Kutta method.
-pub fn rk4_step<const N: usize>(
+pub(crate) fn rk4_step<const N: usize>(
     f: &impl Fn(&[f64; N]) -> [f64; N],
     y: &[f64; N],
     h: f64,
@@ -80,7 +36,7 @@ pub fn rk4_step<const N: usize>(
 /// Mixed error tolerance of the adaptive integrator: a component's local
 /// error may be `absolute + relative * |y|`.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Tolerance {
+pub(crate) struct Tolerance {
     pub relative: f64,
     pub absolute: f64,
 }
@@ -88,7 +44,7 @@ pub struct Tolerance {
 impl Tolerance {
     /// The tolerance the scenes use for their references: far below every
     /// error the paper's methods make at the paper's steps.
-    pub const TIGHT: Tolerance = Tolerance { relative: 1e-12, absolute: 1e-12 };
+    pub(crate) const TIGHT: Tolerance = Tolerance { relative: 1e-12, absolute: 1e-12 };
 }
 
 /// Adaptive Dormand–Prince 5(4) (local extrapolation, PI-free classic step
@@ -97,13 +53,13 @@ impl Tolerance {
 /// `step` carries the step size between calls, so a run over a sample grid
 /// does not restart its step selection at every sample; start it at a
 /// modest guess such as `1e-3`.
-pub fn dopri5<const N: usize>(
+pub(crate) fn dopri5<const N: usize>(
     f: &impl Fn(&[f64; N]) -> [f64; N],
     y: &[f64; N],
     duration: f64,
     tolerance: Tolerance,
     step: &mut f64,
-) -> Result<[f64; N], ReferenceError> {
+) -> Result<[f64; N], Error> {
     // Dormand & Prince (1980), Butcher tableau; E = b5 - b4.
     const A21: f64 = 1.0 / 5.0;
     const A31: f64 = 3.0 / 40.0;
@@ -180,7 +136,9 @@ pub fn dopri5<const N: usize>(
             // encounter: shrink it, and give up only when it cannot shrink.
             h = h_try * 0.1;
             if h <= f64::EPSILON * (1.0 + done.abs()) {
-                return Err(ReferenceError { time: done, kind: ReferenceErrorKind::NonFinite });
+                return Err(Error::numeric(format!(
+                    "reference state became non-finite at t = {done}"
+                )));
             }
             continue;
         }
@@ -198,7 +156,7 @@ pub fn dopri5<const N: usize>(
             h = h_try * factor.min(1.0);
         }
         if h <= 4.0 * f64::EPSILON * (1.0 + done.abs()) {
-            return Err(ReferenceError { time: done, kind: ReferenceErrorKind::StepUnderflow });
+            return Err(Error::numeric(format!("reference step size underflowed at t = {done}")));
         }
     }
     *step = h;
@@ -259,6 +217,8 @@ mod tests {
         // y' = y^2 from y = 1 blows up at t = 1.
         let err = dopri5(&|y: &[f64; 1]| [y[0] * y[0]], &[1.0], 2.0, Tolerance::TIGHT, &mut 1e-3)
             .unwrap_err();
-        assert!((err.time() - 1.0).abs() < 1e-3, "{err}");
+        let shown = err.to_string();
+        let time: f64 = shown.rsplit("t = ").next().and_then(|t| t.parse().ok()).expect("a time");
+        assert!((time - 1.0).abs() < 1e-3, "{err}");
     }
 }

@@ -10,8 +10,9 @@
 
 use serde::Serialize;
 
-use super::reference::{dopri5, ReferenceError, Tolerance};
-use super::Track;
+use super::reference::{dopri5, Tolerance};
+use super::track::Track;
+use crate::error::Error;
 
 /// Positions or velocities of the three bodies.
 pub type Bodies = [[f64; 2]; 3];
@@ -29,16 +30,6 @@ pub enum ForceLaw {
     /// |F| = 1/r², potential `-1/r`: Newton's law, the one Appendix D's
     /// energy formula belongs to.
     InverseSquare,
-}
-
-impl ForceLaw {
-    /// The name used on the command line and in reports.
-    pub fn name(self) -> &'static str {
-        match self {
-            ForceLaw::InverseDistance => "inverse_distance",
-            ForceLaw::InverseSquare => "inverse_square",
-        }
-    }
 }
 
 /// Which "total energy" the energy control and the reports use.
@@ -182,7 +173,7 @@ impl State {
 
     /// Kinetic energy (unit masses), summed in the paper's order
     /// `(sqr(v1o)+sqr(w1o)+...+sqr(w3o))/2`.
-    pub fn kinetic_energy(&self) -> f64 {
+    pub(crate) fn kinetic_energy(&self) -> f64 {
         let mut sum = 0.0;
         for v in &self.velocity {
             sum += v[0] * v[0];
@@ -192,7 +183,7 @@ impl State {
     }
 
     /// The squared distances r12, r13, r23, as the paper's `r12` holds them.
-    pub fn squared_distances(&self) -> [f64; 3] {
+    pub(crate) fn squared_distances(&self) -> [f64; 3] {
         let p = &self.position;
         PAIRS.map(|(i, j)| {
             let (dx, dy) = (p[j][0] - p[i][0], p[j][1] - p[i][1]);
@@ -201,7 +192,7 @@ impl State {
     }
 
     /// The three pair distances r12, r13, r23 (not squared).
-    pub fn distances(&self) -> [f64; 3] {
+    pub(crate) fn distances(&self) -> [f64; 3] {
         PAIRS.map(|(i, j)| distance(&self.position[i], &self.position[j]))
     }
 
@@ -236,7 +227,7 @@ impl State {
     }
 
     /// Total momentum.
-    pub fn momentum(&self) -> [f64; 2] {
+    pub(crate) fn momentum(&self) -> [f64; 2] {
         let mut m = [0.0; 2];
         for v in &self.velocity {
             m[0] += v[0];
@@ -246,7 +237,7 @@ impl State {
     }
 
     /// Centre of mass.
-    pub fn centre_of_mass(&self) -> [f64; 2] {
+    pub(crate) fn centre_of_mass(&self) -> [f64; 2] {
         let mut c = [0.0; 2];
         for p in &self.position {
             c[0] += p[0] / 3.0;
@@ -376,7 +367,7 @@ pub fn step(config: &ThreeBodyConfig, state: &mut State, reference_energy: f64, 
 
 /// The equations of motion without any control: the physics the scene
 /// approximates, for the reference integrator.
-pub fn derivative(y: &[f64; 12], law: ForceLaw) -> [f64; 12] {
+pub(crate) fn derivative(y: &[f64; 12], law: ForceLaw) -> [f64; 12] {
     let s = State::from_array(y);
     let a = s.acceleration(law);
     let mut d = [0.0; 12];
@@ -389,7 +380,7 @@ pub fn derivative(y: &[f64; 12], law: ForceLaw) -> [f64; 12] {
 
 /// One sample of a run, kept for figures.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-pub struct Sample {
+pub(crate) struct Sample {
     pub step: u64,
     pub time: f64,
     pub position: Bodies,
@@ -425,7 +416,7 @@ pub struct ThreeBodyRun {
     /// The first 100 steps in full (the paper's Appendix C image).
     pub first_steps: Vec<Bodies>,
     /// At most ~4000 samples over the whole run, for figures.
-    pub samples: Vec<Sample>,
+    pub(crate) samples: Vec<Sample>,
     pub final_state: State,
 }
 
@@ -529,7 +520,7 @@ pub fn simulate(
 /// The reference solution of the scene's physics (no control, no first-step
 /// defect) at every step `0..=n_steps`, by Dormand–Prince at a tight
 /// tolerance.
-pub fn reference(config: &ThreeBodyConfig, n_steps: u64) -> Result<Vec<State>, ReferenceError> {
+pub fn reference(config: &ThreeBodyConfig, n_steps: u64) -> Result<Vec<State>, Error> {
     let law = config.force_law;
     let f = move |y: &[f64; 12]| derivative(y, law);
     let mut y = config.initial_state().to_array();
@@ -559,7 +550,7 @@ pub struct Accuracy {
 }
 
 /// Compare the first `n_steps` of the scene with the reference.
-pub fn accuracy(config: &ThreeBodyConfig, n_steps: u64) -> Result<Accuracy, ReferenceError> {
+pub fn accuracy(config: &ThreeBodyConfig, n_steps: u64) -> Result<Accuracy, Error> {
     let reference = reference(config, n_steps)?;
     let mut state = config.initial_state();
     let law = config.force_law;

@@ -26,7 +26,7 @@ use super::modal::System;
 
 /// A direct method of sections 5–11, on a system.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Kernel {
+pub(crate) enum Kernel {
     /// Section 5 (damped: `damped_euler_d`).
     StandardEuler,
     /// Section 6, artificial damping Φ/2 on top of the physical.
@@ -45,7 +45,7 @@ pub enum Kernel {
 
 impl Kernel {
     /// The kernel of a damped built-in (or of its undamped name).
-    pub fn for_method(name: &str) -> Option<Kernel> {
+    pub(crate) fn for_method(name: &str) -> Option<Kernel> {
         Some(match name {
             "damped_euler_d" | "standard_euler" => Kernel::StandardEuler,
             "damped_euler_damped" | "damped_euler" => Kernel::DampedEuler,
@@ -59,7 +59,7 @@ impl Kernel {
     }
 
     /// Whether the second state vector is y_prev (Verlet) rather than v.
-    pub fn keeps_previous(self) -> bool {
+    pub(crate) fn keeps_previous(self) -> bool {
         self == Kernel::Verlet
     }
 }
@@ -67,7 +67,7 @@ impl Kernel {
 /// The state of a system: positions and velocities (Verlet: positions and
 /// the previous positions).
 #[derive(Clone, Debug, PartialEq)]
-pub struct VState {
+pub(crate) struct VState {
     /// Positions.
     pub y: Vec<f64>,
     /// Velocities, or previous positions for Verlet.
@@ -106,7 +106,7 @@ fn forces(kernel: Kernel, sys: &System, t: f64) -> Forces<'_> {
 }
 
 /// One step of length `t`, all bodies at once.
-pub fn step_vector(kernel: Kernel, sys: &System, t: f64, s: &mut VState) {
+pub(crate) fn step_vector(kernel: Kernel, sys: &System, t: f64, s: &mut VState) {
     let n = sys.n();
     let f = forces(kernel, sys, t);
     let mut a1 = vec![0.0; n];
@@ -159,7 +159,7 @@ pub fn step_vector(kernel: Kernel, sys: &System, t: f64, s: &mut VState) {
 
 /// One step of length `t`, body by body in index order; each body's
 /// stages see the other bodies' current values.
-pub fn step_gauss_seidel(kernel: Kernel, sys: &System, t: f64, s: &mut VState) {
+pub(crate) fn step_gauss_seidel(kernel: Kernel, sys: &System, t: f64, s: &mut VState) {
     let f = forces(kernel, sys, t);
     for i in 0..sys.n() {
         let m = sys.mass[i];
@@ -205,7 +205,7 @@ pub fn step_gauss_seidel(kernel: Kernel, sys: &System, t: f64, s: &mut VState) {
 
 /// How the bodies are updated within a step.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Sweep {
+pub(crate) enum Sweep {
     /// All at once (modal).
     Vector,
     /// In sequence.
@@ -213,7 +213,7 @@ pub enum Sweep {
 }
 
 /// One step in the given order.
-pub fn step(kernel: Kernel, sweep: Sweep, sys: &System, t: f64, s: &mut VState) {
+pub(crate) fn step(kernel: Kernel, sweep: Sweep, sys: &System, t: f64, s: &mut VState) {
     match sweep {
         Sweep::Vector => step_vector(kernel, sys, t, s),
         Sweep::GaussSeidel => step_gauss_seidel(kernel, sys, t, s),
@@ -221,7 +221,7 @@ pub fn step(kernel: Kernel, sweep: Sweep, sys: &System, t: f64, s: &mut VState) 
 }
 
 /// The full-step matrix on (y, w): column k is one step from unit vector k.
-pub fn step_matrix(kernel: Kernel, sweep: Sweep, sys: &System, t: f64) -> DMatrix<f64> {
+pub(crate) fn step_matrix(kernel: Kernel, sweep: Sweep, sys: &System, t: f64) -> DMatrix<f64> {
     let n = sys.n();
     let mut p = DMatrix::zeros(2 * n, 2 * n);
     for k in 0..2 * n {

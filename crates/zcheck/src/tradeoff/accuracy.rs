@@ -17,26 +17,29 @@
 //! precision at small Φ (no `1 − (1 − Φ²/2)²` cancellation); ln r uses
 //! `ln_1p(q − 1)`. Only δΨ = Ψ − Φ cancels: its absolute error is a few ulps
 //! of Ψ, i.e. a relative error of about ε·Φ/|δΨ| (≈ 24ε/Φ² for False Euler),
-//! below 1e-6 for Φ ≥ 1e-4. The search below never goes under [`PHI_MIN`].
+//! below 1e-6 for Φ ≥ 1e-4. The search below never goes under `PHI_MIN`.
 
 use std::collections::HashMap;
 use std::f64::consts::PI;
 
 use poly::{Poly, Sym, Q};
 
-use super::TradeoffError;
+use crate::error::Error;
 
 /// The smallest step the admissible-Φ search considers.
-pub const PHI_MIN: f64 = 1e-5;
+pub(crate) const PHI_MIN: f64 = 1e-5;
 
 /// A polynomial in Φ with f64 coefficients: `check`'s one evaluator.
 #[derive(Clone, Debug)]
 struct PhiPoly(check::sweep::HornerPoly);
 
 impl PhiPoly {
-    fn from_exact(p: &Poly) -> Result<PhiPoly, TradeoffError> {
+    fn from_exact(p: &Poly) -> Result<PhiPoly, Error> {
         check::sweep::HornerPoly::new(p, Sym::phi()).map(PhiPoly).ok_or_else(|| {
-            TradeoffError::new(format!("coefficient {p} depends on more than Phi: expected every other parameter to have a value"))
+            Error::unsupported(format!(
+                "coefficient {p} depends on more than Phi: expected every other parameter to have \
+                 a value"
+            ))
         })
     }
 
@@ -118,7 +121,7 @@ pub struct Accuracy {
 
 impl Accuracy {
     /// Steps in `periods` periods: P·2π/Φ (not rounded: a duration is time).
-    pub fn steps(&self, periods: f64) -> f64 {
+    pub(crate) fn steps(&self, periods: f64) -> f64 {
         periods * 2.0 * PI / self.phi
     }
 
@@ -128,7 +131,7 @@ impl Accuracy {
     }
 
     /// The accumulated phase error over `periods`, in radians.
-    pub fn phase_drift(&self, periods: f64) -> f64 {
+    pub(crate) fn phase_drift(&self, periods: f64) -> f64 {
         if !self.oscillating {
             return f64::INFINITY;
         }
@@ -136,7 +139,7 @@ impl Accuracy {
     }
 
     /// The relative amplitude change over `periods`, |e^{n·δln r} − 1|.
-    pub fn amplitude_drift(&self, periods: f64) -> f64 {
+    pub(crate) fn amplitude_drift(&self, periods: f64) -> f64 {
         (self.ln_growth_per_step * self.steps(periods)).exp_m1().abs()
     }
 
@@ -158,12 +161,12 @@ impl Accuracy {
 impl SecondOrder {
     /// The model of `charpoly` (a polynomial in z and the parameters) with
     /// every parameter but Φ given a value. Errs unless χ is monic of degree 2.
-    pub fn new(charpoly: &Poly, params: &[(Sym, Q)]) -> Result<SecondOrder, TradeoffError> {
+    pub fn new(charpoly: &Poly, params: &[(Sym, Q)]) -> Result<SecondOrder, Error> {
         let values: HashMap<Sym, Q> = params.iter().cloned().collect();
         let chi = charpoly.eval_partial(&values);
         let c = chi.coeffs_in(Sym::z());
         if c.len() != 3 {
-            return Err(TradeoffError::new(format!(
+            return Err(Error::unsupported(format!(
                 "characteristic polynomial {chi} is not of degree 2 in z: expected a second-order method"
             )));
         }
@@ -185,15 +188,10 @@ impl SecondOrder {
         self.lead.as_ref().map_or(1.0, |a| a.eval(phi))
     }
 
-    /// p(Φ), the real part of the complex pair.
-    pub fn p(&self, phi: f64) -> f64 {
-        self.p.eval(phi) / self.a(phi)
-    }
-
     /// The principal root's angle and log modulus at Φ: `(psi, ln_r,
     /// oscillating)`. For real roots, the root of largest modulus, at angle
     /// 0 or π.
-    pub fn principal_root(&self, phi: f64) -> (f64, f64, bool) {
+    pub(crate) fn principal_root(&self, phi: f64) -> (f64, f64, bool) {
         let a = self.a(phi);
         let p = self.p.eval(phi) / a;
         let disc = self.disc.eval(phi) / (4.0 * a * a);
@@ -222,7 +220,7 @@ impl SecondOrder {
     /// The largest Φ below `phi_cap` such that every step in [PHI_MIN, Φ]
     /// meets `target` (the first failure on a log grid of 64 points per
     /// decade, then bisection to a relative width of 1e-12). `None` when
-    /// even [`PHI_MIN`] fails or the cap is below it.
+    /// even `PHI_MIN` fails or the cap is below it.
     ///
     /// The caller passes a cap strictly below the exact stability limit, so
     /// the answer is never a step at or beyond `phi_max`.

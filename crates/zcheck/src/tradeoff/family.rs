@@ -15,7 +15,9 @@ use std::f64::consts::PI;
 use poly::cost::StepCost;
 use poly::{Algebraic, Method, Sym, Q};
 
-use super::{SecondOrder, TradeoffError};
+use super::accuracy::SecondOrder;
+use crate::error::Error;
+use crate::load::LoadedMethod;
 use check::numeric::{f64_to_q, q_to_f64};
 
 /// The exact stability limit of one method (at fixed other parameters).
@@ -47,7 +49,7 @@ impl Limit {
     /// To relative precision: an absolute 10⁻¹⁸ is only 10⁻¹¹ relative at
     /// Φ_max ≈ 10⁻⁷ (a tiny damping ratio), and [`Limit::search_cap`] would
     /// then step down thousands of ulps one exact comparison at a time.
-    pub fn phi_max_f64(&self) -> Option<f64> {
+    pub(crate) fn phi_max_f64(&self) -> Option<f64> {
         let m = self.phi_max.as_ref()?;
         let coarse = q_to_f64(&m.approx(&poly::q(1, 1_000_000_000_000_000)));
         let width = f64_to_q(coarse.abs() * 2f64.powi(-60))
@@ -73,7 +75,7 @@ impl Limit {
     /// The smallest number of substeps k with Φ/k strictly below Φ_max
     /// (exact comparison); `None` when no Φ > 0 is stable, or when more than
     /// [`MAX_SUBSTEPS`] would be needed.
-    pub fn substeps_for(&self, phi: f64) -> Option<u64> {
+    pub(crate) fn substeps_for(&self, phi: f64) -> Option<u64> {
         if self.bounded_for_all {
             return Some(1);
         }
@@ -99,7 +101,7 @@ impl Limit {
 
 /// The most substeps per tick ever counted: beyond it a step is "never"
 /// practical, and the count would leave the exact range of `f64`.
-pub const MAX_SUBSTEPS: u64 = 1_000_000_000_000_000;
+pub(crate) const MAX_SUBSTEPS: u64 = 1_000_000_000_000_000;
 
 /// One method ready to trade: its definition, exact cost, accuracy model
 /// and stability limit, at fixed values of its parameters other than Φ.
@@ -107,10 +109,14 @@ pub const MAX_SUBSTEPS: u64 = 1_000_000_000_000_000;
 pub struct Candidate {
     /// The method's name (its `.zm` name).
     pub name: String,
-    /// The name shown to a user: the damped variants drop `_damped`.
+    /// The name shown to a user: a built-in's base name (the damped
+    /// variants drop `_damped`), a user's method as its argument.
     pub display: String,
     /// The lowered method.
     pub method: Method,
+    /// Its hand-written kernel, for a built-in (see
+    /// `LoadedMethod::hand_kernel`).
+    pub hand_kernel: Option<&'static str>,
     /// Values of the parameters other than Φ (the damping D).
     pub params: Vec<(Sym, Q)>,
     /// Exact operations per step.
@@ -124,61 +130,63 @@ pub struct Candidate {
 }
 
 impl Candidate {
-    /// Builds a candidate: derive, count, model and analyse exactly.
-    pub fn new(method: Method, params: Vec<(Sym, Q)>) -> Result<Candidate, TradeoffError> {
+    /// Builds a candidate from a loaded method (derived once, there) and
+    /// the values of its parameters other than Φ: count, model and analyse
+    /// exactly.
+    pub fn new(loaded: &LoadedMethod, params: Vec<(Sym, Q)>) -> Result<Candidate, Error> {
+        let method = loaded.method().clone();
         let name = method.name().to_owned();
-        let derivation = poly::derive(&method)
-            .map_err(|e| TradeoffError::new(format!("method `{name}`: {e}")))?;
+        let derivation = loaded.derivation().map_err(|e| e.context(format!("method `{name}`")))?;
         let values: HashMap<Sym, Q> = params.iter().cloned().collect();
         let charpoly = derivation.charpoly.eval_partial(&values);
         // From the derivation, so a repeated root on the circle is decided
         // from P (Gauss–Legendre stays bounded through Φ = 2√3).
-        let report = poly::stability::analyze_derivation(&derivation, &values)
-            .map_err(|e| TradeoffError::new(format!("method `{name}`: stability: {e}")))?;
+        let report = poly::stability::analyze_derivation(derivation, &values)
+            .map_err(|e| Error::from(e).context(format!("method `{name}`: stability")))?;
         let limit =
             Limit { phi_max: report.phi_max().cloned(), bounded_for_all: report.bounded_for_all() };
-        let model = SecondOrder::new(&charpoly, &[])
-            .map_err(|e| TradeoffError::new(format!("method `{name}`: {e}")))?;
-        let display = match name.as_str() {
-            "damped_euler_d" => "standard_euler".to_owned(),
-            n => n.strip_suffix("_damped").unwrap_or(n).to_owned(),
-        };
+        let model =
+            SecondOrder::new(&charpoly, &[]).map_err(|e| e.context(format!("method `{name}`")))?;
         let cost = poly::step_cost(&method);
-        Ok(Candidate { name, display, method, params, cost, model, limit, charpoly })
+        Ok(Candidate {
+            name,
+            display: loaded.display().to_owned(),
+            method,
+            hand_kernel: loaded.hand_kernel(),
+            params,
+            cost,
+            model,
+            limit,
+            charpoly,
+        })
     }
-
-    /// The name of this candidate's hand-written kernel.
-    pub fn kernel_name(&self) -> &str {
-        match self.name.as_str() {
-            "damped_euler_d" => "standard_euler_damped",
-            n => n,
-        }
-    }
-}
-
-fn builtin(name: &str) -> Result<Method, TradeoffError> {
-    poly::builtin(name).map_err(|e| TradeoffError::new(format!("built-in `{name}`: {e}")))
 }
 
 /// Every paper built-in with no free parameter but Φ, in built-in order.
-pub fn undamped_family() -> Result<Vec<Candidate>, TradeoffError> {
-    poly::paper_builtin_names()
-        .filter(|n| builtin(n).map(|m| m.params().len() == 1).unwrap_or(false))
-        .map(|n| Candidate::new(builtin(n)?, Vec::new()))
-        .collect()
-}
-
-/// The seven direct methods of sections 5–11 (no transition-matrix twins).
-pub fn direct_names() -> [&'static str; 7] {
-    poly::PAPER_METHODS
+pub fn undamped_family() -> Result<Vec<Candidate>, Error> {
+    let mut family = Vec::new();
+    for name in poly::paper_builtin_names() {
+        let method = builtin(name)?;
+        if method.method().params().len() == 1 {
+            family.push(Candidate::new(&method, Vec::new())?);
+        }
+    }
+    Ok(family)
 }
 
 /// The seven direct methods applied to a spring with damping ratio `d`
 /// (an exact rational).
-pub fn damped_family(d: &Q) -> Result<Vec<Candidate>, TradeoffError> {
+pub fn damped_family(d: &Q) -> Result<Vec<Candidate>, Error> {
+    damped_candidates(&LoadedMethod::damped_builtins()?, d)
+}
+
+/// The damped `methods` (with `param D`) as candidates at the damping
+/// ratio `d`.
+pub(crate) fn damped_candidates(methods: &[LoadedMethod], d: &Q) -> Result<Vec<Candidate>, Error> {
     let dsym = Sym::new("D");
-    poly::DAMPED_METHODS
-        .iter()
-        .map(|name| Candidate::new(builtin(name)?, vec![(dsym, d.clone())]))
-        .collect()
+    methods.iter().map(|m| Candidate::new(m, vec![(dsym, d.clone())])).collect()
+}
+
+fn builtin(name: &str) -> Result<LoadedMethod, Error> {
+    LoadedMethod::builtin(name).map_err(|e| e.context(format!("built-in `{name}`")))
 }

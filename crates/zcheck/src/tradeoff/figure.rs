@@ -6,7 +6,7 @@
 //! cap (just below Φ_max, or π); a point is (error over the target's
 //! duration, ns per period = ns_per_step · 2π/Φ). The error is the larger of
 //! the phase drift (radians) and the relative amplitude drift
-//! ([`Accuracy::error`](super::Accuracy::error)). Points with an error
+//! ([`Accuracy::error`](super::accuracy::Accuracy::error)). Points with an error
 //! outside [10⁻¹⁰, 1] or without oscillation are left out.
 
 use std::f64::consts::PI;
@@ -14,10 +14,17 @@ use std::path::Path;
 
 use plotters::prelude::*;
 
-use super::{Candidate, Spring, Target, TradeoffError};
+use super::accuracy::{Spring, Target};
+use super::family::Candidate;
+use crate::error::Error;
 
 /// One line of the figure: (error, ns per period) points, cheap steps last.
-pub fn line(c: &Candidate, spring: Spring, target: &Target, ns_per_step: f64) -> Vec<(f64, f64)> {
+pub(crate) fn line(
+    c: &Candidate,
+    spring: Spring,
+    target: &Target,
+    ns_per_step: f64,
+) -> Vec<(f64, f64)> {
     let cap = c.limit.search_cap().unwrap_or(PI).min(PI);
     let n = 240;
     let lo: f64 = 1e-3;
@@ -32,13 +39,13 @@ pub fn line(c: &Candidate, spring: Spring, target: &Target, ns_per_step: f64) ->
 
 /// Draws the figure for `candidates` (with their measured ns per step) to
 /// `path`.
-pub fn draw(
+pub(crate) fn draw(
     path: &Path,
     candidates: &[(&Candidate, f64)],
     spring: Spring,
     target: &Target,
-) -> Result<(), TradeoffError> {
-    let err = |e: &dyn std::fmt::Display| TradeoffError::new(format!("{}: {e}", path.display()));
+) -> Result<(), Error> {
+    let err = |e: &dyn std::fmt::Display| Error::figure(format!("{}: {e}", path.display()));
     let lines: Vec<(String, Vec<(f64, f64)>)> = candidates
         .iter()
         .map(|(c, ns)| {
@@ -55,7 +62,7 @@ pub fn draw(
         ymax = ymax.max(y);
     }
     if !ymin.is_finite() {
-        return Err(TradeoffError::new("no method meets any error below 1: nothing to draw"));
+        return Err(Error::figure("no method meets any error below 1: nothing to draw"));
     }
     let root = SVGBackend::new(path, (900, 600)).into_drawing_area();
     root.fill(&WHITE).map_err(|e| err(&e))?;

@@ -16,7 +16,7 @@ use std::time::{Duration, Instant};
 
 /// Section 5: both updates read the start-of-step values.
 #[inline]
-pub fn standard_euler(v: &mut f64, y: &mut f64, phi: f64) {
+pub(crate) fn standard_euler(v: &mut f64, y: &mut f64, phi: f64) {
     let v1 = *v - phi * *y;
     *y += phi * *v;
     *v = v1;
@@ -24,7 +24,7 @@ pub fn standard_euler(v: &mut f64, y: &mut f64, phi: f64) {
 
 /// Section 6 with D = Φ/2 (Appendix B case 2).
 #[inline]
-pub fn damped_euler(v: &mut f64, y: &mut f64, phi: f64) {
+pub(crate) fn damped_euler(v: &mut f64, y: &mut f64, phi: f64) {
     let d = 0.5 * phi;
     let v1 = *v - phi * (*y + 2.0 * d * *v);
     *y += phi * *v;
@@ -33,14 +33,14 @@ pub fn damped_euler(v: &mut f64, y: &mut f64, phi: f64) {
 
 /// Section 7: the update of y reads the new v.
 #[inline]
-pub fn false_euler(v: &mut f64, y: &mut f64, phi: f64) {
+pub(crate) fn false_euler(v: &mut f64, y: &mut f64, phi: f64) {
     *v -= phi * *y;
     *y += phi * *v;
 }
 
 /// Section 8, Appendix B case 4: `y1:=2*y0-y2+Sqr(dT)*(-wo*wo*y0)`.
 #[inline]
-pub fn verlet(y: &mut f64, y_prev: &mut f64, phi: f64) {
+pub(crate) fn verlet(y: &mut f64, y_prev: &mut f64, phi: f64) {
     let y1 = 2.0 * *y - *y_prev - phi * phi * *y;
     *y_prev = *y;
     *y = y1;
@@ -48,7 +48,7 @@ pub fn verlet(y: &mut f64, y_prev: &mut f64, phi: f64) {
 
 /// Section 9, Appendix B case 5.
 #[inline]
-pub fn standard_heun(v: &mut f64, y: &mut f64, phi: f64) {
+pub(crate) fn standard_heun(v: &mut f64, y: &mut f64, phi: f64) {
     let dv1 = -phi * *y;
     let v11 = *v + dv1;
     let dy1 = phi * *v;
@@ -61,7 +61,7 @@ pub fn standard_heun(v: &mut f64, y: &mut f64, phi: f64) {
 
 /// Section 10, Appendix B case 6.
 #[inline]
-pub fn false_heun(v: &mut f64, y: &mut f64, phi: f64) {
+pub(crate) fn false_heun(v: &mut f64, y: &mut f64, phi: f64) {
     let dv1 = -phi * *y;
     let v11 = *v + dv1;
     let dy1 = phi * v11;
@@ -76,7 +76,7 @@ pub fn false_heun(v: &mut f64, y: &mut f64, phi: f64) {
 /// Section 11, Appendix B case 7 (whose `v11:= v0+dv1` is never read, so
 /// it is left out here, as a compiler would).
 #[inline]
-pub fn semi_false_heun(v: &mut f64, y: &mut f64, phi: f64) {
+pub(crate) fn semi_false_heun(v: &mut f64, y: &mut f64, phi: f64) {
     let dv1 = -phi * *y;
     let dy1 = phi * *v;
     let y11 = *y + dy1;
@@ -89,7 +89,7 @@ pub fn semi_false_heun(v: &mut f64, y: &mut f64, phi: f64) {
 
 /// Appendix B case 1, "Transition matrix".
 #[inline]
-pub fn standard_euler_matrix(v: &mut f64, y: &mut f64, phi: f64) {
+pub(crate) fn standard_euler_matrix(v: &mut f64, y: &mut f64, phi: f64) {
     let v1 = *v - phi * *y;
     *y += phi * *v; // y1:= woT*v0 + y0 (IEEE addition commutes)
     *v = v1;
@@ -97,7 +97,7 @@ pub fn standard_euler_matrix(v: &mut f64, y: &mut f64, phi: f64) {
 
 /// Appendix B case 2, "Transition matrix".
 #[inline]
-pub fn damped_euler_matrix(v: &mut f64, y: &mut f64, phi: f64) {
+pub(crate) fn damped_euler_matrix(v: &mut f64, y: &mut f64, phi: f64) {
     let v1 = (1.0 - phi * phi) * *v - phi * *y;
     *y += phi * *v; // y1:= woT*v0 + y0 (IEEE addition commutes)
     *v = v1;
@@ -105,7 +105,7 @@ pub fn damped_euler_matrix(v: &mut f64, y: &mut f64, phi: f64) {
 
 /// Appendix B case 3, "Transition matrix".
 #[inline]
-pub fn false_euler_matrix(v: &mut f64, y: &mut f64, phi: f64) {
+pub(crate) fn false_euler_matrix(v: &mut f64, y: &mut f64, phi: f64) {
     let v1 = *v - phi * *y;
     *y = phi * *v + (1.0 - phi * phi) * *y;
     *v = v1;
@@ -113,7 +113,7 @@ pub fn false_euler_matrix(v: &mut f64, y: &mut f64, phi: f64) {
 
 /// Appendix B case 5, "Transition matrix".
 #[inline]
-pub fn standard_heun_matrix(v: &mut f64, y: &mut f64, phi: f64) {
+pub(crate) fn standard_heun_matrix(v: &mut f64, y: &mut f64, phi: f64) {
     let v1 = (1.0 - 0.5 * phi * phi) * *v - phi * *y;
     *y = phi * *v + (1.0 - 0.5 * phi * phi) * *y;
     *v = v1;
@@ -121,7 +121,7 @@ pub fn standard_heun_matrix(v: &mut f64, y: &mut f64, phi: f64) {
 
 /// Appendix B case 6, "Transition matrix".
 #[inline]
-pub fn false_heun_matrix(v: &mut f64, y: &mut f64, phi: f64) {
+pub(crate) fn false_heun_matrix(v: &mut f64, y: &mut f64, phi: f64) {
     let phi2 = phi * phi;
     let v1 = (1.0 - 0.5 * phi2) * *v - phi * (1.0 - 0.5 * phi2) * *y;
     *y = phi * (1.0 - 0.5 * phi2) * *v + (1.0 - phi2 + 0.5 * phi2 * phi2) * *y;
@@ -130,7 +130,7 @@ pub fn false_heun_matrix(v: &mut f64, y: &mut f64, phi: f64) {
 
 /// Appendix B case 7, "Transition matrix".
 #[inline]
-pub fn semi_false_heun_matrix(v: &mut f64, y: &mut f64, phi: f64) {
+pub(crate) fn semi_false_heun_matrix(v: &mut f64, y: &mut f64, phi: f64) {
     let phi2 = phi * phi;
     let v1 = (1.0 - 0.5 * phi2) * *v - phi * *y;
     *y = phi * (1.0 - 0.5 * phi2) * *v + (1.0 - 0.5 * phi2) * *y;
@@ -139,7 +139,7 @@ pub fn semi_false_heun_matrix(v: &mut f64, y: &mut f64, phi: f64) {
 
 /// Standard Euler on the damped spring (`damped_euler_d`).
 #[inline]
-pub fn standard_euler_damped(v: &mut f64, y: &mut f64, phi: f64, d: f64) {
+pub(crate) fn standard_euler_damped(v: &mut f64, y: &mut f64, phi: f64, d: f64) {
     let v1 = *v - phi * (2.0 * d * *v + *y);
     *y += phi * *v;
     *v = v1;
@@ -147,7 +147,7 @@ pub fn standard_euler_damped(v: &mut f64, y: &mut f64, phi: f64, d: f64) {
 
 /// Damped Euler on the damped spring: physical D plus the artificial Φ/2.
 #[inline]
-pub fn damped_euler_damped(v: &mut f64, y: &mut f64, phi: f64, d: f64) {
+pub(crate) fn damped_euler_damped(v: &mut f64, y: &mut f64, phi: f64, d: f64) {
     let e = d + 0.5 * phi;
     let v1 = *v - phi * (*y + 2.0 * e * *v);
     *y += phi * *v;
@@ -156,14 +156,14 @@ pub fn damped_euler_damped(v: &mut f64, y: &mut f64, phi: f64, d: f64) {
 
 /// False Euler on the damped spring.
 #[inline]
-pub fn false_euler_damped(v: &mut f64, y: &mut f64, phi: f64, d: f64) {
+pub(crate) fn false_euler_damped(v: &mut f64, y: &mut f64, phi: f64, d: f64) {
     *v -= phi * (*y + 2.0 * d * *v);
     *y += phi * *v;
 }
 
 /// Verlet on the damped spring, the velocity taken as (y − y@1)/T.
 #[inline]
-pub fn verlet_damped(y: &mut f64, y_prev: &mut f64, phi: f64, d: f64) {
+pub(crate) fn verlet_damped(y: &mut f64, y_prev: &mut f64, phi: f64, d: f64) {
     let y1 = 2.0 * *y - *y_prev - phi * phi * *y - 2.0 * d * phi * (*y - *y_prev);
     *y_prev = *y;
     *y = y1;
@@ -171,7 +171,7 @@ pub fn verlet_damped(y: &mut f64, y_prev: &mut f64, phi: f64, d: f64) {
 
 /// Standard Heun on the damped spring.
 #[inline]
-pub fn standard_heun_damped(v: &mut f64, y: &mut f64, phi: f64, d: f64) {
+pub(crate) fn standard_heun_damped(v: &mut f64, y: &mut f64, phi: f64, d: f64) {
     let dv1 = -phi * (*y + 2.0 * d * *v);
     let v11 = *v + dv1;
     let dy1 = phi * *v;
@@ -184,7 +184,7 @@ pub fn standard_heun_damped(v: &mut f64, y: &mut f64, phi: f64, d: f64) {
 
 /// False Heun on the damped spring.
 #[inline]
-pub fn false_heun_damped(v: &mut f64, y: &mut f64, phi: f64, d: f64) {
+pub(crate) fn false_heun_damped(v: &mut f64, y: &mut f64, phi: f64, d: f64) {
     let dv1 = -phi * (*y + 2.0 * d * *v);
     let v11 = *v + dv1;
     let dy1 = phi * v11;
@@ -198,7 +198,7 @@ pub fn false_heun_damped(v: &mut f64, y: &mut f64, phi: f64, d: f64) {
 
 /// Semi-False Heun on the damped spring.
 #[inline]
-pub fn semi_false_heun_damped(v: &mut f64, y: &mut f64, phi: f64, d: f64) {
+pub(crate) fn semi_false_heun_damped(v: &mut f64, y: &mut f64, phi: f64, d: f64) {
     let dv1 = -phi * (*y + 2.0 * d * *v);
     let v11 = *v + dv1;
     let dy1 = phi * *v;
@@ -215,7 +215,11 @@ pub fn semi_false_heun_damped(v: &mut f64, y: &mut f64, phi: f64, d: f64) {
 /// Panics when the slices differ in length (a programmer error).
 #[inline]
 #[track_caller]
-pub fn for_each_state(a: &mut [f64], b: &mut [f64], mut step: impl FnMut(&mut f64, &mut f64)) {
+pub(crate) fn for_each_state(
+    a: &mut [f64],
+    b: &mut [f64],
+    mut step: impl FnMut(&mut f64, &mut f64),
+) {
     assert_eq!(a.len(), b.len(), "batch slices differ in length");
     for (x, y) in a.iter_mut().zip(b.iter_mut()) {
         step(x, y);
@@ -224,7 +228,7 @@ pub fn for_each_state(a: &mut [f64], b: &mut [f64], mut step: impl FnMut(&mut f6
 
 /// The names of every hand-written kernel: the built-ins and the damped
 /// variants of [`super::family`].
-pub fn hand_kernel_names() -> &'static [&'static str] {
+pub(crate) fn hand_kernel_names() -> &'static [&'static str] {
     &[
         "standard_euler",
         "damped_euler",
@@ -347,7 +351,7 @@ pub const TIMING_PHI: f64 = 1e-4;
 /// one run takes `budget / 8` (or 2^20 steps), then the best of five runs
 /// of that count is kept. The minimum is the usual estimator for a quiet
 /// loop: noise only ever adds time.
-pub fn time_ns_per_step(mut run: impl FnMut(u64), budget: Duration) -> f64 {
+pub(crate) fn time_ns_per_step(mut run: impl FnMut(u64), budget: Duration) -> f64 {
     let mut n: u64 = 1024;
     loop {
         let start = Instant::now();
@@ -368,7 +372,7 @@ pub fn time_ns_per_step(mut run: impl FnMut(u64), budget: Duration) -> f64 {
 
 /// ns per step of hand kernel `name` on one state, timed briefly (about
 /// `budget`); `None` when there is no kernel of that name.
-pub fn time_hand_kernel(name: &str, d: f64, budget: Duration) -> Option<f64> {
+pub(crate) fn time_hand_kernel(name: &str, d: f64, budget: Duration) -> Option<f64> {
     if !hand_kernel_names().contains(&name) {
         return None;
     }

@@ -16,23 +16,23 @@
 use std::hint::black_box;
 use std::time::Duration;
 
+use crate::error::Error;
 #[cfg(not(feature = "jit"))]
 use check::kernel::Kernel;
 use check::numeric::{Params, Step};
-use check::Error;
 use poly::Method;
 
 use super::kernels::time_ns_per_step;
 
 /// The default time budget of one measurement.
-pub const DEFAULT_BUDGET: Duration = Duration::from_millis(3);
+pub(crate) const DEFAULT_BUDGET: Duration = Duration::from_millis(3);
 
 /// Steps between two renormalisations of the timed state.
 const CHUNK: u64 = 1024;
 
 /// Measured nanoseconds per step of `method`'s compiled step at `params`
 /// (which must give every parameter of the method, Φ included), one state,
-/// timed for about [`DEFAULT_BUDGET`].
+/// timed for about `DEFAULT_BUDGET`.
 ///
 /// ```
 /// use check::numeric::{Params, ParamsF64};
@@ -46,7 +46,7 @@ pub fn measure_ns_per_step(method: &Method, params: &Params) -> Result<f64, Erro
 }
 
 /// [`measure_ns_per_step`] with a time budget.
-pub fn measure_ns_per_step_within(
+pub(crate) fn measure_ns_per_step_within(
     method: &Method,
     params: &Params,
     budget: Duration,

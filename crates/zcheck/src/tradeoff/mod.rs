@@ -5,50 +5,31 @@
 //! puts the four together for a programmer with a target:
 //!
 //! - cost per step, exact, from the method definition ([`poly::cost`]), and
-//!   measured on the compiled step of any method ([`measure`]), with the
+//!   measured on the compiled step of any method (`measure`), with the
 //!   hand-written kernels ([`kernels`]) as a baseline;
 //! - accuracy per step from the exact characteristic polynomial
-//!   ([`accuracy`]): phase error Ψ − Φ and amplitude factor per period;
+//!   (`accuracy`): phase error Ψ − Φ and amplitude factor per period;
 //! - the exact stability limit Φ_max (`poly::stability`), which no answer
 //!   ever reaches ([`family`]);
 //! - the trade: the largest admissible Φ for a target, steps per period, cost
 //!   per simulated period, a ranking and a work-precision figure
-//!   ([`rank`], [`figure`]);
-//! - a scene advisor in game units: spring frequency and tick rate in Hz
-//!   ([`advise`]).
+//!   (`rank`, `figure`);
+//! - the single-spring advisor, in game units: spring frequency and tick
+//!   rate in Hz (`spring_advisor`; a whole scene is
+//!   [`crate::scene::advisor`]'s).
+//!
+//! The submodules import one another directly, never through this file,
+//! which only re-exports what the tests use.
 
-use std::fmt;
-
-pub mod accuracy;
-pub mod advise;
+pub(crate) mod accuracy;
 pub mod family;
-pub mod figure;
+pub(crate) mod figure;
 pub mod kernels;
-pub mod measure;
-pub mod rank;
+pub(crate) mod measure;
+pub(crate) mod rank;
+pub(crate) mod spring_advisor;
 
-pub use accuracy::{Accuracy, SecondOrder, Spring, Target};
-pub use advise::{advise, Advice, MethodAdvice, Scene};
-pub use family::{damped_family, undamped_family, Candidate, Limit};
-pub use measure::{measure_ns_per_step, measure_ns_per_step_within};
+pub use accuracy::{SecondOrder, Spring, Target};
+pub use measure::measure_ns_per_step;
 pub use rank::{trade, TradeRow};
-
-/// Why a trade-off could not be computed.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct TradeoffError {
-    message: String,
-}
-
-impl TradeoffError {
-    pub(crate) fn new(message: impl Into<String>) -> TradeoffError {
-        TradeoffError { message: message.into() }
-    }
-}
-
-impl fmt::Display for TradeoffError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&self.message)
-    }
-}
-
-impl std::error::Error for TradeoffError {}
+pub use spring_advisor::{advise_spring, SpringScene};

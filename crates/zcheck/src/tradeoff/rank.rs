@@ -19,7 +19,8 @@ use std::f64::consts::PI;
 
 use serde::Serialize;
 
-use super::{Candidate, Spring, Target};
+use super::accuracy::{Spring, Target};
+use super::family::Candidate;
 
 /// Operations, for JSON.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
@@ -86,7 +87,7 @@ pub struct TradeRow {
 }
 
 /// Describes an exact limit for text and JSON.
-pub fn limit_text(c: &Candidate) -> String {
+pub(crate) fn limit_text(c: &Candidate) -> String {
     match (&c.limit.phi_max, c.limit.bounded_for_all) {
         (_, true) => "every phi".to_owned(),
         (Some(m), _) => m.closed_form().unwrap_or_else(|| m.to_decimal(15)),
@@ -95,7 +96,12 @@ pub fn limit_text(c: &Candidate) -> String {
 }
 
 /// One row for `c` at `target`, with `ns_per_step` measured by the caller.
-pub fn trade_row(c: &Candidate, spring: Spring, target: &Target, ns_per_step: f64) -> TradeRow {
+pub(crate) fn trade_row(
+    c: &Candidate,
+    spring: Spring,
+    target: &Target,
+    ns_per_step: f64,
+) -> TradeRow {
     let admissible_phi =
         c.limit.search_cap().and_then(|cap| c.model.largest_admissible_phi(spring, target, cap));
     let tolerance_phi = c.model.largest_admissible_phi(spring, target, PI);
@@ -145,7 +151,7 @@ pub fn trade(
 }
 
 /// Sorts rows by cost per simulated period and numbers the admissible ones.
-pub fn rank(rows: &mut [TradeRow]) {
+pub(crate) fn rank(rows: &mut [TradeRow]) {
     rows.sort_by(|a, b| match (&a.cost_per_period, &b.cost_per_period) {
         (Some(x), Some(y)) => {
             x.ns.total_cmp(&y.ns)

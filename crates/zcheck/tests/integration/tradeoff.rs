@@ -11,8 +11,10 @@ use std::f64::consts::PI;
 use check::numeric::{f64_to_q, q_to_f64, Params, Step};
 use check::witness;
 use poly::{Sym, Q};
+use zcheck::load::LoadedMethod;
+use zcheck::tradeoff::family::Candidate;
 use zcheck::tradeoff::{
-    self, advise, family, kernels, Candidate, Scene, SecondOrder, Spring, Target, TradeRow,
+    self, advise_spring, family, kernels, SecondOrder, Spring, SpringScene, Target, TradeRow,
 };
 
 const EPS: f64 = f64::EPSILON;
@@ -26,7 +28,7 @@ fn candidate(name: &str) -> Candidate {
 }
 
 fn direct_undamped() -> Vec<Candidate> {
-    undamped().into_iter().filter(|c| family::direct_names().contains(&c.name.as_str())).collect()
+    undamped().into_iter().filter(|c| poly::PAPER_METHODS.contains(&c.name.as_str())).collect()
 }
 
 #[track_caller]
@@ -156,11 +158,11 @@ fn accuracy_matches_numeric_eigenvalues() {
 #[test]
 fn accuracy_of_implicit_methods_matches_eigenvalues_and_closed_forms() {
     for name in poly::IMPLICIT_METHODS {
-        let m = poly::builtin(name).unwrap();
-        if m.order() != 2 {
+        let m = LoadedMethod::builtin(name).unwrap();
+        if m.method().order() != 2 {
             continue;
         }
-        let c = Candidate::new(m, Vec::new()).expect("second order");
+        let c = Candidate::new(&m, Vec::new()).expect("second order");
         for phi in [0.05, 0.3, 0.9, 1.3, 2.5] {
             let acc = c.model.accuracy(phi, Spring::UNDAMPED);
             let step = Step::compile(&c.method, &Params::phi(phi)).unwrap();
@@ -179,8 +181,8 @@ fn accuracy_of_implicit_methods_matches_eigenvalues_and_closed_forms() {
             );
         }
     }
-    let trap = Candidate::new(poly::builtin("trapezoidal").unwrap(), Vec::new()).unwrap();
-    let be = Candidate::new(poly::builtin("backward_euler").unwrap(), Vec::new()).unwrap();
+    let trap = Candidate::new(&LoadedMethod::builtin("trapezoidal").unwrap(), Vec::new()).unwrap();
+    let be = Candidate::new(&LoadedMethod::builtin("backward_euler").unwrap(), Vec::new()).unwrap();
     for phi in [1e-3, 0.1, 1.0, 3.0, 10.0] {
         let t = trap.model.accuracy(phi, Spring::UNDAMPED);
         assert!((t.psi - 2.0 * (phi / 2.0).atan()).abs() <= 4.0 * EPS * t.psi, "{phi}");
@@ -200,7 +202,7 @@ fn hand_kernels_follow_their_definitions() {
     let mut cands = undamped();
     cands.extend(family::damped_family(&f64_to_q(d_value).unwrap()).unwrap());
     for c in &cands {
-        let name = c.kernel_name();
+        let name = c.hand_kernel.expect("every built-in has a hand kernel");
         for phi in [0.125, 0.75, 1.5] {
             let mut values: HashMap<Sym, Q> = c.params.iter().cloned().collect();
             values.insert(Sym::phi(), f64_to_q(phi).unwrap());
@@ -325,18 +327,18 @@ fn trade_summary_snapshot() {
         .bind(|| insta::assert_snapshot!("tradeoff_default_target", lines.join("\n")));
 }
 
-fn scene(freq: f64, tick: f64, damping: Option<f64>) -> Scene {
-    Scene {
+fn scene(freq: f64, tick: f64, damping: Option<f64>) -> SpringScene {
+    SpringScene {
         freq_hz: freq,
         tick_hz: tick,
-        duration_s: Scene::DEFAULT_DURATION_S,
-        phase_tol: Scene::DEFAULT_PHASE_TOL,
-        amp_tol: Scene::DEFAULT_AMP_TOL,
+        duration_s: SpringScene::DEFAULT_DURATION_S,
+        phase_tol: SpringScene::DEFAULT_PHASE_TOL,
+        amp_tol: SpringScene::DEFAULT_AMP_TOL,
         damping,
     }
 }
 
-fn candidates_for(s: &Scene) -> Vec<Candidate> {
+fn candidates_for(s: &SpringScene) -> Vec<Candidate> {
     match s.damping {
         Some(d) => family::damped_family(&f64_to_q(d).unwrap()).unwrap(),
         None => direct_undamped(),
@@ -360,7 +362,7 @@ fn advisor_agrees_with_stability_and_classification() {
     ];
     for s in scenes {
         let cands = candidates_for(&s);
-        let advice = advise(&s, &cands, |_| 1.0).unwrap();
+        let advice = advise_spring(&s, &cands, |_| 1.0).unwrap();
         for (c, m) in cands.iter().zip(&advice.methods) {
             let report = poly::stability::analyze(&c.charpoly).unwrap();
             let below_max = report.phi_max().is_some_and(|max| {
@@ -411,7 +413,8 @@ fn numeric_class(c: &Candidate, phi: f64) -> poly::RootClass {
 fn advisor_120_hz_on_60_hz_tick() {
     let s = scene(120.0, 60.0, None);
     let advice =
-        advise(&s, &direct_undamped(), |c| 1.0 + c.cost.program.arithmetic() as f64).unwrap();
+        advise_spring(&s, &direct_undamped(), |c| 1.0 + c.cost.program.arithmetic() as f64)
+            .unwrap();
     assert!((advice.phi - 4.0 * PI).abs() <= 4.0 * EPS * advice.phi);
     let by: HashMap<&str, _> = advice.methods.iter().map(|m| (m.method.as_str(), m)).collect();
     for (m, k) in [
@@ -457,14 +460,14 @@ fn damped_scene_is_judged_against_the_damped_oscillator() {
 #[test]
 fn scene_validation() {
     #[track_caller]
-    fn check(s: Scene, expected: &str) {
-        let err = advise(&s, &[], |_| 1.0).unwrap_err().to_string();
+    fn check(s: SpringScene, expected: &str) {
+        let err = advise_spring(&s, &[], |_| 1.0).unwrap_err().to_string();
         assert!(err.contains(expected), "{err}");
     }
     check(scene(0.0, 60.0, None), "--freq 0: expected a finite number > 0");
     check(scene(10.0, f64::NAN, None), "--tick NaN: expected a finite number > 0");
     check(scene(10.0, 60.0, Some(1.0)), "--damping 1: expected a damping ratio with 0 <= D < 1");
-    check(Scene { amp_tol: -1.0, ..scene(10.0, 60.0, None) }, "--amp-tol -1");
+    check(SpringScene { amp_tol: -1.0, ..scene(10.0, 60.0, None) }, "--amp-tol -1");
 }
 
 /// The second-order model refuses what it cannot model.

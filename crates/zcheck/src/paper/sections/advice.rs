@@ -9,11 +9,11 @@ use num_traits::Signed;
 
 use poly::{Algebraic, Q};
 
-use super::common::derivation;
 use super::ranges;
+use crate::load::builtin_derivation;
 
 /// The criteria of one method.
-pub struct Criteria {
+pub(crate) struct Criteria {
     /// The built-in's name.
     pub method: &'static str,
     /// Φ_max (`None`: no stable Φ > 0 for the methods compared here).
@@ -32,8 +32,8 @@ fn leading(c: &[Q], skip: usize) -> Option<(usize, Q)> {
 }
 
 /// The criteria of a built-in, from its exact χ.
-pub fn criteria(method: &'static str) -> Criteria {
-    let d = derivation(method);
+pub(crate) fn criteria(method: &'static str) -> Criteria {
+    let d = builtin_derivation(method);
     let mut psi = poly::series::psi_series(&d.charpoly, 7).expect("Ψ series");
     if psi.len() > 1 {
         psi[1] -= poly::q(1, 1);
@@ -66,7 +66,7 @@ fn error_cmp(a: &Option<(usize, Q)>, b: &Option<(usize, Q)>) -> Ordering {
 
 /// The criteria on which `a` is better than `b`, and those on which it is
 /// worse, by name.
-pub fn compare(a: &Criteria, b: &Criteria) -> (Vec<&'static str>, Vec<&'static str>) {
+pub(crate) fn compare(a: &Criteria, b: &Criteria) -> (Vec<&'static str>, Vec<&'static str>) {
     let mut better = Vec::new();
     let mut worse = Vec::new();
     let limit = match (&a.limit, &b.limit) {
@@ -92,7 +92,7 @@ pub fn compare(a: &Criteria, b: &Criteria) -> (Vec<&'static str>, Vec<&'static s
 }
 
 /// One method's criteria in words.
-pub fn text(c: &Criteria) -> String {
+pub(crate) fn text(c: &Criteria) -> String {
     let term = |t: &Option<(usize, Q)>| match t {
         None => "0".to_owned(),
         Some((k, x)) => format!("{x}·Φ^{k}"),
@@ -109,7 +109,10 @@ pub fn text(c: &Criteria) -> String {
 
 /// "`a` is dominated": some built-in of the paper is at least as good on all
 /// four criteria and better on one. Returns the dominating methods.
-pub fn dominated_by(a: &Criteria, others: &[&'static str]) -> Vec<(Criteria, Vec<&'static str>)> {
+pub(crate) fn dominated_by(
+    a: &Criteria,
+    others: &[&'static str],
+) -> Vec<(Criteria, Vec<&'static str>)> {
     others
         .iter()
         .filter(|m| **m != a.method)

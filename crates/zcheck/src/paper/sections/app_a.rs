@@ -5,10 +5,13 @@
 use poly::{Poly, Sym};
 
 use super::common::*;
+use super::exact::paper;
 use super::frequency;
-use crate::paper::{Claim, Finding};
+use crate::load::builtin_derivation;
+use crate::paper::claim::Claim;
+use crate::paper::finding::Finding;
 
-pub fn claims() -> Vec<Claim> {
+pub(crate) fn claims() -> Vec<Claim> {
     let mut s = Section::new("A", "appA");
     tan_claim(
         &mut s,
@@ -18,7 +21,8 @@ pub fn claims() -> Vec<Claim> {
         "Phi^2*(1 - Phi^2/4)",
         "1 - Phi^2/2",
     );
-    let same = derivation("damped_euler").charpoly == derivation("false_euler").charpoly;
+    let same =
+        builtin_derivation("damped_euler").charpoly == builtin_derivation("false_euler").charpoly;
     s.append_evidence(&format!(
         "; Damped Euler (D = Φ/2) and False Euler have {} χ",
         if same { "the same" } else { "different" }

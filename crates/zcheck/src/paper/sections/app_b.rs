@@ -6,11 +6,14 @@
 use poly::{Operand, Sym};
 
 use super::common::*;
+use super::exact::paper;
 use super::pascal;
 use super::sec08;
-use crate::paper::{Claim, Finding};
+use crate::load::builtin_derivation;
+use crate::paper::claim::Claim;
+use crate::paper::finding::Finding;
 
-pub fn claims() -> Vec<Claim> {
+pub(crate) fn claims() -> Vec<Claim> {
     let mut s = Section::new("B", "appB");
     for matrix in poly::builtin_names().filter(|n| poly::direct_twin(n).is_some()) {
         twins(&mut s, matrix);
@@ -23,8 +26,8 @@ pub fn claims() -> Vec<Claim> {
 
 fn twins(s: &mut Section, matrix: &str) {
     let direct = poly::direct_twin(matrix).expect("filtered");
-    let a = derivation(direct);
-    let b = derivation(matrix);
+    let a = builtin_derivation(direct);
+    let b = builtin_derivation(matrix);
     let same = a.transition_matrix == b.transition_matrix;
     let mut evidence = format!(
         "symbolic execution of both branches (built-ins {direct} and {matrix}) gives the same P exactly"
@@ -72,7 +75,7 @@ fn dead_assignments(m: &poly::Method) -> Vec<String> {
 fn verlet_start(s: &mut Section) {
     let phis =
         [poly::q(1, 10), poly::q(1, 2), poly::q(1, 1), poly::q(3, 2), poly::q(2, 1), poly::q(9, 4)];
-    let fe = derivation("false_euler");
+    let fe = builtin_derivation("false_euler");
     let n = 24;
     let ok = phis.iter().all(|phi| {
         let p = matrix_at(&fe.transition_matrix, phi);
@@ -93,10 +96,10 @@ fn verlet_start(s: &mut Section) {
 }
 
 fn damping(s: &mut Section) {
-    let d = derivation("damped_euler_d");
+    let d = builtin_derivation("damped_euler_d");
     let half = paper("Phi/2");
     let p = d.transition_matrix.map(|e| e.subs(Sym::new("D"), &half));
-    let builtin = derivation("damped_euler").transition_matrix;
+    let builtin = builtin_derivation("damped_euler").transition_matrix;
     s.push(
         "damped_euler_d",
         "Damped Euler: D:=0.5*woT;  v1:= v0-woT*(y0+2*D*v0)",

@@ -6,16 +6,17 @@
 //! report) and the same expression in `Poly::parse` syntax (for the
 //! comparison). The comparison itself is always exact.
 
-use std::collections::HashMap;
 use std::fmt::Write as _;
-use std::sync::{Mutex, OnceLock};
 
 use poly::{Derivation, Method, Operand, Poly, PolyMatrix, Sym, Q};
 
-use crate::paper::{Claim, Finding};
+use super::exact::{at_phi, p_q, paper};
+use crate::load::builtin_derivation;
+use crate::paper::claim::Claim;
+use crate::paper::finding::Finding;
 
 /// The claims of one section, in the paper's order.
-pub struct Section {
+pub(crate) struct Section {
     section: &'static str,
     prefix: &'static str,
     claims: Vec<Claim>,
@@ -24,12 +25,12 @@ pub struct Section {
 impl Section {
     /// An empty section: `section` is the paper's numbering ("5", "A"),
     /// `prefix` starts every claim id ("sec05", "appA").
-    pub fn new(section: &'static str, prefix: &'static str) -> Section {
+    pub(crate) fn new(section: &'static str, prefix: &'static str) -> Section {
         Section { section, prefix, claims: Vec::new() }
     }
 
     /// Records one claim.
-    pub fn push(
+    pub(crate) fn push(
         &mut self,
         key: &str,
         statement: impl Into<String>,
@@ -48,21 +49,21 @@ impl Section {
     }
 
     /// Adds to the evidence of the claim recorded last.
-    pub fn append_evidence(&mut self, more: &str) {
+    pub(crate) fn append_evidence(&mut self, more: &str) {
         if let Some(c) = self.claims.last_mut() {
             c.evidence.push_str(more);
         }
     }
 
     /// The claims collected.
-    pub fn finish(self) -> Vec<Claim> {
+    pub(crate) fn finish(self) -> Vec<Claim> {
         self.claims
     }
 }
 
 /// A text with each "(the root of ...)" explanation kept at its first
 /// occurrence only: an irrational boundary is named once, then by its value.
-pub fn roots_once(text: &str) -> String {
+pub(crate) fn roots_once(text: &str) -> String {
     const OPEN: &str = " (the root of ";
     let mut out = String::new();
     let mut seen: Vec<String> = Vec::new();
@@ -96,32 +97,9 @@ pub fn roots_once(text: &str) -> String {
     out
 }
 
-/// A built-in method's derivation, derived once per process (the report
-/// asks for the same few methods many times). The built-ins are part of the
-/// binary, so a failure is a programmer error.
-#[track_caller]
-pub fn derivation(name: &str) -> Derivation {
-    static CACHE: OnceLock<Mutex<HashMap<String, Derivation>>> = OnceLock::new();
-    let cache = CACHE.get_or_init(Default::default);
-    if let Some(d) = cache.lock().expect("cache lock").get(name) {
-        return d.clone();
-    }
-    let method = poly::builtin(name).unwrap_or_else(|e| panic!("built-in {name}: {e}"));
-    let d = poly::derive(&method).unwrap_or_else(|e| panic!("built-in {name}: {e}"));
-    cache.lock().expect("cache lock").insert(name.to_owned(), d.clone());
-    d
-}
-
-/// One of our own transcriptions in `Poly::parse` syntax; a parse failure
-/// is a programmer error.
-#[track_caller]
-pub fn paper(text: &str) -> Poly {
-    Poly::parse(text).unwrap_or_else(|e| panic!("transcription {text:?}: {e}"))
-}
-
 /// The symbol of a state variable (or its history) in symbolic execution:
 /// `y` for the start value, `y_lag1` for `y@1`.
-pub fn start_sym(m: &Method, op: Operand) -> Poly {
+pub(crate) fn start_sym(m: &Method, op: Operand) -> Poly {
     match op {
         Operand::Start { var, lag: 0 } => Poly::var(&m.state()[var]),
         Operand::Start { var, lag } => Poly::var(&format!("{}_lag{lag}", m.state()[var])),
@@ -132,7 +110,7 @@ pub fn start_sym(m: &Method, op: Operand) -> Poly {
 /// Symbolic execution of one step: the value of every assignment, in program
 /// order, as a polynomial in the start values (`v`, `y`, `y@1`) and the
 /// parameters, named by the variable it writes.
-pub fn stage_values(m: &Method) -> Vec<(String, Poly)> {
+pub(crate) fn stage_values(m: &Method) -> Vec<(String, Poly)> {
     let mut values: Vec<Poly> = Vec::with_capacity(m.assigns().len());
     for a in m.assigns() {
         let mut acc = Poly::zero();
@@ -150,7 +128,7 @@ pub fn stage_values(m: &Method) -> Vec<(String, Poly)> {
 
 /// The value of the last assignment to `name` in one step.
 #[track_caller]
-pub fn stage_value(m: &Method, name: &str) -> Poly {
+pub(crate) fn stage_value(m: &Method, name: &str) -> Poly {
     stage_values(m)
         .into_iter()
         .rev()
@@ -161,7 +139,7 @@ pub fn stage_value(m: &Method, name: &str) -> Poly {
 
 /// One printed line of the paper: as printed, and in `Poly::parse` syntax.
 #[derive(Clone, Copy)]
-pub struct Printed {
+pub(crate) struct Printed {
     /// As the paper prints it.
     pub printed: &'static str,
     /// The right-hand side in `Poly::parse` syntax.
@@ -171,7 +149,10 @@ pub struct Printed {
 /// Compares printed right-hand sides with the step values of `method`
 /// (the value assigned to `name`): returns (all equal, derived listing,
 /// differences).
-pub fn compare_stages(method: &Method, lines: &[(&str, Printed)]) -> (Finding, String, String) {
+pub(crate) fn compare_stages(
+    method: &Method,
+    lines: &[(&str, Printed)],
+) -> (Finding, String, String) {
     let mut derived = String::new();
     let mut printed = String::new();
     let mut diffs = String::new();
@@ -195,7 +176,7 @@ pub fn compare_stages(method: &Method, lines: &[(&str, Printed)]) -> (Finding, S
 
 /// A z-domain row of the paper, `x = a v z⁻¹ + b y z⁻¹`, as the printed
 /// text and the coefficients of v and y in `Poly::parse` syntax.
-pub struct ZRow {
+pub(crate) struct ZRow {
     /// As the paper prints it.
     pub printed: &'static str,
     /// The coefficient of `v z⁻¹`.
@@ -207,7 +188,7 @@ pub struct ZRow {
 /// Compares printed z-domain rows with the rows of the derived transition
 /// matrix P (state order v, y): row i of the z-domain equations is
 /// `x_i = Σ_j P_ij x_j z⁻¹`.
-pub fn compare_z_rows(d: &Derivation, rows: &[ZRow]) -> (Finding, String, String) {
+pub(crate) fn compare_z_rows(d: &Derivation, rows: &[ZRow]) -> (Finding, String, String) {
     let p = &d.transition_matrix;
     let names = d.method.state();
     let mut derived = Vec::new();
@@ -231,14 +212,8 @@ pub fn compare_z_rows(d: &Derivation, rows: &[ZRow]) -> (Finding, String, String
     (Finding::same(printed.join("; "), &derived), derived, diffs.join("; "))
 }
 
-/// The paper's second-order form: `chi = z^2 - 2 p z + q`.
-#[track_caller]
-pub fn p_q(d: &Derivation) -> (Poly, Poly) {
-    d.p_q().unwrap_or_else(|| panic!("{} is not second order", d.method.name()))
-}
-
 /// χ written in the paper's form `z^2 - 2*(p)*z + (q)`.
-pub fn chi_text(d: &Derivation) -> String {
+pub(crate) fn chi_text(d: &Derivation) -> String {
     match d.p_q() {
         Some((p, q)) => format!("z^2 - 2*({p})*z + ({q})"),
         None => d.charpoly.to_string(),
@@ -246,7 +221,7 @@ pub fn chi_text(d: &Derivation) -> String {
 }
 
 /// The transition matrix as text, row by row.
-pub fn matrix_text(m: &PolyMatrix) -> String {
+pub(crate) fn matrix_text(m: &PolyMatrix) -> String {
     let rows: Vec<String> = (0..m.rows())
         .map(|i| {
             let r: Vec<String> = m.row(i).iter().map(ToString::to_string).collect();
@@ -256,14 +231,8 @@ pub fn matrix_text(m: &PolyMatrix) -> String {
     format!("[{}]", rows.join(", "))
 }
 
-/// `p` evaluated at Φ = `phi` (all other parameters must be absent).
-pub fn at_phi(p: &Poly, phi: &Q) -> Q {
-    let values = HashMap::from([(Sym::phi(), phi.clone())]);
-    p.eval(&values).expect("a polynomial in Phi only")
-}
-
 /// A polynomial truncated to powers of Φ below `k`.
-pub fn truncate(p: &Poly, k: usize) -> Poly {
+pub(crate) fn truncate(p: &Poly, k: usize) -> Poly {
     let mut c = p.coeffs_in(Sym::phi());
     c.truncate(k);
     Poly::from_coeffs_in(Sym::phi(), &c)
@@ -271,7 +240,7 @@ pub fn truncate(p: &Poly, k: usize) -> Poly {
 
 /// A rational shown as a decimal with `digits` places (at most 18), rounded
 /// half away from zero; exact, no float involved.
-pub fn q_decimal(x: &Q, digits: u32) -> String {
+pub(crate) fn q_decimal(x: &Q, digits: u32) -> String {
     use num_traits::Signed;
     let scale = poly::q(10i64.pow(digits), 1);
     let rounded = (x.abs() * &scale + poly::q(1, 2)).floor().to_integer().to_string();
@@ -287,7 +256,7 @@ pub fn q_decimal(x: &Q, digits: u32) -> String {
 }
 
 /// A float rounded for a report: never a raw float.
-pub fn fixed(x: f64, digits: usize) -> String {
+pub(crate) fn fixed(x: f64, digits: usize) -> String {
     let s = format!("{x:.digits$}");
     // "-0.000" reads as a sign error; print it as zero.
     if s.trim_start_matches('-').chars().all(|c| c == '0' || c == '.') {
@@ -299,25 +268,25 @@ pub fn fixed(x: f64, digits: usize) -> String {
 
 /// Ψ(Φ) of a second-order method at one Φ in floating point: the argument
 /// of the upper root, `atan2(sqrt(q - p²), p)`, when the roots are complex.
-pub fn psi_f64(d: &Derivation, phi: f64) -> Option<f64> {
+pub(crate) fn psi_f64(d: &Derivation, phi: f64) -> Option<f64> {
     PsiF64::new(d).at(phi)
 }
 
 /// Ψ(Φ) in floating point with p and q converted to f64 once, for sweeps.
-pub struct PsiF64 {
+pub(crate) struct PsiF64 {
     p: Vec<f64>,
     q: Vec<f64>,
 }
 
 impl PsiF64 {
     /// The f64 coefficients of p and q of a second-order method.
-    pub fn new(d: &Derivation) -> PsiF64 {
+    pub(crate) fn new(d: &Derivation) -> PsiF64 {
         let (p, q) = p_q(d);
         PsiF64 { p: f64_coeffs(&p), q: f64_coeffs(&q) }
     }
 
     /// Ψ at Φ, when the roots are complex.
-    pub fn at(&self, phi: f64) -> Option<f64> {
+    pub(crate) fn at(&self, phi: f64) -> Option<f64> {
         let horner = |c: &[f64]| c.iter().rev().fold(0.0, |acc, x| acc * phi + x);
         let (p, q) = (horner(&self.p), horner(&self.q));
         let s = q - p * p;
@@ -334,17 +303,17 @@ fn f64_coeffs(p: &Poly) -> Vec<f64> {
 }
 
 /// A polynomial in Φ evaluated in floating point (Horner).
-pub fn eval_f64(p: &Poly, phi: f64) -> f64 {
+pub(crate) fn eval_f64(p: &Poly, phi: f64) -> f64 {
     check::sweep::HornerPoly::new(p, Sym::phi()).expect("a polynomial in Phi only").value(phi)
 }
 
 /// The canonical test oscillator of section 5 (v̇ = −ω0 y, ẏ = ω0 v) as the
 /// matrix A in units of ω0, state order (v, y), in `Poly::parse` syntax.
-pub const OSCILLATOR: [[&str; 2]; 2] = [["0", "-1"], ["1", "0"]];
+pub(crate) const OSCILLATOR: [[&str; 2]; 2] = [["0", "-1"], ["1", "0"]];
 
 /// How a method's transition matrix P must relate to the ODE matrix A.
 #[derive(Clone, Copy, PartialEq, Eq)]
-pub enum Scheme {
+pub(crate) enum Scheme {
     /// Standard Euler: P = I + ΦA exactly (section 4).
     Euler,
     /// Standard Heun on a linear system: P = I + ΦA + (ΦA)²/2 exactly.
@@ -354,13 +323,13 @@ pub enum Scheme {
 }
 
 /// The ODE matrix from its transcription.
-pub fn ode_matrix(a: [[&str; 2]; 2]) -> PolyMatrix {
+pub(crate) fn ode_matrix(a: [[&str; 2]; 2]) -> PolyMatrix {
     PolyMatrix::from_rows(a.iter().map(|r| r.iter().map(|e| paper(e)).collect()).collect())
 }
 
 /// P − (I + ΦA [+ (ΦA)²/2]) for the scheme; zero (or O(Φ²) for
 /// `Consistent`) when the method integrates the ODE A.
-pub fn scheme_defect(d: &Derivation, a: &PolyMatrix, scheme: Scheme) -> PolyMatrix {
+pub(crate) fn scheme_defect(d: &Derivation, a: &PolyMatrix, scheme: Scheme) -> PolyMatrix {
     let phi = Poly::sym(Sym::phi());
     let phi_a = a.map(|e| e * &phi);
     let mut model = PolyMatrix::identity(a.rows());
@@ -389,14 +358,20 @@ pub fn scheme_defect(d: &Derivation, a: &PolyMatrix, scheme: Scheme) -> PolyMatr
 }
 
 /// Whether every entry of a matrix is zero.
-pub fn is_zero_matrix(m: &PolyMatrix) -> bool {
+pub(crate) fn is_zero_matrix(m: &PolyMatrix) -> bool {
     (0..m.rows()).all(|i| m.row(i).iter().all(Poly::is_zero))
 }
 
 /// Records the claim that a section's printed ODE is the one its method
 /// integrates.
-pub fn ode_claim(s: &mut Section, method: &str, printed: &str, a: [[&str; 2]; 2], scheme: Scheme) {
-    let d = derivation(method);
+pub(crate) fn ode_claim(
+    s: &mut Section,
+    method: &str,
+    printed: &str,
+    a: [[&str; 2]; 2],
+    scheme: Scheme,
+) {
+    let d = builtin_derivation(method);
     let printed_a = ode_matrix(a);
     let defect = scheme_defect(&d, &printed_a, scheme);
     let ok = is_zero_matrix(&defect);
@@ -440,11 +415,11 @@ pub fn ode_claim(s: &mut Section, method: &str, printed: &str, a: [[&str; 2]; 2]
 
 /// Records "the solution is always an unstable oscillation" (sections 5
 /// and 9): the exact class map over every Φ > 0, no narrower range stated.
-pub fn always_unstable_claim(s: &mut Section, method: &str) {
+pub(crate) fn always_unstable_claim(s: &mut Section, method: &str) {
     use super::ranges;
     let (finding, map, failing) =
         ranges::always(method, |c| c == poly::RootClass::UnstableOscillation, None);
-    let (p, q) = p_q(&derivation(method));
+    let (p, q) = p_q(&builtin_derivation(method));
     let disc = &q - &(&p * &p);
     s.push(
         "always_unstable",
@@ -465,8 +440,8 @@ pub fn always_unstable_claim(s: &mut Section, method: &str) {
 }
 
 /// Records a printed characteristic equation against the derived χ.
-pub fn charpoly_claim(s: &mut Section, key: &str, method: &str, printed: &str, parse: &str) {
-    let d = derivation(method);
+pub(crate) fn charpoly_claim(s: &mut Section, key: &str, method: &str, printed: &str, parse: &str) {
+    let d = builtin_derivation(method);
     let got = paper(parse);
     let ok = got == d.charpoly;
     let finding = Finding::same(&got, &d.charpoly);
@@ -487,14 +462,14 @@ pub fn charpoly_claim(s: &mut Section, key: &str, method: &str, printed: &str, p
 
 /// Records printed intermediate values of one step against symbolic
 /// execution of the method's program.
-pub fn stages_claim(
+pub(crate) fn stages_claim(
     s: &mut Section,
     key: &str,
     method: &str,
     printed: &str,
     lines: &[(&str, Printed)],
 ) {
-    let m = derivation(method).method;
+    let m = builtin_derivation(method).method;
     let (finding, derived, diffs) = compare_stages(&m, lines);
     let evidence = if diffs.is_empty() {
         format!("symbolic execution of the {method} program (Appendix B) gives every printed value exactly")
@@ -505,8 +480,8 @@ pub fn stages_claim(
 }
 
 /// Records printed z-domain rows against the derived transition matrix.
-pub fn z_rows_claim(s: &mut Section, method: &str, printed: &str, rows: &[ZRow]) {
-    let d = derivation(method);
+pub(crate) fn z_rows_claim(s: &mut Section, method: &str, printed: &str, rows: &[ZRow]) {
+    let d = builtin_derivation(method);
     let (finding, derived, diffs) = compare_z_rows(&d, rows);
     let evidence = if diffs.is_empty() {
         format!("the rows of P from poly::derive({method}) equal the printed coefficients exactly")
@@ -517,8 +492,8 @@ pub fn z_rows_claim(s: &mut Section, method: &str, printed: &str, rows: &[ZRow])
 }
 
 /// Records a printed r² against q (section 4: r1² = q for a conjugate pair).
-pub fn r_squared_claim(s: &mut Section, method: &str, printed: &str, parse: &str) {
-    let d = derivation(method);
+pub(crate) fn r_squared_claim(s: &mut Section, method: &str, printed: &str, parse: &str) {
+    let d = builtin_derivation(method);
     let (p, q) = p_q(&d);
     let ok = paper(parse) == q;
     let range = super::ranges::sign_text(
@@ -540,7 +515,7 @@ pub fn r_squared_claim(s: &mut Section, method: &str, printed: &str, parse: &str
 
 /// Records printed eigenvalues `p ± j·sqrt(im²)` against χ: they are the
 /// roots iff p is the derived p and im² = q − p².
-pub fn eigen_claim(
+pub(crate) fn eigen_claim(
     s: &mut Section,
     key: &str,
     method: &str,
@@ -548,7 +523,7 @@ pub fn eigen_claim(
     p_text: &str,
     im_sq: &str,
 ) {
-    let d = derivation(method);
+    let d = builtin_derivation(method);
     let (p, q) = p_q(&d);
     let disc = &q - &(&p * &p);
     let ok_p = paper(p_text) == p;
@@ -580,8 +555,15 @@ pub fn eigen_claim(
 
 /// Records a printed tan Ψ = num/den against the roots: tan Ψ = sqrt(q − p²)/p,
 /// so den must be p and num² must be q − p².
-pub fn tan_claim(s: &mut Section, key: &str, method: &str, printed: &str, num_sq: &str, den: &str) {
-    let d = derivation(method);
+pub(crate) fn tan_claim(
+    s: &mut Section,
+    key: &str,
+    method: &str,
+    printed: &str,
+    num_sq: &str,
+    den: &str,
+) {
+    let d = builtin_derivation(method);
     let (p, q) = p_q(&d);
     let disc = &q - &(&p * &p);
     let ok = paper(den) == p && paper(num_sq) == disc;
@@ -611,7 +593,7 @@ pub fn tan_claim(s: &mut Section, key: &str, method: &str, printed: &str, num_sq
 /// sqrt(p) for a polynomial in Φ, with the largest even power of Φ taken
 /// out of the root: `Phi` for Φ², `Phi*sqrt(1 - 1/4*Phi^2)` for
 /// Φ² − Φ⁴/4.
-pub fn sqrt_text(p: &Poly) -> String {
+pub(crate) fn sqrt_text(p: &Poly) -> String {
     let c = p.coeffs_in(Sym::phi());
     let Some(low) = c.iter().position(|x| !x.is_zero()) else { return "0".to_owned() };
     let k = low / 2;
@@ -630,12 +612,12 @@ pub fn sqrt_text(p: &Poly) -> String {
 
 /// A transition matrix at one rational Φ (other parameters substituted by
 /// the caller).
-pub fn matrix_at(p: &PolyMatrix, phi: &Q) -> Vec<Vec<Q>> {
+pub(crate) fn matrix_at(p: &PolyMatrix, phi: &Q) -> Vec<Vec<Q>> {
     (0..p.rows()).map(|i| p.row(i).iter().map(|e| at_phi(e, phi)).collect()).collect()
 }
 
 /// The exact states x_0, x_1, ..., x_n of x_{k+1} = P x_k.
-pub fn iterate_exact(p: &[Vec<Q>], x0: &[Q], n: usize) -> Vec<Vec<Q>> {
+pub(crate) fn iterate_exact(p: &[Vec<Q>], x0: &[Q], n: usize) -> Vec<Vec<Q>> {
     let mut out = vec![x0.to_vec()];
     for _ in 0..n {
         let x = out.last().expect("starts non-empty");
@@ -653,7 +635,7 @@ mod tests {
     //! The claim builders fed perturbed statements: the verdict follows the
     //! statement, not the code path.
     use super::*;
-    use crate::paper::Verdict;
+    use crate::paper::policy::Verdict;
     use poly::RootClass;
 
     fn verdict_of(build: impl FnOnce(&mut Section)) -> Verdict {

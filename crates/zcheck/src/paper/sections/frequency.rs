@@ -11,18 +11,20 @@ use std::f64::consts::PI;
 use poly::{Poly, Sym, Q};
 
 use super::common::*;
-use crate::paper::{Finding, Scope};
+use super::exact::{p_q, paper};
+use crate::load::builtin_derivation;
+use crate::paper::finding::{Finding, Scope};
 
 /// Ψ(Φ)'s Taylor coefficients of Φ^0..=Φ^order.
 #[track_caller]
-pub fn psi_coeffs(method: &str, order: usize) -> Vec<Q> {
-    let d = derivation(method);
+pub(crate) fn psi_coeffs(method: &str, order: usize) -> Vec<Q> {
+    let d = builtin_derivation(method);
     poly::series::psi_series(&d.charpoly, order)
         .unwrap_or_else(|e| panic!("Ψ series of {method}: {e}"))
 }
 
 /// A coefficient list as a polynomial in Φ.
-pub fn series_poly(c: &[Q]) -> Poly {
+pub(crate) fn series_poly(c: &[Q]) -> Poly {
     let terms: Vec<Poly> = c.iter().map(|x| Poly::constant(x.clone())).collect();
     Poly::from_coeffs_in(Sym::phi(), &terms)
 }
@@ -30,7 +32,7 @@ pub fn series_poly(c: &[Q]) -> Poly {
 /// The largest Φ (at most `cap`) up to which a method's roots stay a
 /// complex pair, in floating point; `cap` when they never stop.
 fn oscillating_until(method: &str, cap: f64) -> f64 {
-    let psi = PsiF64::new(&derivation(method));
+    let psi = PsiF64::new(&builtin_derivation(method));
     let n = 4000;
     let mut last = 0.0;
     for k in 1..=n {
@@ -45,8 +47,8 @@ fn oscillating_until(method: &str, cap: f64) -> f64 {
 
 /// The first Φ in (0, hi] where Ψ(Φ) − Φ changes sign, by a grid and
 /// bisection; `None` when Ψ > Φ on the whole grid.
-pub fn first_crossing(method: &str, hi: f64) -> Option<f64> {
-    let psi = PsiF64::new(&derivation(method));
+pub(crate) fn first_crossing(method: &str, hi: f64) -> Option<f64> {
+    let psi = PsiF64::new(&builtin_derivation(method));
     let f = |phi: f64| psi.at(phi).map(|psi| psi - phi);
     let n = 4000;
     let mut prev = hi / n as f64;
@@ -73,11 +75,11 @@ pub fn first_crossing(method: &str, hi: f64) -> Option<f64> {
 }
 
 /// "The frequency is always too high": Ψ > Φ wherever the samples oscillate.
-pub fn too_high(s: &mut Section, method: &str, statement: &str) {
+pub(crate) fn too_high(s: &mut Section, method: &str, statement: &str) {
     let c = psi_coeffs(method, 3);
     let hi = oscillating_until(method, 2.0 * PI);
     let crossing = first_crossing(method, hi);
-    let q_is_one = p_q(&derivation(method)).1.is_one();
+    let q_is_one = p_q(&builtin_derivation(method)).1.is_one();
     let near_zero = format!("near Φ = 0, Ψ − Φ = {}·Φ³ + O(Φ⁵) > 0", c[3]);
     // Section 6 states the range of the frequency approximations, Φ < 1;
     // "always too high" is read off those approximations.
@@ -122,7 +124,7 @@ pub fn too_high(s: &mut Section, method: &str, statement: &str) {
 }
 
 /// A printed Taylor approximation of Ψ against the exact series.
-pub fn approximation(s: &mut Section, method: &str, statement: &str, parse: &str) {
+pub(crate) fn approximation(s: &mut Section, method: &str, statement: &str, parse: &str) {
     let exact = psi_coeffs(method, 5);
     let printed = paper(parse);
     let through_3 = series_poly(&exact[..4]);
@@ -141,8 +143,8 @@ pub fn approximation(s: &mut Section, method: &str, statement: &str, parse: &str
 }
 
 /// "The approximation is valid for Φ < 1 or more than 2π samples per period."
-pub fn validity(s: &mut Section, method: &str, approx: &str) {
-    let d = derivation(method);
+pub(crate) fn validity(s: &mut Section, method: &str, approx: &str) {
+    let d = builtin_derivation(method);
     let a = paper(approx);
     let at = |phi: f64| {
         let psi = psi_f64(&d, phi).expect("oscillating at Φ ≤ 1");
@@ -178,8 +180,13 @@ pub fn validity(s: &mut Section, method: &str, approx: &str) {
 }
 
 /// The table of section 6: true and approximate Ψ at given Φ, to 3 decimals.
-pub fn table(s: &mut Section, method: &str, approx: &str, rows: &[(&str, &str, f64, &str, &str)]) {
-    let d = derivation(method);
+pub(crate) fn table(
+    s: &mut Section,
+    method: &str,
+    approx: &str,
+    rows: &[(&str, &str, f64, &str, &str)],
+) {
+    let d = builtin_derivation(method);
     let a = paper(approx);
     for &(key, statement, phi, true_printed, approx_printed) in rows {
         let psi = psi_f64(&d, phi).expect("oscillating");

@@ -9,15 +9,15 @@
 use std::collections::BTreeSet;
 
 /// Appendix B, the seven methods, as printed.
-pub const APPENDIX_B: &str = include_str!("../listings/appendix_b.pas");
+pub(crate) const APPENDIX_B: &str = include_str!("../listings/appendix_b.pas");
 /// Appendix C, three bodies by False Euler, as printed.
-pub const APPENDIX_C: &str = include_str!("../listings/appendix_c.pas");
+pub(crate) const APPENDIX_C: &str = include_str!("../listings/appendix_c.pas");
 /// Appendix D, three bodies by Standard Euler with energy control.
-pub const APPENDIX_D: &str = include_str!("../listings/appendix_d.pas");
+pub(crate) const APPENDIX_D: &str = include_str!("../listings/appendix_d.pas");
 
 /// One token of a listing.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub enum Token {
+pub(crate) enum Token {
     /// An identifier, lower-cased (Pascal is case-insensitive).
     Ident(String),
     /// Anything else: a number, an operator, a string.
@@ -25,7 +25,7 @@ pub enum Token {
 }
 
 /// The tokens of a listing, comments dropped.
-pub fn tokens(src: &str) -> Vec<Token> {
+pub(crate) fn tokens(src: &str) -> Vec<Token> {
     let chars: Vec<char> = src.chars().collect();
     let mut out = Vec::new();
     let mut i = 0;
@@ -70,7 +70,7 @@ pub fn tokens(src: &str) -> Vec<Token> {
 }
 
 /// The comments of a listing, trimmed, in order.
-pub fn comments(src: &str) -> Vec<String> {
+pub(crate) fn comments(src: &str) -> Vec<String> {
     let mut out = Vec::new();
     let mut rest = src;
     while let Some(k) = rest.find('{') {
@@ -95,7 +95,7 @@ fn ident(t: &Token) -> Option<&str> {
 
 /// The names a listing declares: its `Var` and `Const` sections and the
 /// procedure's parameters.
-pub fn declared(src: &str) -> BTreeSet<String> {
+pub(crate) fn declared(src: &str) -> BTreeSet<String> {
     let t = tokens(src);
     let mut out = BTreeSet::new();
     let mut k = 0;
@@ -152,7 +152,7 @@ pub fn declared(src: &str) -> BTreeSet<String> {
 }
 
 /// The names assigned with `:=`, in order of their first assignment.
-pub fn assigned(src: &str) -> Vec<String> {
+pub(crate) fn assigned(src: &str) -> Vec<String> {
     let t = tokens(src);
     let mut out: Vec<String> = Vec::new();
     for w in t.windows(2) {
@@ -168,7 +168,7 @@ pub fn assigned(src: &str) -> Vec<String> {
 /// The names assigned with `:=` somewhere whose first use is a read on the
 /// right-hand side of an earlier assignment: on the first pass they hold
 /// whatever the memory held (Pascal leaves locals undefined).
-pub fn read_before_written(src: &str) -> Vec<String> {
+pub(crate) fn read_before_written(src: &str) -> Vec<String> {
     let t = tokens(src);
     let assigned = assigned(src);
     let mut written: BTreeSet<String> = BTreeSet::new();
@@ -207,7 +207,7 @@ pub fn read_before_written(src: &str) -> Vec<String> {
 }
 
 /// The names assigned but never declared.
-pub fn undeclared(src: &str) -> Vec<String> {
+pub(crate) fn undeclared(src: &str) -> Vec<String> {
     let declared = declared(src);
     assigned(src).into_iter().filter(|n| !declared.contains(n)).collect()
 }

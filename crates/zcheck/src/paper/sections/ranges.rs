@@ -10,11 +10,12 @@ use std::sync::{Mutex, OnceLock};
 use poly::stability::{self, StabilityReport};
 use poly::{Algebraic, Poly, RootClass, Sym, UPoly, Q};
 
-use super::common::derivation;
+use super::exact::{at_phi, p_q, paper};
+use crate::load::builtin_derivation;
 
 /// An exact number written for a reader: the closed form when known, with
 /// its decimal value ("sqrt(2) ≈ 1.4142", "2").
-pub fn show(a: &Algebraic) -> String {
+pub(crate) fn show(a: &Algebraic) -> String {
     match (a.is_rational(), a.closed_form()) {
         (true, Some(c)) => c,
         (false, Some(c)) => format!("{c} ≈ {}", a.to_decimal(4)),
@@ -25,7 +26,7 @@ pub fn show(a: &Algebraic) -> String {
 }
 
 /// The positive real roots of a polynomial in Φ, ascending.
-pub fn positive_roots(p: &Poly) -> Vec<Algebraic> {
+pub(crate) fn positive_roots(p: &Poly) -> Vec<Algebraic> {
     let u: UPoly = p.to_upoly(Sym::phi()).expect("a polynomial in Phi only");
     if u.is_zero() {
         return Vec::new();
@@ -47,7 +48,7 @@ fn rational_above(a: &Algebraic) -> Q {
 
 /// One piece of Φ > 0: an open interval (lo, hi) or a single point.
 #[derive(Clone, Debug)]
-pub enum Piece {
+pub(crate) enum Piece {
     /// lo < Φ < hi; `None` for 0 (lo) or ∞ (hi).
     Open(Option<Algebraic>, Option<Algebraic>),
     /// Φ = the number.
@@ -56,7 +57,7 @@ pub enum Piece {
 
 impl Piece {
     /// The piece in words: "0 < Φ < sqrt(2) ≈ 1.4142", "Φ = 2".
-    pub fn text(&self) -> String {
+    pub(crate) fn text(&self) -> String {
         match self {
             Piece::Open(None, None) => "every Φ > 0".to_owned(),
             Piece::Open(None, Some(h)) => format!("0 < Φ < {}", show(h)),
@@ -67,7 +68,7 @@ impl Piece {
     }
 
     /// A rational inside an open piece.
-    pub fn sample(&self) -> Option<Q> {
+    pub(crate) fn sample(&self) -> Option<Q> {
         match self {
             Piece::Open(None, None) => Some(poly::q(1, 1)),
             Piece::Open(None, Some(h)) => Some(rational_below(h)),
@@ -80,7 +81,7 @@ impl Piece {
 
 /// The open pieces of Φ > 0 cut at `cuts` (ascending), with the cut points
 /// in between.
-pub fn pieces(cuts: &[Algebraic]) -> Vec<Piece> {
+pub(crate) fn pieces(cuts: &[Algebraic]) -> Vec<Piece> {
     let mut out = Vec::new();
     let mut lo: Option<Algebraic> = None;
     for c in cuts {
@@ -94,7 +95,7 @@ pub fn pieces(cuts: &[Algebraic]) -> Vec<Piece> {
 
 /// Where a polynomial in Φ is positive and where negative, in words:
 /// "`pos` for 0 < Φ < 2; `neg` for Φ > 2" (or "`pos` for every Φ > 0").
-pub fn sign_text(p: &Poly, pos: &str, neg: &str) -> String {
+pub(crate) fn sign_text(p: &Poly, pos: &str, neg: &str) -> String {
     if p.symbols().iter().any(|s| *s != Sym::phi()) {
         return format!("{pos} where {p} > 0; {neg} where {p} < 0");
     }
@@ -103,7 +104,7 @@ pub fn sign_text(p: &Poly, pos: &str, neg: &str) -> String {
     for piece in pieces(&roots) {
         let Piece::Open(..) = piece else { continue };
         let x = piece.sample().expect("open pieces have samples");
-        let value = super::common::at_phi(p, &x);
+        let value = at_phi(p, &x);
         let word = match value.cmp(&poly::q(0, 1)) {
             Ordering::Greater => pos,
             Ordering::Less => neg,
@@ -117,13 +118,13 @@ pub fn sign_text(p: &Poly, pos: &str, neg: &str) -> String {
 /// The exact stability report of a built-in method, computed once per
 /// process.
 #[track_caller]
-pub fn report(method: &str) -> StabilityReport {
+pub(crate) fn report(method: &str) -> StabilityReport {
     static CACHE: OnceLock<Mutex<HashMap<String, StabilityReport>>> = OnceLock::new();
     let cache = CACHE.get_or_init(Default::default);
     if let Some(r) = cache.lock().expect("cache lock").get(method) {
         return r.clone();
     }
-    let d = derivation(method);
+    let d = builtin_derivation(method);
     let r =
         stability::analyze(&d.charpoly).unwrap_or_else(|e| panic!("stability of {method}: {e}"));
     cache.lock().expect("cache lock").insert(method.to_owned(), r.clone());
@@ -133,7 +134,7 @@ pub fn report(method: &str) -> StabilityReport {
 /// A method's root class on every piece of Φ > 0: the open intervals of
 /// constant class and the change points between them (a point's class is
 /// `None` when poly::stability did not decide it).
-pub fn class_map(method: &str) -> Vec<(Piece, Option<RootClass>)> {
+pub(crate) fn class_map(method: &str) -> Vec<(Piece, Option<RootClass>)> {
     let r = report(method);
     let mut out = Vec::new();
     for (k, interval) in r.intervals.iter().enumerate() {
@@ -147,7 +148,7 @@ pub fn class_map(method: &str) -> Vec<(Piece, Option<RootClass>)> {
 }
 
 /// A class map in words: "damped_oscillation for 0 < Φ < ...; ...".
-pub fn class_map_text(map: &[(Piece, Option<RootClass>)]) -> String {
+pub(crate) fn class_map_text(map: &[(Piece, Option<RootClass>)]) -> String {
     map.iter()
         .filter_map(|(piece, class)| {
             class.map(|c| format!("{} for {}", class_words(c), piece.text()))
@@ -158,7 +159,7 @@ pub fn class_map_text(map: &[(Piece, Option<RootClass>)]) -> String {
 
 /// The built-ins whose class maps cover the paper's methods (the `_matrix`
 /// twins have the same χ).
-pub const METHODS: [&str; 8] = [
+pub(crate) const METHODS: [&str; 8] = [
     "standard_euler",
     "damped_euler",
     "false_euler",
@@ -171,7 +172,7 @@ pub const METHODS: [&str; 8] = [
 
 /// Classes reached by the paper's methods (`damped_euler_d` excluded: it has
 /// a free parameter) that are not in `known`, with where they occur.
-pub fn classes_outside(known: &[RootClass]) -> String {
+pub(crate) fn classes_outside(known: &[RootClass]) -> String {
     let mut out = Vec::new();
     for method in METHODS.iter().filter(|m| **m != "damped_euler_d") {
         for (piece, class) in class_map(method) {
@@ -191,11 +192,11 @@ pub fn classes_outside(known: &[RootClass]) -> String {
 
 /// Where the paper's second-order methods have a complex pair with negative
 /// real part (Ψ > π/2), so that arctan(b1/a1) is off by π.
-pub fn negative_real_part_text() -> String {
+pub(crate) fn negative_real_part_text() -> String {
     let mut out = Vec::new();
     for method in METHODS.iter().filter(|m| !matches!(**m, "damped_euler_d" | "verlet")) {
-        let d = derivation(method);
-        let (p, q) = super::common::p_q(&d);
+        let d = builtin_derivation(method);
+        let (p, q) = p_q(&d);
         let disc = &q - &(&p * &p);
         let mut cuts = positive_roots(&p);
         cuts.extend(positive_roots(&disc));
@@ -205,7 +206,7 @@ pub fn negative_real_part_text() -> String {
             let Piece::Open(..) = piece else { continue };
             let x = piece.sample().expect("open piece");
             let zero = poly::q(0, 1);
-            if super::common::at_phi(&p, &x) < zero && super::common::at_phi(&disc, &x) > zero {
+            if at_phi(&p, &x) < zero && at_phi(&disc, &x) > zero {
                 out.push(format!("{} for {}", title(method), piece.text()));
             }
         }
@@ -220,15 +221,15 @@ pub fn negative_real_part_text() -> String {
 /// `None` when the paper states no narrower range, so that the wording's
 /// "always" is the assertion. Returns the finding, the class map in words
 /// and the pieces where `ok` fails.
-pub fn always(
+pub(crate) fn always(
     method: &str,
     ok: impl Fn(RootClass) -> bool,
     stated: Option<&str>,
-) -> (crate::paper::Finding, String, String) {
-    use crate::paper::{Finding, Scope};
+) -> (crate::paper::finding::Finding, String, String) {
+    use crate::paper::finding::{Finding, Scope};
     let map = class_map(method);
     let bound = stated.map(|text| {
-        positive_roots(&super::common::paper(text))
+        positive_roots(&paper(text))
             .into_iter()
             .next()
             .unwrap_or_else(|| panic!("stated range {text:?} has no positive root"))
@@ -256,12 +257,12 @@ pub fn always(
 
 /// A root class in words for running prose: "damped oscillation", not
 /// `damped_oscillation`.
-pub fn class_words(c: RootClass) -> String {
+pub(crate) fn class_words(c: RootClass) -> String {
     c.to_string().replace('_', " ")
 }
 
 /// A method's name in words: "False Euler", "Semi-False Heun".
-pub fn title(name: &str) -> String {
+pub(crate) fn title(name: &str) -> String {
     name.split('_')
         .map(|w| {
             let mut c = w.chars();
@@ -274,11 +275,11 @@ pub fn title(name: &str) -> String {
 
 /// Φ_max of a stability report: the largest Φ₀ with every 0 < Φ < Φ₀
 /// bounded (`None` when there is none, or when every Φ is bounded).
-pub fn limit_of(report: &StabilityReport) -> Option<Algebraic> {
+pub(crate) fn limit_of(report: &StabilityReport) -> Option<Algebraic> {
     report.phi_max().cloned()
 }
 
 /// Φ_max of a built-in, in words ("2", "sqrt(2) ≈ 1.4142", "none").
-pub fn limit_text(method: &str) -> String {
+pub(crate) fn limit_text(method: &str) -> String {
     limit_of(&report(method)).as_ref().map(show).unwrap_or_else(|| "none".to_owned())
 }

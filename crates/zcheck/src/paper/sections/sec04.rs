@@ -5,9 +5,11 @@ use poly::{Poly, RootClass, Sym};
 
 use super::common::*;
 use super::ranges;
-use crate::paper::{Claim, Finding, Scope};
+use crate::load::{builtin_derivation, try_builtin_derivation};
+use crate::paper::claim::Claim;
+use crate::paper::finding::{Finding, Scope};
 
-pub fn claims() -> Vec<Claim> {
+pub(crate) fn claims() -> Vec<Claim> {
     let mut s = Section::new("4", "sec04");
     euler_transition(&mut s);
     delay_operator(&mut s);
@@ -25,10 +27,13 @@ pub fn claims() -> Vec<Claim> {
 }
 
 fn euler_transition(s: &mut Section) {
-    let plain =
-        scheme_defect(&derivation("standard_euler"), &ode_matrix(OSCILLATOR), Scheme::Euler);
+    let plain = scheme_defect(
+        &builtin_derivation("standard_euler"),
+        &ode_matrix(OSCILLATOR),
+        Scheme::Euler,
+    );
     let damped = scheme_defect(
-        &derivation("damped_euler_d"),
+        &builtin_derivation("damped_euler_d"),
         &ode_matrix([["-2*D", "-1"], ["1", "0"]]),
         Scheme::Euler,
     );
@@ -37,8 +42,8 @@ fn euler_transition(s: &mut Section) {
         "y_i = (I + TA) y_i z⁻¹ + TB x_i z⁻¹;  y = P y z⁻¹ + Q x z⁻¹ (P is the transition matrix)",
         format!(
             "standard_euler: P = {}; damped_euler_d: P = {}",
-            matrix_text(&derivation("standard_euler").transition_matrix),
-            matrix_text(&derivation("damped_euler_d").transition_matrix)
+            matrix_text(&builtin_derivation("standard_euler").transition_matrix),
+            matrix_text(&builtin_derivation("damped_euler_d").transition_matrix)
         ),
         Finding::all([
             ("standard_euler: P − (I + ΦA) = 0", is_zero_matrix(&plain)),
@@ -52,7 +57,7 @@ fn euler_transition(s: &mut Section) {
 fn characteristic_equation(s: &mut Section) {
     // derive() fails when the z-domain determinant and det(zI − P) differ.
     let agree: Vec<(&str, bool)> = poly::paper_builtin_names()
-        .map(|name| (name, poly::derive(&poly::builtin(name).expect("built-in")).is_ok()))
+        .map(|name| (name, try_builtin_derivation(name).is_ok()))
         .collect();
     let total = agree.len();
     let n_agree = agree.iter().filter(|(_, ok)| *ok).count();
@@ -268,7 +273,7 @@ fn double_roots(s: &mut Section) {
         &start,
         n + 1,
     );
-    let fe = derivation("false_euler");
+    let fe = builtin_derivation("false_euler");
     let p2 = matrix_at(&fe.transition_matrix, &poly::q(2, 1));
     let fe_run = iterate_exact(&p2, &[zero.clone(), one.clone()], n);
     s.push(
@@ -291,7 +296,7 @@ fn double_roots(s: &mut Section) {
 }
 
 fn approach_minus_one(s: &mut Section) {
-    let fe = derivation("false_euler");
+    let fe = builtin_derivation("false_euler");
     let two = poly::q(2, 1);
     let p2 = matrix_at(&fe.transition_matrix, &two);
     let run = iterate_exact(&p2, &[poly::q(0, 1), poly::q(1, 1)], 40);
@@ -418,7 +423,7 @@ fn method_identities(s: &mut Section) {
     let mut found: Vec<(&str, &str, Relation)> = Vec::new();
     for (i, a) in names.iter().enumerate() {
         for b in &names[i + 1..] {
-            let r = equiv::relate(&derivation(a), &derivation(b));
+            let r = equiv::relate(&builtin_derivation(a), &builtin_derivation(b));
             if r.shares_charpoly() {
                 found.push((a, b, r));
             }

@@ -2,9 +2,9 @@
 //! equation, eigenvalues, r² and "always an unstable oscillation".
 
 use super::common::*;
-use crate::paper::Claim;
+use crate::paper::claim::Claim;
 
-pub fn claims() -> Vec<Claim> {
+pub(crate) fn claims() -> Vec<Claim> {
     let mut s = Section::new("5", "sec05");
     ode_claim(
         &mut s,

@@ -5,10 +5,13 @@
 use poly::{Poly, RootClass, Sym};
 
 use super::common::*;
+use super::exact::{p_q, paper};
 use super::{frequency, ranges};
-use crate::paper::{Claim, Finding};
+use crate::load::builtin_derivation;
+use crate::paper::claim::Claim;
+use crate::paper::finding::Finding;
 
-pub fn claims() -> Vec<Claim> {
+pub(crate) fn claims() -> Vec<Claim> {
     let mut s = Section::new("6", "sec06");
     ode_claim(
         &mut s,
@@ -97,7 +100,7 @@ pub fn claims() -> Vec<Claim> {
 }
 
 fn eigenvalues(s: &mut Section) {
-    let d = derivation("damped_euler_d");
+    let d = builtin_derivation("damped_euler_d");
     let (p, q) = p_q(&d);
     let disc = &q - &(&p * &p);
     s.push(
@@ -116,7 +119,7 @@ fn eigenvalues(s: &mut Section) {
 }
 
 fn r_squared(s: &mut Section) {
-    let d = derivation("damped_euler_d");
+    let d = builtin_derivation("damped_euler_d");
     let (_, q) = p_q(&d);
     s.push(
         "r_squared",
@@ -128,11 +131,11 @@ fn r_squared(s: &mut Section) {
 }
 
 fn damping_choice(s: &mut Section) {
-    let d = derivation("damped_euler_d");
+    let d = builtin_derivation("damped_euler_d");
     let (_, q) = p_q(&d);
     let factored = paper("Phi*(Phi - 2*D)");
     let at_half = q.subs(Sym::new("D"), &paper("Phi/2"));
-    let builtin_q = p_q(&derivation("damped_euler")).1;
+    let builtin_q = p_q(&builtin_derivation("damped_euler")).1;
     s.push(
         "damping_choice",
         "... stabilizing the solution of an undamped oscillator numerically, by r1² = 1: D = 0.5Φ",

@@ -7,10 +7,13 @@ use std::f64::consts::PI;
 use poly::RootClass;
 
 use super::common::*;
+use super::exact::{at_phi, p_q, paper};
 use super::{frequency, ranges};
-use crate::paper::{Claim, Finding, Scope};
+use crate::load::builtin_derivation;
+use crate::paper::claim::Claim;
+use crate::paper::finding::{Finding, Scope};
 
-pub fn claims() -> Vec<Claim> {
+pub(crate) fn claims() -> Vec<Claim> {
     let mut s = Section::new("7", "sec07");
     ode_claim(&mut s, "false_euler", "v̇ = −ω0 y, ẏ = ω0 v", OSCILLATOR, Scheme::Consistent);
     stages_claim(
@@ -86,7 +89,7 @@ pub fn claims() -> Vec<Claim> {
 }
 
 fn unit_circle(s: &mut Section) {
-    let (p, q) = p_q(&derivation("false_euler"));
+    let (p, q) = p_q(&builtin_derivation("false_euler"));
     let disc = &q - &(&p * &p);
     s.push(
         "cos_sin",
@@ -105,7 +108,7 @@ fn unit_circle(s: &mut Section) {
 fn stability_limit(s: &mut Section) {
     let r = ranges::report("false_euler");
     let phi_max = ranges::limit_of(&r);
-    let (p, q) = p_q(&derivation("false_euler"));
+    let (p, q) = p_q(&builtin_derivation("false_euler"));
     let im_sq = &q - &(&p * &p);
     let im_zero = ranges::positive_roots(&im_sq);
     // What the paper prints, as numbers: Φ² = 4; T/T0 = 1/π, i.e.

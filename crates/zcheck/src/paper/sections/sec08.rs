@@ -5,9 +5,12 @@
 use poly::{Poly, Sym, Q};
 
 use super::common::*;
-use crate::paper::{Claim, Finding, Scope};
+use super::exact::paper;
+use crate::load::builtin_derivation;
+use crate::paper::claim::Claim;
+use crate::paper::finding::{Finding, Scope};
 
-pub fn claims() -> Vec<Claim> {
+pub(crate) fn claims() -> Vec<Claim> {
     let mut s = Section::new("8", "sec08");
     recursion(&mut s);
     oscillator(&mut s);
@@ -44,7 +47,7 @@ fn recursion(s: &mut Section) {
 }
 
 fn oscillator(s: &mut Section) {
-    let m = derivation("verlet").method;
+    let m = builtin_derivation("verlet").method;
     let step = stage_value(&m, "y");
     let printed = paper("2*(1 - Phi^2/2)*y - y_lag1");
     s.push(
@@ -57,8 +60,8 @@ fn oscillator(s: &mut Section) {
 }
 
 fn same_as_false_euler(s: &mut Section) {
-    let fe = derivation("false_euler");
-    let ve = derivation("verlet");
+    let fe = builtin_derivation("false_euler");
+    let ve = builtin_derivation("verlet");
     let samples = same_samples(&[poly::q(1, 10), poly::q(1, 1), poly::q(2, 1), poly::q(5, 2)], 24);
     s.push(
         "same_as_false_euler",
@@ -75,8 +78,8 @@ fn same_as_false_euler(s: &mut Section) {
 
 /// False Euler's y samples and Verlet's, started from y_{−1} = y_0 − Φ v_0,
 /// agree exactly.
-pub fn same_samples(phis: &[Q], n: usize) -> bool {
-    let fe = derivation("false_euler");
+pub(crate) fn same_samples(phis: &[Q], n: usize) -> bool {
+    let fe = builtin_derivation("false_euler");
     let starts = [
         (poly::q(0, 1), poly::q(1, 1)),
         (poly::q(1, 3), poly::q(-2, 1)),
@@ -93,7 +96,7 @@ pub fn same_samples(phis: &[Q], n: usize) -> bool {
 }
 
 /// Verlet's samples y_0..y_n from y_0 and y_{−1}, Appendix B case 4.
-pub fn verlet_samples(phi: &Q, y0: &Q, y_minus_one: &Q, n: usize) -> Vec<Q> {
+pub(crate) fn verlet_samples(phi: &Q, y0: &Q, y_minus_one: &Q, n: usize) -> Vec<Q> {
     let mut out = vec![y0.clone()];
     let (mut prev, mut cur) = (y_minus_one.clone(), y0.clone());
     for _ in 0..n {
@@ -108,7 +111,7 @@ pub fn verlet_samples(phi: &Q, y0: &Q, y_minus_one: &Q, n: usize) -> Vec<Q> {
 fn initial_velocity(s: &mut Section) {
     let ok = same_samples(&[poly::q(1, 2), poly::q(3, 2)], 16);
     let damped = damped_spring();
-    let verlet_state: Vec<String> = derivation("verlet").method.state().to_vec();
+    let verlet_state: Vec<String> = builtin_derivation("verlet").method.state().to_vec();
     s.push(
         "initial_velocity",
         "Verlet Integration doesn't use the state variable v explicitly. This causes big problems for the \
@@ -172,7 +175,7 @@ fn operations(s: &mut Section) {
 /// the damped variants of the trade-off (Verlet takes v as the secant
 /// (y − y@1)/T), compared by their exact χ with D free, and by their roots
 /// and limits at D = 1/10.
-pub struct DampedComparison {
+pub(crate) struct DampedComparison {
     /// Whether the two χ are the same polynomial in z, Φ and D.
     pub same_chi: bool,
     /// Whether False Euler is strictly better (more accurate or more stable).
@@ -181,14 +184,11 @@ pub struct DampedComparison {
     pub text: String,
 }
 
-pub fn damped_spring() -> DampedComparison {
+pub(crate) fn damped_spring() -> DampedComparison {
     let damping = poly::q(1, 10);
     let phi = 0.1f64;
     let d = 0.1f64;
-    let chi_of = |name: &str| {
-        let m = poly::builtin(name).expect("damped built-in");
-        poly::derive(&m).expect("derivation").charpoly
-    };
+    let chi_of = |name: &str| builtin_derivation(name).charpoly;
     let measure = |chi_d: &Poly| {
         let chi = chi_d.subs(Sym::new("D"), &Poly::constant(damping.clone()));
         let limit = poly::stability::analyze(&chi).ok().and_then(|r| super::ranges::limit_of(&r));

@@ -3,10 +3,13 @@
 //! "always an unstable oscillation", tan Ψ and the frequency.
 
 use super::common::*;
+use super::exact::p_q;
 use super::frequency;
-use crate::paper::{Claim, Finding, Scope};
+use crate::load::builtin_derivation;
+use crate::paper::claim::Claim;
+use crate::paper::finding::{Finding, Scope};
 
-pub fn claims() -> Vec<Claim> {
+pub(crate) fn claims() -> Vec<Claim> {
     let mut s = Section::new("9", "sec09");
     scheme(&mut s);
     scheme_with_input(&mut s);
@@ -69,11 +72,15 @@ pub fn claims() -> Vec<Claim> {
 }
 
 fn scheme(s: &mut Section) {
-    let defect = scheme_defect(&derivation("standard_heun"), &ode_matrix(OSCILLATOR), Scheme::Heun);
+    let defect =
+        scheme_defect(&builtin_derivation("standard_heun"), &ode_matrix(OSCILLATOR), Scheme::Heun);
     s.push(
         "scheme",
         "dy(1) = τ(Ay + Bx); y(1) = y + dy(1); dy(2) = τ(Ay(1) + Bx); dy = 0.5(dy(1) + dy(2)); y = y + dy",
-        format!("standard_heun: P = {}", matrix_text(&derivation("standard_heun").transition_matrix)),
+        format!(
+            "standard_heun: P = {}",
+            matrix_text(&builtin_derivation("standard_heun").transition_matrix)
+        ),
         Finding::same(matrix_text(&defect), matrix_text(&poly::PolyMatrix::zeros(2, 2))),
         "for x = 0 the scheme is y ← (I + τA + (τA)²/2) y; the built-in program (Appendix B case 5) gives \
          exactly that P with A = [[0, −1], [1, 0]] and τ·ω0 = Φ",
@@ -81,12 +88,12 @@ fn scheme(s: &mut Section) {
 }
 
 /// The growth of the amplitude over one true period, r^(2π/Φ).
-pub fn growth_per_period(r_squared: f64, phi: f64) -> f64 {
+pub(crate) fn growth_per_period(r_squared: f64, phi: f64) -> f64 {
     r_squared.powf(std::f64::consts::PI / phi)
 }
 
 fn weak_instability(s: &mut Section) {
-    let (_, q) = p_q(&derivation("standard_heun"));
+    let (_, q) = p_q(&builtin_derivation("standard_heun"));
     let steps = [10.0, 20.0, 50.0, 100.0];
     let growth: Vec<f64> = steps
         .iter()

@@ -5,10 +5,13 @@
 use poly::{PolyMatrix, RootClass};
 
 use super::common::*;
+use super::exact::{p_q, paper};
 use super::{advice, ranges};
-use crate::paper::{Claim, Finding};
+use crate::load::builtin_derivation;
+use crate::paper::claim::Claim;
+use crate::paper::finding::Finding;
 
-pub fn claims() -> Vec<Claim> {
+pub(crate) fn claims() -> Vec<Claim> {
     let mut s = Section::new("10", "sec10");
     ode_claim(&mut s, "false_heun", "v̇ = −ω0 y, ẏ = ω0 v", OSCILLATOR, Scheme::Consistent);
     stages_claim(
@@ -123,7 +126,7 @@ fn z_rows(s: &mut Section) {
     );
     // The printed χ is right although the printed rows are not.
     let from_rows = printed_rows_charpoly();
-    let d = derivation("false_heun");
+    let d = builtin_derivation("false_heun");
     s.append_evidence(&format!(
         "; the printed rows would give χ = {from_rows}, not the printed (and derived) χ = {}, so the \
          section's χ was derived from the correct rows",
@@ -132,7 +135,7 @@ fn z_rows(s: &mut Section) {
 }
 
 /// χ of the matrix the printed rows describe.
-pub fn printed_rows_charpoly() -> poly::Poly {
+pub(crate) fn printed_rows_charpoly() -> poly::Poly {
     let m = PolyMatrix::from_rows(ROWS.iter().map(|r| vec![paper(r.v), paper(r.y)]).collect());
     poly::charpoly_state_route(&m)
 }
@@ -148,7 +151,7 @@ fn charpoly(s: &mut Section) {
 }
 
 fn not_recommended(s: &mut Section) {
-    let (_, q) = p_q(&derivation("false_heun"));
+    let (_, q) = p_q(&builtin_derivation("false_heun"));
     let rows: Vec<String> = [10.0, 20.0, 50.0]
         .iter()
         .map(|&n: &f64| {

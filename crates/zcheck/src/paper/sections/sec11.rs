@@ -4,10 +4,13 @@
 use poly::RootClass;
 
 use super::common::*;
+use super::exact::p_q;
 use super::{advice, frequency, ranges};
-use crate::paper::{Claim, Finding};
+use crate::load::builtin_derivation;
+use crate::paper::claim::Claim;
+use crate::paper::finding::Finding;
 
-pub fn claims() -> Vec<Claim> {
+pub(crate) fn claims() -> Vec<Claim> {
     let mut s = Section::new("11", "sec11");
     ode_claim(&mut s, "semi_false_heun", "v̇ = −ω0 y, ẏ = ω0 v", OSCILLATOR, Scheme::Consistent);
     stages_claim(
@@ -84,7 +87,7 @@ fn always_stable(s: &mut Section) {
     let boundary =
         r.boundary().map(|b| b.to_string().replace('_', " ")).unwrap_or_else(|| "none".to_owned());
     let chi_minus_one =
-        derivation("semi_false_heun").charpoly.subs(poly::Sym::z(), &poly::Poly::int(-1));
+        builtin_derivation("semi_false_heun").charpoly.subs(poly::Sym::z(), &poly::Poly::int(-1));
     let crossings: Vec<String> =
         ranges::positive_roots(&chi_minus_one).iter().map(ranges::show).collect();
     s.push(
@@ -103,7 +106,7 @@ fn always_stable(s: &mut Section) {
 fn damped_small(s: &mut Section) {
     let map = ranges::class_map("semi_false_heun");
     let first = map.first().and_then(|(_, c)| *c);
-    let (p, q) = p_q(&derivation("semi_false_heun"));
+    let (p, q) = p_q(&builtin_derivation("semi_false_heun"));
     let disc = &q - &(&p * &p);
     s.push(
         "damped_small_steps",
@@ -122,8 +125,8 @@ fn damped_small(s: &mut Section) {
 }
 
 fn as_accurate(s: &mut Section) {
-    let d_sf = derivation("semi_false_heun");
-    let d_sh = derivation("standard_heun");
+    let d_sf = builtin_derivation("semi_false_heun");
+    let d_sh = builtin_derivation("standard_heun");
     let psi_sf = frequency::psi_coeffs("semi_false_heun", 5);
     let psi_sh = frequency::psi_coeffs("standard_heun", 5);
     let m_sf = poly::series::modulus_sq_series(&d_sf.charpoly, 6).expect("series");

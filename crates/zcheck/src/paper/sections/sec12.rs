@@ -10,12 +10,15 @@ use std::f64::consts::PI;
 use poly::RootClass;
 
 use super::common::*;
+use super::exact::p_q;
 use super::{advice, ranges};
-use crate::paper::{Claim, Finding, Scope};
+use crate::load::builtin_derivation;
+use crate::paper::claim::Claim;
+use crate::paper::finding::{Finding, Scope};
 use crate::scene::reference::{dopri5, rk4_step, Tolerance};
 use crate::scene::three_body::{self, ThreeBodyConfig};
 
-pub fn claims() -> Vec<Claim> {
+pub(crate) fn claims() -> Vec<Claim> {
     let mut s = Section::new("12", "sec12");
     false_euler(&mut s);
     standard_heun(&mut s);
@@ -31,7 +34,7 @@ fn false_euler(s: &mut Section) {
     let fe = advice::criteria("false_euler");
     let sh = advice::criteria("standard_heun");
     let Finding::Cases { mut cases } = finding else { unreachable!("always() gives cases") };
-    cases.push(crate::paper::Case {
+    cases.push(crate::paper::finding::Case {
         case: "low accuracy: a phase error Ψ − Φ ≠ 0".to_owned(),
         holds: fe.phase.is_some(),
         scope: Scope::Stated,
@@ -55,7 +58,7 @@ fn false_euler(s: &mut Section) {
 }
 
 fn standard_heun(s: &mut Section) {
-    let (_, q) = p_q(&derivation("standard_heun"));
+    let (_, q) = p_q(&builtin_derivation("standard_heun"));
     let limit = ranges::limit_of(&ranges::report("standard_heun"));
     let growth: Vec<(f64, f64)> = [10.0, 20.0, 50.0, 100.0]
         .iter()

@@ -1,4 +1,8 @@
-//! The scene advisor: a spring in game units (Hz), on a fixed tick.
+//! The single-spring advisor: one spring in game units (Hz) on a fixed
+//! tick, answered from the trade-off's model of each method (`zcheck advise
+//! --freq --tick`). A whole scene of masses and springs, or of modes, is
+//! the whole-scene advisor's ([`crate::scene::advisor`]), which `zcheck
+//! advise` also runs on this spring as a one-mode scene.
 //!
 //! A spring of frequency f simulated at a tick rate of `tick` Hz advances by
 //! Φ = 2π·f/tick per tick. With k substeps per tick each substep is Φ/k. For
@@ -6,13 +10,13 @@
 //!
 //! - whether it is stable at Φ itself (Φ < Φ_max, decided exactly);
 //! - the fewest substeps k that make it stable (Φ/k < Φ_max);
-//! - the fewest substeps that meet the tolerance over the scene's duration
+//! - the fewest substeps that meet the tolerance over the spring's duration
 //!   (Φ/k at most the largest admissible Φ, so never at or past Φ_max);
 //! - the cost per tick at that k, in operations and in measured ns;
 //!
 //! and names the cheapest method meeting the tolerance (by ns per tick).
 //!
-//! It models only what the scene requires: an undamped spring, unless a
+//! It models only what the spring requires: an undamped spring, unless a
 //! damping ratio is given; then every method runs on the damped spring and is
 //! judged against the exact damped oscillator's per-step decay e^{−DΦ} and
 //! phase advance Φ√(1 − D²).
@@ -21,17 +25,19 @@ use std::f64::consts::PI;
 
 use serde::Serialize;
 
-use super::rank::Ops;
-use super::{Candidate, Spring, Target, TradeoffError};
+use super::accuracy::{Spring, Target};
+use super::family::{Candidate, MAX_SUBSTEPS};
+use super::rank::{limit_text, Ops};
+use crate::error::Error;
 
-/// A spring in a game scene.
+/// A spring in a game: its frequency, the tick rate, and the target.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-pub struct Scene {
+pub struct SpringScene {
     /// The spring's natural frequency, Hz.
     pub freq_hz: f64,
     /// The simulation tick rate, Hz.
     pub tick_hz: f64,
-    /// How long the scene must stay within tolerance, seconds.
+    /// How long the spring must stay within tolerance, seconds.
     pub duration_s: f64,
     /// Largest accumulated phase error over the duration, radians.
     pub phase_tol: f64,
@@ -41,7 +47,7 @@ pub struct Scene {
     pub damping: Option<f64>,
 }
 
-impl Scene {
+impl SpringScene {
     /// Default duration: one second.
     pub const DEFAULT_DURATION_S: f64 = 1.0;
     /// Default phase tolerance: 0.1 rad accumulated over the duration.
@@ -49,9 +55,9 @@ impl Scene {
     /// Default amplitude tolerance: 1 % over the duration.
     pub const DEFAULT_AMP_TOL: f64 = 0.01;
 
-    /// Checks the scene's numbers; the error names the bad value and what
+    /// Checks the spring's numbers; the error names the bad value and what
     /// was expected.
-    pub fn validate(&self) -> Result<(), TradeoffError> {
+    pub(crate) fn validate(&self) -> Result<(), Error> {
         let positive = [
             ("--freq", self.freq_hz),
             ("--tick", self.tick_hz),
@@ -61,14 +67,12 @@ impl Scene {
         ];
         for (name, x) in positive {
             if !(x.is_finite() && x > 0.0) {
-                return Err(TradeoffError::new(format!(
-                    "{name} {x}: expected a finite number > 0"
-                )));
+                return Err(Error::usage(format!("{name} {x}: expected a finite number > 0")));
             }
         }
         if let Some(d) = self.damping {
             if !(0.0..1.0).contains(&d) {
-                return Err(TradeoffError::new(format!(
+                return Err(Error::usage(format!(
                     "--damping {d}: expected a damping ratio with 0 <= D < 1 (an oscillating spring)"
                 )));
             }
@@ -87,7 +91,7 @@ impl Scene {
     }
 
     /// The accuracy target.
-    pub fn target(&self) -> Target {
+    pub(crate) fn target(&self) -> Target {
         Target { phase_tol: self.phase_tol, amp_tol: self.amp_tol, periods: self.periods() }
     }
 
@@ -97,14 +101,14 @@ impl Scene {
     }
 }
 
-/// One method's answer for a scene.
+/// One method's answer for the spring.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct MethodAdvice {
     /// The method (damped variants by their base name).
     pub method: String,
     /// Exact Φ_max as text ("none": unbounded at every Φ > 0).
     pub phi_max: String,
-    /// Stable at the scene's Φ with one step per tick (Φ < Φ_max).
+    /// Stable at the spring's Φ with one step per tick (Φ < Φ_max).
     pub stable_at_phi: bool,
     /// The fewest substeps k with Φ/k < Φ_max (`None`: never stable).
     pub substeps_stable: Option<u64>,
@@ -127,11 +131,11 @@ pub struct MethodAdvice {
     pub amplitude_drift: Option<f64>,
 }
 
-/// The advisor's answer.
+/// The single-spring advisor's answer.
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct Advice {
-    /// The scene as given.
-    pub scene: Scene,
+pub struct SpringAdvice {
+    /// The spring as given.
+    pub scene: SpringScene,
     /// Φ per tick.
     pub phi: f64,
     /// The duration in periods.
@@ -144,11 +148,11 @@ pub struct Advice {
 
 /// Advises on `scene` among `candidates`, with each candidate's measured
 /// ns per step from `ns_per_step`.
-pub fn advise(
-    scene: &Scene,
+pub fn advise_spring(
+    scene: &SpringScene,
     candidates: &[Candidate],
     mut ns_per_step: impl FnMut(&Candidate) -> f64,
-) -> Result<Advice, TradeoffError> {
+) -> Result<SpringAdvice, Error> {
     scene.validate()?;
     let phi = scene.phi();
     let (spring, target) = (scene.spring(), scene.target());
@@ -161,14 +165,14 @@ pub fn advise(
             .and_then(|cap| c.model.largest_admissible_phi(spring, &target, cap));
         let substeps_tol = admissible.and_then(|a| {
             let guess = (phi / a).ceil();
-            if guess.is_nan() || guess >= super::family::MAX_SUBSTEPS as f64 {
+            if guess.is_nan() || guess >= MAX_SUBSTEPS as f64 {
                 return None;
             }
             let mut k = (guess as u64).max(1);
             // Float rounding in Φ/k: step up until the substep is admissible.
             while !(phi / k as f64 <= a && c.limit.is_below(phi / k as f64)) {
                 k += 1;
-                if k > super::family::MAX_SUBSTEPS {
+                if k > MAX_SUBSTEPS {
                     return None;
                 }
             }
@@ -178,7 +182,7 @@ pub fn advise(
         let per_step = c.cost.program;
         methods.push(MethodAdvice {
             method: c.display.clone(),
-            phi_max: super::rank::limit_text(c),
+            phi_max: limit_text(c),
             stable_at_phi: c.limit.is_below(phi),
             substeps_stable: c.limit.substeps_for(phi),
             substeps_tol,
@@ -202,5 +206,5 @@ pub fn advise(
         })
         .min_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)))
         .map(|(_, _, m)| m.method.clone());
-    Ok(Advice { scene: *scene, phi, periods: scene.periods(), methods, cheapest })
+    Ok(SpringAdvice { scene: *scene, phi, periods: scene.periods(), methods, cheapest })
 }

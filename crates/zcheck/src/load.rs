@@ -1,0 +1,231 @@
+//! Resolving a method argument, once.
+//!
+//! Every command that takes a method reads its argument here, into one
+//! [`LoadedMethod`]: the parsed method, the name shown for it, the kernels a
+//! built-in has, and its derivation, made the first time a command asks for
+//! it and then kept, so that a command derives each method once.
+//!
+//! An argument is a built-in's name, a `.zm` file (`check::load` tells the
+//! two apart, and reads the file), or a Butcher tableau (`.toml`, read by
+//! [`crate::tableau`] and turned into its `.zm` program). The
+//! linear-multistep TOML of the complex-plane issue becomes one more arm of
+//! `resolve`, next to the tableau's.
+//!
+//! The whole-scene advisor asks for the method on the damped spring
+//! (`LoadedMethod::load_damped`): a built-in's damped twin
+//! (`false_euler` → `false_euler_damped`, `standard_euler` →
+//! `damped_euler_d`), shown by its base name and with its system kernel;
+//! a tableau's program with `param D`; a `.zm` file as it is.
+
+use std::collections::HashMap;
+use std::path::Path;
+use std::sync::{Mutex, OnceLock};
+
+use poly::{Derivation, Method};
+
+use crate::error::Error;
+use crate::scene::vector::Kernel;
+use crate::tableau::Tableau;
+
+/// A method argument, resolved: the method and everything the commands
+/// ask of it.
+#[derive(Clone, Debug)]
+pub struct LoadedMethod {
+    method: Method,
+    display: String,
+    hand_kernel: Option<&'static str>,
+    system_kernel: Option<Kernel>,
+    derivation: OnceLock<Result<Derivation, poly::Error>>,
+}
+
+/// The oscillator a tableau's program is written for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Oscillator {
+    /// v' = −ω y, y' = ω v.
+    Undamped,
+    /// v' = −ω (2 D v + y), y' = ω v (`param D`).
+    Damped,
+}
+
+impl LoadedMethod {
+    /// The method `arg` names, shown as `arg`: a built-in, a `.zm` file, or
+    /// a Butcher tableau's program on the undamped oscillator.
+    pub(crate) fn load(arg: &str) -> Result<LoadedMethod, Error> {
+        let method = resolve(arg, Oscillator::Undamped)?;
+        Ok(LoadedMethod::new(method, arg.to_owned(), None, None))
+    }
+
+    /// The method `arg` names, on the damped spring (`param D`), for the
+    /// whole-scene advisor: a built-in's damped twin, shown by its base
+    /// name and with its system kernel; a tableau's program on the damped
+    /// oscillator; anything else as [`LoadedMethod::load`] reads it.
+    pub(crate) fn load_damped(arg: &str) -> Result<LoadedMethod, Error> {
+        match damped_twin(arg) {
+            Some(name) => LoadedMethod::builtin(name),
+            None => {
+                let method = resolve(arg, Oscillator::Damped)?;
+                Ok(LoadedMethod::new(method, arg.to_owned(), None, None))
+            }
+        }
+    }
+
+    /// The built-in `name` as a candidate of a comparison, shown by its
+    /// base name (`false_euler_damped` as `false_euler`, `damped_euler_d`
+    /// as `standard_euler`), with its hand-written kernel and, for one of
+    /// the damped direct methods, its system kernel.
+    pub fn builtin(name: &str) -> Result<LoadedMethod, Error> {
+        let method = poly::builtin(name)?;
+        let hand = poly::all_builtin_names().find(|n| *n == name).map(|n| match n {
+            "damped_euler_d" => "standard_euler_damped",
+            n => n,
+        });
+        let system =
+            if poly::DAMPED_METHODS.contains(&name) { Kernel::for_method(name) } else { None };
+        Ok(LoadedMethod::new(method, base_name(name).to_owned(), hand, system))
+    }
+
+    /// The seven direct methods on the damped spring, the whole-scene
+    /// advisor's default candidates.
+    pub(crate) fn damped_builtins() -> Result<Vec<LoadedMethod>, Error> {
+        poly::DAMPED_METHODS.iter().map(|n| LoadedMethod::builtin(n)).collect()
+    }
+
+    fn new(
+        method: Method,
+        display: String,
+        hand_kernel: Option<&'static str>,
+        system_kernel: Option<Kernel>,
+    ) -> LoadedMethod {
+        LoadedMethod { method, display, hand_kernel, system_kernel, derivation: OnceLock::new() }
+    }
+
+    /// The method.
+    pub fn method(&self) -> &Method {
+        &self.method
+    }
+
+    /// The name shown for it: the argument as typed, or a built-in's base
+    /// name.
+    pub(crate) fn display(&self) -> &str {
+        &self.display
+    }
+
+    /// The name of the hand-written scalar kernel of a built-in candidate
+    /// ([`crate::tradeoff::kernels`]; `damped_euler_d` runs Standard
+    /// Euler's damped kernel), the baseline its compiled step is timed
+    /// against. A user's method has none; a name without a kernel times
+    /// nothing.
+    pub(crate) fn hand_kernel(&self) -> Option<&'static str> {
+        self.hand_kernel
+    }
+
+    /// The kernel that steps a whole scene (all bodies at once), for the
+    /// damped direct methods loaded as built-ins.
+    pub(crate) fn system_kernel(&self) -> Option<Kernel> {
+        self.system_kernel
+    }
+
+    /// The derivation, made on the first call and kept.
+    pub(crate) fn derivation(&self) -> Result<&Derivation, Error> {
+        self.derivation
+            .get_or_init(|| poly::derive(&self.method))
+            .as_ref()
+            .map_err(|e| Error::from(e.clone()))
+    }
+}
+
+/// A built-in method's derivation, derived once per process: the paper's
+/// report and its overview ask for the same few methods many times. The
+/// built-ins are part of the binary, so a failure is a programmer error.
+#[track_caller]
+pub(crate) fn builtin_derivation(name: &str) -> Derivation {
+    try_builtin_derivation(name).unwrap_or_else(|e| panic!("built-in {name}: {e}"))
+}
+
+/// [`builtin_derivation`], with a failure to parse or derive returned (and
+/// not kept): for the claim that every built-in derives, and for a command
+/// that lists built-ins.
+pub(crate) fn try_builtin_derivation(name: &str) -> Result<Derivation, poly::Error> {
+    static CACHE: OnceLock<Mutex<HashMap<String, Derivation>>> = OnceLock::new();
+    let cache = CACHE.get_or_init(Default::default);
+    if let Some(d) = cache.lock().expect("cache lock").get(name) {
+        return Ok(d.clone());
+    }
+    let d = poly::derive(&poly::builtin(name)?)?;
+    cache.lock().expect("cache lock").insert(name.to_owned(), d.clone());
+    Ok(d)
+}
+
+/// The method `arg` names.
+fn resolve(arg: &str, oscillator: Oscillator) -> Result<Method, Error> {
+    // A TOML file is a Butcher tableau. The linear-multistep TOML of the
+    // complex-plane issue is read here too, told apart by its keys.
+    if arg.ends_with(".toml") {
+        let tableau = Tableau::load(Path::new(arg))?;
+        let src = tableau.to_zm(oscillator == Oscillator::Damped);
+        let method = Method::parse(arg, &src).map_err(|e| {
+            Error::method(format!(
+                "{arg}: the program generated from the tableau does not parse: {}",
+                e.message()
+            ))
+        })?;
+        return Ok(method);
+    }
+    Ok(check::load::load_method(arg)?)
+}
+
+/// The damped twin of a built-in's name: itself for a damped built-in,
+/// `damped_euler_d` for Standard Euler, `<name>_damped` where it exists.
+fn damped_twin(arg: &str) -> Option<&'static str> {
+    let wanted = match arg {
+        "standard_euler" => "damped_euler_d".to_owned(),
+        a if poly::DAMPED_METHODS.contains(&a) => a.to_owned(),
+        a => format!("{a}_damped"),
+    };
+    poly::DAMPED_METHODS.iter().copied().find(|n| *n == wanted)
+}
+
+/// A built-in's name without its damping: `false_euler_damped` is
+/// `false_euler`, `damped_euler_d` is `standard_euler`.
+fn base_name(name: &str) -> &str {
+    match name {
+        "damped_euler_d" => "standard_euler",
+        n => n.strip_suffix("_damped").unwrap_or(n),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Each damped twin is found by its base name and shown by it; an
+    /// argument without a twin loads as it is, shown as typed.
+    #[test]
+    fn damped_twins_and_their_names() {
+        for (arg, name, shown) in [
+            ("standard_euler", "damped_euler_d", "standard_euler"),
+            ("damped_euler_d", "damped_euler_d", "standard_euler"),
+            ("false_euler", "false_euler_damped", "false_euler"),
+            ("false_euler_damped", "false_euler_damped", "false_euler"),
+            ("verlet", "verlet_damped", "verlet"),
+        ] {
+            let m = LoadedMethod::load_damped(arg).unwrap();
+            assert_eq!((m.method().name(), m.display()), (name, shown), "{arg}");
+            assert!(m.system_kernel().is_some() && m.hand_kernel().is_some(), "{arg}");
+        }
+        let m = LoadedMethod::load_damped("gauss_legendre_2").unwrap();
+        assert_eq!((m.method().name(), m.display()), ("gauss_legendre_2", "gauss_legendre_2"));
+        assert_eq!((m.hand_kernel(), m.system_kernel()), (None, None));
+        let d = LoadedMethod::builtin("damped_euler_d").unwrap();
+        assert_eq!(d.hand_kernel(), Some("standard_euler_damped"));
+    }
+
+    /// The derivation is made once and kept.
+    #[test]
+    fn derives_once() {
+        let m = LoadedMethod::load("false_euler").unwrap();
+        let first: *const Derivation = m.derivation().unwrap();
+        let second: *const Derivation = m.derivation().unwrap();
+        assert_eq!(first, second);
+    }
+}
