@@ -11,14 +11,22 @@
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
-/// One crate's modules: module path (`["analysis", "stability"]`) to file.
+/// A module path, or a path as written: `["analysis", "stability"]`.
+type ModPath = Vec<String>;
+
+/// One `use`: the module it is written in, the path it names, the name it
+/// binds (`*` for a glob).
+type Use = (ModPath, ModPath, String);
+
+/// One crate's modules: module path to file.
 struct Crate {
-    files: BTreeMap<Vec<String>, PathBuf>,
-    /// Per file: names it defines, and names it imports (alias → path).
+    files: BTreeMap<ModPath, PathBuf>,
+    /// Per file: the names it defines.
     defs: BTreeMap<PathBuf, BTreeSet<String>>,
-    uses: BTreeMap<PathBuf, Vec<(Vec<String>, Vec<String>, String)>>,
+    /// Per file: its `use`s.
+    uses: BTreeMap<PathBuf, Vec<Use>>,
     /// Per file: every path it names, with the module it was named in.
-    paths: BTreeMap<PathBuf, Vec<(Vec<String>, Vec<String>)>>,
+    paths: BTreeMap<PathBuf, Vec<(ModPath, ModPath)>>,
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -219,8 +227,10 @@ impl Crate {
         }
         for path in &all {
             let rel = path.strip_prefix(src_dir).expect("inside src");
-            let mut module: Vec<String> =
-                rel.iter().map(|s| s.to_string_lossy().trim_end_matches(".rs").to_owned()).collect();
+            let mut module: Vec<String> = rel
+                .iter()
+                .map(|s| s.to_string_lossy().trim_end_matches(".rs").to_owned())
+                .collect();
             let last = module.last().cloned().unwrap_or_default();
             if last == "mod" || last == "lib" || last == "main" {
                 module.pop();
@@ -376,7 +386,8 @@ impl Crate {
             return self.resolve(&m, &p, depth + 1).or(Some(file));
         }
         // A glob re-export (`pub use child::*`): the module that defines it.
-        for (m, p, _) in self.uses[&file].iter().filter(|(m, _, name)| *m == module && name == "*") {
+        for (m, p, _) in self.uses[&file].iter().filter(|(m, _, name)| *m == module && name == "*")
+        {
             let mut full = p.clone();
             full.push(item.clone());
             if let Some(target) = self.resolve(m, &full, depth + 1) {
@@ -526,9 +537,11 @@ fn poly_layer(file: &Path) -> usize {
         "error.rs" | "testing.rs" => 0,
         // The front door and the module for advanced use: the top.
         "lib.rs" | "advanced.rs" => POLY_LAYERS.len(),
-        _ => 1 + POLY_LAYERS.iter().position(|l| *l == top).unwrap_or_else(|| {
-            panic!("{} is outside poly's layers {POLY_LAYERS:?}", rel.display())
-        }),
+        _ => {
+            1 + POLY_LAYERS.iter().position(|l| *l == top).unwrap_or_else(|| {
+                panic!("{} is outside poly's layers {POLY_LAYERS:?}", rel.display())
+            })
+        }
     }
 }
 
@@ -544,8 +557,9 @@ fn poly_imports_run_down_its_layers() {
     assert!(upward.is_empty(), "imports that run up poly's layers:\n{}", upward.join("\n"));
     // Every layer is a folder whose module doc says what it owns.
     for layer in &POLY_LAYERS[..POLY_LAYERS.len() - 1] {
-        let doc = std::fs::read_to_string(root().join("crates/poly/src").join(layer).join("mod.rs"))
-            .expect("a layer is a folder with a mod.rs");
+        let doc =
+            std::fs::read_to_string(root().join("crates/poly/src").join(layer).join("mod.rs"))
+                .expect("a layer is a folder with a mod.rs");
         assert!(doc.starts_with("//! Layer "), "{layer}/mod.rs opens with its layer doc");
     }
 }
@@ -606,11 +620,12 @@ fn architecture_names_only_paths_that_exist() {
     let mut missing = Vec::new();
     let mut checked = 0;
     for span in text.split('`').skip(1).step_by(2) {
-        let looks_like_path = (span.contains('/') || span.ends_with(".rs") || span.ends_with(".md"))
-            && !span.contains(' ')
-            && !span.contains("::")
-            && !span.contains('*')
-            && !span.starts_with("--");
+        let looks_like_path =
+            (span.contains('/') || span.ends_with(".rs") || span.ends_with(".md"))
+                && !span.contains(' ')
+                && !span.contains("::")
+                && !span.contains('*')
+                && !span.starts_with("--");
         if !looks_like_path {
             continue;
         }

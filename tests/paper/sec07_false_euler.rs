@@ -89,7 +89,7 @@ fn stability_limit() {
             && at(&im_sq, &poly::q(201, 100)) < poly::q(0, 1)
     );
     // T/T0 = Φ_max/(2π) with Φ_max from the exact analysis, not from the paper.
-    let report = poly::advanced::stability::analyze(&derive("false_euler").charpoly).unwrap();
+    let report = derive("false_euler").stability(&poly::Params::new()).unwrap();
     let phi_max = report.phi_max().expect("False Euler has a limit");
     let phi_max: f64 = phi_max.to_decimal(17).parse().unwrap();
     let t_over_t0 = phi_max / (2.0 * std::f64::consts::PI);

@@ -36,7 +36,7 @@ fn bench(c: &mut Criterion) {
         g.bench_function(name, |b| {
             b.iter(|| {
                 let modal = reduce_with(&scene, Shapes::WhenNeeded).unwrap();
-                let specs: Vec<LoadedMethod> = poly::DAMPED_METHODS
+                let specs: Vec<LoadedMethod> = poly::advanced::builtins::DAMPED_METHODS
                     .iter()
                     .map(|n| LoadedMethod::builtin(n).unwrap())
                     .collect();

@@ -24,7 +24,9 @@ const BATCH_STEPS: u64 = 8;
 /// Built-ins with Φ as their only parameter (the hand kernels' set, and the
 /// implicit ones, which have no hand kernel).
 fn names() -> Vec<&'static str> {
-    poly::builtin_names().filter(|n| poly::builtin(n).unwrap().params().len() == 1).collect()
+    poly::advanced::builtins::builtin_names()
+        .filter(|n| poly::builtin(n).unwrap().params().len() == 1)
+        .collect()
 }
 
 fn step_of(name: &str) -> Step {

@@ -24,7 +24,9 @@ const LANES: usize = 4096;
 const BATCH_STEPS: u64 = 8;
 
 fn names() -> Vec<&'static str> {
-    poly::builtin_names().filter(|n| poly::builtin(n).unwrap().params().len() == 1).collect()
+    poly::advanced::builtins::builtin_names()
+        .filter(|n| poly::builtin(n).unwrap().params().len() == 1)
+        .collect()
 }
 
 fn single(c: &mut Criterion) {

@@ -59,14 +59,16 @@ fn phi_max_text(method: &Method, values: &[(Sym, Q)]) -> String {
     let map = values.iter().filter(|(s, _)| s.name() != "Phi").cloned().collect();
     let Ok(derivation) = poly::derive(method) else { return "not derived".to_owned() };
     let chi = derivation.charpoly.eval_partial(&map);
-    if chi
-        .symbols()
-        .iter()
-        .any(|&s| s.name() != "Phi" && s.name() != "z" && poly::field::generator_of(s).is_none())
-    {
+    if chi.symbols().iter().any(|&s| {
+        s.name() != "Phi" && s.name() != "z" && poly::advanced::field::generator_of(s).is_none()
+    }) {
         return "depends on the parameters other than Phi".to_owned();
     }
-    match poly::stability::analyze_derivation(&derivation, &map) {
+    let params = values
+        .iter()
+        .filter(|(s, _)| s.name() != "Phi")
+        .fold(poly::Params::new(), |p, (s, v)| p.bind(s.name(), v.clone()));
+    match derivation.stability(&params) {
         Ok(r) if r.bounded_for_all() => "none: stable for every Phi > 0".to_owned(),
         Ok(r) => match r.phi_max() {
             Some(m) => format!(
@@ -244,7 +246,7 @@ pub fn emit(method: &Method, lang: Lang, binding: &Binding) -> Result<String, Er
         Binding::Folded(v) => v.clone(),
         Binding::Parametric => Vec::new(),
     };
-    let cost = poly::step_cost(method);
+    let cost = poly::advanced::cost::step_cost(method);
     let c = match lang {
         Lang::Rust => "//",
         Lang::C => "//",
@@ -315,12 +317,12 @@ pub fn emit(method: &Method, lang: Lang, binding: &Binding) -> Result<String, Er
             .assigns()
             .iter()
             .flat_map(|a| a.terms.iter().flat_map(|(_, c)| c.symbols()))
-            .filter(|&s| poly::field::generator_of(s).is_some())
+            .filter(|&s| poly::advanced::field::generator_of(s).is_some())
             .collect();
         generators.sort();
         generators.dedup();
         for g in generators {
-            let value = poly::field::generator_value(g).expect("a generator has a value");
+            let value = poly::advanced::field::generator_value(g).expect("a generator has a value");
             let name = ident(&g.name().to_lowercase());
             let typed = match lang {
                 Lang::Rust => format!("let {name}: f64"),

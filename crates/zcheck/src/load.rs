@@ -75,19 +75,23 @@ impl LoadedMethod {
     /// the damped direct methods, its system kernel.
     pub fn builtin(name: &str) -> Result<LoadedMethod, Error> {
         let method = poly::builtin(name)?;
-        let hand = poly::all_builtin_names().find(|n| *n == name).map(|n| match n {
-            "damped_euler_d" => "standard_euler_damped",
-            n => n,
-        });
-        let system =
-            if poly::DAMPED_METHODS.contains(&name) { Kernel::for_method(name) } else { None };
+        let hand =
+            poly::advanced::builtins::all_builtin_names().find(|n| *n == name).map(|n| match n {
+                "damped_euler_d" => "standard_euler_damped",
+                n => n,
+            });
+        let system = if poly::advanced::builtins::DAMPED_METHODS.contains(&name) {
+            Kernel::for_method(name)
+        } else {
+            None
+        };
         Ok(LoadedMethod::new(method, base_name(name).to_owned(), hand, system))
     }
 
     /// The seven direct methods on the damped spring, the whole-scene
     /// advisor's default candidates.
     pub(crate) fn damped_builtins() -> Result<Vec<LoadedMethod>, Error> {
-        poly::DAMPED_METHODS.iter().map(|n| LoadedMethod::builtin(n)).collect()
+        poly::advanced::builtins::DAMPED_METHODS.iter().map(|n| LoadedMethod::builtin(n)).collect()
     }
 
     fn new(
@@ -179,10 +183,10 @@ fn resolve(arg: &str, oscillator: Oscillator) -> Result<Method, Error> {
 fn damped_twin(arg: &str) -> Option<&'static str> {
     let wanted = match arg {
         "standard_euler" => "damped_euler_d".to_owned(),
-        a if poly::DAMPED_METHODS.contains(&a) => a.to_owned(),
+        a if poly::advanced::builtins::DAMPED_METHODS.contains(&a) => a.to_owned(),
         a => format!("{a}_damped"),
     };
-    poly::DAMPED_METHODS.iter().copied().find(|n| *n == wanted)
+    poly::advanced::builtins::DAMPED_METHODS.iter().copied().find(|n| *n == wanted)
 }
 
 /// A built-in's name without its damping: `false_euler_damped` is

@@ -1,5 +1,5 @@
 //! The exact stability map of a method in (Φ, D): the critical curves of
-//! `poly::region`, traced exactly, over a grid of exact root classes, each
+//! `poly::advanced::region`, traced exactly, over a grid of exact root classes, each
 //! grid point cross-checked by the numeric witnesses of `check`
 //! (eigenvalues of the numeric transition matrix by nalgebra and faer
 //! against the exact roots).
@@ -15,7 +15,7 @@ use std::path::Path;
 use check::numeric::{f64_to_q, q_to_f64, Params, ParamsF64};
 use check::witness::Witnesses;
 use plotters::prelude::*;
-use poly::region::{region, CurveKind, PhiLimit, Unconditional};
+use poly::advanced::region::{CurveKind, PhiLimit, Unconditional};
 use poly::{RootClass, Sym, Q};
 use rayon::prelude::*;
 use serde::Serialize;
@@ -130,8 +130,8 @@ pub(crate) fn map(loaded: &LoadedMethod, w: &MapWindow) -> Result<StabilityMap, 
         )));
     }
     let derivation = loaded.derivation()?;
-    let chi = &derivation.charpoly;
-    let r = region(chi, d_sym)
+    let r = derivation
+        .region(d_sym)
         .map_err(|e| Error::from(e).context(format!("method {}", method.name())))?;
     let witnesses = Witnesses::from_derivation(derivation);
     let n = w.grid.max(2);

@@ -3,12 +3,12 @@
 //!
 //! Appendix A derives Ψ(Φ) only for Damped/False Euler and Standard Heun.
 //! This table extends it to every method the paper analyses, from the exact
-//! characteristic polynomial (`poly::series`), next to the exact limit
-//! (`poly::stability`) and the operation count (`poly::step_cost`), so a
+//! characteristic polynomial (`poly::advanced::series`), next to the exact limit
+//! (`poly::advanced::stability`) and the operation count (`poly::advanced::cost::step_cost`), so a
 //! reader can compare the paper's four criteria (stability, frequency
 //! deviation, calculations per step, largest step) in one place.
 
-use poly::series::{self, LeadingTerm};
+use poly::advanced::series::{self, LeadingTerm};
 use poly::{Derivation, Poly, Q};
 use serde::Serialize;
 
@@ -64,7 +64,10 @@ fn leading(t: Option<LeadingTerm>) -> String {
     match t {
         None => "0".to_owned(),
         Some(t) => {
-            let p = Poly::term(t.coeff, poly::Monomial::power(poly::Sym::phi(), t.order as u32));
+            let p = Poly::term(
+                t.coeff,
+                poly::advanced::Monomial::power(poly::Sym::phi(), t.order as u32),
+            );
             p.to_string()
         }
     }
@@ -81,7 +84,7 @@ pub(crate) fn summary_of(d: &Derivation, order: usize) -> Result<MethodSummary, 
     let chi = &d.charpoly;
     // From the derivation: a repeated root on the circle is decided from P
     // (Gauss–Legendre's P is −I at Φ = 2√3: bounded through it).
-    let report = poly::stability::analyze_derivation(d, &Default::default())?;
+    let report = d.stability(&poly::Params::new())?;
     let (phi_max_exact, phi_max) = match report.phi_max() {
         Some(a) => {
             let exact = a.closed_form().unwrap_or_else(|| a.describe("Phi"));
@@ -96,7 +99,7 @@ pub(crate) fn summary_of(d: &Derivation, order: usize) -> Result<MethodSummary, 
     };
     // The series are computed over Q: a χ that keeps an exact constant
     // (sqrt(2) in SDIRK's) says so instead of failing on it.
-    let constants = poly::field::has_generators(chi);
+    let constants = poly::advanced::field::has_generators(chi);
     let over_q =
         || ("n/a (χ keeps an exact constant: series over Q only)".to_owned(), "n/a".to_owned());
     let (psi_series, phase_error) = match series::psi_series_scaled(chi, order) {
@@ -120,7 +123,7 @@ pub(crate) fn summary_of(d: &Derivation, order: usize) -> Result<MethodSummary, 
         }
         Err(e) => (format!("n/a ({e})"), "n/a".to_owned()),
     };
-    let cost = poly::step_cost(method);
+    let cost = poly::advanced::cost::step_cost(method);
     Ok(MethodSummary {
         method: method.name().to_owned(),
         charpoly: chi.to_string(),
@@ -141,7 +144,10 @@ pub(crate) fn summary_of(d: &Derivation, order: usize) -> Result<MethodSummary, 
 /// The overview of the paper's seven methods (derived once per process,
 /// with the paper's claims).
 pub fn paper_overview(order: usize) -> Result<Vec<MethodSummary>, Error> {
-    poly::PAPER_METHODS.iter().map(|name| summary_of(&builtin_derivation(name), order)).collect()
+    poly::advanced::builtins::PAPER_METHODS
+        .iter()
+        .map(|name| summary_of(&builtin_derivation(name), order))
+        .collect()
 }
 
 /// The overview as a Markdown table (numbers rounded to 4 decimals). When

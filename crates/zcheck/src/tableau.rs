@@ -11,6 +11,10 @@
 //! c = ["1/2 - sqrt(3)/6", "1/2 + sqrt(3)/6"]  # optional, checked
 //! ```
 //!
+//! The meaning of a tableau is `poly`'s (`poly::advanced::tableau`): this
+//! module reads the TOML file and blames every mistake on its line and
+//! column.
+//!
 //! Every entry is exact: an integer, or a string holding an exact number or
 //! a constant expression in `+ - * / ^ ( )` with `sqrt(N)`, `cbrt(N)` and
 //! `root(K, N)` for positive integers N (TOML floats are binary, so `0.1`
@@ -25,16 +29,16 @@
 //! any other `A` (diagonally or fully implicit) declares every stage an
 //! `unknown`, one linear system solved exactly.
 
-use std::fmt::Write as _;
 use std::ops::Range;
 use std::path::Path;
 
+use poly::advanced::tableau::{self as exact, method_ident, Exact};
 use serde::Deserialize;
 use toml::Spanned;
 
-/// The most stages read: beyond any published method, and a bound on the
-/// size of the generated program.
-pub(crate) const MAX_STAGES: usize = 64;
+pub(crate) use poly::advanced::tableau::MAX_STAGES;
+
+use crate::error::{line_col, Error};
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -46,40 +50,11 @@ struct Raw {
     c: Option<Spanned<Vec<Spanned<toml::Value>>>>,
 }
 
-/// One exact entry: its `.zm` expression (radicals replaced by constant
-/// names) and whether it is exactly zero.
-#[derive(Clone, Debug)]
-struct Entry {
-    expr: String,
-    zero: bool,
-}
-
-/// A Butcher tableau read exactly.
+/// A Butcher tableau read exactly from a file.
 #[derive(Clone, Debug)]
 pub struct Tableau {
-    name: String,
     source: String,
-    a: Vec<Vec<Entry>>,
-    b: Vec<Entry>,
-    /// `Some(rows)` when `c` was given and differs from A's row sums there.
-    c_mismatch: Option<Vec<usize>>,
-    c_given: bool,
-    /// `(name, radical)`: `("sqrt_3", "sqrt(3)")`, in order of appearance.
-    constants: Vec<(String, String)>,
-}
-
-use crate::error::{line_col, Error};
-
-/// A name fit for a `.zm` method: letters, digits and `_`, not starting
-/// with a digit.
-fn method_ident(s: &str) -> String {
-    let s: String =
-        s.chars().map(|c| if c.is_ascii_alphanumeric() || c == '_' { c } else { '_' }).collect();
-    if s.is_empty() || s.starts_with(|c: char| c.is_ascii_digit()) {
-        format!("rk_{s}")
-    } else {
-        s
-    }
+    tableau: exact::Tableau,
 }
 
 impl Tableau {
@@ -159,11 +134,7 @@ impl Tableau {
                 ));
             }
         }
-        let mut constants: Vec<(String, String)> = Vec::new();
-        let entry = |v: &Spanned<toml::Value>,
-                     what: String,
-                     constants: &mut Vec<(String, String)>|
-         -> Result<Entry, Error> {
+        let entry = |v: &Spanned<toml::Value>, what: String| -> Result<Exact, Error> {
             let at = |m: String| err(Some(v.span()), format!("{what}: {m}"));
             let text = match v.get_ref() {
                 toml::Value::Integer(i) => i.to_string(),
@@ -181,35 +152,30 @@ impl Tableau {
                     )))
                 }
             };
-            let expr = replace_radicals(&text, constants).map_err(at)?;
-            let zero = probe(&expr, constants).map_err(at)?;
-            Ok(Entry { expr, zero })
+            Exact::parse(&text).map_err(|e| at(e.message().to_owned()))
         };
         let mut a = Vec::with_capacity(s);
         for (i, row) in raw.a.get_ref().iter().enumerate() {
             let mut r = Vec::with_capacity(s);
             for (j, v) in row.get_ref().iter().enumerate() {
-                r.push(entry(v, format!("A[{}][{}]", i + 1, j + 1), &mut constants)?);
+                r.push(entry(v, format!("A[{}][{}]", i + 1, j + 1))?);
             }
             a.push(r);
         }
         let mut b = Vec::with_capacity(s);
         for (i, v) in raw.b.get_ref().iter().enumerate() {
-            b.push(entry(v, format!("b[{}]", i + 1), &mut constants)?);
+            b.push(entry(v, format!("b[{}]", i + 1))?);
         }
-        let mut c_mismatch = None;
-        if let Some(c) = &raw.c {
-            let mut rows = Vec::new();
-            for (i, v) in c.get_ref().iter().enumerate() {
-                let ci = entry(v, format!("c[{}]", i + 1), &mut constants)?;
-                let sum: Vec<String> = a[i].iter().map(|e| format!("({})", e.expr)).collect();
-                let diff = format!("({}) - ({})", ci.expr, sum.join(" + "));
-                if !probe(&diff, &constants).map_err(|m| err(Some(v.span()), m))? {
-                    rows.push(i + 1);
-                }
-            }
-            c_mismatch = Some(rows);
-        }
+        let c = match &raw.c {
+            Some(c) => Some(
+                c.get_ref()
+                    .iter()
+                    .enumerate()
+                    .map(|(i, v)| entry(v, format!("c[{}]", i + 1)))
+                    .collect::<Result<Vec<_>, _>>()?,
+            ),
+            None => None,
+        };
         let name = match &raw.name {
             Some(n) => {
                 let id = method_ident(n.get_ref());
@@ -226,220 +192,25 @@ impl Tableau {
             }
             None => method_ident(stem),
         };
-        Ok(Tableau {
-            name,
-            source: path.to_owned(),
-            a,
-            b,
-            c_given: raw.c.is_some(),
-            c_mismatch,
-            constants,
-        })
+        // The shape and the name were checked above, with their locations.
+        let tableau =
+            exact::Tableau::new(&name, a, b, c).map_err(|e| err(None, e.message().to_owned()))?;
+        Ok(Tableau { source: path.to_owned(), tableau })
     }
 
     /// The number of stages.
     pub fn stages(&self) -> usize {
-        self.b.len()
+        self.tableau.stages()
     }
 
     /// Whether `A` is strictly lower triangular (an explicit method).
     pub fn is_explicit(&self) -> bool {
-        self.a.iter().enumerate().all(|(i, row)| row[i..].iter().all(|e| e.zero))
+        self.tableau.is_explicit()
     }
 
     /// The `.zm` program of the method on the oscillator, or on the damped
     /// oscillator (`param D`) when `damped`.
     pub fn to_zm(&self, damped: bool) -> String {
-        let s = self.stages();
-        let explicit = self.is_explicit();
-        let mut out = String::new();
-        let kind = if explicit {
-            "explicit"
-        } else if self.a.iter().enumerate().all(|(i, row)| row[i + 1..].iter().all(|e| e.zero)) {
-            "diagonally implicit"
-        } else {
-            "fully implicit"
-        };
-        let w = |out: &mut String, line: String| writeln!(out, "{line}").expect("string");
-        w(
-            &mut out,
-            format!(
-                "# Generated by `zcheck from-tableau` from {}: {s} stages, {kind}.",
-                self.source
-            ),
-        );
-        w(
-            &mut out,
-            if damped {
-                "# Test equation v' = -w0 (2 D v + y), y' = w0 v; stage slopes k{i}v, k{i}y."
-                    .to_owned()
-            } else {
-                "# Test equation v' = -w0 y, y' = w0 v; stage slopes k{i}v, k{i}y.".to_owned()
-            },
-        );
-        match &self.c_mismatch {
-            Some(rows) if rows.is_empty() => {
-                w(&mut out, "# c is A's row sums (c_i = sum_j a_ij), exactly.".to_owned())
-            }
-            Some(rows) => w(
-                &mut out,
-                format!(
-                    "# c differs from A's row sums in row(s) {:?}; an autonomous equation never reads c.",
-                    rows
-                ),
-            ),
-            None if !self.c_given => {}
-            None => {}
-        }
-        w(&mut out, format!("method {}", self.name));
-        w(&mut out, "state v y".to_owned());
-        if damped {
-            w(&mut out, "param D".to_owned());
-        }
-        for (name, radical) in &self.constants {
-            w(&mut out, format!("const {name} = {radical}"));
-        }
-        if !explicit {
-            let names: Vec<String> =
-                (1..=s).flat_map(|i| [format!("k{i}v"), format!("k{i}y")]).collect();
-            w(&mut out, format!("unknown {}", names.join(" ")));
-        }
-        // Σ_j a_ij k{j}x, or None when the row is zero.
-        let combo = |coefs: &[Entry], x: char| -> Option<String> {
-            let terms: Vec<String> = coefs
-                .iter()
-                .enumerate()
-                .filter(|(_, e)| !e.zero)
-                .map(|(j, e)| {
-                    let c = e.expr.trim();
-                    let plain = c.chars().all(|ch| ch.is_ascii_digit() || ch == '/' || ch == '.');
-                    match c {
-                        "1" => format!("k{}{x}", j + 1),
-                        _ if plain => format!("{c}*k{}{x}", j + 1),
-                        _ => format!("({c})*k{}{x}", j + 1),
-                    }
-                })
-                .collect();
-            (!terms.is_empty()).then(|| terms.join(" + "))
-        };
-        for (i, row) in self.a.iter().enumerate() {
-            let k = i + 1;
-            // The stage's state: x + Φ Σ_j a_ij k_j, or x when the row is zero.
-            let at = |x: char| match combo(row, x) {
-                Some(c) => (format!("{x} + Phi*({c})"), true),
-                None => (x.to_string(), false),
-            };
-            let ((vs, v_sum), (ys, y_sum)) = (at('v'), at('y'));
-            let paren = |s: &str, sum: bool| if sum { format!("({s})") } else { s.to_owned() };
-            if damped {
-                w(&mut out, format!("k{k}v = -(2*D*{} + {ys})", paren(&vs, v_sum)));
-            } else {
-                w(&mut out, format!("k{k}v = -{}", paren(&ys, y_sum)));
-            }
-            w(&mut out, format!("k{k}y = {vs}"));
-        }
-        for x in ['v', 'y'] {
-            match combo(&self.b, x) {
-                Some(c) => w(&mut out, format!("{x} = {x} + Phi*({c})")),
-                None => w(&mut out, format!("{x} = {x}")),
-            }
-        }
-        out
+        self.tableau.to_zm(&self.source, damped)
     }
-}
-
-/// Replaces each `sqrt(N)`, `cbrt(N)` and `root(K, N)` by a constant name,
-/// declaring it in `constants` once; refuses any other name.
-fn replace_radicals(text: &str, constants: &mut Vec<(String, String)>) -> Result<String, String> {
-    let chars: Vec<char> = text.chars().collect();
-    let mut out = String::new();
-    let mut i = 0;
-    while i < chars.len() {
-        let ch = chars[i];
-        if ch.is_ascii_alphabetic() || ch == '_' {
-            let start = i;
-            while i < chars.len() && (chars[i].is_ascii_alphanumeric() || chars[i] == '_') {
-                i += 1;
-            }
-            let word: String = chars[start..i].iter().collect();
-            let mut j = i;
-            while j < chars.len() && chars[j] == ' ' {
-                j += 1;
-            }
-            if !matches!(word.as_str(), "sqrt" | "cbrt" | "root") || chars.get(j) != Some(&'(') {
-                return Err(format!(
-                    "unexpected name `{word}` in an entry: expected numbers, + - * / ^ ( ) and \
-                     sqrt(N), cbrt(N) or root(K, N)"
-                ));
-            }
-            let close = chars[j..]
-                .iter()
-                .position(|&c| c == ')')
-                .map(|p| j + p)
-                .ok_or_else(|| format!("`{word}(` is not closed: expected `)`"))?;
-            let inner: String = chars[j + 1..close].iter().collect();
-            let args: Vec<&str> = inner.split(',').map(str::trim).collect();
-            let positive = |a: &str| -> Result<u64, String> {
-                a.parse::<u64>().ok().filter(|&n| n > 0).ok_or_else(|| {
-                    format!("{word}({inner}): expected a positive integer literal, found `{a}`")
-                })
-            };
-            let (k, n) = match (word.as_str(), args.as_slice()) {
-                ("sqrt", [n]) => (2, positive(n)?),
-                ("cbrt", [n]) => (3, positive(n)?),
-                ("root", [k, n]) => {
-                    let k = positive(k)?;
-                    if k < 2 {
-                        return Err(format!("root({inner}): expected a root index K >= 2"));
-                    }
-                    (k, positive(n)?)
-                }
-                _ => {
-                    return Err(format!(
-                        "{word}({inner}): expected {}",
-                        if word == "root" { "two arguments, root(K, N)" } else { "one argument" }
-                    ))
-                }
-            };
-            let (name, radical) = match k {
-                2 => (format!("sqrt_{n}"), format!("sqrt({n})")),
-                3 => (format!("cbrt_{n}"), format!("cbrt({n})")),
-                _ => (format!("root_{k}_{n}"), format!("root({k}, {n})")),
-            };
-            if !constants.iter().any(|(c, _)| *c == name) {
-                constants.push((name.clone(), radical));
-            }
-            out.push_str(&name);
-            i = close + 1;
-        } else if ch.is_ascii_digit() || " \t+-*/^().".contains(ch) {
-            out.push(ch);
-            i += 1;
-        } else {
-            return Err(format!(
-                "unexpected character {} in an entry: expected numbers, + - * / ^ ( ) and \
-                 sqrt(N), cbrt(N) or root(K, N)",
-                if ch.is_control() || !ch.is_ascii() {
-                    format!("U+{:04X}", ch as u32)
-                } else {
-                    format!("`{ch}`")
-                }
-            ));
-        }
-    }
-    if out.trim().is_empty() {
-        return Err("the entry is empty: expected an exact number".to_owned());
-    }
-    Ok(out)
-}
-
-/// Checks one expression with the `.zm` parser (exact, constants included)
-/// and says whether it is exactly zero.
-fn probe(expr: &str, constants: &[(String, String)]) -> Result<bool, String> {
-    let mut src = String::from("method probe\nstate v\n");
-    for (name, radical) in constants {
-        writeln!(src, "const {name} = {radical}").expect("string");
-    }
-    writeln!(src, "v = ({expr})*v").expect("string");
-    let m = poly::Method::parse("entry", &src).map_err(|e| e.message().to_owned())?;
-    Ok(m.assigns().last().is_none_or(|a| a.terms.is_empty()))
 }

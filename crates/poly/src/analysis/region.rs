@@ -221,11 +221,16 @@ impl Region {
         Ok(self.class_at(phi, d)?.is_bounded())
     }
 
+    /// The whole stability analysis over Φ at a rational value of the
+    /// parameter, from the derivation (so with P).
+    pub fn stability_at(&self, d: &Q) -> Result<crate::StabilityReport, StabilityError> {
+        self.derivation.stability(&Params::new().bind(self.param.name(), d.clone()))
+    }
+
     /// Φ_max at a rational D, exactly (boundedness at a repeated root on
     /// the unit circle decided from the transition matrix).
     pub fn phi_max(&self, d: &Q) -> Result<PhiLimit, StabilityError> {
-        let params = Params::new().bind(self.param.name(), d.clone());
-        let r = self.derivation.stability(&params)?;
+        let r = self.stability_at(d)?;
         Ok(match r.stability {
             Stability::BoundedForAllPhi => PhiLimit::Every,
             Stability::Limited { phi_max, .. } => PhiLimit::Below(phi_max),

@@ -98,7 +98,7 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
         Some(d) => family::damped_candidates(&damped, &d.value)?,
         None => family::undamped_family()?
             .into_iter()
-            .filter(|c| poly::PAPER_METHODS.contains(&c.name.as_str()))
+            .filter(|c| poly::advanced::builtins::PAPER_METHODS.contains(&c.name.as_str()))
             .collect(),
     };
     let d = scene.damping.unwrap_or(0.0);

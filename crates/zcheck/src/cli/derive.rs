@@ -40,15 +40,16 @@ pub(crate) fn to_json(d: &Derivation) -> serde_json::Value {
     let rows = |mat: &poly::PolyMatrix, f: &dyn Fn(&Poly) -> String| -> Vec<Vec<String>> {
         (0..mat.rows()).map(|i| mat.row(i).iter().map(f).collect()).collect()
     };
-    let z_rows = |mat: &poly::SparsePolyMatrix, f: &dyn Fn(&Poly) -> String| -> Vec<Vec<String>> {
-        (0..mat.rows()).map(|i| mat.row(i).iter().map(f).collect()).collect()
-    };
+    let z_rows =
+        |mat: &poly::advanced::SparsePolyMatrix, f: &dyn Fn(&Poly) -> String| -> Vec<Vec<String>> {
+            (0..mat.rows()).map(|i| mat.row(i).iter().map(f).collect()).collect()
+        };
     let mut v = json!({
         "method": m.name(),
         "state": m.state(),
         "params": m.params().iter().map(|p| p.name()).collect::<Vec<_>>(),
         "order": m.order(),
-        "slots": m.slots().iter().map(|&(v, l)| m.operand_name(poly::Operand::Start { var: v, lag: l })).collect::<Vec<_>>(),
+        "slots": m.slots().iter().map(|&(v, l)| m.operand_name(poly::advanced::Operand::Start { var: v, lag: l })).collect::<Vec<_>>(),
         "program": m.to_string(),
         "z_matrix": z_rows(&d.z_matrix, &Derivation::z_entry_string),
         "transition_matrix": rows(&d.transition_matrix, &|p| p.to_string()),
@@ -89,7 +90,7 @@ pub(crate) fn text(d: &Derivation) -> String {
     let slots: Vec<String> = m
         .slots()
         .iter()
-        .map(|&(v, l)| m.operand_name(poly::Operand::Start { var: v, lag: l }))
+        .map(|&(v, l)| m.operand_name(poly::advanced::Operand::Start { var: v, lag: l }))
         .collect();
     if d.p_denominator.is_one() {
         let _ = writeln!(s, "\nP, on ({}):", slots.join(", "));

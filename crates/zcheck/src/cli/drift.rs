@@ -11,7 +11,7 @@ use check::drift::{Run, Study};
 use check::kernel::{Kernel, Real};
 use check::numeric::{q_to_f64, Params, ParamsF64, Step};
 use num_traits::Zero;
-use poly::invariant::{conserved_form, form_text, is_positive_definite};
+use poly::advanced::invariant::{conserved_form, form_text, is_positive_definite};
 use poly::{Derivation, Sym, Q};
 use serde_json::{json, Value};
 

@@ -1,9 +1,9 @@
 //! `zcheck equiv A B`: the strongest identity between two methods (built-in
-//! names or `.zm` paths), decided exactly by `poly::equiv`.
+//! names or `.zm` paths), decided exactly by `poly::advanced::equiv`.
 
 use std::process::ExitCode;
 
-use poly::equiv::{self, Relation};
+use poly::advanced::equiv::{self, Relation};
 use serde_json::json;
 
 use super::format::{Format, TEXT_JSON};
@@ -26,7 +26,7 @@ pub(crate) fn describe(r: &Relation, a: &poly::Method, b: &poly::Method) -> Stri
     let slot = |m: &poly::Method, k: usize| {
         m.slots()
             .get(k)
-            .map(|&(v, l)| m.operand_name(poly::Operand::Start { var: v, lag: l }))
+            .map(|&(v, l)| m.operand_name(poly::advanced::Operand::Start { var: v, lag: l }))
             .unwrap_or_else(|| format!("slot {k}"))
     };
     let mapping = |perm: &[usize]| {

@@ -65,8 +65,11 @@ pub(crate) fn with_sources(e: &Error) -> String {
 /// line feeds) as `U+XXXX`, and at most [`MAX_ERROR_BYTES`]. A failure to
 /// write stderr is ignored: there is nowhere left to report it.
 pub(crate) fn print_error(text: &str) {
-    let lines: Vec<String> =
-        text.trim_end().split('\n').map(|l| poly::show_invisible(l).into_owned()).collect();
+    let lines: Vec<String> = text
+        .trim_end()
+        .split('\n')
+        .map(|l| poly::advanced::show_invisible(l).into_owned())
+        .collect();
     let mut shown = lines.join("\n");
     if shown.len() > MAX_ERROR_BYTES {
         let mut cut = MAX_ERROR_BYTES;

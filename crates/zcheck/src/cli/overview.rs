@@ -40,7 +40,7 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
             .collect::<Result<Vec<_>, Error>>()?
     };
     if args.implicit {
-        for name in poly::IMPLICIT_METHODS {
+        for name in poly::advanced::builtins::IMPLICIT_METHODS {
             rows.push(crate::overview::summary_of(&try_builtin_derivation(name)?, args.order)?);
         }
     }

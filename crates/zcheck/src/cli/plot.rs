@@ -52,7 +52,7 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
         )));
     }
     let names: Vec<String> = if args.methods.is_empty() {
-        poly::PAPER_METHODS.iter().map(|s| s.to_string()).collect()
+        poly::advanced::builtins::PAPER_METHODS.iter().map(|s| s.to_string()).collect()
     } else {
         args.methods.clone()
     };

@@ -1,7 +1,7 @@
 //! `zcheck stability`: the exact stability limit, the boundary kind and
 //! every class change of a method over Φ > 0.
 //!
-//! The analysis is `poly::stability::analyze`, exact throughout; this file
+//! The analysis is `poly::advanced::stability::analyze`, exact throughout; this file
 //! only substitutes `--param` values and prints. Numbers are shown two ways:
 //! the exact form (closed form, or defining polynomial and an isolating
 //! interval narrowed to 1e-15) and an f64 taken from the exact decimal
@@ -11,8 +11,8 @@ use std::collections::HashMap;
 use std::fmt::Write as _;
 use std::process::ExitCode;
 
-use poly::stability::{analyze_derivation, Stability, StabilityReport};
 use poly::{Algebraic, Sym, Q};
+use poly::{Stability, StabilityReport};
 use serde_json::{json, Value};
 
 use super::format::{Format, TEXT_JSON};
@@ -41,15 +41,18 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     let method = &derivation.method;
     values::check_declared(&args.params, &[method])?;
     let mut values = HashMap::new();
+    let mut params = poly::Params::new();
     let mut shown = Vec::new();
     for p in &args.params {
         values.insert(Sym::new(&p.name), p.value.value.clone());
+        params.insert(&p.name, p.value.value.clone());
         shown.push((p.name.clone(), p.value.value.clone()));
     }
     let chi = derivation.charpoly.eval_partial(&values);
     // With the transition matrix, boundedness at a repeated root on the
     // circle is decided from P's Jordan structure (Merson at 2√3: P = I).
-    let report = analyze_derivation(derivation, &values)
+    let report = derivation
+        .stability(&params)
         .map_err(|e| Error::from(e).context(format!("method {}", method.name())))?;
     let facts = ImplicitFacts::of(derivation, &chi)?;
     let out = match args.format {
@@ -90,8 +93,8 @@ impl ImplicitFacts {
             return Ok(None);
         }
         let lead = chi.coeffs_in(Sym::z()).last().cloned().unwrap_or_default();
-        let singular = poly::singular_points(derivation);
-        let limit = poly::field_stability::limit_at_infinity(chi)?;
+        let singular = derivation.singular_points();
+        let limit = poly::advanced::stability::limit_at_infinity(chi)?;
         Ok(Some(ImplicitFacts { lead: lead.to_string(), singular, limit: limit.name() }))
     }
 
@@ -282,6 +285,11 @@ fn text(
             let _ = writeln!(s, "stable for 0 < Phi < {}", names.show(m));
             let at = if *bounded_at_phi_max { "bounded" } else { "unbounded" };
             let _ = writeln!(s, "at the limit: {b}; the limit itself is {at}");
+        }
+        // Not from a derivation's analysis, which has P; kept total.
+        Stability::UndecidedAt { at, boundary: b } => {
+            let _ = writeln!(s, "stable for 0 < Phi < {}", names.show(at));
+            let _ = writeln!(s, "at the limit: {b}; the limit itself is undecided without P");
         }
     }
     s += &classes(r, names);

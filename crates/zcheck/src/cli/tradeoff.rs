@@ -65,7 +65,7 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     let mut candidates = family::undamped_family()?;
     let mut wanted = args.methods.clone();
     if args.implicit {
-        for name in poly::IMPLICIT_METHODS {
+        for name in poly::advanced::builtins::IMPLICIT_METHODS {
             // BDF2 is a two-step method (χ of degree 4): no principal pair
             // model, so it is left to `zcheck overview` and `stability`.
             let second_order = poly::builtin(name)?.order() == 2;
@@ -97,7 +97,7 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
         let direct: Vec<(&Candidate, f64)> = candidates
             .iter()
             .zip(&ns)
-            .filter(|(c, _)| poly::PAPER_METHODS.contains(&c.name.as_str()))
+            .filter(|(c, _)| poly::advanced::builtins::PAPER_METHODS.contains(&c.name.as_str()))
             .map(|(c, &n)| (c, n))
             .collect();
         figure::draw(path, &direct, Spring::UNDAMPED, &target)?;

@@ -1,7 +1,7 @@
 //! Numbers and parameters typed on the command line, read in one place.
 //!
 //! A number the user types is the exact decimal they wrote: `0.1` is 1/10,
-//! read by the same lexer as a `.zm` file ([`poly::parse_number`]). Numeric
+//! read by the same lexer as a `.zm` file ([`poly::advanced::parse_number`]). Numeric
 //! work takes its nearest `f64`, and a value no `f64` can hold (beyond
 //! ±1.8e308, or a nonzero value below 4.9e-324) is refused by name instead
 //! of silently becoming ∞ or 0.
@@ -28,7 +28,7 @@ impl FromStr for Exact {
 
     fn from_str(s: &str) -> Result<Exact, String> {
         let text = s.trim();
-        match poly::parse_number(text) {
+        match poly::advanced::parse_number(text) {
             Ok(value) => Ok(Exact { value, text: text.to_owned() }),
             Err(e) => Err(format!("column {}: {}", e.span().col, e.message())),
         }
@@ -112,7 +112,7 @@ impl FromStr for ParamArg {
         if !name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_') {
             return Err(format!(
                 "`{}` is not a parameter name: expected letters, digits and `_`",
-                poly::show_invisible(name)
+                poly::advanced::show_invisible(name)
             ));
         }
         if name == "Phi" {

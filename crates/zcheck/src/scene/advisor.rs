@@ -14,7 +14,7 @@
 //!   n − 1. A mode whose f64 spectral radius clears 1 by 10⁻⁶ is decided by
 //!   it (that margin is 10⁹ times the rounding error of a simple root);
 //!   every other is decided exactly against the stable intervals of
-//!   χ(·, ζ) from `poly::region` and `poly::stability`, analysed once per ζ. A mode whose
+//!   χ(·, ζ) from `poly::advanced::region` and `poly::advanced::stability`, analysed once per ζ. A mode whose
 //!   float estimate runs away is settled by the exact Φ_max(ζ) (`Never`:
 //!   unbounded at every small Φ). The stable set at fixed ζ is taken to be
 //!   the interval (0, Φ_max) below the first boundary.
@@ -41,7 +41,7 @@ use std::time::Duration;
 use check::numeric::{f64_to_q, Params, ParamsF64, Step};
 use nalgebra::DMatrix;
 use num_complex::Complex64 as C64;
-use poly::region::{region, PhiLimit, Region};
+use poly::advanced::region::{PhiLimit, Region};
 use poly::{Poly, Sym};
 use serde::Serialize;
 
@@ -230,7 +230,7 @@ struct Analysed {
 }
 
 /// χ(·, D) at one D, and its exact stable Φ-intervals when analysed.
-type AtParam = (Poly, Option<Vec<poly::stability::StableInterval>>);
+type AtParam = (Poly, Option<Vec<poly::advanced::stability::StableInterval>>);
 
 /// How far the f64 spectral radius must clear 1 for the float to decide
 /// membership of the stable region (see [`Analysed::inside`]).
@@ -248,7 +248,9 @@ impl Analysed {
             )));
         }
         let chi = &spec.derivation()?.charpoly;
-        let region = region(chi, d)
+        let region = spec
+            .derivation()?
+            .region(d)
             .map_err(|e| Error::from(e).context(format!("method {}", spec.display())))?;
         let zc = chi.coeffs_in(Sym::z());
         let coeffs = zc.iter().map(|c| BiPoly::new(c, d)).collect();
@@ -311,7 +313,7 @@ impl Analysed {
         let mut cache = self.at_param.borrow_mut();
         let (chi, intervals) = cache.entry(d.to_bits()).or_insert_with(|| {
             let chi = self.region.at_param(&dq);
-            let intervals = poly::stability::analyze(&chi).ok().map(|r| r.stable_intervals);
+            let intervals = self.region.stability_at(&dq).ok().map(|r| r.stable_intervals);
             (chi, intervals)
         });
         match intervals {
@@ -331,7 +333,7 @@ impl Analysed {
                 };
                 above_lo && below_hi
             }),
-            None => poly::stability::class_at(chi, &p).is_ok_and(|c| c.is_bounded()),
+            None => poly::advanced::stability::class_at(chi, &p).is_ok_and(|c| c.is_bounded()),
         }
     }
 

@@ -255,7 +255,7 @@ mod tests {
         let (m, k, zeta, t): (f64, f64, f64, f64) = (2.0, 50.0, 0.1, 0.03);
         let omega = (k / m).sqrt();
         let c = 2.0 * zeta * omega * m;
-        for name in poly::DAMPED_METHODS {
+        for name in poly::advanced::builtins::DAMPED_METHODS {
             let kernel = Kernel::for_method(name).unwrap();
             let sys = System { mass: vec![m], k: sparse1(k), c: sparse1(c) };
             for sweep in [Sweep::Vector, Sweep::GaussSeidel] {

@@ -4,7 +4,7 @@
 //! damping ratio is free): the seven methods of sections 5–11 and their
 //! Appendix B "Transition matrix" twins. The damped family, used only when a
 //! scene has physical damping D, is each direct method applied to
-//! v̇ = −ω₀(y + 2Dv), ẏ = ω₀v: the built-ins [`poly::DAMPED_METHODS`]
+//! v̇ = −ω₀(y + 2Dv), ẏ = ω₀v: the built-ins [`poly::advanced::builtins::DAMPED_METHODS`]
 //! (`crates/poly/methods/*_damped.zm`, and `damped_euler_d` for Standard Euler). At D = 0 each has its undamped
 //! method's characteristic polynomial (tested).
 
@@ -12,7 +12,7 @@ use std::cmp::Ordering;
 use std::collections::HashMap;
 use std::f64::consts::PI;
 
-use poly::cost::StepCost;
+use poly::advanced::cost::StepCost;
 use poly::{Algebraic, Method, Sym, Q};
 
 use super::accuracy::SecondOrder;
@@ -23,7 +23,7 @@ use check::numeric::{f64_to_q, q_to_f64};
 /// The exact stability limit of one method (at fixed other parameters).
 #[derive(Clone, Debug)]
 pub struct Limit {
-    /// Φ_max from `poly::stability::analyze`: every 0 < Φ < Φ_max is
+    /// Φ_max from `poly::advanced::stability::analyze`: every 0 < Φ < Φ_max is
     /// bounded. `None` with `bounded_for_all == false`: unbounded for every
     /// small Φ > 0 (Standard Euler, Standard Heun).
     pub phi_max: Option<Algebraic>,
@@ -141,13 +141,18 @@ impl Candidate {
         let charpoly = derivation.charpoly.eval_partial(&values);
         // From the derivation, so a repeated root on the circle is decided
         // from P (Gauss–Legendre stays bounded through Φ = 2√3).
-        let report = poly::stability::analyze_derivation(derivation, &values)
+        let bound = params
+            .iter()
+            .filter(|(s, _)| s.name() != "Phi")
+            .fold(poly::Params::new(), |p, (s, v)| p.bind(s.name(), v.clone()));
+        let report = derivation
+            .stability(&bound)
             .map_err(|e| Error::from(e).context(format!("method `{name}`: stability")))?;
         let limit =
             Limit { phi_max: report.phi_max().cloned(), bounded_for_all: report.bounded_for_all() };
         let model =
             SecondOrder::new(&charpoly, &[]).map_err(|e| e.context(format!("method `{name}`")))?;
-        let cost = poly::step_cost(&method);
+        let cost = derivation.cost();
         Ok(Candidate {
             name,
             display: loaded.display().to_owned(),
@@ -165,7 +170,7 @@ impl Candidate {
 /// Every paper built-in with no free parameter but Φ, in built-in order.
 pub fn undamped_family() -> Result<Vec<Candidate>, Error> {
     let mut family = Vec::new();
-    for name in poly::paper_builtin_names() {
+    for name in poly::advanced::builtins::paper_builtin_names() {
         let method = builtin(name)?;
         if method.method().params().len() == 1 {
             family.push(Candidate::new(&method, Vec::new())?);

@@ -4,12 +4,12 @@
 //! (3) calculations per step and (4) the largest allowed step. This module
 //! puts the four together for a programmer with a target:
 //!
-//! - cost per step, exact, from the method definition ([`poly::cost`]), and
+//! - cost per step, exact, from the method definition ([`poly::advanced::cost`]), and
 //!   measured on the compiled step of any method (`measure`), with the
 //!   hand-written kernels ([`kernels`]) as a baseline;
 //! - accuracy per step from the exact characteristic polynomial
 //!   (`accuracy`): phase error Ψ − Φ and amplitude factor per period;
-//! - the exact stability limit Φ_max (`poly::stability`), which no answer
+//! - the exact stability limit Φ_max (`poly::advanced::stability`), which no answer
 //!   ever reaches ([`family`]);
 //! - the trade: the largest admissible Φ for a target, steps per period, cost
 //!   per simulated period, a ranking and a work-precision figure

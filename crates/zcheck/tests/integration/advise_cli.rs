@@ -35,7 +35,7 @@ fn method_args(method: &str, damping: Option<&str>) -> Vec<String> {
     } else {
         format!("{method}_damped")
     };
-    assert!(poly::builtin_source(&name).is_some(), "damped built-in {name}");
+    assert!(poly::advanced::builtins::builtin_source(&name).is_some(), "damped built-in {name}");
     vec![name, "--param".into(), format!("D={d}")]
 }
 

@@ -75,7 +75,7 @@ fn check_json(arg: &str, method: &str, state: &[&str], params: &[&str]) -> Value
 
 #[test]
 fn derive_every_builtin_in_every_format() {
-    for name in poly::builtin_names() {
+    for name in poly::advanced::builtins::builtin_names() {
         let m = poly::builtin(name).expect("built-in");
         let state: Vec<&str> = m.state().iter().map(String::as_str).collect();
         let params: Vec<&str> = m.params().iter().map(|p| p.name()).collect();
@@ -156,7 +156,7 @@ fn methods_lists_every_builtin() {
     let out = zcheck(&["methods"]);
     assert!(out.status.success(), "{}", stderr(&out));
     let text = stdout(&out);
-    for name in poly::builtin_names() {
+    for name in poly::advanced::builtins::builtin_names() {
         let order = poly::builtin(name).expect("built-in").order();
         let line = text
             .lines()

@@ -54,10 +54,10 @@ fn the_form_is_exactly_conserved_by_the_rounded_coefficients() {
     let s = Study::new(kernel.clone(), 1).unwrap();
     let p = kernel.exact_transition();
     let mut x: Vec<poly::Q> = vec![poly::q(3, 10), poly::q(1, 1)];
-    let q0 = poly::invariant::form_value(s.form(), &x);
+    let q0 = poly::advanced::invariant::form_value(s.form(), &x);
     for _ in 0..50 {
         x = (0..2).map(|i| &p[i][0] * &x[0] + &p[i][1] * &x[1]).collect();
-        assert_eq!(poly::invariant::form_value(s.form(), &x), q0);
+        assert_eq!(poly::advanced::invariant::form_value(s.form(), &x), q0);
     }
 }
 

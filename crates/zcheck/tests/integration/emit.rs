@@ -19,7 +19,7 @@ fn cases() -> Vec<(String, poly::Method, Binding)> {
     let mut out = Vec::new();
     // An implicit built-in solves a linear system each step: emitted only
     // folded, with the solve A⁻¹E precomputed at the given values.
-    for name in poly::builtin_names() {
+    for name in poly::advanced::builtins::builtin_names() {
         let m = poly::builtin(name).unwrap();
         let values: Vec<(Sym, Q)> = m
             .params()
@@ -161,7 +161,7 @@ fn header_states_the_limit_and_the_count() {
 /// Φ. The error names the unknowns and the flag.
 #[test]
 fn implicit_methods_need_folded_values() {
-    for name in poly::IMPLICIT_METHODS {
+    for name in poly::advanced::builtins::IMPLICIT_METHODS {
         let m = poly::builtin(name).unwrap();
         if !m.is_implicit() {
             continue;

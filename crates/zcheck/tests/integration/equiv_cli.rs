@@ -1,11 +1,11 @@
 //! `zcheck equiv A B`: the strongest identity between two methods, run as a
-//! user runs it, and `poly::equiv` over every pair of built-ins checked
+//! user runs it, and `poly::advanced::equiv` over every pair of built-ins checked
 //! against the slow oracle (rebuilding one transition matrix from the other
 //! with the permutation and scaling found; comparing χ directly).
 
 use std::process::{Command, Output};
 
-use poly::equiv::{self, Relation};
+use poly::advanced::equiv::{self, Relation};
 use serde_json::Value;
 
 fn zcheck(args: &[&str]) -> Output {
@@ -80,7 +80,7 @@ fn bad_input_exits_2() {
 fn every_pair_of_builtins_against_the_oracle() {
     // Every built-in, implicit ones included: their P is (d·P)/d, so the
     // oracle compares fractions by cross-multiplying the denominators.
-    let names: Vec<&str> = poly::builtin_names().collect();
+    let names: Vec<&str> = poly::advanced::builtins::builtin_names().collect();
     let derive = |n: &str| poly::derive(&poly::builtin(n).expect("built-in")).expect("derives");
     let mut identities = 0;
     for a in &names {

@@ -36,10 +36,11 @@ fn verify_tiny_phi_gives_the_exact_class() {
         ]);
         assert_eq!(code, 0, "{name}: {err}");
         let v: Value = serde_json::from_str(&out).expect("json");
-        let chi = poly::charpoly(&poly::builtin(name).unwrap()).unwrap();
+        let chi = poly::advanced::charpoly(&poly::builtin(name).unwrap()).unwrap();
         for p in v[0]["points"].as_array().unwrap() {
             let phi = p["phi"].as_f64().unwrap();
-            let exact = poly::stability::class_at(&chi, &Q::from_float(phi).unwrap()).unwrap();
+            let exact =
+                poly::advanced::stability::class_at(&chi, &Q::from_float(phi).unwrap()).unwrap();
             let shown = RootClass::from_name(p["class"].as_str().unwrap()).unwrap();
             assert_eq!(shown, exact, "{name} at {phi:e}");
         }

@@ -3,11 +3,9 @@
 //! tests through the same functions the libFuzzer targets call, so CI checks
 //! them without the nightly toolchain cargo-fuzz needs (FUZZING.md).
 
-#[path = "../../../../fuzz/src/app.rs"]
-mod app;
+use testkit::fuzz as app;
 
-#[path = "../../../../fuzz/src/replay.rs"]
-mod replay_corpus;
+use testkit::replay as replay_corpus;
 
 use std::path::PathBuf;
 

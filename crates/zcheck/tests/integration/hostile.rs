@@ -192,7 +192,7 @@ fn flooding_and_control_characters() {
 #[test]
 #[rustfmt::skip]
 fn clear_messages() {
-    let bom_first = [b"\xef\xbb\xbf".as_slice(), poly::builtin_source("false_euler").unwrap().as_bytes()].concat();
+    let bom_first = [b"\xef\xbb\xbf".as_slice(), poly::advanced::builtins::builtin_source("false_euler").unwrap().as_bytes()].concat();
     check(&[
         case(&["derive", "{file}"], &zm("v = v - 1.2.3*Phi*y"), 2, "malformed number `1.2.3`: expected at most one decimal point", ":3:9:"),
         case(&["derive", "{file}"], &zm("v = v - Phi^99999999999999999999*y"), 2, "exponent 99999999999999999999 is too large: expected at most 64", ":3:13:"),

@@ -13,8 +13,7 @@ mod measured_cost;
 mod plot_cli;
 mod scene_advise;
 mod scene_cli;
-#[path = "../../../../tests/support/snapshot.rs"]
-mod snapshot;
+use testkit::snapshot;
 mod stability_cli;
 mod tableau;
 mod tradeoff;

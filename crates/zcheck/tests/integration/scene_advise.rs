@@ -286,7 +286,7 @@ fn map_of_false_euler() {
 fn damped_builtins_are_listed_and_analysed() {
     let (code, out, _) = zcheck(&["methods"]);
     assert_eq!(code, 0);
-    for name in poly::damped_builtin_names() {
+    for name in poly::advanced::builtins::damped_builtin_names() {
         assert!(out.contains(name), "{name} not listed");
     }
     let (code, out, err) = zcheck(&["stability", "false_euler_damped", "--param", "D=1/2"]);

@@ -40,7 +40,7 @@ fn implicit_tableaux_match_the_builtins() {
         let t = load(name);
         assert!(!t.is_explicit(), "{name}");
         let src = t.to_zm(false);
-        let builtin = poly::builtin_source(name).expect("built-in");
+        let builtin = poly::advanced::builtins::builtin_source(name).expect("built-in");
         assert_eq!(chi_of(&src), chi_of(builtin), "{name}:\n{src}");
     }
 }

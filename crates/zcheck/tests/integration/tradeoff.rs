@@ -2,7 +2,7 @@
 //! the paper's closed forms and B's numeric witnesses, the hand kernels
 //! against the exact transition matrix, the admissible-Φ search against the
 //! exact stability limit, the ranking against its own definition, and the
-//! advisor against `poly::stability` and the numeric classification.
+//! advisor against `poly::advanced::stability` and the numeric classification.
 
 use check::numeric::ParamsF64;
 use std::collections::HashMap;
@@ -28,7 +28,10 @@ fn candidate(name: &str) -> Candidate {
 }
 
 fn direct_undamped() -> Vec<Candidate> {
-    undamped().into_iter().filter(|c| poly::PAPER_METHODS.contains(&c.name.as_str())).collect()
+    undamped()
+        .into_iter()
+        .filter(|c| poly::advanced::builtins::PAPER_METHODS.contains(&c.name.as_str()))
+        .collect()
 }
 
 #[track_caller]
@@ -114,7 +117,7 @@ fn small_phi_phase_error_leading_term() {
     // C1's exact series of Ψ to Φ⁷, summed at small Φ, against the model's Ψ.
     let mut checked = 0;
     for c in undamped() {
-        let Ok(series) = poly::series::psi_series(&c.charpoly, 7) else { continue };
+        let Ok(series) = poly::advanced::series::psi_series(&c.charpoly, 7) else { continue };
         checked += 1;
         for phi in [1e-3f64, 1e-2, 5e-2] {
             let sum: f64 =
@@ -157,7 +160,7 @@ fn accuracy_matches_numeric_eigenvalues() {
 /// Ψ = atan Φ, |z|² = 1/(1 + Φ²).
 #[test]
 fn accuracy_of_implicit_methods_matches_eigenvalues_and_closed_forms() {
-    for name in poly::IMPLICIT_METHODS {
+    for name in poly::advanced::builtins::IMPLICIT_METHODS {
         let m = LoadedMethod::builtin(name).unwrap();
         if m.method().order() != 2 {
             continue;
@@ -206,7 +209,7 @@ fn hand_kernels_follow_their_definitions() {
         for phi in [0.125, 0.75, 1.5] {
             let mut values: HashMap<Sym, Q> = c.params.iter().cloned().collect();
             values.insert(Sym::phi(), f64_to_q(phi).unwrap());
-            let p = poly::transition_matrix(&c.method);
+            let p = poly::advanced::transition_matrix(&c.method);
             for start in [[1.0, 0.0], [0.0, 1.0], [0.6, -0.8]] {
                 let (mut a, mut b) = (start[0], start[1]);
                 assert!(kernels::run_hand_kernel(name, &mut a, &mut b, phi, d_value, 1), "{name}");
@@ -230,7 +233,7 @@ fn damped_family_reduces_to_the_undamped_methods() {
     let zero = f64_to_q(0.0).unwrap();
     for c in family::damped_family(&zero).unwrap() {
         let base = poly::builtin(&c.display).unwrap();
-        assert_eq!(c.charpoly, poly::charpoly(&base).unwrap(), "{}", c.name);
+        assert_eq!(c.charpoly, poly::advanced::charpoly(&base).unwrap(), "{}", c.name);
     }
 }
 
@@ -346,8 +349,8 @@ fn candidates_for(s: &SpringScene) -> Vec<Candidate> {
 }
 
 /// The advisor's stable set at Φ equals the methods with Φ < Φ_max by
-/// `poly::stability::analyze`, equals the methods whose exact class at Φ
-/// (`poly::stability::class_at`) and numeric class (B's classification of
+/// `poly::advanced::stability::analyze`, equals the methods whose exact class at Φ
+/// (`poly::advanced::stability::class_at`) and numeric class (B's classification of
 /// the numeric roots) is bounded; and its stabilising substeps k are the
 /// fewest with that property.
 #[test]
@@ -364,14 +367,16 @@ fn advisor_agrees_with_stability_and_classification() {
         let cands = candidates_for(&s);
         let advice = advise_spring(&s, &cands, |_| 1.0).unwrap();
         for (c, m) in cands.iter().zip(&advice.methods) {
-            let report = poly::stability::analyze(&c.charpoly).unwrap();
-            let below_max = report.phi_max().is_some_and(|max| {
+            let report = poly::advanced::stability::analyze(&c.charpoly).unwrap();
+            // χ alone: bounded below Φ_max, or below the point P would decide.
+            let below_max = report.phi_max().or(report.undecided_at()).is_some_and(|max| {
                 max.cmp_rational(&f64_to_q(advice.phi).unwrap()) == std::cmp::Ordering::Greater
             });
             assert_eq!(m.stable_at_phi, below_max, "{} at {}", c.name, advice.phi);
             let bounded = |phi: f64| {
                 let exact =
-                    poly::stability::class_at(&c.charpoly, &f64_to_q(phi).unwrap()).unwrap();
+                    poly::advanced::stability::class_at(&c.charpoly, &f64_to_q(phi).unwrap())
+                        .unwrap();
                 let numeric = numeric_class(c, phi);
                 assert_eq!(exact.is_bounded(), numeric.is_bounded(), "{} at {phi}", c.name);
                 exact.is_bounded()
@@ -488,7 +493,7 @@ fn model_errors() {
 /// implicit row says what its cost includes.
 #[test]
 fn overview_of_the_implicit_builtins() {
-    for name in poly::IMPLICIT_METHODS {
+    for name in poly::advanced::builtins::IMPLICIT_METHODS {
         let row = zcheck::overview::summarize(&poly::builtin(name).unwrap(), 5).unwrap();
         match name {
             "newmark_linear" => assert_eq!(row.phi_max_exact, "2*sqrt(3)"),

@@ -18,7 +18,7 @@ fn zcheck(args: &[&str]) -> (i32, String, String) {
 /// exit 0, every point agrees, and each point has the documented fields.
 #[test]
 fn every_builtin_verifies_with_boundaries() {
-    let names: Vec<&str> = poly::builtin_names().collect();
+    let names: Vec<&str> = poly::advanced::builtins::builtin_names().collect();
     let mut args = vec!["verify"];
     args.extend(&names);
     args.extend(["--steps", "5000", "--boundaries", "--param", "D=0.3", "--format", "json"]);

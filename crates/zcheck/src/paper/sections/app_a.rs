@@ -108,7 +108,7 @@ fn step(s: &mut Section, key: &str, method: &str, statement: &str, lhs: &str, rh
         format!("through Φ³: left side = {left}; right side(s) = {}", shown.join(", ")),
         finding,
         format!(
-            "Ψ replaced by its exact series Ψ = {psi} + O(Φ⁷) ({method}, poly::series), products truncated \
+            "Ψ replaced by its exact series Ψ = {psi} + O(Φ⁷) ({method}, Derivation::psi_series), products truncated \
              after Φ³: the two sides {}",
             if ok { "agree exactly" } else { "differ" }
         ),

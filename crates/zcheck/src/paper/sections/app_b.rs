@@ -3,7 +3,8 @@
 //! y2:=1 is False Euler with v0 = 0; Damped Euler's D:=0.5*woT is section
 //! 6's choice; and the slips in the listing.
 
-use poly::{Operand, Sym};
+use poly::advanced::Operand;
+use poly::Sym;
 
 use super::common::*;
 use super::exact::paper;
@@ -15,7 +16,9 @@ use crate::paper::finding::Finding;
 
 pub(crate) fn claims() -> Vec<Claim> {
     let mut s = Section::new("B", "appB");
-    for matrix in poly::builtin_names().filter(|n| poly::direct_twin(n).is_some()) {
+    for matrix in poly::advanced::builtins::builtin_names()
+        .filter(|n| poly::advanced::builtins::direct_twin(n).is_some())
+    {
         twins(&mut s, matrix);
     }
     verlet_start(&mut s);
@@ -25,7 +28,7 @@ pub(crate) fn claims() -> Vec<Claim> {
 }
 
 fn twins(s: &mut Section, matrix: &str) {
-    let direct = poly::direct_twin(matrix).expect("filtered");
+    let direct = poly::advanced::builtins::direct_twin(matrix).expect("filtered");
     let a = builtin_derivation(direct);
     let b = builtin_derivation(matrix);
     let same = a.transition_matrix == b.transition_matrix;
@@ -64,7 +67,7 @@ use super::ranges::title;
 fn dead_assignments(m: &poly::Method) -> Vec<String> {
     let n = m.assigns().len();
     (0..n)
-        .filter(|&k| matches!(m.assigns()[k].target, poly::Target::Temp(_)))
+        .filter(|&k| matches!(m.assigns()[k].target, poly::advanced::Target::Temp(_)))
         .filter(|&k| {
             !m.assigns().iter().any(|a| a.terms.iter().any(|(op, _)| *op == Operand::Stmt(k)))
         })

@@ -8,7 +8,8 @@
 
 use std::fmt::Write as _;
 
-use poly::{Derivation, Method, Operand, Poly, PolyMatrix, Sym, Q};
+use poly::advanced::Operand;
+use poly::{Derivation, Method, Poly, PolyMatrix, Sym, Q};
 
 use super::exact::{at_phi, p_q, paper};
 use crate::load::builtin_derivation;

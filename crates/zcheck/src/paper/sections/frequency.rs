@@ -2,7 +2,7 @@
 //! always too high", the Taylor approximations of Ψ(Φ) and the table of
 //! section 6.
 //!
-//! The series come from `poly::series` (exact arithmetic on the roots of χ);
+//! The series come from `poly::advanced::series` (exact arithmetic on the roots of χ);
 //! the comparisons Ψ > Φ over a range are numeric (Ψ is transcendental in Φ),
 //! with the exact argument quoted where one exists.
 
@@ -19,7 +19,7 @@ use crate::paper::finding::{Finding, Scope};
 #[track_caller]
 pub(crate) fn psi_coeffs(method: &str, order: usize) -> Vec<Q> {
     let d = builtin_derivation(method);
-    poly::series::psi_series(&d.charpoly, order)
+    poly::advanced::series::psi_series(&d.charpoly, order)
         .unwrap_or_else(|e| panic!("Ψ series of {method}: {e}"))
 }
 
@@ -135,7 +135,7 @@ pub(crate) fn approximation(s: &mut Section, method: &str, statement: &str, pars
         format!("Ψ = {} + O(Φ⁷)", series_poly(&exact)),
         Finding::same(&printed, &through_3),
         format!(
-            "poly::series::psi_series({method}) by exact series arithmetic on cos Ψ = p/√q; the printed \
+            "Derivation::psi_series({method}) by exact series arithmetic on cos Ψ = p/√q; the printed \
              approximation {} the series through Φ³",
             if ok { "equals" } else { "differs from" }
         ),

@@ -1,13 +1,13 @@
 //! Exact ranges in Φ > 0: where a polynomial in Φ is positive or negative,
 //! and which root class (section 4) a method shows on each piece of the
 //! positive axis. Every boundary is an exact algebraic number from
-//! `poly::Algebraic` / `poly::stability`; no float decides anything here.
+//! `poly::Algebraic` / `poly::advanced::stability`; no float decides anything here.
 
 use std::cmp::Ordering;
 use std::collections::HashMap;
 use std::sync::{Mutex, OnceLock};
 
-use poly::stability::{self, StabilityReport};
+use poly::StabilityReport;
 use poly::{Algebraic, Poly, RootClass, Sym, UPoly, Q};
 
 use super::exact::{at_phi, p_q, paper};
@@ -126,14 +126,14 @@ pub(crate) fn report(method: &str) -> StabilityReport {
     }
     let d = builtin_derivation(method);
     let r =
-        stability::analyze(&d.charpoly).unwrap_or_else(|e| panic!("stability of {method}: {e}"));
+        d.stability(&poly::Params::new()).unwrap_or_else(|e| panic!("stability of {method}: {e}"));
     cache.lock().expect("cache lock").insert(method.to_owned(), r.clone());
     r
 }
 
 /// A method's root class on every piece of Φ > 0: the open intervals of
 /// constant class and the change points between them (a point's class is
-/// `None` when poly::stability did not decide it).
+/// `None` when poly::advanced::stability did not decide it).
 pub(crate) fn class_map(method: &str) -> Vec<(Piece, Option<RootClass>)> {
     let r = report(method);
     let mut out = Vec::new();

@@ -56,7 +56,7 @@ fn euler_transition(s: &mut Section) {
 
 fn characteristic_equation(s: &mut Section) {
     // derive() fails when the z-domain determinant and det(zI − P) differ.
-    let agree: Vec<(&str, bool)> = poly::paper_builtin_names()
+    let agree: Vec<(&str, bool)> = poly::advanced::builtins::paper_builtin_names()
         .map(|name| (name, try_builtin_derivation(name).is_ok()))
         .collect();
     let total = agree.len();
@@ -415,11 +415,11 @@ fn delay_operator(s: &mut Section) {
 }
 
 /// The identities between methods the paper states or implies, decided
-/// exactly over every pair of built-ins (`poly::equiv`), and those it does
+/// exactly over every pair of built-ins (`poly::advanced::equiv`), and those it does
 /// not state.
 fn method_identities(s: &mut Section) {
-    use poly::equiv::{self, Relation};
-    let names: Vec<&str> = poly::paper_builtin_names().collect();
+    use poly::advanced::equiv::{self, Relation};
+    let names: Vec<&str> = poly::advanced::builtins::paper_builtin_names().collect();
     let mut found: Vec<(&str, &str, Relation)> = Vec::new();
     for (i, a) in names.iter().enumerate() {
         for b in &names[i + 1..] {
@@ -449,8 +449,8 @@ fn method_identities(s: &mut Section) {
             relation("damped_euler", "false_euler").shares_charpoly(),
         ),
     ];
-    for matrix in names.iter().filter(|n| poly::direct_twin(n).is_some()) {
-        let direct = poly::direct_twin(matrix).expect("filtered");
+    for matrix in names.iter().filter(|n| poly::advanced::builtins::direct_twin(n).is_some()) {
+        let direct = poly::advanced::builtins::direct_twin(matrix).expect("filtered");
         stated.push((
             format!("Appendix B: {direct} and {matrix} have equal P"),
             relation(direct, matrix) == Relation::Equal,
@@ -460,8 +460,8 @@ fn method_identities(s: &mut Section) {
         let pair = |x: &str, y: &str| (a == x && b == y) || (a == y && b == x);
         pair("false_euler", "verlet")
             || pair("damped_euler", "false_euler")
-            || poly::direct_twin(a) == Some(b)
-            || poly::direct_twin(b) == Some(a)
+            || poly::advanced::builtins::direct_twin(a) == Some(b)
+            || poly::advanced::builtins::direct_twin(b) == Some(a)
     };
     let describe = |r: &Relation| match r {
         Relation::Equal => "equal P".to_owned(),
@@ -507,7 +507,7 @@ fn method_identities(s: &mut Section) {
             if unstated.is_empty() { "none".to_owned() } else { unstated.join("; ") },
         ),
         Finding::all(stated),
-        "poly::equiv::relate on every pair of built-ins: equal P, similar by a permutation and/or a constant \
+        "Derivation::relate on every pair of built-ins: equal P, similar by a permutation and/or a constant \
          diagonal scaling (exact, every permutation tried), or only the same χ; the _matrix twins are \
          left out of the lists (Appendix B makes them equal to their direct branches)",
     );

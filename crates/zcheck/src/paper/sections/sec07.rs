@@ -135,7 +135,7 @@ fn stability_limit(s: &mut Section) {
                 im_zero == printed,
             ),
         ]),
-        "poly::stability::analyze(false_euler): Sturm sequences over Q on the stability conditions; the \
+        "Derivation::stability(false_euler): Sturm sequences over Q on the stability conditions; the \
          limit is where the pair meets at −1; Φ = ω0·T and Φ = 2π·T/T0",
     );
     s.push(
@@ -154,7 +154,7 @@ fn stability_limit(s: &mut Section) {
         ),
         Finding::same(ranges::show(&poly::Algebraic::from_rational(period_ratio)), &limit),
         "more than π steps per period is Φ < 2π/π = 2 exactly; compared with the exact Φ_max from \
-         poly::stability",
+         poly::advanced::stability",
     );
     nyquist(s, phi_max.as_ref());
 }

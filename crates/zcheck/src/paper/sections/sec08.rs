@@ -144,7 +144,7 @@ fn initial_velocity(s: &mut Section) {
 fn operations(s: &mut Section) {
     let count = |name: &str| {
         let m = poly::builtin(name).expect("built-in");
-        let c = poly::step_cost(&m).program;
+        let c = poly::advanced::cost::step_cost(&m).program;
         (c.mul, c.add)
     };
     let fe = count("false_euler");
@@ -162,7 +162,7 @@ fn operations(s: &mut Section) {
             (format!("Verlet: {} mul + {} add", ve.0, ve.1), ve == (2, 2), Scope::Wording),
         ]),
         format!(
-            "poly::step_cost on the lowered programs (coefficients folded once per Φ, ±1 free): False Euler \
+            "Derivation::cost on the lowered programs (coefficients folded once per Φ, ±1 free): False Euler \
              {} mul + {} add; Verlet y = (2 − Φ²)·y − y@1, {} mul + {} add — Appendix B's line \
              2*y0-y2+Sqr(dT)*(-wo*wo*y0) spends more only because it does not fold 2 − Φ², which is the \
              \"depends on the programming\" the paper allows",
@@ -188,10 +188,13 @@ pub(crate) fn damped_spring() -> DampedComparison {
     let damping = poly::q(1, 10);
     let phi = 0.1f64;
     let d = 0.1f64;
-    let chi_of = |name: &str| builtin_derivation(name).charpoly;
-    let measure = |chi_d: &Poly| {
-        let chi = chi_d.subs(Sym::new("D"), &Poly::constant(damping.clone()));
-        let limit = poly::stability::analyze(&chi).ok().and_then(|r| super::ranges::limit_of(&r));
+    let derivation_of = |name: &str| builtin_derivation(name);
+    let measure = |derivation: &poly::Derivation| {
+        let chi = derivation.charpoly.subs(Sym::new("D"), &Poly::constant(damping.clone()));
+        let limit = derivation
+            .stability(&poly::Params::new().bind("D", damping.clone()))
+            .ok()
+            .and_then(|r| super::ranges::limit_of(&r));
         // The upper root of c2 z² + c1 z + c0 at Φ against e^(sΦ),
         // s = −D + j√(1 − D²).
         let c: Vec<f64> = chi.coeffs_in(Sym::z()).iter().map(|p| eval_f64(p, phi)).collect();
@@ -207,9 +210,10 @@ pub(crate) fn damped_spring() -> DampedComparison {
         let error = (re - decay * w.cos()).hypot(im - decay * w.sin());
         (limit, error)
     };
-    let (fe_chi, ve_chi) = (chi_of("false_euler_damped"), chi_of("verlet_damped"));
-    let (fe_limit, fe_error) = measure(&fe_chi);
-    let (ve_limit, ve_error) = measure(&ve_chi);
+    let (fe, ve) = (derivation_of("false_euler_damped"), derivation_of("verlet_damped"));
+    let (fe_limit, fe_error) = measure(&fe);
+    let (ve_limit, ve_error) = measure(&ve);
+    let (fe_chi, ve_chi) = (fe.charpoly, ve.charpoly);
     let show = |l: &Option<poly::Algebraic>| {
         l.as_ref().map(super::ranges::show).unwrap_or_else(|| "none".to_owned())
     };
@@ -246,7 +250,7 @@ fn bad_formulation(s: &mut Section) {
     let same = same_samples(&[poly::q(1, 10), poly::q(1, 1), poly::q(3, 2)], 24);
     let damped = damped_spring();
     let count = |name: &str| {
-        let c = poly::step_cost(&poly::builtin(name).expect("built-in")).program;
+        let c = poly::advanced::cost::step_cost(&poly::builtin(name).expect("built-in")).program;
         (c.mul, c.add)
     };
     let (fe, ve) = (count("false_euler"), count("verlet"));
@@ -273,6 +277,6 @@ fn bad_formulation(s: &mut Section) {
             ),
         ]),
         "exact rational runs (24 steps, Φ = 1/10, 1, 3/2, three starts); exact χ of the damped variants with \
-         poly::stability and their roots at Φ = 0.1 against e^(sT); poly::step_cost",
+         poly::advanced::stability and their roots at Φ = 0.1 against e^(sT); poly::advanced::cost::step_cost",
     );
 }

@@ -137,7 +137,7 @@ fn z_rows(s: &mut Section) {
 /// χ of the matrix the printed rows describe.
 pub(crate) fn printed_rows_charpoly() -> poly::Poly {
     let m = PolyMatrix::from_rows(ROWS.iter().map(|r| vec![paper(r.v), paper(r.y)]).collect());
-    poly::charpoly_state_route(&m)
+    poly::advanced::charpoly_state_route(&m)
 }
 
 fn charpoly(s: &mut Section) {
@@ -163,7 +163,7 @@ fn not_recommended(s: &mut Section) {
         })
         .collect();
     let own = advice::criteria("false_heun");
-    let dominating = advice::dominated_by(&own, &poly::PAPER_METHODS);
+    let dominating = advice::dominated_by(&own, &poly::advanced::builtins::PAPER_METHODS);
     let by: Vec<String> = dominating
         .iter()
         .map(|(c, better)| format!("{} (better on {})", advice::text(c), better.join(", ")))
@@ -181,7 +181,7 @@ fn not_recommended(s: &mut Section) {
             "another method of the paper is at least as good on every criterion of section 1 and better on one",
             !dominating.is_empty(),
         )]),
-        "exact Φ_max (poly::stability), leading terms of Ψ − Φ and |z|² − 1 (poly::series), operations per \
-         step (poly::step_cost), for every method of sections 5–11",
+        "exact Φ_max (Derivation::stability), leading terms of Ψ − Φ and |z|² − 1 (poly's exact series), operations per \
+         step (poly::advanced::cost::step_cost), for every method of sections 5–11",
     );
 }

@@ -96,7 +96,7 @@ fn always_stable(s: &mut Section) {
         format!("stable only for 0 < Φ < {limit} (boundary: {boundary}); classes: {map}"),
         finding,
         format!(
-            "poly::stability::analyze: χ(−1) = {chi_minus_one} vanishes at Φ = {}, where a real root leaves the \
+            "Derivation::stability: χ(−1) = {chi_minus_one} vanishes at Φ = {}, where a real root leaves the \
              unit disc through −1; the section gives no limit, and the method is unbounded for {failing}",
             crossings.join(", ")
         ),
@@ -129,13 +129,13 @@ fn as_accurate(s: &mut Section) {
     let d_sh = builtin_derivation("standard_heun");
     let psi_sf = frequency::psi_coeffs("semi_false_heun", 5);
     let psi_sh = frequency::psi_coeffs("standard_heun", 5);
-    let m_sf = poly::series::modulus_sq_series(&d_sf.charpoly, 6).expect("series");
-    let m_sh = poly::series::modulus_sq_series(&d_sh.charpoly, 6).expect("series");
+    let m_sf = poly::advanced::series::modulus_sq_series(&d_sf.charpoly, 6).expect("series");
+    let m_sh = poly::advanced::series::modulus_sq_series(&d_sh.charpoly, 6).expect("series");
     let disp = |d: &poly::Derivation| {
-        poly::series::dispersion_order(&d.charpoly).expect("series").map(|t| t.order)
+        poly::advanced::series::dispersion_order(&d.charpoly).expect("series").map(|t| t.order)
     };
     let diss = |d: &poly::Derivation| {
-        poly::series::dissipation_order(&d.charpoly).expect("series").map(|t| t.order)
+        poly::advanced::series::dissipation_order(&d.charpoly).expect("series").map(|t| t.order)
     };
     let (sf, sh) = (advice::criteria("semi_false_heun"), advice::criteria("standard_heun"));
     s.push(
@@ -158,7 +158,7 @@ fn as_accurate(s: &mut Section) {
             ("the same dissipation order", diss(&d_sf) == diss(&d_sh)),
         ]),
         format!(
-            "poly::series on both χ: leading phase errors {} against {}, leading amplitude errors {} against {}",
+            "poly's exact series on both χ: leading phase errors {} against {}, leading amplitude errors {} against {}",
             term(&sf.phase),
             term(&sh.phase),
             term(&sf.amplitude),
@@ -180,7 +180,7 @@ fn show_order(k: Option<usize>) -> String {
 /// academic example."
 fn academic(s: &mut Section) {
     let own = advice::criteria("semi_false_heun");
-    let dominating = advice::dominated_by(&own, &poly::PAPER_METHODS);
+    let dominating = advice::dominated_by(&own, &poly::advanced::builtins::PAPER_METHODS);
     let by: Vec<String> = dominating
         .iter()
         .map(|(c, better)| format!("{} (better on {})", advice::text(c), better.join(", ")))
@@ -198,8 +198,8 @@ fn academic(s: &mut Section) {
             "another method of the paper is at least as good on every criterion of section 1 and better on one",
             !dominating.is_empty(),
         )]),
-        "exact Φ_max (poly::stability), leading terms of Ψ − Φ and |z|² − 1 (poly::series), operations per \
-         step (poly::step_cost), for every method of sections 5–11; \"odd structure\" and \"limited scope\" \
+        "exact Φ_max (Derivation::stability), leading terms of Ψ − Φ and |z|² − 1 (poly's exact series), operations per \
+         step (poly::advanced::cost::step_cost), for every method of sections 5–11; \"odd structure\" and \"limited scope\" \
          are judgements zcheck does not check",
     );
 }

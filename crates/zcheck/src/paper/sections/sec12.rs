@@ -51,8 +51,8 @@ fn false_euler(s: &mut Section) {
         ),
         Finding::Cases { cases },
         format!(
-            "poly::stability::analyze(false_euler): bounded exactly below section 7's limit, unbounded for \
-             {failing}: stability is guaranteed only under T < T0/π; poly::series gives the errors"
+            "Derivation::stability(false_euler): bounded exactly below section 7's limit, unbounded for \
+             {failing}: stability is guaranteed only under T < T0/π; poly::advanced::series gives the errors"
         ),
     );
 }
@@ -102,7 +102,7 @@ fn standard_heun(s: &mut Section) {
             ),
             ("a sufficiently small step makes it stable".to_owned(), limit.is_some(), Scope::Wording),
         ]),
-        "poly::stability::analyze(standard_heun): no stable Φ > 0; a small step only slows the growth, so \
+        "Derivation::stability(standard_heun): no stable Φ > 0; a small step only slows the growth, so \
          'sufficiently small' means small against the simulated duration, not a stability bound",
     );
 }

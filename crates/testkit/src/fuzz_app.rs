@@ -1,8 +1,7 @@
 //! The bodies of the fuzz targets that read the application's TOML files:
-//! the scene reader and the Butcher-tableau reader. Separate from `lib.rs`
-//! because they need the `zcheck` crate, which `poly`'s tests (which
-//! replay `lib.rs`'s targets) cannot depend on; `zcheck`'s integration
-//! tests include this file and replay its corpora.
+//! the scene reader and the Butcher-tableau reader. Behind testkit's `app`
+//! feature, because they need the `zcheck` crate; `zcheck`'s integration
+//! tests replay their corpora.
 
 /// The largest error text any input may produce, in bytes.
 const MAX_ERROR_BYTES: usize = 4000;
