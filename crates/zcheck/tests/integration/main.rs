@@ -7,6 +7,7 @@ mod drift;
 mod emit;
 mod equiv_cli;
 mod extremes;
+mod front_door;
 mod fuzz_corpus;
 mod hostile;
 mod measured_cost;
