@@ -648,11 +648,12 @@ fn architecture_names_only_paths_that_exist() {
     let mut missing = Vec::new();
     let mut checked = 0;
     for span in text.split('`').skip(1).step_by(2) {
-        let looks_like_path = (span.contains('/') || span.ends_with(".rs") || span.ends_with(".md"))
-            && !span.contains(' ')
-            && !span.contains("::")
-            && !span.contains('(')
-            && !span.starts_with("--");
+        let looks_like_path =
+            (span.contains('/') || span.ends_with(".rs") || span.ends_with(".md"))
+                && !span.contains(' ')
+                && !span.contains("::")
+                && !span.contains('(')
+                && !span.starts_with("--");
         if !looks_like_path {
             continue;
         }
@@ -661,7 +662,10 @@ fn architecture_names_only_paths_that_exist() {
         let wanted = span.split('*').next().unwrap_or(span);
         let found = paths.iter().any(|p| {
             let dir = format!("{}/", wanted.trim_end_matches('/'));
-            p == wanted || p == &dir || p.ends_with(&format!("/{wanted}")) || p.ends_with(&format!("/{dir}"))
+            p == wanted
+                || p == &dir
+                || p.ends_with(&format!("/{wanted}"))
+                || p.ends_with(&format!("/{dir}"))
         });
         if !found {
             missing.push(span.to_owned());

@@ -4,7 +4,7 @@
 //! Appendix A derives Ψ(Φ) only for Damped/False Euler and Standard Heun.
 //! This table extends it to every method the paper analyses, from the exact
 //! characteristic polynomial (`poly::advanced::series`), next to the exact limit
-//! (`poly::advanced::stability`) and the operation count (`poly::advanced::cost::step_cost`), so a
+//! (`Derivation::stability`) and the operation count (`Derivation::cost`), so a
 //! reader can compare the paper's four criteria (stability, frequency
 //! deviation, calculations per step, largest step) in one place.
 
@@ -123,7 +123,7 @@ pub(crate) fn summary_of(d: &Derivation, order: usize) -> Result<MethodSummary, 
         }
         Err(e) => (format!("n/a ({e})"), "n/a".to_owned()),
     };
-    let cost = poly::advanced::cost::step_cost(method);
+    let cost = d.cost();
     Ok(MethodSummary {
         method: method.name().to_owned(),
         charpoly: chi.to_string(),

@@ -155,9 +155,17 @@ impl Derivation {
             ));
         }
         params.values_of(&others).map_err(|name| {
+            let given = params
+                .iter()
+                .map(|(n, v)| (Sym::new(n), v.clone()))
+                .collect::<std::collections::HashMap<_, _>>();
+            let chi = self.charpoly.eval_partial(&given);
             Error::analysis(
                 ErrorKind::ExtraSymbol,
-                format!("method `{}` has the parameter {name}; give it a value", method.name()),
+                format!(
+                    "characteristic polynomial {chi} still contains the parameter {name}; \
+                     expected a polynomial in z and Phi only (give {name} a value)"
+                ),
             )
         })
     }

@@ -154,7 +154,7 @@ fn stability_limit(s: &mut Section) {
         ),
         Finding::same(ranges::show(&poly::Algebraic::from_rational(period_ratio)), &limit),
         "more than π steps per period is Φ < 2π/π = 2 exactly; compared with the exact Φ_max from \
-         poly::advanced::stability",
+         Derivation::stability",
     );
     nyquist(s, phi_max.as_ref());
 }

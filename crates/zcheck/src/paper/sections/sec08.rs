@@ -143,8 +143,7 @@ fn initial_velocity(s: &mut Section) {
 
 fn operations(s: &mut Section) {
     let count = |name: &str| {
-        let m = poly::builtin(name).expect("built-in");
-        let c = poly::advanced::cost::step_cost(&m).program;
+        let c = builtin_derivation(name).cost().program;
         (c.mul, c.add)
     };
     let fe = count("false_euler");
@@ -250,7 +249,7 @@ fn bad_formulation(s: &mut Section) {
     let same = same_samples(&[poly::q(1, 10), poly::q(1, 1), poly::q(3, 2)], 24);
     let damped = damped_spring();
     let count = |name: &str| {
-        let c = poly::advanced::cost::step_cost(&poly::builtin(name).expect("built-in")).program;
+        let c = builtin_derivation(name).cost().program;
         (c.mul, c.add)
     };
     let (fe, ve) = (count("false_euler"), count("verlet"));
@@ -277,6 +276,6 @@ fn bad_formulation(s: &mut Section) {
             ),
         ]),
         "exact rational runs (24 steps, Φ = 1/10, 1, 3/2, three starts); exact χ of the damped variants with \
-         poly::advanced::stability and their roots at Φ = 0.1 against e^(sT); poly::advanced::cost::step_cost",
+         Derivation::stability and their roots at Φ = 0.1 against e^(sT); Derivation::cost",
     );
 }

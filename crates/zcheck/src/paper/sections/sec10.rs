@@ -182,6 +182,6 @@ fn not_recommended(s: &mut Section) {
             !dominating.is_empty(),
         )]),
         "exact Φ_max (Derivation::stability), leading terms of Ψ − Φ and |z|² − 1 (poly's exact series), operations per \
-         step (poly::advanced::cost::step_cost), for every method of sections 5–11",
+         step (Derivation::cost), for every method of sections 5–11",
     );
 }

@@ -199,7 +199,7 @@ fn academic(s: &mut Section) {
             !dominating.is_empty(),
         )]),
         "exact Φ_max (Derivation::stability), leading terms of Ψ − Φ and |z|² − 1 (poly's exact series), operations per \
-         step (poly::advanced::cost::step_cost), for every method of sections 5–11; \"odd structure\" and \"limited scope\" \
+         step (Derivation::cost), for every method of sections 5–11; \"odd structure\" and \"limited scope\" \
          are judgements zcheck does not check",
     );
 }

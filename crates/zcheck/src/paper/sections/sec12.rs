@@ -52,7 +52,7 @@ fn false_euler(s: &mut Section) {
         Finding::Cases { cases },
         format!(
             "Derivation::stability(false_euler): bounded exactly below section 7's limit, unbounded for \
-             {failing}: stability is guaranteed only under T < T0/π; poly::advanced::series gives the errors"
+             {failing}: stability is guaranteed only under T < T0/π; Derivation::psi_series gives the errors"
         ),
     );
 }
