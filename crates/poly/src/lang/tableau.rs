@@ -433,26 +433,6 @@ mod tests {
         Exact::parse(s).unwrap()
     }
 
-    /// RK4's tableau gives the RK4 built-in's χ.
-    #[test]
-    fn rk4_tableau_is_the_builtin() {
-        let z = || e("0");
-        let a = vec![
-            vec![z(), z(), z(), z()],
-            vec![e("1/2"), z(), z(), z()],
-            vec![z(), e("1/2"), z(), z()],
-            vec![z(), z(), e("1"), z()],
-        ];
-        let b = vec![e("1/6"), e("1/3"), e("1/3"), e("1/6")];
-        let c = Some(vec![z(), e("1/2"), e("1/2"), e("1")]);
-        let t = Tableau::new("rk4", a, b, c).unwrap();
-        assert!(t.is_explicit());
-        assert_eq!(t.c_mismatch(), Some(&[][..]));
-        let mine = crate::derive(&t.method(false).unwrap()).unwrap();
-        let builtin = crate::derive(&crate::builtin("rk4").unwrap()).unwrap();
-        assert_eq!(mine.charpoly, builtin.charpoly);
-    }
-
     /// Bad entries and shapes are refused with what was expected.
     #[test]
     fn bad_entries_and_shapes() {

@@ -14,7 +14,8 @@
 //! - `snapshots`: each built-in's derivation, reviewed against the paper;
 //! - `cost`: operation counts; `series`: exact Ψ and |z|² series;
 //! - `stability`: the exact stability analysis; `sturm`: Sturm sequences and
-//!   real algebraic numbers against brute-force oracles.
+//!   real algebraic numbers against brute-force oracles;
+//! - `tableau`: Butcher tableaux derive their built-ins' χ.
 
 mod algebra;
 mod common;
@@ -36,3 +37,4 @@ use testkit::snapshot;
 mod snapshots;
 mod stability;
 mod sturm;
+mod tableau;
