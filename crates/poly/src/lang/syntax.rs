@@ -171,10 +171,13 @@ fn lex(src: &str) -> Result<Vec<Token>, Error> {
                 format!("unexpected character {}: expected a name, a number, an operator (+ - * / ^), `=`, `@` or parentheses", describe_char(c)),
             ));
         }
-        out.push(Token {
-            tok: Tok::Newline,
-            span: Span { line: line_no, col: chars.len() as u32 + 1, len: 1 },
-        });
+        // An error at the end of the line points just after its last token,
+        // not past trailing blanks or a comment.
+        let end_col = match out.get(line_start..).and_then(<[Token]>::last) {
+            Some(t) => t.span.col + t.span.len,
+            None => 1,
+        };
+        out.push(Token { tok: Tok::Newline, span: Span { line: line_no, col: end_col, len: 1 } });
     }
     let last = src.lines().count() as u32;
     out.push(Token { tok: Tok::Eof, span: Span { line: last.max(1), col: 1, len: 1 } });

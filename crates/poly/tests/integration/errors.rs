@@ -148,8 +148,9 @@ fn locations_count_blank_lines_and_comments() {
 fn polynomial_parse_errors_are_located() {
     let e = poly::Poly::parse("z^2 - 2*p*z + ").expect_err("dangling operator");
     assert_eq!(e.kind(), ErrorKind::Syntax);
-    assert_eq!((e.span().line, e.span().col), (1, 15));
-    assert!(e.to_string().starts_with("<expression>:1:15: expected"), "{e}");
+    // Right after the trailing operator, not after the blank that follows.
+    assert_eq!((e.span().line, e.span().col), (1, 14));
+    assert!(e.to_string().starts_with("<expression>:1:14: expected"), "{e}");
     let e = poly::Poly::parse("1/(Phi - 1)").expect_err("division by a polynomial");
     assert_eq!(e.kind(), ErrorKind::BadDivision);
 }
@@ -271,6 +272,12 @@ mod fuzz {
 fn hostile_text() {
     use ErrorKind::{BadPower, Syntax};
     check(&format!("{HEAD}v = v - 1.2.3*Phi*y\n"), Syntax, 4, 9, "malformed number `1.2.3`");
+    // A trailing operator before a comment or blanks: the column is right
+    // after the operator, where the missing operand goes (issue 27).
+    check(&format!("{HEAD}v = v - Phi*y*  # the step\n"), Syntax, 4, 15, "a number, a name or `(`");
+    check(&format!("{HEAD}v = v - Phi*y*    \n"), Syntax, 4, 15, "a number, a name or `(`");
+    check(&format!("{HEAD}v = (v - Phi*y   # unclosed\n"), Syntax, 4, 15, "`)`");
+    check("method   # no name\nstate v\n", Syntax, 1, 7, "the method's name");
     check(&format!("{HEAD}v = v - Phi^99999999999999999999*y\n"), BadPower, 4, 13, "exponent 99999999999999999999 is too large");
     check(&format!("{HEAD}v = v - Phi^(1/2)*y\n"), Syntax, 4, 15, "exponents are integer literals");
     check(&format!("{HEAD}v = v - Phi^0.5*y\n"), BadPower, 4, 13, "exponents are integer literals");
