@@ -95,12 +95,13 @@ fn a_nonlinear_system_is_an_error() {
         10,
         "nonlinear term",
     );
+    // A declaration may follow assignments, never a use of its name.
     check(
-        &format!("{HEAD}v = v\nunknown k\nk = v\n"),
+        &format!("{HEAD}v = v + Phi*k\nunknown k\nk = v\n"),
         ErrorKind::Declaration,
-        5,
-        1,
-        "after an assignment",
+        4,
+        13,
+        "`k` is used before its declaration on line 5",
     );
     check(
         "method m\nstate v y\nunknown k\nk = v/k\nv = v + k\n",
@@ -111,6 +112,8 @@ fn a_nonlinear_system_is_an_error() {
     );
 }
 
+/// A singular system is located on the first equation, in file order,
+/// that depends on the equations above it.
 #[test]
 fn a_system_singular_for_every_phi_is_an_error() {
     check(
@@ -120,12 +123,13 @@ fn a_system_singular_for_every_phi_is_an_error() {
         1,
         "singular for every Phi: its determinant",
     );
+    // Rows (1, −2) and (−1/2, 1): the second equation is −1/2 times the first.
     check(
         "method m\nstate v y\nunknown a b\na = 2*b + v\nb = a/2 + Phi*y\nv = v + a\n",
         ErrorKind::Singular,
-        4,
+        5,
         1,
-        "is 0",
+        "is 0, and this equation is a combination of the equations above it (line 4)",
     );
 }
 
