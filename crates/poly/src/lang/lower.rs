@@ -20,10 +20,12 @@
 //! other line `lhs = rhs` is an equation `L = lhs − rhs = 0`, linear in the
 //! unknowns, with unknowns on either side. Such an equation is stored in
 //! the same form, `u = u − L`, for an unknown u that no line defines: the
-//! k-th such equation in the file takes the k-th such unknown (primed state
-//! variables in state order, then declared unknowns). Its row of the
-//! system A u = E s is then ∂L/∂u whichever unknown it takes, and the
-//! system is solved exactly as one written with `u = ...` lines.
+//! k-th such equation in the file takes the k-th such unknown by name. Its
+//! row of the system A u = E s is then ∂L/∂u whichever unknown it takes,
+//! and the system is solved exactly as one written with `u = ...` lines.
+//! Which row it fills only decides the sign of det A (the leading
+//! coefficient of χ); taking the unknowns by name, not in declaration
+//! order, keeps χ the same when declarations are reordered.
 
 use std::collections::{BTreeMap, HashMap};
 
@@ -317,6 +319,8 @@ impl Program {
         // Whether each assignment's value depends on an unknown.
         let mut reads_unknown: Vec<bool> = Vec::new();
         let mut defined: Vec<Option<Equation>> = vec![None; unknowns.len()];
+        // Where each `NAME = ...` equation stands.
+        let mut defined_at: Vec<Span> = Vec::new();
         let mut general: Vec<General> = Vec::new();
         // The first equation holding each state variable's `x'`: no
         // assignment to x may follow it.
@@ -385,6 +389,7 @@ impl Program {
                 if let Some(v) = unknowns[u].state {
                     solved_on[v].get_or_insert((tspan.line, true));
                 }
+                defined_at.push(tspan);
                 defined[u] = Some(Equation {
                     unknown: u,
                     terms: lin.terms.into_iter().collect(),
@@ -435,8 +440,14 @@ impl Program {
                 text,
             });
         }
-        let equations =
-            place_equations(defined, general, &unknowns, &self.declared_unknowns, &first_primed)?;
+        let equations = place_equations(
+            defined,
+            &defined_at,
+            general,
+            &unknowns,
+            &self.declared_unknowns,
+            &first_primed,
+        )?;
         let (history, finals, gauss_seidel) = (lw.history, lw.latest_state, lw.gauss_seidel);
         Ok(Method {
             name: self.name,
@@ -504,10 +515,11 @@ fn unknown_list(unknowns: &[Unknown]) -> String {
 
 /// Every unknown's equation, in unknown order: the `NAME = ...` lines for
 /// the unknowns they name, and the other equations, in file order, for the
-/// unknowns left, in unknown order (`u = u − L`). Too many or too few
-/// equations are errors on the equation or the unknown concerned.
+/// unknowns left, by name (`u = u − L`). Too many or too few equations are
+/// errors on the equation or the unknown concerned.
 fn place_equations(
     mut defined: Vec<Option<Equation>>,
+    defined_at: &[Span],
     general: Vec<General>,
     unknowns: &[Unknown],
     declared_unknowns: &[(String, Span)],
@@ -515,12 +527,17 @@ fn place_equations(
 ) -> Result<Vec<Equation>, Error> {
     let free: Vec<usize> = (0..unknowns.len()).filter(|&u| defined[u].is_none()).collect();
     if general.len() > free.len() {
-        let extra = &general[free.len()];
+        // The first equation, in file order, beyond one per unknown.
+        let mut at: Vec<Span> =
+            defined_at.iter().copied().chain(general.iter().map(|g| g.span)).collect();
+        at.sort_by_key(|s| (s.line, s.col));
         let n = unknowns.len();
+        let above: Vec<String> = at[..n].iter().take(8).map(|s| s.line.to_string()).collect();
+        let more = if n > above.len() { ", ..." } else { "" };
         return Err(Error::new(
             ErrorKind::Equation,
-            extra.span,
-            format!("one equation too many: the {n} unknown(s) ({}) already have {n} equation(s) above; expected one equation per unknown, or `name = ...` to assign a value", unknown_list(unknowns)),
+            at[n],
+            format!("one equation too many: the {n} unknown(s) ({}) already have {n} equation(s) above (line(s) {}{more}); expected one equation per unknown, or `name = ...` to assign a value", unknown_list(unknowns), above.join(", ")),
         ));
     }
     if general.len() < free.len() {
@@ -547,7 +564,9 @@ fn place_equations(
             }
         });
     }
-    for (g, &u) in general.into_iter().zip(&free) {
+    let mut by_name = free;
+    by_name.sort_by(|&a, &b| unknowns[a].name.cmp(&unknowns[b].name));
+    for (g, &u) in general.into_iter().zip(&by_name) {
         let r = Lin::operand(Operand::Unknown(u)).add(g.lin, -1);
         defined[u] = Some(Equation {
             unknown: u,
@@ -727,11 +746,7 @@ impl Lowerer<'_> {
                 Ok(Lin::operand(Operand::Start { var, lag: *k }))
             }
             ExprKind::Primed(n) => self.primed(n, e.span),
-            ExprKind::Call { .. } => Err(Error::new(
-                ErrorKind::Syntax,
-                e.span,
-                "a root function outside a `const` line: expected `const c = ...` first, then `c`",
-            )),
+            ExprKind::Call { .. } => unreachable!("the parser reads calls in `const` lines only"),
             ExprKind::Neg(x) => Ok(Lin::default().add(self.lower(x)?, -1)),
             ExprKind::Pow(b, n) => {
                 let base = self.lower(b)?;

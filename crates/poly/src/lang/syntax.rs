@@ -388,6 +388,9 @@ fn describe(t: &Tok) -> String {
 
 const KEYWORDS: [&str; 3] = ["method", "state", "param"];
 
+/// The functions a `const` line may call.
+const ROOT_FUNCTIONS: [&str; 3] = ["sqrt", "cbrt", "root"];
+
 impl Parser {
     fn peek(&self) -> &Token {
         &self.toks[self.pos]
@@ -541,7 +544,7 @@ impl Parser {
     fn call(&mut self) -> Result<Expr, Error> {
         let f = self.bump();
         let func = match &f.tok {
-            Tok::Name(n) if ["sqrt", "cbrt", "root"].contains(&n.as_str()) => n.clone(),
+            Tok::Name(n) if ROOT_FUNCTIONS.contains(&n.as_str()) => n.clone(),
             _ => {
                 return Err(Error::new(
                     ErrorKind::BadConstant,
@@ -690,8 +693,17 @@ impl Parser {
                     return Err(self.err("a value (`method`, `state` and `param` are keywords)"));
                 }
                 let next = self.toks.get(self.pos + 1).map(|t| &t.tok);
-                if self.in_const && next == Some(&Tok::Sym('(')) {
-                    return self.call();
+                if next == Some(&Tok::Sym('(')) {
+                    if self.in_const {
+                        return self.call();
+                    }
+                    if ROOT_FUNCTIONS.contains(&n.as_str()) {
+                        return Err(Error::new(
+                            ErrorKind::BadConstant,
+                            t.span,
+                            format!("`{n}(...)` outside a `const` line: expected `const c = {n}(...)` on a line above, then `c`"),
+                        ));
+                    }
                 }
                 self.bump();
                 if self.peek().tok == Tok::Sym('@') {
