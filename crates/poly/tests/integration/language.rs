@@ -234,3 +234,206 @@ fn misused_equations_are_located() {
     check(&format!("{H}v' + y' = v\ny' = y\nv = y\n"), Equation, 5, 1, "`v` is assigned after its equation on line 3, which holds `v'`");
     check(&format!("{H}v' + y' v\n"), ErrorKind::Syntax, 3, 9, "`=` or an operator");
 }
+
+/// Property: a program derives the same χ (and det A) wherever its
+/// declarations stand, as long as each comes before the first use of its
+/// names, and whatever the order of the names in `state` and `unknown`
+/// lines. The programs (in the style of `testkit::random_program`) have
+/// 1–3 state variables, an optional parameter and constant (rational or
+/// with a radical), up to two declared unknowns with their equations, up
+/// to two equations in primed state variables written with unknowns on the
+/// left, a scalar temporary and a state temporary.
+mod declaration_order {
+    use proptest::prelude::*;
+
+    /// Choices read from random bytes (zero bytes give the simplest program).
+    struct Dice<'a>(&'a [u8], usize);
+
+    impl Dice<'_> {
+        fn pick(&mut self, n: usize) -> usize {
+            let b = self.0.get(self.1).copied().unwrap_or(0);
+            self.1 += 1;
+            b as usize % n
+        }
+        fn shuffle<T>(&mut self, v: &mut [T]) {
+            for i in (1..v.len()).rev() {
+                let j = self.pick(i + 1);
+                v.swap(i, j);
+            }
+        }
+    }
+
+    /// A declaration: its keyword, its names and what follows them.
+    struct Decl {
+        keyword: &'static str,
+        names: Vec<String>,
+        rest: String,
+    }
+
+    impl Decl {
+        fn text(&self) -> String {
+            format!("{} {}{}\n", self.keyword, self.names.join(" "), self.rest)
+        }
+    }
+
+    /// A line that computes, with the names it uses.
+    struct Line {
+        text: String,
+        uses: Vec<String>,
+    }
+
+    const COEFS: [&str; 6] = ["1", "-1", "1/2", "-1/2", "2", "1/3"];
+    const CONSTS: [&str; 3] = ["1/12", "(3 + sqrt(3))/6", "2/3 - sqrt(2)/5"];
+
+    /// The declarations in their canonical order and the computing lines.
+    fn program(d: &mut Dice) -> (Vec<Decl>, Vec<Line>) {
+        let n = 1 + d.pick(3);
+        let xs: Vec<String> = (0..n).map(|i| format!("x{i}")).collect();
+        let has_d = d.pick(2) == 1;
+        let konst = d.pick(CONSTS.len() + 1);
+        let n_k = d.pick(3);
+        let n_gen = d.pick(n.min(2) + 1);
+        let mut decls = vec![Decl { keyword: "state", names: xs.clone(), rest: String::new() }];
+        if has_d {
+            decls.push(Decl { keyword: "param", names: vec!["D".into()], rest: String::new() });
+        }
+        if konst > 0 {
+            let rest = format!(" = {}", CONSTS[konst - 1]);
+            decls.push(Decl { keyword: "const", names: vec!["c".into()], rest });
+        }
+        let ks: Vec<String> = (0..n_k).map(|j| format!("k{j}")).collect();
+        if n_k > 0 {
+            if d.pick(2) == 0 {
+                decls.push(Decl { keyword: "unknown", names: ks.clone(), rest: String::new() });
+            } else {
+                for k in &ks {
+                    decls.push(Decl {
+                        keyword: "unknown",
+                        names: vec![k.clone()],
+                        rest: String::new(),
+                    });
+                }
+            }
+        }
+        let mut body: Vec<Line> = Vec::new();
+        let coef = |d: &mut Dice| COEFS[d.pick(COEFS.len())];
+        // An optional factor D* or c*, with the name it uses.
+        let factor = |d: &mut Dice, uses: &mut Vec<String>| match d.pick(3) {
+            1 if has_d => {
+                uses.push("D".into());
+                "D*"
+            }
+            2 if konst > 0 => {
+                uses.push("c".into());
+                "c*"
+            }
+            _ => "",
+        };
+        let has_h = d.pick(2) == 1;
+        if has_h {
+            body.push(Line { text: "h = Phi/2\n".into(), uses: vec![] });
+        }
+        for k in &ks {
+            let (a, b) = (xs[d.pick(n)].clone(), xs[d.pick(n)].clone());
+            let mut uses = vec![a.clone(), b.clone(), k.clone()];
+            let f = factor(d, &mut uses);
+            let (c1, c2, c3) = (coef(d), coef(d), coef(d));
+            let text = format!("{k} = {c1}*{a} + {c2}*Phi*{k} + {c3}*{f}{b}\n");
+            body.push(Line { text, uses });
+        }
+        // Operands the remaining lines may read.
+        let mut operands: Vec<String> = xs.iter().chain(&ks).cloned().collect();
+        match n_gen {
+            1 => {
+                let op = operands[d.pick(operands.len())].clone();
+                let (c1, c2) = (coef(d), coef(d));
+                let text = format!("x0' - {c1}*Phi*x0' = x0 + {c2}*Phi*{op}\n");
+                body.push(Line { text, uses: vec!["x0".into(), op] });
+            }
+            2 => {
+                let (p, q) = (
+                    operands[d.pick(operands.len())].clone(),
+                    operands[d.pick(operands.len())].clone(),
+                );
+                let (c1, c2) = (coef(d), coef(d));
+                let text = format!("x0' + {c1}*Phi*x1' = x0 + Phi*{p}\n");
+                body.push(Line { text, uses: vec!["x0".into(), "x1".into(), p] });
+                let text = format!("x1' - {c2}*Phi*x0' = x1 + Phi*{q}\n");
+                body.push(Line { text, uses: vec!["x0".into(), "x1".into(), q] });
+            }
+            _ => {}
+        }
+        if d.pick(2) == 1 {
+            let (a, op) = (xs[d.pick(n)].clone(), operands[d.pick(operands.len())].clone());
+            let text = format!("t = {a} + {}*Phi*{op}\n", coef(d));
+            body.push(Line { text, uses: vec![a, op] });
+            operands.push("t".into());
+        }
+        // The state variables without an equation are assigned.
+        for x in xs.iter().skip(n_gen) {
+            let (p, q) = (
+                operands[d.pick(operands.len())].clone(),
+                operands[d.pick(operands.len())].clone(),
+            );
+            let mut uses = vec![x.clone(), p.clone(), q.clone()];
+            let f = factor(d, &mut uses);
+            let scale = if has_h && d.pick(2) == 1 { "h*" } else { "" };
+            let text =
+                format!("{x} = {x} + {}*{f}Phi*{p} + {}*{scale}Phi^2*{q}\n", coef(d), coef(d));
+            body.push(Line { text, uses });
+        }
+        (decls, body)
+    }
+
+    /// The program with every declaration first, in canonical order.
+    fn canonical(decls: &[Decl], body: &[Line]) -> String {
+        let mut s = String::from("method gen\n");
+        decls.iter().for_each(|d| s += &d.text());
+        body.iter().for_each(|l| s += &l.text);
+        s
+    }
+
+    /// The program with each declaration at a random place before the
+    /// first use of its names, and the names of each line shuffled.
+    fn permuted(mut decls: Vec<Decl>, body: &[Line], d: &mut Dice) -> String {
+        let mut placed: Vec<(usize, usize, Decl)> = Vec::new();
+        for mut decl in decls.drain(..) {
+            let first_use = body
+                .iter()
+                .position(|l| l.uses.iter().any(|u| decl.names.contains(u)))
+                .unwrap_or(body.len());
+            d.shuffle(&mut decl.names);
+            placed.push((d.pick(first_use + 1), d.pick(4), decl));
+        }
+        placed.sort_by_key(|&(at, tie, _)| (at, tie));
+        let mut s = String::from("method gen\n");
+        let mut next = placed.iter().peekable();
+        for (i, line) in body.iter().enumerate() {
+            while let Some((_, _, decl)) = next.next_if(|(at, _, _)| *at == i) {
+                s += &decl.text();
+            }
+            s += &line.text;
+        }
+        next.for_each(|(_, _, decl)| s += &decl.text());
+        s
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(128))]
+
+        #[test]
+        fn moving_declarations_keeps_chi(bytes in prop::collection::vec(any::<u8>(), 80)) {
+            let (decls, body) = program(&mut Dice(&bytes, 0));
+            let plain = canonical(&decls, &body);
+            let moved = permuted(decls, &body, &mut Dice(&bytes, 40));
+            let derive = |src: &str| {
+                poly::Method::parse("gen.zm", src)
+                    .and_then(|m| poly::derive(&m))
+                    .map_err(|e| TestCaseError::fail(format!("{e}\n{src}")))
+            };
+            let (a, b) = (derive(&plain)?, derive(&moved)?);
+            prop_assert_eq!(&a.charpoly, &b.charpoly, "\n{}\nvs\n{}", plain, moved);
+            prop_assert_eq!(&a.p_denominator, &b.p_denominator, "\n{}\nvs\n{}", plain, moved);
+        }
+    }
+}
