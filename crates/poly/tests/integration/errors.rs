@@ -287,7 +287,7 @@ mod fuzz {
 #[test]
 #[rustfmt::skip]
 fn hostile_text() {
-    use ErrorKind::{BadPower, Declaration, Syntax};
+    use ErrorKind::{BadPower, Declaration, Singular, Syntax};
     check(&format!("{HEAD}v = v - 1.2.3*Phi*y\n"), Syntax, 4, 9, "malformed number `1.2.3`");
     // The empty file, and files of nothing but blanks or a comment, at 1:1.
     check("", Declaration, 1, 1, "missing `method NAME` line");
@@ -298,6 +298,12 @@ fn hostile_text() {
     check(&format!("{HEAD}v = v - Phi*y*  # the step\n"), Syntax, 4, 15, "a number, a name or `(`");
     check(&format!("{HEAD}v = v - Phi*y*    \n"), Syntax, 4, 15, "a number, a name or `(`");
     check(&format!("{HEAD}v = (v - Phi*y   # unclosed\n"), Syntax, 4, 15, "`)`");
+    // A system singular for every Φ is located on the equation that makes
+    // it singular (the second), not the first (more in `implicit.rs`).
+    check("method m\nstate v y\nunknown a b\na = 2*b + v\nb = a/2 + Phi*y\nv = v + a\n", Singular, 5, 1, "singular for every Phi");
+    // Chains of 10,000 temporaries derive in tens of milliseconds: see
+    // `large::chains_of_10_000_temporaries_derive_their_short_programs` and
+    // the bench `chain/temporaries_10000` (no timed tests).
     check("method   # no name\nstate v\n", Syntax, 1, 7, "the method's name");
     check(&format!("{HEAD}v = v - Phi^99999999999999999999*y\n"), BadPower, 4, 13, "exponent 99999999999999999999 is too large");
     check(&format!("{HEAD}v = v - Phi^(1/2)*y\n"), Syntax, 4, 15, "exponents are integer literals");
