@@ -24,8 +24,8 @@ pub enum ErrorKind {
     BadPower,
     /// A state-independent term in an assignment: the step must be linear.
     Affine,
-    /// A name declared twice, assigned where it may not be, or a missing
-    /// `method`/`state` line.
+    /// A name declared twice, used before its declaration, assigned where
+    /// it may not be, or a missing `method`/`state` line.
     Declaration,
     /// The z-domain and state-space derivations disagree (an internal fault,
     /// reported rather than hidden).
@@ -41,14 +41,18 @@ pub enum ErrorKind {
     /// to classify).
     NoRoots,
     /// An unknown (`unknown a` or a primed state `x'`) without an equation,
-    /// with two, or an equation for a name that is not an unknown.
+    /// with two, an equation for a name that is not an unknown, one equation
+    /// more than there are unknowns, or an equation that holds no unknown.
     Equation,
     /// A prime on a name that has no end-of-step value: a temporary, a
     /// parameter, a constant or a history read (`y'@1`).
     BadPrime,
     /// The implicit system is singular for every Φ.
     Singular,
-    /// A `const` that is not `sqrt`, `cbrt` or `root` of a positive integer.
+    /// A `const` whose expression is not an exact constant (it reads a
+    /// parameter, a state variable or an unknown, calls a function other
+    /// than `sqrt`, `cbrt` or `root`, or takes a root of something other
+    /// than a positive integer), or a root function outside a `const` line.
     BadConstant,
     /// A series of Ψ or |z| that does not exist for this χ (not second
     /// order, no complex pair near Φ = 0, or Ψ not a series over Q).

@@ -6,7 +6,9 @@
 //! `multivariate`).
 
 pub mod builtins;
+pub(crate) mod constant;
 pub(crate) mod load;
+pub(crate) mod lower;
 pub(crate) mod method;
 pub(crate) mod params;
 pub(crate) mod syntax;

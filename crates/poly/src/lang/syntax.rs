@@ -2,18 +2,25 @@
 //!
 //! ```text
 //! file   := line*
-//! line   := [ 'method' NAME | 'state' NAME+ | 'param' NAME+ | NAME '=' expr ] [ '#' comment ]
-//!         | 'unknown' NAME+ | 'const' NAME '=' FUNC '(' INT [',' INT] ')' | NAME "'" '=' expr
+//! line   := [ decl | NAME ['\''] '=' expr | expr '=' expr ] [ '#' comment ]
+//! decl   := 'method' NAME | 'state' NAME+ | 'param' NAME+ | 'unknown' NAME+
+//!         | 'const' NAME '=' cexpr
 //! expr   := term (('+' | '-') term)*
 //! term   := unary (('*' | '/') unary)*
 //! unary  := ('-' | '+') unary | power
 //! power  := atom [ '^' INT | '^' '(' INT ')' ]
 //! atom   := NUMBER | NAME [ '@' INT | "'" ] | '(' expr ')'
+//! cexpr  := expr, whose atoms may also be FUNC '(' INT [',' INT] ')'
+//!           with FUNC one of sqrt, cbrt, root
 //! ```
+//!
+//! A line whose left side is a name (`x = ...`, `x' = ...`) assigns or
+//! defines that name; any other left side (`a' + 2*v' = ...`) makes the
+//! line an equation in the unknowns, `left − right = 0`.
 //!
 //! Numbers are integers or decimals (`0.5`, `2.5e-3`), taken exactly. The
 //! parser only checks the grammar; names, linearity and the other semantic
-//! rules are checked when the program is lowered (see `method.rs`).
+//! rules are checked when the program is lowered (see `lower.rs`).
 
 use crate::error::{Error, ErrorKind, Span};
 use crate::{Poly, Q};
@@ -73,6 +80,11 @@ pub(crate) enum ExprKind {
     Neg(Box<Expr>),
     Bin(BinOp, Box<Expr>, Box<Expr>),
     Pow(Box<Expr>, u32),
+    /// `sqrt(N)`, `cbrt(N)` or `root(K, N)`: only in a `const` line.
+    Call {
+        func: String,
+        args: Vec<(Q, Span)>,
+    },
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -89,6 +101,7 @@ pub(crate) enum Item {
     Method(String, Span),
     State(Vec<(String, Span)>, Span),
     Param(Vec<(String, Span)>, Span),
+    /// `NAME = expr` or `NAME' = expr`.
     Assign {
         target: String,
         target_span: Span,
@@ -96,15 +109,19 @@ pub(crate) enum Item {
         line_text: String,
         primed: bool,
     },
+    /// `lhs = rhs` with any other left side: an equation in the unknowns.
+    Equation {
+        lhs: Expr,
+        rhs: Expr,
+        line_text: String,
+    },
     /// `unknown a b ...`.
     Unknown(Vec<(String, Span)>, Span),
-    /// `const NAME = FUNC(args)`: FUNC is `sqrt`, `cbrt` or `root`.
+    /// `const NAME = cexpr`.
     Const {
         name: String,
         span: Span,
-        func: String,
-        args: Vec<(Q, Span)>,
-        call_span: Span,
+        expr: Expr,
     },
 }
 
@@ -171,10 +188,13 @@ fn lex(src: &str) -> Result<Vec<Token>, Error> {
                 format!("unexpected character {}: expected a name, a number, an operator (+ - * / ^), `=`, `@` or parentheses", describe_char(c)),
             ));
         }
-        out.push(Token {
-            tok: Tok::Newline,
-            span: Span { line: line_no, col: chars.len() as u32 + 1, len: 1 },
-        });
+        // An error at the end of the line points just after its last token,
+        // not past trailing blanks or a comment.
+        let end_col = match out.get(line_start..).and_then(<[Token]>::last) {
+            Some(t) => t.span.col + t.span.len,
+            None => 1,
+        };
+        out.push(Token { tok: Tok::Newline, span: Span { line: line_no, col: end_col, len: 1 } });
     }
     let last = src.lines().count() as u32;
     out.push(Token { tok: Tok::Eof, span: Span { line: last.max(1), col: 1, len: 1 } });
@@ -351,6 +371,8 @@ pub fn parse_number(text: &str) -> Result<Q, Error> {
 struct Parser {
     toks: Vec<Token>,
     pos: usize,
+    /// Inside a `const` line, where root functions may be called.
+    in_const: bool,
 }
 
 fn describe(t: &Tok) -> String {
@@ -365,6 +387,9 @@ fn describe(t: &Tok) -> String {
 }
 
 const KEYWORDS: [&str; 3] = ["method", "state", "param"];
+
+/// The functions a `const` line may call.
+const ROOT_FUNCTIONS: [&str; 3] = ["sqrt", "cbrt", "root"];
 
 impl Parser {
     fn peek(&self) -> &Token {
@@ -430,13 +455,14 @@ impl Parser {
                 _ => break,
             }
         }
-        let head = self.bump();
-        let Tok::Name(word) = head.tok.clone() else {
-            self.pos -= 1;
-            return Err(self.err("`method`, `state`, `param` or an assignment `name = ...`"));
-        };
-        let item = match word.as_str() {
-            "method" => {
+        let head = self.peek().clone();
+        // `unknown` and `const` are keywords only before a name, so that
+        // older programs may still use them as temporaries.
+        let next_is_name =
+            matches!(self.toks.get(self.pos + 1).map(|t| &t.tok), Some(Tok::Name(_)));
+        let item = match &head.tok {
+            Tok::Name(w) if w == "method" => {
+                self.bump();
                 let t = self.peek().clone();
                 let Tok::Name(n) = t.tok else {
                     return Err(self.err("the method's name after `method`"));
@@ -444,53 +470,92 @@ impl Parser {
                 self.bump();
                 Item::Method(n, t.span)
             }
-            "state" => Item::State(self.names("one or more state variable names")?, head.span),
-            "unknown" if matches!(self.peek().tok, Tok::Name(_)) => {
+            Tok::Name(w) if w == "state" => {
+                self.bump();
+                Item::State(self.names("one or more state variable names")?, head.span)
+            }
+            Tok::Name(w) if w == "param" => {
+                self.bump();
+                Item::Param(self.names("one or more parameter names")?, head.span)
+            }
+            Tok::Name(w) if w == "unknown" && next_is_name => {
+                self.bump();
                 Item::Unknown(self.names("one or more unknown names")?, head.span)
             }
-            "const" if matches!(self.peek().tok, Tok::Name(_)) => self.constant()?,
-            "param" => Item::Param(self.names("one or more parameter names")?, head.span),
-            _ => {
-                let primed = self.peek().tok == Tok::Sym('\'');
-                if primed {
-                    self.bump();
-                }
-                if self.peek().tok != Tok::Sym('=') {
-                    return Err(self.err("`=` after the assigned name"));
-                }
+            Tok::Name(w) if w == "const" && next_is_name => {
                 self.bump();
-                let expr = self.expr()?;
-                let line_text = src_lines
-                    .get(head.span.line as usize - 1)
-                    .map(|l| l.split('#').next().unwrap_or("").trim().to_owned())
-                    .unwrap_or_default();
-                Item::Assign { target: word, target_span: head.span, expr, line_text, primed }
+                self.constant()?
+            }
+            Tok::Name(_) | Tok::Num(_) | Tok::Int(_) | Tok::Sym('(' | '-' | '+') => {
+                self.statement(src_lines)?
+            }
+            _ => {
+                return Err(self
+                    .err("`method`, `state`, `param`, an assignment `name = ...` or an equation"))
             }
         };
         self.end_of_line()?;
         Ok(Some(item))
     }
 
-    /// `const NAME = FUNC(INT [, INT])`, after the word `const`.
+    /// `NAME = expr`, `NAME' = expr` or an equation `expr = expr`.
+    fn statement(&mut self, src_lines: &[&str]) -> Result<Item, Error> {
+        let lhs = self.expr()?;
+        let named = match &lhs.kind {
+            ExprKind::Name(n) => Some((n.clone(), false)),
+            ExprKind::Primed(n) => Some((n.clone(), true)),
+            _ => None,
+        };
+        if self.peek().tok != Tok::Sym('=') {
+            return Err(self.err(if named.is_some() {
+                "`=` after the assigned name"
+            } else {
+                "`=` or an operator"
+            }));
+        }
+        self.bump();
+        let rhs = self.expr()?;
+        let line_text = src_lines
+            .get(lhs.span.line as usize - 1)
+            .map(|l| l.split('#').next().unwrap_or("").trim().to_owned())
+            .unwrap_or_default();
+        Ok(match named {
+            Some((target, primed)) => {
+                // The name alone, without a prime or parentheses around it.
+                let target_span = Span { len: target.chars().count() as u32, ..lhs.span };
+                Item::Assign { target, target_span, expr: rhs, line_text, primed }
+            }
+            None => Item::Equation { lhs, rhs, line_text },
+        })
+    }
+
+    /// `const NAME = cexpr`, after the word `const`.
     fn constant(&mut self) -> Result<Item, Error> {
         let t = self.bump();
         let Tok::Name(name) = t.tok else { unreachable!("checked by the caller") };
         self.expect_sym('=', "`=` after the constant's name")?;
-        let f = self.peek().clone();
+        self.in_const = true;
+        let expr = self.expr();
+        self.in_const = false;
+        Ok(Item::Const { name, span: t.span, expr: expr? })
+    }
+
+    /// `FUNC(INT [, INT])` in a constant's expression, at the function's name.
+    fn call(&mut self) -> Result<Expr, Error> {
+        let f = self.bump();
         let func = match &f.tok {
-            Tok::Name(n) if ["sqrt", "cbrt", "root"].contains(&n.as_str()) => n.clone(),
+            Tok::Name(n) if ROOT_FUNCTIONS.contains(&n.as_str()) => n.clone(),
             _ => {
                 return Err(Error::new(
                     ErrorKind::BadConstant,
                     f.span,
                     format!(
-                        "expected `sqrt(N)`, `cbrt(N)` or `root(K, N)` with positive integers, found {}",
+                        "unknown function {}: expected `sqrt(N)`, `cbrt(N)` or `root(K, N)` with positive integers",
                         describe(&f.tok)
                     ),
                 ))
             }
         };
-        self.bump();
         self.expect_sym('(', "`(` after the root function")?;
         let mut args = Vec::new();
         loop {
@@ -516,7 +581,7 @@ impl Parser {
             break;
         }
         let close = self.expect_sym(')', "`)` or `,` after the argument")?;
-        Ok(Item::Const { name, span: t.span, func, args, call_span: join(f.span, close) })
+        Ok(Expr { kind: ExprKind::Call { func, args }, span: join(f.span, close) })
     }
 
     fn expr(&mut self) -> Result<Expr, Error> {
@@ -627,6 +692,19 @@ impl Parser {
                 if KEYWORDS.contains(&n.as_str()) {
                     return Err(self.err("a value (`method`, `state` and `param` are keywords)"));
                 }
+                let next = self.toks.get(self.pos + 1).map(|t| &t.tok);
+                if next == Some(&Tok::Sym('(')) {
+                    if self.in_const {
+                        return self.call();
+                    }
+                    if ROOT_FUNCTIONS.contains(&n.as_str()) {
+                        return Err(Error::new(
+                            ErrorKind::BadConstant,
+                            t.span,
+                            format!("`{n}(...)` outside a `const` line: expected `const c = {n}(...)` on a line above, then `c`"),
+                        ));
+                    }
+                }
                 self.bump();
                 if self.peek().tok == Tok::Sym('@') {
                     self.bump();
@@ -686,7 +764,7 @@ fn bin(op: BinOp, l: Expr, r: Expr) -> Expr {
 pub(crate) fn parse(src: &str) -> Result<Vec<Item>, Error> {
     let toks = lex(src)?;
     let lines: Vec<&str> = src.lines().collect();
-    let mut p = Parser { toks, pos: 0 };
+    let mut p = Parser { toks, pos: 0, in_const: false };
     let mut items = Vec::new();
     while let Some(item) = p.item(&lines)? {
         items.push(item);
@@ -699,7 +777,7 @@ pub(crate) fn parse(src: &str) -> Result<Vec<Item>, Error> {
 /// constants. Used to transcribe the paper's printed equations.
 pub(crate) fn parse_poly(src: &str) -> Result<crate::Poly, Error> {
     let toks = lex(src)?;
-    let mut p = Parser { toks, pos: 0 };
+    let mut p = Parser { toks, pos: 0, in_const: false };
     while p.peek().tok == Tok::Newline {
         p.bump();
     }
@@ -718,11 +796,11 @@ fn to_poly(e: &Expr) -> Result<crate::Poly, Error> {
     Ok(match &e.kind {
         ExprKind::Num(q) => Poly::constant(q.clone()),
         ExprKind::Name(n) => Poly::var(n),
-        ExprKind::Hist(..) | ExprKind::Primed(_) => {
+        ExprKind::Hist(..) | ExprKind::Primed(_) | ExprKind::Call { .. } => {
             return Err(Error::new(
                 ErrorKind::Syntax,
                 e.span,
-                "expected a polynomial, found a history read `@` or a primed name",
+                "expected a polynomial, found a history read `@`, a primed name or a function call",
             ))
         }
         ExprKind::Neg(x) => -to_poly(x)?,

@@ -99,11 +99,59 @@ pub fn system(m: &Method) -> System {
     System { a, e, h_s, h_u }
 }
 
-/// det A, the determinant of the step's linear system (1 when explicit).
-pub fn system_determinant(m: &Method) -> Poly {
-    let s = system(m);
-    if s.a.rows() == 0 {
+/// det `a`, reduced in the field of `m`'s constants (1 when `a` is empty):
+/// for `a` = A, the determinant of the step's linear system.
+pub(crate) fn determinant(m: &Method, a: &PolyMatrix) -> Poly {
+    if a.rows() == 0 {
         return Poly::one();
     }
-    fix(m, s.a.det())
+    fix(m, a.det())
+}
+
+/// The first of `rows` that is a linear combination of the rows before it
+/// (over the rational functions in the parameters, with `m`'s constants);
+/// `None` when the rows are linearly independent.
+///
+/// k rows R are dependent exactly when their Gram determinant det(R Rᵀ) is
+/// 0: by Cauchy–Binet it is the sum of the squares of R's k×k minors, and
+/// everything here is real (rational coefficients, positive real radicals,
+/// real parameters), so the sum is the zero polynomial only when every
+/// minor is. A prefix that is dependent stays dependent when rows are
+/// added, so a binary search over the prefixes finds the first dependent
+/// row in O(log n) determinants.
+pub(crate) fn first_dependent_row(m: &Method, rows: &[Vec<Poly>]) -> Option<usize> {
+    let dependent = |k: usize| {
+        let gram = PolyMatrix::from_rows(
+            (0..k)
+                .map(|i| {
+                    (0..k)
+                        .map(|j| {
+                            let mut acc = Poly::zero();
+                            for (x, y) in rows[i].iter().zip(&rows[j]) {
+                                if !x.is_zero() && !y.is_zero() {
+                                    acc += &(x * y);
+                                }
+                            }
+                            fix(m, acc)
+                        })
+                        .collect()
+                })
+                .collect(),
+        );
+        determinant(m, &gram).is_zero()
+    };
+    if !dependent(rows.len()) {
+        return None;
+    }
+    // dependent(lo) is false (no rows are independent), dependent(hi) true.
+    let (mut lo, mut hi) = (0, rows.len());
+    while hi - lo > 1 {
+        let mid = lo + (hi - lo) / 2;
+        if dependent(mid) {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    Some(hi - 1)
 }

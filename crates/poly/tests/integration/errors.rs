@@ -26,7 +26,9 @@ pub(crate) fn check(src: &str, kind: ErrorKind, line: u32, col: u32, says: &str)
     assert!(err.message().contains("expected"), "message does not say what was expected:\n{shown}");
     assert!(shown.starts_with(&format!("bad.zm:{line}:{col}: ")), "{shown}");
     let lines: Vec<&str> = shown.lines().collect();
-    let source_line = src.lines().nth(line as usize - 1).expect("error line exists");
+    // The empty file has no line 1 to echo.
+    let source_line = src.lines().nth(line as usize - 1).unwrap_or("");
+    assert!(line == 1 || src.lines().nth(line as usize - 1).is_some(), "no line {line}");
     // Lines longer than the snippet are cut (`long_lines_and_names_are_cut`).
     if !source_line.trim().is_empty() && source_line.chars().count() <= 100 {
         // `N | text` then `  | ^^^` with the caret under column `col`.
@@ -104,7 +106,13 @@ fn declaration_errors() {
     check("method m\nstate v\nparam v\n", K, 3, 7, "declared twice");
     check("method m\nmethod n\nstate v\n", K, 2, 8, "a second `method`");
     check("method m\nstate v\nstate y\n", K, 3, 1, "a second `state`");
-    check("method m\nstate v\nv = v\nparam D\n", K, 4, 1, "declaration after an assignment");
+    check(
+        "method m\nstate v\nv = D*v\nparam D\n",
+        K,
+        3,
+        5,
+        "`D` is used before its declaration on line 4",
+    );
     check("method m\nstate v\nPhi = v\n", K, 3, 1, "`Phi` is a parameter");
     check(&format!("{HEAD}D = v\n"), K, 4, 1, "`D` is a parameter");
     check("method m\nstate v\nparam Phi\n", K, 3, 7, "`Phi` is always a parameter");
@@ -148,8 +156,9 @@ fn locations_count_blank_lines_and_comments() {
 fn polynomial_parse_errors_are_located() {
     let e = poly::Poly::parse("z^2 - 2*p*z + ").expect_err("dangling operator");
     assert_eq!(e.kind(), ErrorKind::Syntax);
-    assert_eq!((e.span().line, e.span().col), (1, 15));
-    assert!(e.to_string().starts_with("<expression>:1:15: expected"), "{e}");
+    // Right after the trailing operator, not after the blank that follows.
+    assert_eq!((e.span().line, e.span().col), (1, 14));
+    assert!(e.to_string().starts_with("<expression>:1:14: expected"), "{e}");
     let e = poly::Poly::parse("1/(Phi - 1)").expect_err("division by a polynomial");
     assert_eq!(e.kind(), ErrorKind::BadDivision);
 }
@@ -201,9 +210,18 @@ mod fuzz {
         "99999999999",
     ];
 
+    /// Parsing never panics, every error it returns has a line and a
+    /// column (issue 27), and every program that parses derives.
     fn no_panic(src: &str) {
-        if let Ok(m) = Method::parse("fuzz.zm", src) {
-            poly::derive(&m).unwrap_or_else(|e| panic!("{e}\nfrom:\n{src}"));
+        match Method::parse("fuzz.zm", src) {
+            Ok(m) => {
+                poly::derive(&m).unwrap_or_else(|e| panic!("{e}\nfrom:\n{src:?}"));
+            }
+            Err(e) => {
+                let (line, col) = (e.span().line, e.span().col);
+                assert!(line >= 1 && col >= 1, "{line}:{col}: {e}\nfrom:\n{src:?}");
+                assert!(line as usize <= src.lines().count().max(1), "{e}\nfrom:\n{src:?}");
+            }
         }
         let _ = poly::Poly::parse(src);
     }
@@ -269,8 +287,24 @@ mod fuzz {
 #[test]
 #[rustfmt::skip]
 fn hostile_text() {
-    use ErrorKind::{BadPower, Syntax};
+    use ErrorKind::{BadPower, Declaration, Singular, Syntax};
     check(&format!("{HEAD}v = v - 1.2.3*Phi*y\n"), Syntax, 4, 9, "malformed number `1.2.3`");
+    // The empty file, and files of nothing but blanks or a comment, at 1:1.
+    check("", Declaration, 1, 1, "missing `method NAME` line");
+    check("\n\n", Declaration, 1, 1, "missing `method NAME` line");
+    check("  \t ", Declaration, 1, 1, "missing `method NAME` line");
+    // A trailing operator before a comment or blanks: the column is right
+    // after the operator, where the missing operand goes (issue 27).
+    check(&format!("{HEAD}v = v - Phi*y*  # the step\n"), Syntax, 4, 15, "a number, a name or `(`");
+    check(&format!("{HEAD}v = v - Phi*y*    \n"), Syntax, 4, 15, "a number, a name or `(`");
+    check(&format!("{HEAD}v = (v - Phi*y   # unclosed\n"), Syntax, 4, 15, "`)`");
+    // A system singular for every Φ is located on the equation that makes
+    // it singular (the second), not the first (more in `implicit.rs`).
+    check("method m\nstate v y\nunknown a b\na = 2*b + v\nb = a/2 + Phi*y\nv = v + a\n", Singular, 5, 1, "singular for every Phi");
+    // Chains of 10,000 temporaries derive in tens of milliseconds: see
+    // `large::chains_of_10_000_temporaries_derive_their_short_programs` and
+    // the bench `chain/temporaries_10000` (no timed tests).
+    check("method   # no name\nstate v\n", Syntax, 1, 7, "the method's name");
     check(&format!("{HEAD}v = v - Phi^99999999999999999999*y\n"), BadPower, 4, 13, "exponent 99999999999999999999 is too large");
     check(&format!("{HEAD}v = v - Phi^(1/2)*y\n"), Syntax, 4, 15, "exponents are integer literals");
     check(&format!("{HEAD}v = v - Phi^0.5*y\n"), BadPower, 4, 13, "exponents are integer literals");

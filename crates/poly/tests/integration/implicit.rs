@@ -95,12 +95,13 @@ fn a_nonlinear_system_is_an_error() {
         10,
         "nonlinear term",
     );
+    // A declaration may follow assignments, never a use of its name.
     check(
-        &format!("{HEAD}v = v\nunknown k\nk = v\n"),
+        &format!("{HEAD}v = v + Phi*k\nunknown k\nk = v\n"),
         ErrorKind::Declaration,
-        5,
-        1,
-        "after an assignment",
+        4,
+        13,
+        "`k` is used before its declaration on line 5",
     );
     check(
         "method m\nstate v y\nunknown k\nk = v/k\nv = v + k\n",
@@ -111,6 +112,8 @@ fn a_nonlinear_system_is_an_error() {
     );
 }
 
+/// A singular system is located on the first equation, in file order,
+/// that depends on the equations above it.
 #[test]
 fn a_system_singular_for_every_phi_is_an_error() {
     check(
@@ -120,12 +123,13 @@ fn a_system_singular_for_every_phi_is_an_error() {
         1,
         "singular for every Phi: its determinant",
     );
+    // Rows (1, −2) and (−1/2, 1): the second equation is −1/2 times the first.
     check(
         "method m\nstate v y\nunknown a b\na = 2*b + v\nb = a/2 + Phi*y\nv = v + a\n",
         ErrorKind::Singular,
-        4,
+        5,
         1,
-        "is 0",
+        "is 0, and this equation is a combination of the equations above it (line 4)",
     );
 }
 
@@ -407,4 +411,134 @@ fn boundedness_at_a_double_root_reads_p_not_its_numerator() {
 /// The stability report of a built-in through the front door.
 fn front_door(name: &str) -> poly::StabilityReport {
     poly::derive(&poly::builtin(name).unwrap()).unwrap().stability(&poly::Params::new()).unwrap()
+}
+
+/// The equation that makes the system singular, in a few shapes: a sum of
+/// the two above it, a row of zeros, rows dependent through Φ, and rows
+/// dependent over Q(√2) only.
+#[test]
+#[rustfmt::skip]
+fn a_singular_system_is_located_on_the_equation_that_makes_it_singular() {
+    use ErrorKind::Singular;
+    const H: &str = "method m\nstate v y\nconst r = sqrt(2)\nunknown a b c\n";
+    const USE: &str = "v = v + Phi*(a + b + c)\ny = y + Phi*v\n";
+    // Lines 5, 6, 7: the third is the sum of the first two.
+    check(&format!("{H}a + b = v\nb + c = y\na + 2*b + c = v + y\n{USE}"), Singular, 7, 1, "a combination of the equations above it (lines 5, 6)");
+    // The first equation in file order that depends on those above it,
+    // not the first that could be dropped: here the second.
+    check(&format!("{H}a + b = v\n2*a + 2*b = y\nc = v\n{USE}"), Singular, 6, 1, "(line 5)");
+    // `c = c + v` determines nothing: its row of A is 0.
+    check(&format!("{H}a = v\nb = y\nc = c + v\n{USE}"), Singular, 7, 1, "this equation determines no unknown");
+    check(&format!("{H}  c = c + v\na = v\nb = y\n{USE}"), Singular, 5, 3, "determines no unknown");
+    // Rows (1, Φ, 0) and (Φ, Φ², 0): dependent for every Φ.
+    check(&format!("{H}a + Phi*b = v\nPhi*a + Phi^2*b = y\nc = v\n{USE}"), Singular, 6, 1, "(line 5)");
+    // Rows (1, r) and (r, 2) with r = √2: dependent over Q(√2), not over Q.
+    check(&format!("{H}a + r*b = v\nr*a + 2*b = y\nc = v\n{USE}"), Singular, 6, 1, "(line 5)");
+    // The same rows with 3 for 2 are independent.
+    assert!(Method::parse("ok.zm", &format!("{H}a + r*b = v\nr*a + 3*b = y\nc = v\n{USE}")).is_ok());
+}
+
+/// Random systems of up to four equations, some rows combinations of
+/// earlier ones: the error names the first row whose prefix has rank below
+/// its length, found here by brute force over every maximal minor (Laplace
+/// expansion), the slow oracle of the Gram-determinant search.
+mod singular_oracle {
+    use super::*;
+    use poly::PolyMatrix;
+    use proptest::prelude::*;
+
+    /// A coefficient a + b·Φ of a row entry.
+    fn entry(a: i64, b: i64) -> Poly {
+        Poly::int(a) + &Poly::int(b) * &Poly::sym(Sym::phi())
+    }
+
+    /// Rows of n entries; a row is fresh or a combination of earlier rows.
+    fn rows() -> impl Strategy<Value = Vec<Vec<Poly>>> {
+        (1usize..=4).prop_flat_map(|n| {
+            let row = (
+                prop::collection::vec((-2i64..=2, -1i64..=1), n),
+                0u8..3,
+                (0usize..4, 0usize..4, -2i64..=2, -2i64..=2),
+            );
+            prop::collection::vec(row, n).prop_map(move |spec| {
+                let mut out: Vec<Vec<Poly>> = Vec::new();
+                for (fresh, kind, (p, q, cp, cq)) in spec {
+                    let mut r: Vec<Poly> = if kind == 0 && !out.is_empty() {
+                        let (p, q) = (&out[p % out.len()], &out[q % out.len()]);
+                        p.iter()
+                            .zip(q)
+                            .map(|(x, y)| &x.scale(&poly::q(cp, 1)) + &y.scale(&poly::q(cq, 1)))
+                            .collect()
+                    } else {
+                        fresh.iter().map(|&(a, b)| entry(a, b)).collect()
+                    };
+                    if r.iter().all(Poly::is_zero) {
+                        r[0] = Poly::one();
+                    }
+                    out.push(r);
+                }
+                out
+            })
+        })
+    }
+
+    /// Whether the rows are linearly dependent: every k×k minor is 0.
+    fn dependent(rows: &[Vec<Poly>]) -> bool {
+        let (k, n) = (rows.len(), rows[0].len());
+        if k > n {
+            return true;
+        }
+        let mut cols: Vec<usize> = (0..k).collect();
+        loop {
+            let minor = PolyMatrix::from_rows(
+                rows.iter().map(|r| cols.iter().map(|&c| r[c].clone()).collect()).collect(),
+            );
+            if !minor.det_laplace().is_zero() {
+                return false;
+            }
+            // The next k-subset of 0..n in lexicographic order.
+            let Some(i) = (0..k).rev().find(|&i| cols[i] < n - k + i) else { return true };
+            cols[i] += 1;
+            for j in i + 1..k {
+                cols[j] = cols[j - 1] + 1;
+            }
+        }
+    }
+
+    /// The program: each row as an equation `Σ (c_j)*k_j = v` (or y).
+    fn program(rows: &[Vec<Poly>]) -> String {
+        let n = rows[0].len();
+        let ks: Vec<String> = (1..=n).map(|j| format!("k{j}")).collect();
+        let mut src = format!("method m\nstate v y\nunknown {}\n", ks.join(" "));
+        for (i, r) in rows.iter().enumerate() {
+            let lhs: Vec<String> = r
+                .iter()
+                .zip(&ks)
+                .filter(|(c, _)| !c.is_zero())
+                .map(|(c, k)| format!("({c})*{k}"))
+                .collect();
+            src += &format!("{} = {}\n", lhs.join(" + "), if i % 2 == 0 { "v" } else { "y" });
+        }
+        src += &format!("v = v + Phi*({})\ny = y + Phi*v\n", ks.join(" + "));
+        src
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(200))]
+
+        #[test]
+        fn the_error_names_the_first_dependent_equation(rows in rows()) {
+            let src = program(&rows);
+            let expected = (1..=rows.len()).find(|&k| dependent(&rows[..k]));
+            match (Method::parse("gen.zm", &src), expected) {
+                (Ok(_), None) => {}
+                (Err(e), Some(k)) => {
+                    prop_assert_eq!(e.kind(), ErrorKind::Singular, "{}\n{}", e, src);
+                    // Three header lines, then one equation per row.
+                    prop_assert_eq!(e.span().line as usize, 3 + k, "{}\n{}", e, src);
+                }
+                (got, want) => prop_assert!(false, "{:?} vs first dependent row {:?}\n{}", got.map(|m| m.to_string()), want, src),
+            }
+        }
+    }
 }

@@ -81,3 +81,55 @@ fn short_temporary_chains_match_the_slow_route() {
         );
     }
 }
+
+/// Issue 27's chains of `n` temporaries (the bench `chain/temporaries_10000`
+/// times them at n = 10,000): copies of v, running sums `x_k = x_{k−1} +
+/// Phi*y`, and copies of an implicit stage, each with the short program
+/// it spells out.
+fn issue_27_chains(n: usize) -> Vec<(String, String)> {
+    let mut copies = String::from("method copies\nstate v y\nt1 = v\n");
+    let mut sums = String::from("method sums\nstate v y\nx0 = v\n");
+    let mut implicit =
+        String::from("method implicit\nstate v y\nunknown k\nk = -(y + Phi*k/2)\nt1 = k\n");
+    for k in 2..=n {
+        copies += &format!("t{k} = t{}\n", k - 1);
+        implicit += &format!("t{k} = t{}\n", k - 1);
+    }
+    for k in 1..=n {
+        sums += &format!("x{k} = x{} + Phi*y\n", k - 1);
+    }
+    copies += &format!("v = t{n} - Phi*y\ny = y + Phi*v\n");
+    sums += &format!("v = x{n}\ny = y + Phi*v\n");
+    implicit += &format!("v = v + Phi*t{n}\ny = y + Phi*v\n");
+    vec![
+        (copies, "method s\nstate v y\nv = v - Phi*y\ny = y + Phi*v\n".to_owned()),
+        (sums, format!("method s\nstate v y\nv = v + {n}*Phi*y\ny = y + Phi*v\n")),
+        (
+            implicit,
+            "method s\nstate v y\nunknown k\nk = -(y + Phi*k/2)\nv = v + Phi*k\ny = y + Phi*v\n"
+                .to_owned(),
+        ),
+    ]
+}
+
+/// The chains of 10,000 temporaries derive the χ of the programs they
+/// spell out, and short chains agree with the slow dense route (a).
+#[test]
+fn chains_of_10_000_temporaries_derive_their_short_programs() {
+    for (long, short) in issue_27_chains(10_000) {
+        let d = poly::derive(&parse(&long)).unwrap_or_else(|e| panic!("{e}"));
+        let want = poly::derive(&parse(&short)).expect("derives");
+        assert_eq!(d.charpoly, want.charpoly, "{short}");
+        assert_eq!(d.p_denominator, want.p_denominator, "{short}");
+    }
+    for n in [2, 10, 50] {
+        for (long, _) in issue_27_chains(n) {
+            let m = parse(&long);
+            assert_eq!(
+                poly::advanced::charpoly_z_route(&m).expect("fast"),
+                poly::advanced::charpoly_z_route_dense(&m).expect("slow"),
+                "n = {n}"
+            );
+        }
+    }
+}

@@ -9,12 +9,14 @@
 //! - `errors`: every kind of bad `.zm` input gives a located error, and the
 //!   parser never panics;
 //! - `fuzz_corpus`: the fuzz targets' corpora and crash regressions, replayed;
-//! - `parser`: details of the expression language;
+//! - `parser`: details of the expression language; `language`: declarations
+//!   anywhere, constant expressions and equations in the unknowns (issue 27);
 //! - `region`: the exact (Φ, D) region against closed forms;
 //! - `snapshots`: each built-in's derivation, reviewed against the paper;
 //! - `cost`: operation counts; `series`: exact Ψ and |z|² series;
 //! - `stability`: the exact stability analysis; `sturm`: Sturm sequences and
-//!   real algebraic numbers against brute-force oracles.
+//!   real algebraic numbers against brute-force oracles;
+//! - `tableau`: Butcher tableaux derive their built-ins' χ.
 
 mod algebra;
 mod common;
@@ -25,6 +27,7 @@ mod front_door;
 mod fuzz_corpus;
 mod implicit;
 mod invariant;
+mod language;
 mod large;
 mod multistep;
 mod parser;
@@ -36,3 +39,4 @@ use testkit::snapshot;
 mod snapshots;
 mod stability;
 mod sturm;
+mod tableau;
