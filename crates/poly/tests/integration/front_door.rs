@@ -4,7 +4,6 @@
 //! analysis that has the transition matrix.
 
 use poly::advanced::builtins::all_builtin_names;
-use poly::advanced::tableau::{Exact, Tableau};
 use poly::{q, Params, Stability, StabilityReport};
 
 /// The parameters a built-in needs besides Φ, at a value away from any
@@ -106,25 +105,4 @@ fn parameters_the_method_lacks_are_refused() {
     let damped = poly::derive(&poly::builtin("false_euler_damped").unwrap()).unwrap();
     let e = damped.stability(&Params::new()).unwrap_err();
     assert!(e.to_string().contains("still contains the parameter D"), "{e}");
-}
-
-/// RK4's tableau gives the RK4 built-in's χ.
-#[test]
-fn rk4_tableau_is_the_builtin() {
-    let e = |s: &str| Exact::parse(s).unwrap();
-    let z = || e("0");
-    let a = vec![
-        vec![z(), z(), z(), z()],
-        vec![e("1/2"), z(), z(), z()],
-        vec![z(), e("1/2"), z(), z()],
-        vec![z(), z(), e("1"), z()],
-    ];
-    let b = vec![e("1/6"), e("1/3"), e("1/3"), e("1/6")];
-    let c = Some(vec![z(), e("1/2"), e("1/2"), e("1")]);
-    let t = Tableau::new("rk4", a, b, c).unwrap();
-    assert!(t.is_explicit());
-    assert_eq!(t.c_mismatch(), Some(&[][..]));
-    let mine = poly::derive(&t.method(false).unwrap()).unwrap();
-    let builtin = poly::derive(&poly::builtin("rk4").unwrap()).unwrap();
-    assert_eq!(mine.charpoly, builtin.charpoly);
 }
