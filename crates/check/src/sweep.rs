@@ -111,7 +111,17 @@ impl Classifier {
     /// Prepares `method` with `params` for its parameters other than Φ (a
     /// value for Φ in `params` is ignored).
     pub fn new(method: &Method, params: &Params) -> Result<Classifier, Error> {
-        let charpoly = ExactCharpoly::new(method)?;
+        Classifier::from_derivation(&poly::derive(method)?, params)
+    }
+
+    /// As [`Classifier::new`], from an existing derivation (no second
+    /// derivation).
+    pub fn from_derivation(
+        derivation: &poly::Derivation,
+        params: &Params,
+    ) -> Result<Classifier, Error> {
+        let method = derivation.method();
+        let charpoly = ExactCharpoly::from_derivation(derivation);
         let phi = Sym::phi();
         let syms: Vec<Sym> = method.params().iter().copied().filter(|&s| s != phi).collect();
         let others = params.exact_values(method.name(), &syms)?;
@@ -294,7 +304,17 @@ pub fn find_boundaries(c: &Classifier, grid: &[f64]) -> Vec<Boundary> {
 
 /// Sweeps `method` (other parameters from `params`) along `grid`.
 pub fn sweep(method: &Method, params: &Params, grid: &[f64]) -> Result<Sweep, Error> {
-    let c = Classifier::new(method, params)?;
+    sweep_derivation(&poly::derive(method)?, params, grid)
+}
+
+/// [`sweep`] of an existing derivation (no second derivation).
+pub fn sweep_derivation(
+    derivation: &poly::Derivation,
+    params: &Params,
+    grid: &[f64],
+) -> Result<Sweep, Error> {
+    let method = derivation.method();
+    let c = Classifier::from_derivation(derivation, params)?;
     let first = grid.first().copied().unwrap_or(0.0);
     let last = grid.last().copied().unwrap_or(0.0);
     Ok(Sweep {

@@ -75,9 +75,7 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
         let w = Witnesses::from_derivation(method.derivation()?);
         let mut phis = phis.clone();
         if args.boundaries {
-            // `check::sweep` takes the method and derives it again: its
-            // classifier has no constructor from a derivation.
-            let s = sweep::sweep(method.method(), &base, &sweep::default_grid())?;
+            let s = sweep::sweep_derivation(method.derivation()?, &base, &sweep::default_grid())?;
             for b in &s.boundaries {
                 phis.push((b.below, None));
                 phis.push((b.above, None));

@@ -122,9 +122,11 @@ pub enum Stability {
     BoundedForAllPhi,
     /// χ alone cannot decide: every 0 < Φ < `at` is bounded, and at `at` a
     /// root on the unit circle is repeated, which is bounded exactly when
-    /// the transition matrix P is semisimple there. Only an analysis given
-    /// P ([`Derivation::stability`](crate::Derivation::stability)) answers;
-    /// it never returns this variant.
+    /// the transition matrix P is semisimple there. An analysis given P
+    /// ([`Derivation::stability`](crate::Derivation::stability)) decides it
+    /// for χ over Q; for χ with exact constants it decides it whenever the
+    /// norm of an entry of P − (tr P/2)·I does not vanish there, and else
+    /// returns this variant rather than guess (no built-in does).
     UndecidedAt {
         /// The first Φ whose boundedness χ does not decide.
         at: Algebraic,
