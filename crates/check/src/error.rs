@@ -95,10 +95,10 @@ impl Error {
 
     /// A path that is no readable `.zm` file: `what` says why.
     pub(crate) fn not_a_method_file(path: &Path, what: &str) -> Error {
-        let mut e = Error::new(
-            ErrorKind::Io,
-            format!("{}: {what}", poly::advanced::show_invisible(&path.display().to_string())),
-        );
+        let shown = poly::advanced::show_invisible(&path.display().to_string()).into_owned();
+        // A location (`1:1: ...`) follows the path without a space.
+        let sep = if what.starts_with(|c: char| c.is_ascii_digit()) { ":" } else { ": " };
+        let mut e = Error::new(ErrorKind::Io, format!("{shown}{sep}{what}"));
         e.inner.path = Some(path.to_owned());
         e
     }

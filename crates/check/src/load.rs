@@ -43,7 +43,10 @@ pub fn load_method(arg: &str) -> Result<Method, Error> {
         return Err(Error::not_a_method_file(path, &limit));
     }
     if bytes.is_empty() {
-        return Err(Error::not_a_method_file(path, "the file is empty: expected a .zm method"));
+        return Err(Error::not_a_method_file(
+            path,
+            "1:1: the file is empty: expected a .zm method",
+        ));
     }
     Method::parse_bytes(arg, &bytes).map_err(Error::from)
 }

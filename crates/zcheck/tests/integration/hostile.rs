@@ -158,11 +158,11 @@ fn locations() {
         case(&["derive", "{file}"], b"\xfe", 2, "invalid UTF-8", ":1:1:"),
         case(&["derive", "no_such_method"], b"", 2, "no built-in method named `no_such_method`", ""),
         case(&["verify", "no_such_method"], b"", 2, "or a path to a .zm file", ""),
-        case(&["derive", "/dev/null"], b"", 2, "/dev/null: the file is empty", ""),
+        case(&["derive", "/dev/null"], b"", 2, "/dev/null:1:1: the file is empty", ""),
         case(&["derive", "{dir}"], b"", 2, "is a directory: expected a .zm file", ""),
         case(&["derive", "./false_euler"], b"", 2, "./false_euler: cannot read: No such file", ""),
         case(&["stability", "sub/false_euler"], b"", 2, "sub/false_euler: cannot read", ""),
-        case(&["derive", "{file}"], b"", 2, "the file is empty", ""),
+        case(&["derive", "{file}"], b"", 2, "the file is empty", ":1:1:"),
         case(&["equiv", "false_euler", "{file}"], b"\xfe", 2, "invalid UTF-8", ":1:1:"),
         case(&["equiv", "no_such_method", "false_euler"], b"", 2, "no built-in method named `no_such_method`", ""),
     ]);
