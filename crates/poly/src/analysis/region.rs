@@ -237,7 +237,7 @@ impl Region {
             // Bounded below `at`; only χ with exact constants can leave it
             // undecided, and then `at` is where the proof stops.
             Stability::UndecidedAt { at, .. } => PhiLimit::Below(at),
-            Stability::UnboundedForAllPhi => PhiLimit::Never,
+            Stability::UnboundedForAllPhi | Stability::UnstableNearZero => PhiLimit::Never,
         })
     }
 

@@ -106,3 +106,23 @@ fn parameters_the_method_lacks_are_refused() {
     let e = damped.stability(&Params::new()).unwrap_err();
     assert!(e.to_string().contains("still contains the parameter D"), "{e}");
 }
+
+/// A step that grows for small Φ and is bounded on [1, 2] (its one root is
+/// 1 + Φ − Φ²) is unstable near zero, not "unbounded for every Φ": the
+/// headline never contradicts the stable intervals.
+#[test]
+fn unstable_near_zero_but_bounded_further_out() {
+    let d =
+        poly::derive_source("late.zm", "method late\nstate y\ny = y + Phi*y - Phi^2*y\n").unwrap();
+    let r = d.stability(&Params::new()).unwrap();
+    assert_eq!(r.stability, Stability::UnstableNearZero);
+    assert_eq!(r.stable_intervals.len(), 1);
+    let s = &r.stable_intervals[0];
+    assert_eq!((s.lo.to_string(), s.lo_closed), ("1".to_owned(), true));
+    assert_eq!((s.hi.as_ref().unwrap().to_string(), s.hi_closed), ("2".to_owned(), true));
+    // Standard Euler is unbounded everywhere, and says so.
+    let euler = poly::derive(&poly::builtin("standard_euler").unwrap()).unwrap();
+    let r = euler.stability(&Params::new()).unwrap();
+    assert_eq!(r.stability, Stability::UnboundedForAllPhi);
+    assert!(r.stable_intervals.is_empty());
+}

@@ -64,8 +64,16 @@ proptest! {
             Stability::BoundedForAllPhi => {
                 prop_assert!(r.intervals.iter().all(|i| i.class.is_bounded()), "{}", src);
             }
+            // Unbounded for every Φ: no bounded interval anywhere.
             Stability::UnboundedForAllPhi => {
                 prop_assert!(!r.intervals[0].class.is_bounded(), "{}", src);
+                prop_assert!(r.intervals.iter().all(|i| !i.class.is_bounded()), "{}", src);
+                prop_assert!(r.stable_intervals.is_empty(), "{}", src);
+            }
+            // Unstable near zero, bounded further out.
+            Stability::UnstableNearZero => {
+                prop_assert!(!r.intervals[0].class.is_bounded(), "{}", src);
+                prop_assert!(r.intervals.iter().any(|i| i.class.is_bounded()), "{}", src);
             }
             // χ alone: bounded below the undecided point, which has a
             // repeated root on the circle.

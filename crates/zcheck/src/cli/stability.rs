@@ -281,6 +281,9 @@ fn text(
         Stability::UnboundedForAllPhi => {
             let _ = writeln!(s, "unbounded for every Phi > 0 (no stability limit)");
         }
+        Stability::UnstableNearZero => {
+            let _ = writeln!(s, "unstable for every small Phi > 0; bounded only further out");
+        }
         Stability::Limited { phi_max: m, bounded_at_phi_max, boundary: b } => {
             let _ = writeln!(s, "stable for 0 < Phi < {}", names.show(m));
             let at = if *bounded_at_phi_max { "bounded" } else { "unbounded" };

@@ -196,7 +196,30 @@ pub(crate) fn analyze(
             hi: Some(at.clone()),
             hi_closed: false,
         }],
-        Stability::UnboundedForAllPhi => Vec::new(),
+        // Unstable near zero: the bounded classes further out, if any (their
+        // ends are not decided here, so they are left open).
+        _ => {
+            let mut runs: Vec<StableInterval> = Vec::new();
+            for iv in intervals.iter().filter(|iv| iv.class.is_bounded()) {
+                match runs.last_mut() {
+                    Some(run) if run.hi.as_ref() == Some(&iv.lo) => run.hi = iv.hi.clone(),
+                    _ => runs.push(StableInterval {
+                        lo: iv.lo.clone(),
+                        lo_closed: false,
+                        hi: iv.hi.clone(),
+                        hi_closed: false,
+                    }),
+                }
+            }
+            runs
+        }
+    };
+    // "Unbounded for every Φ" only when no bounded interval exists at all.
+    let stability = match stability {
+        Stability::UnboundedForAllPhi if !stable_intervals.is_empty() => {
+            Stability::UnstableNearZero
+        }
+        other => other,
     };
     Ok(StabilityReport {
         degree: 2,

@@ -198,6 +198,14 @@ fn run(chi: &Charpoly, p: Option<StepMatrix<'_>>, charpoly: Option<&Poly>) -> St
         stable_intervals.push(s);
     }
 
+    // "Unbounded for every Φ" only when no bounded interval exists at all.
+    let stability = match stability {
+        Stability::UnboundedForAllPhi if !stable_intervals.is_empty() => {
+            Stability::UnstableNearZero
+        }
+        other => other,
+    };
+
     let marginal = charpoly.and_then(|c| marginal(chi, c));
     StabilityReport {
         degree: chi.degree(),
@@ -332,7 +340,9 @@ fn marginal(chi: &Charpoly, charpoly: &Poly) -> Option<Marginal> {
     let practical_phi_max = match report.stability {
         Stability::Limited { phi_max, .. } => Some(phi_max),
         Stability::BoundedForAllPhi => None,
-        Stability::UnboundedForAllPhi | Stability::UndecidedAt { .. } => return None,
+        Stability::UnboundedForAllPhi
+        | Stability::UnstableNearZero
+        | Stability::UndecidedAt { .. } => return None,
     };
     Some(Marginal { coefficient: lead.coeff, power: lead.order, threshold, practical_phi_max })
 }

@@ -99,8 +99,8 @@ impl fmt::Display for Boundary {
     }
 }
 
-/// The verdict over Φ > 0 near zero: one of four exclusive states (the
-/// fourth only from χ alone).
+/// The verdict over Φ > 0 near zero: one of five exclusive states (the
+/// last, `UndecidedAt`, only from χ alone).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Stability {
     /// Every 0 < Φ < `phi_max` gives a bounded sequence, and Φ just above
@@ -114,10 +114,12 @@ pub enum Stability {
         /// What happens at the limit.
         boundary: Boundary,
     },
-    /// No Φ > 0 is bounded near zero: every small Φ > 0 grows. (Bounded
-    /// intervals further out, if any, are in
-    /// [`StabilityReport::stable_intervals`].)
+    /// No Φ > 0 is bounded: every Φ > 0 grows.
     UnboundedForAllPhi,
+    /// Every small Φ > 0 grows, but Φ is bounded further out: on the
+    /// intervals of [`StabilityReport::stable_intervals`] (a method unstable
+    /// near zero, or singular there, that a larger step stabilises).
+    UnstableNearZero,
     /// Every Φ > 0 gives a bounded sequence.
     BoundedForAllPhi,
     /// χ alone cannot decide: every 0 < Φ < `at` is bounded, and at `at` a
@@ -136,13 +138,14 @@ pub enum Stability {
 }
 
 impl Stability {
-    /// `limited`, `unbounded_for_all_phi`, `bounded_for_all_phi` or
-    /// `undecided_without_transition_matrix`.
+    /// `limited`, `unbounded_for_all_phi`, `unstable_near_zero`,
+    /// `bounded_for_all_phi` or `undecided_without_transition_matrix`.
     pub fn name(&self) -> &'static str {
         match self {
             Stability::Limited { .. } => "limited",
             Stability::UndecidedAt { .. } => "undecided_without_transition_matrix",
             Stability::UnboundedForAllPhi => "unbounded_for_all_phi",
+            Stability::UnstableNearZero => "unstable_near_zero",
             Stability::BoundedForAllPhi => "bounded_for_all_phi",
         }
     }
@@ -294,7 +297,7 @@ impl StabilityReport {
     pub fn is_stable_below(&self, phi: &Q) -> bool {
         match &self.stability {
             Stability::BoundedForAllPhi => true,
-            Stability::UnboundedForAllPhi => false,
+            Stability::UnboundedForAllPhi | Stability::UnstableNearZero => false,
             Stability::Limited { phi_max, .. } => phi_max.cmp_rational(phi) != Ordering::Less,
             Stability::UndecidedAt { at, .. } => at.cmp_rational(phi) != Ordering::Less,
         }
