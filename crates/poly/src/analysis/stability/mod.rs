@@ -9,7 +9,7 @@
 //! discriminant of G with g(z) = z^m G(z + 1/z)), the discriminant in z, and
 //! ties for the largest modulus. Each is computed over Z\[Φ\] by modular
 //! evaluation and interpolation, made square-free, and its positive real
-//! roots are isolated with Sturm sequences as exact [`Algebraic`] numbers.
+//! roots are isolated with Sturm sequences as exact [`Algebraic`](crate::Algebraic) numbers.
 //!
 //! Between consecutive critical points the counts of roots inside, on and
 //! outside the unit circle, and the class, are constant; one exact
@@ -53,7 +53,6 @@ pub use report::{
 
 use crate::error::{Error, ErrorKind};
 use crate::multivariate::constants::has_generators;
-use crate::univariate::algebraic::Algebraic;
 use crate::{Derivation, Params, Poly, RootClass, Sym, UPoly, Q};
 
 /// The exact stability analysis of a bare χ(z; Φ), for a caller who holds
@@ -188,11 +187,4 @@ pub fn class_at(charpoly: &Poly, phi: &Q) -> Result<RootClass, Error> {
     }
     let chi = conditions::Charpoly::new(charpoly)?;
     Ok(rational::class_at_rational(&chi, phi).0)
-}
-
-/// The root class of χ exactly at an algebraic Φ; `Ok(None)` when χ has
-/// degree ≥ 3 and Φ is irrational (not computed, see the module notes).
-pub fn class_at_algebraic(charpoly: &Poly, phi: &Algebraic) -> Result<Option<RootClass>, Error> {
-    let chi = conditions::Charpoly::new(charpoly)?;
-    Ok(rational::class_at_point(&chi, phi))
 }
