@@ -11,7 +11,7 @@
 //! [`Derivation::stability`](crate::Derivation::stability) decides it from
 //! the transition matrix.
 
-pub use crate::analysis::{cost, equiv, invariant, region, series, stability};
+pub use crate::analysis::{cost, equiv, invariant, plane, region, series, stability};
 #[doc(hidden)]
 pub use crate::derive::routes::charpoly_z_route_dense;
 pub use crate::derive::routes::{
@@ -23,7 +23,7 @@ pub use crate::lang::method::{
 };
 pub use crate::lang::syntax::parse_number;
 pub use crate::lang::system::{system as implicit_system, System as ImplicitSystem};
-pub use crate::lang::{builtins, tableau};
+pub use crate::lang::{builtins, multistep, tableau};
 pub use crate::multivariate::constants as field;
 pub use crate::multivariate::matrix::SparsePolyMatrix;
 pub use crate::multivariate::poly::Monomial;

@@ -57,6 +57,10 @@ pub enum ErrorKind {
     /// A series of Ψ or |z| that does not exist for this χ (not second
     /// order, no complex pair near Φ = 0, or Ψ not a series over Q).
     NoSeries,
+    /// The analysis needs the other test equation: a scalar program (it
+    /// reads `w`) given to an oscillator analysis, or an oscillator program
+    /// with no scalar form (a partitioned method) given to the w-plane.
+    TestEquation,
 }
 
 /// A position in a source file, 1-based.

@@ -85,9 +85,10 @@ mod univariate;
 pub use crate::analysis::class::RootClass;
 pub use crate::analysis::cost::{OpCount, StepCost};
 pub use crate::analysis::equiv::Relation;
+pub use crate::analysis::plane::{PlaneReport, Sector};
 pub use crate::analysis::stability::{
-    Boundary, ClassChange, ClassInterval, Condition, CriticalPoint, Marginal, Stability,
-    StabilityReport, StableInterval,
+    Boundary, ClassChange, ClassInterval, Condition, CriticalPoint, Stability, StabilityReport,
+    StableInterval,
 };
 pub use crate::arith::rational::{q, Q};
 pub use crate::derive::routes::{derive, derive_source, Derivation};

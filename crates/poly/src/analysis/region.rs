@@ -42,8 +42,9 @@ use std::fmt;
 use num_traits::{One, Signed, Zero};
 
 use crate::analysis::stability::{self, Stability};
+use crate::multivariate::resultant::resultant;
 use crate::Error as StabilityError;
-use crate::{Algebraic, Poly, PolyMatrix, RootClass, Sym, UPoly, Q};
+use crate::{Algebraic, Poly, RootClass, Sym, UPoly, Q};
 use crate::{Derivation, Params};
 
 /// Which condition a critical curve expresses.
@@ -381,40 +382,6 @@ fn primitive(p: &Poly) -> Poly {
         content = -content;
     }
     p.scale(&(Q::one() / content))
-}
-
-/// The Sylvester resultant of two polynomials given by their coefficients
-/// (lowest power first), each coefficient a polynomial in the remaining
-/// symbols; zero when either is zero.
-fn resultant(f: &[Poly], g: &[Poly]) -> Poly {
-    let trim = |c: &[Poly]| -> Vec<Poly> {
-        let mut v = c.to_vec();
-        while v.last().is_some_and(Poly::is_zero) {
-            v.pop();
-        }
-        v
-    };
-    let (f, g) = (trim(f), trim(g));
-    if f.is_empty() || g.is_empty() {
-        return Poly::zero();
-    }
-    let (m, n) = (f.len() - 1, g.len() - 1);
-    if m + n == 0 {
-        return Poly::one();
-    }
-    let size = m + n;
-    let mut rows = vec![vec![Poly::zero(); size]; size];
-    for i in 0..n {
-        for (k, c) in f.iter().rev().enumerate() {
-            rows[i][i + k] = c.clone();
-        }
-    }
-    for i in 0..m {
-        for (k, c) in g.iter().rev().enumerate() {
-            rows[n + i][i + k] = c.clone();
-        }
-    }
-    PolyMatrix::from_rows(rows).det()
 }
 
 /// A rational strictly between two distinct algebraic numbers `lo < hi`.

@@ -314,6 +314,7 @@ impl Program {
             line: 0,
             assign_lines: Vec::new(),
             gauss_seidel: Vec::new(),
+            test_symbol: None,
         };
         let mut assigns: Vec<Assign> = Vec::new();
         // Whether each assignment's value depends on an unknown.
@@ -448,8 +449,10 @@ impl Program {
             &self.declared_unknowns,
             &first_primed,
         )?;
+        let scalar = matches!(lw.test_symbol, Some((true, _)));
         let (history, finals, gauss_seidel) = (lw.history, lw.latest_state, lw.gauss_seidel);
         Ok(Method {
+            scalar,
             name: self.name,
             state: self.state,
             params: self.params,
@@ -705,9 +708,35 @@ struct Lowerer<'a> {
     line: u32,
     assign_lines: Vec<u32>,
     gauss_seidel: Vec<GaussSeidelRead>,
+    /// The first read of `Phi` (false) or of the scalar test equation's `w`
+    /// (true): a program is written for one test equation, not both.
+    test_symbol: Option<(bool, Span)>,
 }
 
 impl Lowerer<'_> {
+    /// Records a read of `Phi` or `w`, refusing the second kind.
+    fn note_test_symbol(&mut self, is_w: bool, span: Span) -> Result<(), Error> {
+        match self.test_symbol {
+            None => {
+                self.test_symbol = Some((is_w, span));
+                Ok(())
+            }
+            Some((first, at)) if first != is_w => {
+                let (this, other) = if is_w { ("w", "Phi") } else { ("Phi", "w") };
+                Err(Error::new(
+                    ErrorKind::UnknownName,
+                    span,
+                    format!(
+                        "`{this}` in a program that reads `{other}` on line {}: expected one test equation, \
+                         the oscillator (`Phi` = ωT) or the scalar y' = λy (`w` = hλ), not both",
+                        at.line
+                    ),
+                ))
+            }
+            Some(_) => Ok(()),
+        }
+    }
+
     fn describe_names(&self) -> String {
         let st = self.state.join(", ");
         let pa: Vec<&str> = self.params.iter().map(|s| s.name()).collect();
@@ -885,6 +914,9 @@ impl Lowerer<'_> {
     fn name(&mut self, n: &str, span: Span) -> Result<Lin, Error> {
         self.declared_before(n, span)?;
         if let Some(&p) = self.params.iter().find(|p| p.name() == n) {
+            if p == Sym::phi() {
+                self.note_test_symbol(false, span)?;
+            }
             return Ok(Lin::scalar(Poly::sym(p)));
         }
         if let Some(c) = self.consts.get(n) {
@@ -912,6 +944,12 @@ impl Lowerer<'_> {
         }
         if let Some(&t) = self.latest_temp.get(n) {
             return Ok(Lin::operand(Operand::Stmt(t)));
+        }
+        if n == "w" && !self.assigned_anywhere.contains_key(n) {
+            // The scalar test equation's w = hλ, unless the program gives
+            // the name another meaning.
+            self.note_test_symbol(true, span)?;
+            return Ok(Lin::scalar(Poly::sym(Sym::w())));
         }
         if let Some(line) = self.assigned_anywhere.get(n) {
             return Err(Error::new(

@@ -128,6 +128,9 @@ pub struct Method {
     pub(crate) equations: Vec<Equation>,
     pub(crate) constants: Vec<Constant>,
     pub(crate) gauss_seidel: Vec<GaussSeidelRead>,
+    /// Whether the program is written for the scalar test equation
+    /// y' = λy (it reads `w` = hλ) rather than the oscillator (`Phi`).
+    pub(crate) scalar: bool,
 }
 
 impl Method {
@@ -139,6 +142,14 @@ impl Method {
     /// The state variables, in declaration order.
     pub fn state(&self) -> &[String] {
         &self.state
+    }
+
+    /// Whether the program is written for the scalar test equation y' = λy:
+    /// it reads `w` = hλ (a complex number) instead of `Phi`. Its χ is a
+    /// polynomial in z and w, analysed in the complex plane
+    /// ([`Derivation::plane`](crate::Derivation::plane)), not over Φ > 0.
+    pub fn is_scalar(&self) -> bool {
+        self.scalar
     }
 
     /// The parameters: `Phi` first, then those declared by `param`.

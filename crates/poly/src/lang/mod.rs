@@ -1,6 +1,6 @@
 //! Layer 4, the method language: the `.zm` syntax, [`Method`](method::Method)
 //! and its lowering to a linear step, the one registry of built-ins,
-//! [`Params`](params::Params), and Butcher-tableau input.
+//! [`Params`](params::Params), Butcher-tableau and linear multistep input.
 //!
 //! Imports only from the layers below (`arith`, `univariate`,
 //! `multivariate`).
@@ -10,6 +10,7 @@ pub(crate) mod constant;
 pub(crate) mod load;
 pub(crate) mod lower;
 pub(crate) mod method;
+pub mod multistep;
 pub(crate) mod params;
 pub(crate) mod syntax;
 pub(crate) mod system;

@@ -38,9 +38,9 @@ pub const MAX_STAGES: usize = 64;
 /// constant names), the radicals it names, and whether it is exactly zero.
 #[derive(Clone, Debug)]
 pub struct Exact {
-    expr: String,
-    radicals: Vec<(String, String)>,
-    zero: bool,
+    pub(crate) expr: String,
+    pub(crate) radicals: Vec<(String, String)>,
+    pub(crate) zero: bool,
 }
 
 impl Exact {
@@ -59,7 +59,7 @@ impl Exact {
     }
 }
 
-fn entry_error(message: String) -> Error {
+pub(crate) fn entry_error(message: String) -> Error {
     Error::new(ErrorKind::BadConstant, Span::default(), message)
 }
 
@@ -415,7 +415,7 @@ fn replace_radicals(text: &str, constants: &mut Vec<(String, String)>) -> Result
 
 /// Checks one expression with the `.zm` parser (exact, constants included)
 /// and says whether it is exactly zero.
-fn probe(expr: &str, constants: &[(String, String)]) -> Result<bool, String> {
+pub(crate) fn probe(expr: &str, constants: &[(String, String)]) -> Result<bool, String> {
     let mut src = String::from("method probe\nstate v\n");
     for (name, radical) in constants {
         writeln!(src, "const {name} = {radical}").expect("string");

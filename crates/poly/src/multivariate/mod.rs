@@ -8,4 +8,5 @@
 pub mod constants;
 pub(crate) mod matrix;
 pub(crate) mod poly;
+pub(crate) mod resultant;
 pub(crate) mod sym;

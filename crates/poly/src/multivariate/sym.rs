@@ -50,6 +50,12 @@ impl Sym {
         Sym::new("Phi")
     }
 
+    /// w = hλ, the step of the scalar test equation y' = λy (a complex
+    /// number), spelled `w` in `.zm` files.
+    pub fn w() -> Sym {
+        Sym::new("w")
+    }
+
     /// The z-transform variable.
     pub fn z() -> Sym {
         Sym::new("z")

@@ -31,6 +31,7 @@ mod language;
 mod large;
 mod multistep;
 mod parser;
+mod plane;
 mod random_programs;
 mod region;
 mod routes;

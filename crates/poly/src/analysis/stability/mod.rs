@@ -92,6 +92,7 @@ impl Derivation {
     /// # Ok::<(), poly::Error>(())
     /// ```
     pub fn stability(&self, params: &Params) -> Result<StabilityReport, Error> {
+        self.refuse_scalar()?;
         let values = self.bind(params)?;
         let charpoly = self.charpoly.eval_partial(&values);
         let phi = Sym::phi();

@@ -1,0 +1,320 @@
+//! The method on the scalar test equation y' = λy, in the complex plane of
+//! w = hλ: order and error constant, the stable intervals of the real and
+//! imaginary axes, A- and L-stability, A(α) and ρ∞, all exact. And, on the
+//! oscillator, the orders and constants of dispersion and dissipation.
+//!
+//! "Stable" at w means the root condition: every root of χ(z, w) has
+//! |z| ≤ 1, and those on the circle are simple.
+//!
+//! - `scalar.rs`: χ(z, w) from a derivation (a scalar program, or the
+//!   scalar form of an oscillator program that treats y and v alike).
+//! - `principal.rs`: the principal root as a power series.
+//! - `sector.rs`: rays, the axes' limits and A(α).
+//! - here: the report, ρ∞ (the largest modulus of the roots as the step
+//!   grows without bound), and the series' leading terms.
+
+mod principal;
+mod scalar;
+mod sector;
+
+use num_traits::{One, Zero};
+
+pub use sector::Sector;
+
+use crate::analysis::stability::point::circle_counts;
+use crate::error::{Error, ErrorKind};
+use crate::multivariate::constants as field;
+use crate::multivariate::resultant::resultant;
+use crate::{Algebraic, Derivation, Params, Poly, Sym, UPoly, Q};
+use principal::{inverse_factorial, Branch, NoBranch, C};
+
+/// The most terms of a series searched for its first nonzero one.
+pub const MAX_SERIES_TERMS: usize = 40;
+
+/// The method on y' = λy in the complex plane of w = hλ.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct PlaneReport {
+    /// χ(z, w), primitive in z.
+    pub charpoly: Poly,
+    /// Whether w = 0 is stable (the root condition at w = 0, zero-stability).
+    pub zero_stable: bool,
+    /// The order p: e^w − z₁(w) = C·w^(p+1) + O(w^(p+2)) for the principal
+    /// root z₁ (z₁(0) = 1). `None` when no simple root of χ(z, 0) is 1.
+    pub order: Option<u32>,
+    /// C, exact (rational, or in the field of the method's constants).
+    pub error_constant: Option<Poly>,
+    /// The supremum of r with (−r, 0] stable; `None` when all of (−∞, 0] is.
+    pub real_limit: Option<Algebraic>,
+    /// The supremum of r with i·(−r, r) stable; `None` when the whole axis is.
+    pub imag_limit: Option<Algebraic>,
+    /// Whether every w with Re w ≤ 0 is stable.
+    pub a_stable: bool,
+    /// The largest sector |arg(−w)| < α inside the region.
+    pub a_alpha: Sector,
+    /// A-stable, with every root tending to 0 as w → ∞.
+    pub l_stable: bool,
+    /// The limit of the largest |z| as w → ∞; `None` when a root tends to ∞.
+    pub rho_inf: Option<Algebraic>,
+}
+
+impl Derivation {
+    /// The method on y' = λy in the complex plane of w = hλ, every parameter
+    /// bound in `params`. For an oscillator program, its scalar form
+    /// ([`Derivation::scalar_charpoly`]).
+    ///
+    /// ```
+    /// let d = poly::derive(&poly::Method::builtin("rk4")?)?;
+    /// let r = d.plane(&poly::Params::new())?;
+    /// assert_eq!(r.order, Some(4));
+    /// assert_eq!(r.error_constant.unwrap().to_string(), "1/120");
+    /// assert_eq!(r.imag_limit.unwrap().to_string(), "2*sqrt(2)");
+    /// # Ok::<(), poly::Error>(())
+    /// ```
+    pub fn plane(&self, params: &Params) -> Result<PlaneReport, Error> {
+        plane_of(self.scalar_charpoly(params)?)
+    }
+}
+
+/// [`Derivation::plane`] of a χ(z, w) (primitive in z).
+pub fn plane_of(chi: Poly) -> Result<PlaneReport, Error> {
+    let zero_stable = zero_stable(&chi)?;
+    let (order, error_constant) = match order(&chi)? {
+        Some((p, c)) => (Some(p), Some(c)),
+        None => (None, None),
+    };
+    let (one, zero) = (Q::one(), Q::zero());
+    let (real_limit, imag_limit) = if zero_stable {
+        (
+            sector::limit_along(&chi, (&-one.clone(), &zero))?,
+            sector::limit_along(&chi, (&zero, &one))?,
+        )
+    } else {
+        (Some(Algebraic::zero()), Some(Algebraic::zero()))
+    };
+    let a_alpha =
+        if zero_stable && real_limit.is_none() { sector::sector(&chi)? } else { Sector::Empty };
+    let a_stable = a_alpha == Sector::HalfPlane && imag_limit.is_none();
+    let rho_inf = rho_at_infinity(&chi, Sym::w())?;
+    let l_stable = a_stable && rho_inf.as_ref().is_some_and(|r| r.sign().is_eq());
+    // Isolating intervals narrowed for display; the numbers are unchanged.
+    let width = Q::new(1.into(), (1i64 << 40).into());
+    let narrow = |x: Option<Algebraic>| x.map(|x| x.refine(&width));
+    let (real_limit, imag_limit, rho_inf) =
+        (narrow(real_limit), narrow(imag_limit), narrow(rho_inf));
+    let a_alpha = match a_alpha {
+        Sector::Angle { tan } => Sector::Angle { tan: tan.refine(&width) },
+        other => other,
+    };
+    Ok(PlaneReport {
+        charpoly: chi,
+        zero_stable,
+        order,
+        error_constant,
+        real_limit,
+        imag_limit,
+        a_stable,
+        a_alpha,
+        l_stable,
+        rho_inf,
+    })
+}
+
+/// The root condition at w = 0. With constants, the roots are those of
+/// the norm (a superset: χ's and its conjugates'), and the repeated ones
+/// those of the norm of gcd(f, f') over F.
+fn zero_stable(chi: &Poly) -> Result<bool, Error> {
+    let z = Sym::z();
+    let at0 = field::reduce(&chi.subs(Sym::w(), &Poly::zero()));
+    let f = at0.coeffs_in(z);
+    let repeated = scalar::gcd(&f, &scalar::derivative(&f));
+    let in_z = |c: &[Poly]| -> Result<UPoly, Error> {
+        let p = Poly::from_coeffs_in(z, c);
+        let p = if field::has_generators(&p) { field::norm(&p) } else { p };
+        p.to_upoly(z).ok_or_else(|| {
+            Error::analysis(ErrorKind::ExtraSymbol, format!("χ(z, 0) = {at0}: expected z only"))
+        })
+    };
+    let (f, repeated) = (in_z(&f)?, in_z(&repeated)?);
+    Ok(circle_counts(&f).outside == 0
+        && (repeated.degree().unwrap_or(0) == 0 || circle_counts(&repeated).on == 0))
+}
+
+/// The order and error constant from the principal root's series.
+fn order(chi: &Poly) -> Result<Option<(u32, Poly)>, Error> {
+    let (z, w) = (Sym::z(), Sym::w());
+    let at = |p: &Poly| field::reduce(&p.subs(z, &Poly::one()).subs(w, &Poly::zero()));
+    if !at(chi).is_zero() {
+        return Ok(None);
+    }
+    let a10 = at(&chi.derivative(z));
+    let a01 = at(&chi.derivative(w));
+    let Some(inv) = field::inverse(&a10) else {
+        return Ok(None);
+    };
+    let nu0 = field::reduce(&-(&a01 * &inv));
+    let mut b = match Branch::new(chi, w, C::real(nu0)) {
+        Ok(b) => b,
+        Err(NoBranch::NotARoot | NoBranch::Repeated) => return Ok(None),
+    };
+    for n in 1..=MAX_SERIES_TERMS {
+        while b.nu.len() < n {
+            b.grow();
+        }
+        let zn = &b.z_coeffs()[n];
+        let d = field::reduce(&(&Poly::constant(inverse_factorial(n)) - &zn.re));
+        if !d.is_zero() {
+            return Ok(Some((n as u32 - 1, d)));
+        }
+    }
+    Err(series_error(format!(
+        "e^w − z₁(w) vanishes to w^{MAX_SERIES_TERMS}: expected a method of lower order"
+    )))
+}
+
+fn series_error(msg: String) -> Error {
+    Error::analysis(ErrorKind::NoSeries, msg)
+}
+
+/// The limit of the largest |z| of χ's roots as `t` → ∞ (any direction):
+/// the roots of the coefficient of t's top power tend to the roots of that
+/// polynomial in z, and one escapes to ∞ when it loses degree (`None`).
+///
+/// The largest modulus ρ of the roots z_i of g: ρ² is the largest positive
+/// product z_i z_j (|z_i z_j| ≤ ρ², and z·z̄ or r·r attains it), so ρ is the
+/// largest real root of Res_y(g(y), yⁿ g(x²/y)) = ∏(x² − z_i z_j).
+pub fn rho_at_infinity(chi: &Poly, t: Sym) -> Result<Option<Algebraic>, Error> {
+    let z = Sym::z();
+    let a = chi.coeffs_in(z);
+    let top = a.iter().map(|c| c.degree_in(t)).max().unwrap_or(0);
+    let lim: Vec<Poly> =
+        a.iter().map(|c| c.coeffs_in(t).get(top as usize).cloned().unwrap_or_default()).collect();
+    if lim.last().is_none_or(Poly::is_zero) {
+        return Ok(None);
+    }
+    let low = lim.iter().position(|c| !c.is_zero()).unwrap_or(0);
+    let g = &lim[low..];
+    if g.len() == 1 {
+        return Ok(Some(Algebraic::zero()));
+    }
+    if g.iter().any(field::has_generators) {
+        return Err(Error::analysis(
+            ErrorKind::NoSeries,
+            "ρ∞ of a limit polynomial with exact constants is not computed; expected rational \
+             coefficients"
+                .to_owned(),
+        ));
+    }
+    let n = g.len() - 1;
+    let x = Poly::sym(Sym::new("x"));
+    let h: Vec<Poly> = (0..=n).map(|i| &g[n - i] * &x.pow(2 * (n - i) as u32)).collect();
+    let r = resultant(g, &h);
+    let u = r.to_upoly(Sym::new("x")).expect("a polynomial in x");
+    let roots = Algebraic::real_roots(&u.squarefree());
+    Ok(roots.into_iter().max_by(|p, q| p.partial_cmp(q).unwrap_or(std::cmp::Ordering::Equal)))
+}
+
+/// The leading term c·Φ^(k+1) of a series on the oscillator.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct LeadingTerm {
+    /// k: the order of the error.
+    pub order: u32,
+    /// c, exact.
+    pub constant: Poly,
+}
+
+/// Dispersion and dissipation of the principal root z ≈ e^{iΦ} on the
+/// oscillator.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct PhaseErrors {
+    /// Φ − Ψ(Φ) = c·Φ^(q+1) + …; `None` when the phase is exact.
+    pub dispersion: Option<LeadingTerm>,
+    /// 1 − |z(Φ)| = d·Φ^(r+1) + …; `None` when |z| ≡ 1 near 0.
+    pub dissipation: Option<LeadingTerm>,
+}
+
+/// The leading terms of Φ − Ψ and 1 − |z| for χ(z, Φ) (every other symbol a
+/// constant of F). `on_circle` says whether |z| ≡ 1 on the first stable
+/// interval (decided by the stability engine), which ends the search for a
+/// nonzero dissipation term.
+pub fn phase_errors(chi: &Poly, on_circle: bool) -> Result<PhaseErrors, Error> {
+    let mut b = Branch::new(chi, Sym::phi(), C::i()).map_err(|e| {
+        series_error(match e {
+            NoBranch::NotARoot => "no root of χ leaves z = 1 as e^{iΦ}: the method is not consistent on the oscillator".to_owned(),
+            NoBranch::Repeated => "the root leaving z = 1 as e^{iΦ} is repeated: its series does not exist".to_owned(),
+        })
+    })?;
+    let (mut dispersion, mut dissipation) = (None, None);
+    for n in 1..=MAX_SERIES_TERMS {
+        while b.nu.len() < n {
+            b.grow();
+        }
+        let log = b.log_coeffs();
+        if dispersion.is_none() {
+            let expected = if n == 1 { Poly::one() } else { Poly::zero() };
+            let c = field::reduce(&(&expected - &log[n].im));
+            if !c.is_zero() {
+                dispersion = Some(LeadingTerm { order: n as u32 - 1, constant: c });
+            }
+        }
+        if dissipation.is_none() && !on_circle && !log[n].re.is_zero() {
+            dissipation =
+                Some(LeadingTerm { order: n as u32 - 1, constant: field::reduce(&-&log[n].re) });
+        }
+        if dispersion.is_some() && (dissipation.is_some() || on_circle) {
+            return Ok(PhaseErrors { dispersion, dissipation });
+        }
+    }
+    Err(series_error(format!("no nonzero term of Φ − Ψ or 1 − |z| up to Φ^{MAX_SERIES_TERMS}")))
+}
+
+impl Derivation {
+    /// Φ − Ψ and 1 − |z| of the principal root z ≈ e^{iΦ} on the oscillator,
+    /// to their leading terms, for any number of states and with exact
+    /// constants; every parameter but Φ bound in `params`.
+    ///
+    /// ```
+    /// let d = poly::derive(&poly::Method::builtin("standard_euler")?)?;
+    /// let e = d.phase_errors(&poly::Params::new())?;
+    /// let dissipation = e.dissipation.unwrap(); // |z| = √(1 + Φ²)
+    /// assert_eq!((dissipation.order, dissipation.constant.to_string()), (1, "-1/2".into()));
+    /// # Ok::<(), poly::Error>(())
+    /// ```
+    pub fn phase_errors(&self, params: &Params) -> Result<PhaseErrors, Error> {
+        let report = self.stability(params)?;
+        let on_circle = report
+            .intervals
+            .first()
+            .is_some_and(|i| i.lo.sign().is_eq() && i.class == crate::RootClass::Harmonic);
+        let chi = self.charpoly.eval_partial(&self.bind(params)?);
+        phase_errors(&chi, on_circle)
+    }
+
+    /// The limit of the spectral radius on the oscillator as Φ → ∞; `None`
+    /// when a root tends to ∞.
+    ///
+    /// ```
+    /// let d = poly::derive(&poly::Method::builtin("trapezoidal")?)?;
+    /// assert_eq!(d.rho_inf(&poly::Params::new())?.unwrap().to_string(), "1");
+    /// # Ok::<(), poly::Error>(())
+    /// ```
+    pub fn rho_inf(&self, params: &Params) -> Result<Option<Algebraic>, Error> {
+        self.refuse_scalar()?;
+        let chi = self.charpoly.eval_partial(&self.bind(params)?);
+        rho_at_infinity(&chi, Sym::phi())
+    }
+
+    /// Refuses a scalar program in an oscillator analysis.
+    pub(crate) fn refuse_scalar(&self) -> Result<(), Error> {
+        if self.method.is_scalar() {
+            return Err(Error::analysis(
+                ErrorKind::TestEquation,
+                format!(
+                    "`{}` is written for y' = λy (it reads `w`): the oscillator analyses need a \
+                     program in `Phi`; its analysis is in the w-plane (`region`)",
+                    self.method.name()
+                ),
+            ));
+        }
+        Ok(())
+    }
+}

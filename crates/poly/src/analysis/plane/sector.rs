@@ -1,0 +1,332 @@
+//! Stability along rays of the w-plane, and the largest stable sector
+//! |arg(−w)| < α (A(α)-stability), exactly.
+//!
+//! Along a ray w = Φ·d (d = d_r + i·d_i rational, Φ > 0), χ(z, Φd) = A + iB
+//! with A, B real polynomials in z and Φ; A² + B² has the roots of χ and
+//! their conjugates, so the exact engine over Φ > 0 decides the ray (and its
+//! mirror image, which has the conjugate roots).
+//!
+//! The sector: the boundary locus Γ (the w where a root lies on the unit
+//! circle) meets the ray of slope m = tan(arg(−w)) on a real algebraic curve
+//! G(x, m) = 0; the slopes where the set of rays meeting Γ can change are
+//! the critical values of m on that curve, roots of Res_x(G, ∂G/∂x), with
+//! those of G's leading coefficient in x and of G at x = 0 (branches to ∞ and
+//! through the origin). Between consecutive candidates one ray at a rational
+//! slope decides the whole gap. So A(α) is exact: tan α is the candidate
+//! that ends the last stable gap, an algebraic number.
+//!
+//! G comes from the structure of χ:
+//! - linear in w (χ = ρ(z) − wσ(z), multistep methods): w = ρ/σ on the
+//!   circle z = (1 + it)/(1 − it); with ρσ̄ = U + iV, G(t, m) = V − mU;
+//! - linear in z (χ = Q(w)z − P(w), one-step methods): Γ is |P| = |Q|; on
+//!   the ray w = −s(1 + im), G(s, m) = |Q|² − |P|² (divided by its power
+//!   of s);
+//! - otherwise: G(s, m) = Res_t(Re, Im) of χ((1 + it)/(1 − it), −s(1 + im))
+//!   times (1 − it)^n.
+//!
+//! With exact constants, G is replaced by its norm over Q: its zero set
+//! holds Γ's and the conjugates', which only adds candidates.
+
+use std::cmp::Ordering;
+
+use num_traits::{One, Zero};
+
+use crate::analysis::stability::{analyze, Stability};
+use crate::error::{Error, ErrorKind};
+use crate::multivariate::constants as field;
+use crate::multivariate::resultant::resultant;
+use crate::{Algebraic, Poly, Sym, UPoly, Q};
+
+/// The largest sector |arg(−w)| < α inside the stability region.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Sector {
+    /// No sector: α = 0.
+    Empty,
+    /// The open left half-plane: α = 90°.
+    HalfPlane,
+    /// 0 < α < 90°, with tan α exact.
+    Angle {
+        /// tan α, an algebraic number.
+        tan: Algebraic,
+    },
+}
+
+/// (a + ib)^k for k = 0..=n, as pairs of polynomials (in whatever `a` and
+/// `b` hold).
+fn powers(a: &Poly, b: &Poly, n: usize) -> Vec<(Poly, Poly)> {
+    let mut out = vec![(Poly::one(), Poly::zero())];
+    for k in 0..n {
+        let (re, im) = &out[k];
+        out.push((&(re * a) - &(im * b), &(re * b) + &(im * a)));
+    }
+    out
+}
+
+/// χ(z, Φ·d) as A + iB, A and B real polynomials in z and Φ.
+fn along(chi: &Poly, d: (&Q, &Q)) -> (Poly, Poly) {
+    let (w, phi) = (Sym::w(), Sym::phi());
+    let cw = chi.coeffs_in(w);
+    let dk = powers(&Poly::constant(d.0.clone()), &Poly::constant(d.1.clone()), cw.len());
+    let (mut a, mut b) = (Poly::zero(), Poly::zero());
+    for (k, c) in cw.iter().enumerate() {
+        let pk = Poly::sym(phi).pow(k as u32);
+        let c = c * &pk;
+        a += &(&c * &dk[k].0);
+        b += &(&c * &dk[k].1);
+    }
+    (field::reduce(&a), field::reduce(&b))
+}
+
+/// The polynomial in z and Φ whose roots over Φ > 0 are those of χ along
+/// the ray w = Φ·d and their conjugates (A itself on the real axis).
+pub(crate) fn ray_poly(chi: &Poly, d: (&Q, &Q)) -> Poly {
+    let (a, b) = along(chi, d);
+    let p = if b.is_zero() { a } else { field::reduce(&(&(&a * &a) + &(&b * &b))) };
+    // The constants engine reads second-order χ: a first-order one gains
+    // the root z = 0, which changes no verdict.
+    if field::has_generators(&p) && p.degree_in(Sym::z()) == 1 {
+        return &p * &Poly::sym(Sym::z());
+    }
+    p
+}
+
+/// The supremum of r such that every 0 < Φ < r on the ray w = Φ·d is
+/// stable; `None` when every Φ > 0 is.
+///
+/// A one-step χ = c₁(w)z + c₀(w) is decided by its margin
+/// E(Φ) = |c₁(Φd)|² − |c₀(Φd)|² ≥ 0, without the conjugate roots (whose
+/// meeting at z = ±1 on the circle, as Gauss–Legendre's root does at
+/// w = ±2√3 i, is no repeated root of χ). Otherwise the exact engine
+/// decides A² + B² over Φ > 0 (root condition: a repeated root on the
+/// circle is not stable).
+pub(crate) fn limit_along(chi: &Poly, d: (&Q, &Q)) -> Result<Option<Algebraic>, Error> {
+    if chi.degree_in(Sym::z()) == 1 {
+        return limit_one_step(chi, d);
+    }
+    Ok(match analyze(&ray_poly(chi, d))?.stability {
+        Stability::BoundedForAllPhi => None,
+        Stability::Limited { phi_max, .. } => Some(phi_max),
+        Stability::UndecidedAt { at, .. } => Some(at),
+        _ => Some(Algebraic::zero()),
+    })
+}
+
+/// [`limit_along`] for χ of degree one in z: the first Φ > 0 after which
+/// the margin E turns negative.
+fn limit_one_step(chi: &Poly, d: (&Q, &Q)) -> Result<Option<Algebraic>, Error> {
+    let phi = Sym::phi();
+    let cz = chi.coeffs_in(Sym::z());
+    let (a0, b0) = along(&cz[0], d);
+    let (a1, b1) = along(&cz[1], d);
+    let e = field::reduce(&(&(&(&a1 * &a1) + &(&b1 * &b1)) - &(&(&a0 * &a0) + &(&b0 * &b0))));
+    if e.is_zero() {
+        return Ok(None);
+    }
+    // On the real axis E = (a₁ − a₀)(a₁ + a₀): its roots keep the smaller
+    // defining polynomials of the two factors.
+    let factors =
+        if b0.is_zero() && b1.is_zero() { vec![&a1 - &a0, &a1 + &a0] } else { vec![e.clone()] };
+    let mut roots = Vec::new();
+    for f in factors {
+        let u = field_free(&f).to_upoly(phi).ok_or_else(|| {
+            Error::analysis(
+                ErrorKind::ExtraSymbol,
+                format!("the margin {e} holds a symbol other than Phi"),
+            )
+        })?;
+        if !u.is_zero() {
+            roots.extend(Algebraic::positive_roots(&u.squarefree()));
+        }
+    }
+    roots.sort_by(|a, b| a.partial_cmp(b).unwrap_or(Ordering::Equal));
+    roots.dedup();
+    let negative_at = |x: &Q| {
+        field::sign(&field::reduce(&e.subs(phi, &Poly::constant(x.clone())))) == Ordering::Less
+    };
+    let mut lo = Algebraic::zero();
+    for r in roots {
+        let sample = Algebraic::rational_between(&lo, &r);
+        if negative_at(&sample) {
+            return Ok(Some(lo));
+        }
+        lo = r;
+    }
+    let beyond = lo.interval().1.clone() + Q::one();
+    Ok(negative_at(&beyond).then_some(lo))
+}
+
+/// The real and imaginary parts, as polynomials in t, of
+/// Σ c_j (1 + it)^j (1 − it)^(n−j) for coefficients c_j (lowest first).
+fn on_circle(c: &[Poly], n: usize) -> (Poly, Poly) {
+    let t = Poly::sym(Sym::new("t"));
+    let plus = powers(&Poly::one(), &t, n);
+    let minus = powers(&Poly::one(), &-&t, n);
+    let (mut re, mut im) = (Poly::zero(), Poly::zero());
+    for (j, cj) in c.iter().enumerate() {
+        if cj.is_zero() {
+            continue;
+        }
+        let (a, b) = (&plus[j], &minus[n - j]);
+        let pr = &(&a.0 * &b.0) - &(&a.1 * &b.1);
+        let pi = &(&a.0 * &b.1) + &(&a.1 * &b.0);
+        re += &(cj * &pr);
+        im += &(cj * &pi);
+    }
+    (re, im)
+}
+
+/// The curve G(x, m) on which the ray of slope m meets Γ, and its x.
+fn boundary_curve(chi: &Poly) -> (Poly, Sym) {
+    let (z, w, m, t, s) = (Sym::z(), Sym::w(), Sym::new("m"), Sym::new("t"), Sym::new("s"));
+    let n = chi.degree_in(z) as usize;
+    let g = if chi.degree_in(w) == 1 {
+        let cw = chi.coeffs_in(w);
+        let rho = cw[0].coeffs_in(z);
+        let sigma: Vec<Poly> = cw[1].coeffs_in(z).iter().map(|c| -c).collect();
+        let (rr, ri) = on_circle(&rho, n);
+        let (sr, si) = on_circle(&sigma, n);
+        let u = &(&rr * &sr) + &(&ri * &si);
+        let v = &(&ri * &sr) - &(&rr * &si);
+        return (field_free(&(&v - &(&Poly::sym(m) * &u))), t);
+    } else {
+        // w = −s(1 + im).
+        let neg_s = -&Poly::sym(s);
+        let mpow = powers(&Poly::one(), &Poly::sym(m), chi.degree_in(w) as usize);
+        let at_ray = |c: &[Poly]| -> (Poly, Poly) {
+            let (mut re, mut im) = (Poly::zero(), Poly::zero());
+            for (k, ck) in c.iter().enumerate() {
+                let f = ck * &neg_s.pow(k as u32);
+                re += &(&f * &mpow[k].0);
+                im += &(&f * &mpow[k].1);
+            }
+            (re, im)
+        };
+        if n == 1 {
+            let cz = chi.coeffs_in(z);
+            let (qr, qi) = at_ray(&cz[1].coeffs_in(w));
+            let (pr, pi) = at_ray(&cz[0].coeffs_in(w));
+            &(&(&qr * &qr) + &(&qi * &qi)) - &(&(&pr * &pr) + &(&pi * &pi))
+        } else {
+            // Each z-coefficient along the ray, then on the circle.
+            let (mut r1, mut r2) = (Poly::zero(), Poly::zero());
+            let (mut re_c, mut im_c) = (Vec::new(), Vec::new());
+            for c in chi.coeffs_in(z) {
+                let (re, im) = at_ray(&c.coeffs_in(w));
+                re_c.push(re);
+                im_c.push(im);
+            }
+            let (a, b) = on_circle(&re_c, n);
+            let (c, d) = on_circle(&im_c, n);
+            // (re_c + i im_c) on the circle: (a + ib) + i(c + id).
+            r1 += &(&a - &d);
+            r2 += &(&b + &c);
+            resultant(&r1.coeffs_in(t), &r2.coeffs_in(t))
+        }
+    };
+    // Every ray meets Γ at w = 0: divide out the power of s.
+    let cs = g.coeffs_in(s);
+    let low = cs.iter().position(|c| !c.is_zero()).unwrap_or(0);
+    (field_free(&Poly::from_coeffs_in(s, &cs[low..])), s)
+}
+
+/// p over Q: itself, or its norm when it holds constants.
+fn field_free(p: &Poly) -> Poly {
+    let p = field::reduce(p);
+    if field::has_generators(&p) {
+        field::norm(&p)
+    } else {
+        p
+    }
+}
+
+fn in_m(p: &Poly) -> Option<UPoly> {
+    p.to_upoly(Sym::new("m"))
+}
+
+/// The positive slopes at which the set of rays meeting Γ can change.
+fn candidate_slopes(chi: &Poly) -> Result<Vec<Algebraic>, Error> {
+    let (g, x) = boundary_curve(chi);
+    let gx = g.coeffs_in(x);
+    let dx = g.derivative(x).coeffs_in(x);
+    let disc = resultant(&gx, &dx);
+    let undecided = |what: &str| {
+        Error::analysis(
+            ErrorKind::NoRoots,
+            format!(
+                "A(α): the boundary locus {what}; expected a curve without repeated components"
+            ),
+        )
+    };
+    if disc.is_zero() {
+        return Err(undecided("has a repeated component (its discriminant vanishes)"));
+    }
+    let mut polys = vec![disc];
+    if let Some(lc) = gx.last() {
+        polys.push(lc.clone());
+    }
+    polys.push(gx.first().cloned().unwrap_or_default());
+    let mut out: Vec<Algebraic> = Vec::new();
+    for p in polys {
+        if p.is_zero() {
+            continue;
+        }
+        let u = in_m(&p).ok_or_else(|| undecided("holds another symbol"))?;
+        if u.degree().unwrap_or(0) == 0 {
+            continue;
+        }
+        out.extend(Algebraic::positive_roots(&u.squarefree()));
+    }
+    out.sort_by(|a, b| a.partial_cmp(b).unwrap_or(Ordering::Equal));
+    out.dedup();
+    Ok(out)
+}
+
+/// Whether every w = −Φ(1 ± im), Φ > 0, is stable.
+fn ray_stable(chi: &Poly, m: &Q) -> Result<bool, Error> {
+    let (dr, di) = (-Q::one(), -m.clone());
+    Ok(limit_along(chi, (&dr, &di))?.is_none())
+}
+
+/// The largest stable sector, for a χ whose negative real axis (and w = 0)
+/// is stable.
+pub(crate) fn sector(chi: &Poly) -> Result<Sector, Error> {
+    let cands = candidate_slopes(chi)?;
+    let mut prev: Option<&Algebraic> = None;
+    for c in &cands {
+        let probe = match prev {
+            None => rational_below(c) / Q::from_integer(2.into()),
+            Some(p) => Algebraic::rational_between(p, c),
+        };
+        if !ray_stable(chi, &probe)? {
+            return Ok(match prev {
+                None => Sector::Empty,
+                Some(p) => Sector::Angle { tan: p.clone() },
+            });
+        }
+        prev = Some(c);
+    }
+    let beyond = match prev {
+        None => Q::one(),
+        Some(p) => p.interval().1.clone() + Q::one(),
+    };
+    if !ray_stable(chi, &beyond)? {
+        return Ok(match prev {
+            None => Sector::Empty,
+            Some(p) => Sector::Angle { tan: p.clone() },
+        });
+    }
+    Ok(Sector::HalfPlane)
+}
+
+/// A positive rational below a positive algebraic number.
+fn rational_below(c: &Algebraic) -> Q {
+    let mut w = Q::one();
+    loop {
+        let r = c.refine(&w);
+        let lo = r.interval().0.clone();
+        if lo > Q::zero() {
+            return lo;
+        }
+        w /= Q::from_integer(16.into());
+    }
+}
