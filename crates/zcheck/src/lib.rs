@@ -6,7 +6,9 @@
 //!   reporting of an [`Error`] (exit code 2);
 //! - [`load`]: a method argument (built-in, `.zm` file, Butcher tableau)
 //!   resolved once, with its one derivation;
-//! - [`tableau`]: Butcher tableaux read from TOML;
+//! - [`tableau`]: Butcher tableaux read from TOML, and `multistep`: linear
+//!   multistep methods (`alpha`, `beta`) read from TOML;
+//! - `region`: the w-plane report (JSON, text, SVG) of `zcheck region`;
 //! - [`paper`]: the proof of Hoffmann's paper as data (claims, verdicts,
 //!   evidence) and its Markdown/JSON report;
 //! - [`overview`]: every method side by side (exact limit, series, cost);
@@ -26,9 +28,11 @@ pub mod emit;
 mod error;
 pub mod load;
 mod map;
+mod multistep;
 pub mod overview;
 pub mod paper;
 pub mod plot;
+mod region;
 pub mod scene;
 pub mod tableau;
 pub mod tradeoff;

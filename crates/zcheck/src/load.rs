@@ -6,10 +6,10 @@
 //! it and then kept, so that a command derives each method once.
 //!
 //! An argument is a built-in's name, a `.zm` file (`check::load` tells the
-//! two apart, and reads the file), or a Butcher tableau (`.toml`, read by
-//! [`crate::tableau`] and turned into its `.zm` program). The
-//! linear-multistep TOML of the complex-plane issue becomes one more arm of
-//! `resolve`, next to the tableau's.
+//! two apart, and reads the file), or a `.toml` file of coefficients: a
+//! Butcher tableau ([`crate::tableau`]) or a linear multistep method
+//! ([`crate::multistep`], told apart by its `alpha` and `beta`), turned into
+//! its `.zm` program.
 //!
 //! The whole-scene advisor asks for the method on the damped spring
 //! (`LoadedMethod::load_damped`): a built-in's damped twin
@@ -24,6 +24,7 @@ use std::sync::{Mutex, OnceLock};
 use poly::{Derivation, Method};
 
 use crate::error::Error;
+use crate::multistep::Multistep;
 use crate::scene::vector::Kernel;
 use crate::tableau::Tableau;
 
@@ -36,6 +37,10 @@ pub struct LoadedMethod {
     hand_kernel: Option<&'static str>,
     system_kernel: Option<Kernel>,
     derivation: OnceLock<Result<Derivation, poly::Error>>,
+    /// The program on y' = λy of a tableau or multistep file: the w-plane
+    /// derives it rather than the oscillator's (one state, not two).
+    scalar: Option<Method>,
+    scalar_derivation: OnceLock<Result<Derivation, poly::Error>>,
 }
 
 /// The oscillator a tableau's program is written for.
@@ -51,8 +56,10 @@ impl LoadedMethod {
     /// The method `arg` names, shown as `arg`: a built-in, a `.zm` file, or
     /// a Butcher tableau's program on the undamped oscillator.
     pub(crate) fn load(arg: &str) -> Result<LoadedMethod, Error> {
-        let method = resolve(arg, Oscillator::Undamped)?;
-        Ok(LoadedMethod::new(method, arg.to_owned(), None, None))
+        let (method, scalar) = resolve(arg, Oscillator::Undamped)?;
+        let mut loaded = LoadedMethod::new(method, arg.to_owned(), None, None);
+        loaded.scalar = scalar;
+        Ok(loaded)
     }
 
     /// The method `arg` names, on the damped spring (`param D`), for the
@@ -63,7 +70,7 @@ impl LoadedMethod {
         match damped_twin(arg) {
             Some(name) => LoadedMethod::builtin(name),
             None => {
-                let method = resolve(arg, Oscillator::Damped)?;
+                let (method, _) = resolve(arg, Oscillator::Damped)?;
                 Ok(LoadedMethod::new(method, arg.to_owned(), None, None))
             }
         }
@@ -100,7 +107,15 @@ impl LoadedMethod {
         hand_kernel: Option<&'static str>,
         system_kernel: Option<Kernel>,
     ) -> LoadedMethod {
-        LoadedMethod { method, display, hand_kernel, system_kernel, derivation: OnceLock::new() }
+        LoadedMethod {
+            method,
+            display,
+            hand_kernel,
+            system_kernel,
+            derivation: OnceLock::new(),
+            scalar: None,
+            scalar_derivation: OnceLock::new(),
+        }
     }
 
     /// The method.
@@ -138,6 +153,22 @@ impl LoadedMethod {
     }
 }
 
+impl LoadedMethod {
+    /// The derivation the w-plane reads: the program on y' = λy of a
+    /// tableau or multistep file, else the method's own derivation (a
+    /// scalar program, or an oscillator program with a scalar form).
+    pub(crate) fn plane_derivation(&self) -> Result<&Derivation, Error> {
+        match &self.scalar {
+            Some(m) => self
+                .scalar_derivation
+                .get_or_init(|| poly::derive(m))
+                .as_ref()
+                .map_err(|e| Error::from(e.clone())),
+            None => self.derivation(),
+        }
+    }
+}
+
 /// A built-in method's derivation, derived once per process: the paper's
 /// report and its overview ask for the same few methods many times. The
 /// built-ins are part of the binary, so a failure is a programmer error.
@@ -160,22 +191,32 @@ pub(crate) fn try_builtin_derivation(name: &str) -> Result<Derivation, poly::Err
     Ok(d)
 }
 
-/// The method `arg` names.
-fn resolve(arg: &str, oscillator: Oscillator) -> Result<Method, Error> {
-    // A TOML file is a Butcher tableau. The linear-multistep TOML of the
-    // complex-plane issue is read here too, told apart by its keys.
+/// The method `arg` names, and for a coefficient file its program on
+/// y' = λy.
+fn resolve(arg: &str, oscillator: Oscillator) -> Result<(Method, Option<Method>), Error> {
+    // A TOML file is a Butcher tableau, or a linear multistep method when it
+    // has `alpha` or `beta`.
     if arg.ends_with(".toml") {
-        let tableau = Tableau::load(Path::new(arg))?;
-        let src = tableau.to_zm(oscillator == Oscillator::Damped);
-        let method = Method::parse(arg, &src).map_err(|e| {
-            Error::method(format!(
-                "{arg}: the program generated from the tableau does not parse: {}",
-                e.message()
-            ))
-        })?;
-        return Ok(method);
+        let (shown, stem, text) = crate::tableau::read_file(Path::new(arg))?;
+        let damped = oscillator == Oscillator::Damped;
+        let (src, scalar, what) = if crate::tableau::is_multistep(&text) {
+            let m = Multistep::parse(&shown, &stem, &text)?;
+            (m.to_zm(damped), m.to_scalar_zm(), "multistep coefficients")
+        } else {
+            let t = Tableau::parse(&shown, &stem, &text)?;
+            (t.to_zm(damped), t.to_scalar_zm(), "tableau")
+        };
+        let parse = |src: &str| {
+            Method::parse(arg, src).map_err(|e| {
+                Error::method(format!(
+                    "{arg}: the program generated from the {what} does not parse: {}",
+                    e.message()
+                ))
+            })
+        };
+        return Ok((parse(&src)?, Some(parse(&scalar)?)));
     }
-    Ok(check::load::load_method(arg)?)
+    Ok((check::load::load_method(arg)?, None))
 }
 
 /// The damped twin of a built-in's name: itself for a damped built-in,

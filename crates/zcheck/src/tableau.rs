@@ -17,8 +17,9 @@
 //!
 //! Every entry is exact: an integer, or a string holding an exact number or
 //! a constant expression in `+ - * / ^ ( )` with `sqrt(N)`, `cbrt(N)` and
-//! `root(K, N)` for positive integers N (TOML floats are binary, so `0.1`
-//! must be written `"0.1"`). Each entry is checked by the `.zm` parser
+//! `root(K, N)` for positive integers N, or a TOML float, read as the
+//! decimal written (`0.1` is 1/10: the shortest decimal that gives the same
+//! float back). Each entry is checked by the `.zm` parser
 //! itself, so division by an expression that is exactly zero is refused
 //! exactly, and every mistake is reported at the entry's line and column.
 //!
@@ -40,31 +41,15 @@ pub(crate) use poly::advanced::tableau::MAX_STAGES;
 
 use crate::error::{line_col, Error};
 
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct Raw {
-    name: Option<Spanned<String>>,
-    #[serde(rename = "A")]
-    a: Spanned<Vec<Spanned<Vec<Spanned<toml::Value>>>>>,
-    b: Spanned<Vec<Spanned<toml::Value>>>,
-    c: Option<Spanned<Vec<Spanned<toml::Value>>>>,
-}
-
-/// A Butcher tableau read exactly from a file.
-#[derive(Clone, Debug)]
-pub struct Tableau {
-    source: String,
-    tableau: exact::Tableau,
-}
-
-impl Tableau {
-    /// Reads a tableau file (at most [`check::load::MAX_FILE_BYTES`]).
-    pub fn load(path: &Path) -> Result<Tableau, Error> {
-        let shown = path.display().to_string();
+/// Reads a coefficient file (a tableau or a multistep method, at most
+/// [`check::load::MAX_FILE_BYTES`]): the path as shown, the file's stem, and
+/// its text.
+pub(crate) fn read_file(path: &Path) -> Result<(String, String, String), Error> {
+    let shown = path.display().to_string();
         let fail = |message: String| Error::file(&shown, 1, 1, &message);
         let meta = std::fs::metadata(path).map_err(|e| fail(format!("cannot read: {e}")))?;
         if meta.is_dir() {
-            return Err(fail("is a directory: expected a .toml tableau".to_owned()));
+            return Err(fail("is a directory: expected a .toml file (a Butcher tableau or a multistep method)".to_owned()));
         }
         if meta.len() > check::load::MAX_FILE_BYTES {
             return Err(fail(format!(
@@ -87,8 +72,69 @@ impl Tableau {
                 ));
             }
         };
-        let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("tableau");
-        Tableau::parse(&shown, stem, &text)
+        let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("method").to_owned();
+    Ok((shown, stem, text))
+}
+
+/// One exact coefficient from a TOML value, blamed on its location: an
+/// integer, a string holding an exact number or constant expression, or a
+/// TOML float read as the decimal the user wrote (the shortest decimal that
+/// gives the same float back, so `0.1` is 1/10).
+pub(crate) fn exact_entry(
+    path: &str,
+    text: &str,
+    v: &Spanned<toml::Value>,
+    what: &str,
+) -> Result<Exact, Error> {
+    let at = |m: String| {
+        let (line, col) = line_col(text, v.span().start);
+        Error::file(path, line, col, &format!("{what}: {m}"))
+    };
+    let entry = match v.get_ref() {
+        toml::Value::Integer(i) => i.to_string(),
+        toml::Value::String(s) => s.clone(),
+        toml::Value::Float(f) if f.is_finite() => format!("{f}"),
+        toml::Value::Float(f) => return Err(at(format!("{f} is not a finite number: expected an exact coefficient"))),
+        other => {
+            return Err(at(format!(
+                "expected an exact number (an integer, a decimal, or a string such as \"1/6\" or \
+                 \"1/4 - sqrt(3)/6\"), found a {}",
+                other.type_str()
+            )))
+        }
+    };
+    Exact::parse(&entry).map_err(|e| at(e.message().to_owned()))
+}
+
+/// Whether a coefficient file holds a linear multistep method (`alpha`,
+/// `beta`) rather than a Butcher tableau.
+pub(crate) fn is_multistep(text: &str) -> bool {
+    toml::from_str::<toml::Table>(text)
+        .is_ok_and(|t| t.contains_key("alpha") || t.contains_key("beta"))
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct Raw {
+    name: Option<Spanned<String>>,
+    #[serde(rename = "A")]
+    a: Spanned<Vec<Spanned<Vec<Spanned<toml::Value>>>>>,
+    b: Spanned<Vec<Spanned<toml::Value>>>,
+    c: Option<Spanned<Vec<Spanned<toml::Value>>>>,
+}
+
+/// A Butcher tableau read exactly from a file.
+#[derive(Clone, Debug)]
+pub struct Tableau {
+    source: String,
+    tableau: exact::Tableau,
+}
+
+impl Tableau {
+    /// Reads a tableau file (at most [`check::load::MAX_FILE_BYTES`]).
+    pub fn load(path: &Path) -> Result<Tableau, Error> {
+        let (shown, stem, text) = read_file(path)?;
+        Tableau::parse(&shown, &stem, &text)
     }
 
     /// Parses the text of a tableau file; `stem` names the method when the
@@ -134,26 +180,7 @@ impl Tableau {
                 ));
             }
         }
-        let entry = |v: &Spanned<toml::Value>, what: String| -> Result<Exact, Error> {
-            let at = |m: String| err(Some(v.span()), format!("{what}: {m}"));
-            let text = match v.get_ref() {
-                toml::Value::Integer(i) => i.to_string(),
-                toml::Value::String(s) => s.clone(),
-                toml::Value::Float(_) => {
-                    return Err(at("a TOML float is binary, not the decimal written: write it \
-                                   as a string, \"0.1\", to have it exactly"
-                        .to_owned()))
-                }
-                other => {
-                    return Err(at(format!(
-                        "expected an exact number (an integer, or a string such as \"1/6\" or \
-                         \"1/4 - sqrt(3)/6\"), found a {}",
-                        other.type_str()
-                    )))
-                }
-            };
-            Exact::parse(&text).map_err(|e| at(e.message().to_owned()))
-        };
+        let entry = |v: &Spanned<toml::Value>, what: String| exact_entry(path, text, v, &what);
         let mut a = Vec::with_capacity(s);
         for (i, row) in raw.a.get_ref().iter().enumerate() {
             let mut r = Vec::with_capacity(s);
@@ -212,5 +239,10 @@ impl Tableau {
     /// oscillator (`param D`) when `damped`.
     pub fn to_zm(&self, damped: bool) -> String {
         self.tableau.to_zm(&self.source, damped)
+    }
+
+    /// The `.zm` program of the method on y' = λy (in `w`).
+    pub(crate) fn to_scalar_zm(&self) -> String {
+        self.tableau.to_scalar_zm(&self.source)
     }
 }

@@ -109,3 +109,28 @@ pub fn eigen_condition(p: &DMatrix<f64>, z: C64) -> (f64, Vec<C64>) {
     let kappa = (1.0 / dot.norm()).min(1e300);
     (kappa, left)
 }
+
+/// The roots of a polynomial with complex coefficients (lowest power
+/// first; [`polynomial_roots`] takes real ones, highest first), as the eigenvalues of its companion matrix by nalgebra's
+/// complex Schur decomposition; leading zeros are dropped first.
+pub fn complex_polynomial_roots(coeffs: &[C64]) -> Result<Vec<C64>, Error> {
+    let mut c = coeffs.to_vec();
+    while c.last().is_some_and(|x| x.is_zero()) {
+        c.pop();
+    }
+    let n = c.len().saturating_sub(1);
+    if n == 0 {
+        return Ok(Vec::new());
+    }
+    let lead = c[n];
+    let mut m = DMatrix::<C64>::zeros(n, n);
+    for i in 1..n {
+        m[(i, i - 1)] = C64::new(1.0, 0.0);
+    }
+    for i in 0..n {
+        m[(i, n - 1)] = -c[i] / lead;
+    }
+    let schur = nalgebra::linalg::Schur::try_new(m, f64::EPSILON, 100 * n.max(1))
+        .ok_or(Error::no_convergence("nalgebra (complex)"))?;
+    Ok(schur.eigenvalues().map(|v| v.iter().copied().collect()).unwrap_or_default())
+}

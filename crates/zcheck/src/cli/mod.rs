@@ -20,6 +20,7 @@ pub(crate) mod output;
 pub(crate) mod overview;
 pub(crate) mod paper;
 pub(crate) mod plot;
+pub(crate) mod region;
 pub(crate) mod scene;
 pub(crate) mod stability;
 pub(crate) mod tradeoff;
@@ -89,6 +90,8 @@ enum Command {
     Emit(emit::Args),
     /// Write the .zm program of a Runge-Kutta method from its Butcher tableau (TOML).
     FromTableau(from_tableau::Args),
+    /// The method on y' = λy in the complex w = hλ plane: order, error constant, axis limits, A(α), ρ∞.
+    Region(region::Args),
 }
 
 impl Cli {
@@ -111,6 +114,7 @@ impl Cli {
             Command::Drift(a) => drift::run(a),
             Command::Emit(a) => emit::run(a),
             Command::FromTableau(a) => from_tableau::run(a),
+            Command::Region(a) => region::run(a),
         }
     }
 }

@@ -22,9 +22,9 @@ use num_traits::{One, Zero};
 pub use sector::Sector;
 
 use crate::analysis::stability::point::circle_counts;
+use crate::analysis::stability::{analyze, Stability};
 use crate::error::{Error, ErrorKind};
 use crate::multivariate::constants as field;
-use crate::multivariate::resultant::resultant;
 use crate::{Algebraic, Derivation, Params, Poly, Sym, UPoly, Q};
 use principal::{inverse_factorial, Branch, NoBranch, C};
 
@@ -197,20 +197,147 @@ pub fn rho_at_infinity(chi: &Poly, t: Sym) -> Result<Option<Algebraic>, Error> {
         return Ok(Some(Algebraic::zero()));
     }
     if g.iter().any(field::has_generators) {
+        return rho_with_constants(g).map(Some);
+    }
+    // The roots of Φⁿ g(z/Φ) are Φ·z_i: all inside the unit circle exactly
+    // for Φ < 1/ρ, so the exact engine's stability limit is 1/ρ.
+    let (z, phi) = (Sym::z(), Sym::phi());
+    let n = g.len() - 1;
+    let scaled = Poly::from_coeffs_in(
+        z,
+        &g.iter().enumerate().map(|(k, c)| c * &Poly::sym(phi).pow((n - k) as u32)).collect::<Vec<_>>(),
+    );
+    let limit = match analyze(&scaled)?.stability {
+        Stability::Limited { phi_max, .. } => phi_max,
+        Stability::UndecidedAt { at, .. } => at,
+        other => {
+            return Err(Error::analysis(
+                ErrorKind::NoSeries,
+                format!("ρ∞: the scaled limit polynomial is {}, expected a finite limit", other.name()),
+            ))
+        }
+    };
+    Ok(Some(reciprocal(&limit)))
+}
+
+/// 1/a for a positive algebraic number: the reversed defining polynomial,
+/// and the image of an isolating interval that excludes 0.
+fn reciprocal(a: &Algebraic) -> Algebraic {
+    if let Some(r) = a.as_rational() {
+        return Algebraic::from_rational(Q::one() / r);
+    }
+    let mut width = Q::new(1.into(), 16.into());
+    loop {
+        let (lo, hi) = a.refine(&width).interval();
+        if lo > Q::zero() {
+            let p = a.defining_poly().reversed();
+            if let Some(r) = Algebraic::from_isolating(&p, &(Q::one() / &hi), &(Q::one() / &lo)) {
+                return r;
+            }
+        }
+        width = &width / &Q::from_integer(16.into());
+    }
+}
+
+/// The largest modulus of the roots of g (lowest coefficient first, g(0) ≠
+/// 0, degree 1 or 2) over the field F of exact constants, exactly: ρ is a
+/// root of a polynomial P(X) over F (X − |x|, X² − c/a, or (X − s)² − t),
+/// hence of its norm N over Q; the root of N within the enclosure of ρ
+/// computed in F is ρ.
+fn rho_with_constants(g: &[Poly]) -> Result<Algebraic, Error> {
+    let x = Sym::new("x");
+    let big = |width: &Q| -> (Poly, Q, Q) {
+        // P(X), and a rational enclosure [lo, hi] of ρ of about `width`.
+        let ap = |p: &Poly| field::approx(p, width);
+        let abs = |p: &Poly| if field::sign(p).is_lt() { -p } else { p.clone() };
+        let inv = |p: &Poly| field::inverse(p).expect("a nonzero element");
+        let xs = Poly::sym(x);
+        match g.len() {
+            2 => {
+                let r = abs(&field::reduce(&(&g[0] * &inv(&g[1]))));
+                let v = ap(&r);
+                (&xs - &r, &v - width, &v + width)
+            }
+            _ => {
+                let (c, b, a) = (&g[0], &g[1], &g[2]);
+                let ainv = inv(a);
+                let disc = field::reduce(&(&(b * b) - &(&(a * c) * &Poly::int(4))));
+                if field::sign(&disc).is_lt() {
+                    // |z|² = c/a for the complex pair.
+                    let q = field::reduce(&(c * &ainv));
+                    let (lo, hi) = (ap(&q) - width, ap(&q) + width);
+                    (&(&xs * &xs) - &q, sqrt_below(&lo), sqrt_above(&hi))
+                } else {
+                    // ρ = s + √t, s = |b|/(2|a|), t = disc/(4a²).
+                    let half = Q::new(1.into(), 2.into());
+                    let sgn = abs(&field::reduce(&(b * &ainv))).scale(&half);
+                    let t = field::reduce(&(&disc * &(&ainv * &ainv))).scale(&(&half * &half));
+                    let (s0, t0) = (ap(&sgn), ap(&t));
+                    let p = &(&(&xs - &sgn) * &(&xs - &sgn)) - &t;
+                    let tlo = if t0 > *width { &t0 - width } else { Q::zero() };
+                    (p, &s0 - width + sqrt_below(&tlo), &s0 + width + sqrt_above(&(&t0 + width)))
+                }
+            }
+        }
+    };
+    if g.len() > 3 {
         return Err(Error::analysis(
             ErrorKind::NoSeries,
-            "ρ∞ of a limit polynomial with exact constants is not computed; expected rational \
-             coefficients"
-                .to_owned(),
+            format!(
+                "ρ∞ with exact constants is computed for limit polynomials of degree 1 and 2; \
+                 this one has degree {}",
+                g.len() - 1
+            ),
         ));
     }
-    let n = g.len() - 1;
-    let x = Poly::sym(Sym::new("x"));
-    let h: Vec<Poly> = (0..=n).map(|i| &g[n - i] * &x.pow(2 * (n - i) as u32)).collect();
-    let r = resultant(g, &h);
-    let u = r.to_upoly(Sym::new("x")).expect("a polynomial in x");
-    let roots = Algebraic::real_roots(&u.squarefree());
-    Ok(roots.into_iter().max_by(|p, q| p.partial_cmp(q).unwrap_or(std::cmp::Ordering::Equal)))
+    let mut width = Q::new(1.into(), 1_000_000.into());
+    let (p, _, _) = big(&width);
+    let n = field::norm(&field::reduce(&p)).to_upoly(x).expect("a polynomial in x").squarefree();
+    let roots = Algebraic::real_roots(&n);
+    for _ in 0..12 {
+        let (_, lo, hi) = big(&width);
+        let inside: Vec<&Algebraic> = roots
+            .iter()
+            .filter(|r| {
+                let (a, b) = r.refine(&width).interval();
+                b >= lo && a <= hi
+            })
+            .collect();
+        if let [only] = inside.as_slice() {
+            return Ok((*only).clone());
+        }
+        width = &width * &width;
+    }
+    Err(Error::analysis(ErrorKind::NoSeries, "ρ∞: the enclosure does not single out a root".to_owned()))
+}
+
+/// A rational at most √q (q ≥ 0), within about 2⁻⁶⁰·(1 + √q).
+fn sqrt_below(q: &Q) -> Q {
+    sqrt_bracket(q).0
+}
+
+/// A rational at least √q (q ≥ 0).
+fn sqrt_above(q: &Q) -> Q {
+    sqrt_bracket(q).1
+}
+
+fn sqrt_bracket(q: &Q) -> (Q, Q) {
+    if *q <= Q::zero() {
+        return (Q::zero(), Q::zero());
+    }
+    let (mut lo, mut hi) = (Q::zero(), q.clone().max(Q::one()));
+    let two = Q::from_integer(2.into());
+    let eps = Q::new(1.into(), num_bigint::BigInt::from(1u64 << 60));
+    while &hi - &lo > eps {
+        let mid = (&lo + &hi) / &two;
+        if &mid * &mid <= *q {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+        // Keep the sizes small: round to a dyadic rational.
+    }
+    (lo, hi)
 }
 
 /// The leading term c·Φ^(k+1) of a series on the oscillator.
