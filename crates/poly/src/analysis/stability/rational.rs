@@ -114,7 +114,25 @@ fn run(chi: &Charpoly, p: Option<StepMatrix<'_>>, charpoly: Option<&Poly>) -> St
         .map_or_else(|| discriminant(&chi.a), |(_, d)| d.clone());
     for (k, point) in points.iter_mut().enumerate() {
         if classes[k].is_bounded() || classes[k + 1].is_bounded() {
-            point.bounded = bounded_at(chi, &point.at, at_classes[k], &disc, p);
+            // A root on the circle is ±1 (χ(±1) = 0) or has its conjugate
+            // 1/z beside it (z_i z_j = 1): with none of those conditions
+            // vanishing here, every root is strictly inside (next to a
+            // bounded interval, none can be outside), whatever repeats.
+            // This spares gcds over Q(α) of a high degree.
+            let on_circle = point.conditions.iter().any(|c| {
+                matches!(
+                    c,
+                    Condition::ChiAtOne
+                        | Condition::ChiAtMinusOne
+                        | Condition::UnitCircle
+                        | Condition::ReciprocalDiscriminant
+                )
+            });
+            point.bounded = if on_circle || at_classes[k].is_some() {
+                bounded_at(chi, &point.at, at_classes[k], &disc, p)
+            } else {
+                Some(true)
+            };
         }
     }
 
