@@ -14,8 +14,9 @@
 //! - [`scene`]: the appendix scenes (three bodies, aircraft), and a user's
 //!   scene of masses and springs with the whole-scene advisor;
 //! - [`emit`]: a method's step as Rust or C source;
-//! - [`plot`], `map`, `drift_figure`: SVG figures, and the exact (Φ, D)
-//!   stability map of a damped method.
+//! - [`plot`], `map`, `param_map`, `drift_figure`: SVG figures, the exact
+//!   (Φ, p) stability map of a method's one parameter, and the map over
+//!   two parameters coloured by the exact Φ_max.
 //!
 //! The exact algebra lives in `poly`, the numeric witnesses in `check`; this
 //! crate depends on both and neither depends on it.
@@ -28,6 +29,7 @@ pub mod load;
 mod map;
 pub mod overview;
 pub mod paper;
+mod param_map;
 pub mod plot;
 pub mod scene;
 pub mod tableau;

@@ -10,6 +10,7 @@ mod extremes;
 mod front_door;
 mod fuzz_corpus;
 mod hostile;
+mod map_cli;
 mod measured_cost;
 mod plot_cli;
 mod scene_advise;
