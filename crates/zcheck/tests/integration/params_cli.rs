@@ -1,7 +1,8 @@
-//! `zcheck map` over any parameters: a (Phi, NAME) map for a parameter not
-//! named D, and the map over Newmark's (beta, gamma), held to Hughes' closed
-//! forms: unconditionally stable exactly when 2 beta >= gamma >= 1/2, and
-//! otherwise (gamma >= 1/2) Phi_max = (gamma/2 - beta)^(-1/2).
+//! Commands over any parameters. `zcheck map`: a (Phi, NAME) map for a
+//! parameter not named D, and the map over Newmark's (beta, gamma), held to
+//! Hughes' closed forms: unconditionally stable exactly when
+//! 2 beta >= gamma >= 1/2, and otherwise (gamma >= 1/2)
+//! Phi_max = (gamma/2 - beta)^(-1/2). `zcheck overview --param`.
 
 use std::process::Command;
 
@@ -196,5 +197,52 @@ fn bad_ranges_are_refused() {
         assert_eq!(code, 2, "{args:?}: {err}");
         assert!(err.contains(wanted), "{args:?}: {err}");
         assert!(!err.contains("panicked"), "{args:?}: {err}");
+    }
+}
+
+/// `overview --param` binds each method's own parameters: Newmark at
+/// (1/4, 1/2) is the built-in newmark_average, row for row, and at
+/// (1/4, 3/5) its limit is Hughes' (gamma/2 - beta)^(-1/2) = 2 sqrt(5).
+#[test]
+fn overview_binds_params() {
+    let v = json(&[
+        "overview",
+        NEWMARK,
+        "newmark_average",
+        "--param",
+        "beta=1/4",
+        "--param",
+        "gamma=0.5",
+        "--format",
+        "json",
+    ]);
+    let rows = v.as_array().unwrap();
+    assert_eq!(rows[0]["method"], "newmark (beta = 1/4, gamma = 1/2)");
+    assert_eq!(rows[1]["method"], "newmark_average");
+    for key in ["charpoly", "phi_max_exact", "psi_series", "modulus_sq_series", "phase_error"] {
+        assert_eq!(rows[0][key], rows[1][key], "{key}");
+    }
+    let v = json(&[
+        "overview",
+        NEWMARK,
+        "--param",
+        "beta=1/4",
+        "--param",
+        "gamma=3/5",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(v[0]["phi_max_exact"], "2*sqrt(5)");
+    let want = 1.0 / (0.3f64 - 0.25).sqrt();
+    assert!((v[0]["phi_max"].as_f64().unwrap() - want).abs() < 1e-12, "{}", v[0]);
+    // A parameter left without a value, or one no method declares.
+    for (args, wanted) in [
+        (&["overview", NEWMARK, "--param", "beta=1/4"][..], "give gamma a value"),
+        (&["overview", NEWMARK, "--param", "delta=1"][..], "method newmark has no parameter delta"),
+        (&["overview", "--param", "D=1/2"][..], "none of the methods declares a parameter D"),
+    ] {
+        let (code, _, err) = zcheck(args);
+        assert_eq!(code, 2, "{args:?}: {err}");
+        assert!(err.contains(wanted) && !err.contains("panicked"), "{args:?}: {err}");
     }
 }
