@@ -16,7 +16,8 @@
 //! - [`emit`]: a method's step as Rust or C source;
 //! - [`plot`], `map`, `param_map`, `drift_figure`: SVG figures, the exact
 //!   (Φ, p) stability map of a method's one parameter, and the map over
-//!   two parameters coloured by the exact Φ_max.
+//!   two parameters coloured by the exact Φ_max; `spectral`: the spectral
+//!   radius, period elongation and algorithmic damping (Hughes, ch. 9).
 //!
 //! The exact algebra lives in `poly`, the numeric witnesses in `check`; this
 //! crate depends on both and neither depends on it.
@@ -32,6 +33,7 @@ pub mod paper;
 mod param_map;
 pub mod plot;
 pub mod scene;
+mod spectral;
 pub mod tableau;
 pub mod tradeoff;
 
