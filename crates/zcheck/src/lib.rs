@@ -16,8 +16,10 @@
 //! - [`scene`]: the appendix scenes (three bodies, aircraft), and a user's
 //!   scene of masses and springs with the whole-scene advisor;
 //! - [`emit`]: a method's step as Rust or C source;
-//! - [`plot`], `map`, `drift_figure`: SVG figures, and the exact (Φ, D)
-//!   stability map of a damped method.
+//! - [`plot`], `map`, `param_map`, `drift_figure`: SVG figures, the exact
+//!   (Φ, p) stability map of a method's one parameter, and the map over
+//!   two parameters coloured by the exact Φ_max; `spectral`: the spectral
+//!   radius, period elongation and algorithmic damping (Hughes, ch. 9).
 //!
 //! The exact algebra lives in `poly`, the numeric witnesses in `check`; this
 //! crate depends on both and neither depends on it.
@@ -31,9 +33,11 @@ mod map;
 mod multistep;
 pub mod overview;
 pub mod paper;
+mod param_map;
 pub mod plot;
 mod region;
 pub mod scene;
+mod spectral;
 pub mod tableau;
 pub mod tradeoff;
 

@@ -1,4 +1,5 @@
-//! The exact stability map of a method in (Φ, D): the critical curves of
+//! The exact stability map of a method in (Φ, p), p its one parameter (the
+//! damping ratio D of the damped built-ins, or any other): the critical curves of
 //! `poly::advanced::region`, traced exactly, over a grid of exact root classes, each
 //! grid point cross-checked by the numeric witnesses of `check`
 //! (eigenvalues of the numeric transition matrix by nalgebra and faer
@@ -28,8 +29,8 @@ use crate::load::LoadedMethod;
 pub(crate) struct GridPoint {
     /// Φ (the f64 whose exact value was classified).
     pub phi: f64,
-    /// D.
-    pub d: f64,
+    /// The parameter's value.
+    pub value: f64,
     /// The exact class.
     #[serde(serialize_with = "class_name")]
     pub class: RootClass,
@@ -50,15 +51,15 @@ pub(crate) struct TracedCurve {
     pub poly: String,
     /// The monomial factor.
     pub monomial: String,
-    /// Points (Φ, D) on the curve inside the window.
+    /// Points (Φ, p) on the curve inside the window.
     pub points: Vec<(f64, f64)>,
 }
 
-/// Φ_max at one D.
+/// Φ_max at one value of the parameter.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub(crate) struct LimitAt {
-    /// D.
-    pub d: f64,
+    /// The parameter's value.
+    pub value: f64,
     /// Φ_max to 12 decimals, "every" or "none".
     pub phi_max: String,
     /// Its defining polynomial and interval, when algebraic.
@@ -70,11 +71,13 @@ pub(crate) struct LimitAt {
 pub(crate) struct StabilityMap {
     /// The method.
     pub method: String,
+    /// The axes: `["Phi", p]`.
+    pub axes: [String; 2],
     /// Φ window.
     pub phi: (f64, f64),
-    /// D window.
-    pub d: (f64, f64),
-    /// Grid points, row by row (D outer, Φ inner).
+    /// The parameter's window.
+    pub range: (f64, f64),
+    /// Grid points, row by row (the parameter outer, Φ inner).
     pub grid: Vec<GridPoint>,
     /// Grid size (Φ, D).
     pub size: (usize, usize),
@@ -82,9 +85,9 @@ pub(crate) struct StabilityMap {
     pub curves: Vec<TracedCurve>,
     /// Grid points whose witnesses disagreed.
     pub disagreements: usize,
-    /// Φ_max along the D window.
+    /// Φ_max along the parameter's window.
     pub limits: Vec<LimitAt>,
-    /// "stable for every Phi > 0 and D >= 0" or the counterexample.
+    /// "stable for every Phi > 0 and p >= 0" or the counterexample.
     pub unconditional: String,
 }
 
@@ -93,40 +96,49 @@ pub(crate) struct StabilityMap {
 pub(crate) struct MapWindow {
     /// Φ range, exact.
     pub phi: (Q, Q),
-    /// D range, exact.
-    pub d: (Q, Q),
+    /// The parameter's name.
+    pub param: String,
+    /// Its range, exact.
+    pub range: (Q, Q),
     /// Grid points per axis.
     pub grid: usize,
     /// Curve samples per axis.
     pub samples: usize,
 }
 
-fn lin(lo: &Q, hi: &Q, k: usize, n: usize) -> Q {
+pub(crate) fn lin(lo: &Q, hi: &Q, k: usize, n: usize) -> Q {
     let t = Q::new((k as i64).into(), (n.max(2) as i64 - 1).into());
     lo + &((hi - lo) * t)
 }
 
 /// Grid cell centres: k + 1/2 of n cells.
-fn centre(lo: &Q, hi: &Q, k: usize, n: usize) -> Q {
+pub(crate) fn centre(lo: &Q, hi: &Q, k: usize, n: usize) -> Q {
     let t = Q::new((2 * k as i64 + 1).into(), (2 * n as i64).into());
     lo + &((hi - lo) * t)
 }
 
-/// Computes the map of a method (which must have the parameter D), from
-/// its one derivation.
+/// Computes the map of a method over (Φ, `w.param`), from its one
+/// derivation. The parameter must be the method's only one besides Φ.
 pub(crate) fn map(loaded: &LoadedMethod, w: &MapWindow) -> Result<StabilityMap, Error> {
     let method = loaded.method();
-    let d_sym = Sym::new("D");
+    let d_sym = Sym::new(&w.param);
     if !method.params().contains(&d_sym) {
-        return Err(Error::unsupported(format!(
-            "method {} has no parameter D: expected `param D` (the test equation v' = -2*D*v - y, y' = v)",
-            method.name()
+        return Err(Error::usage(format!(
+            "--param {}: method {} has no parameter {} (the damped test equation v' = -2*D*v - y, y' = v has `param D`)",
+            w.param,
+            method.name(),
+            w.param
         )));
     }
-    if let Some(extra) = method.params().iter().find(|s| s.name() != "Phi" && s.name() != "D") {
-        return Err(Error::unsupported(format!(
-            "method {}: parameter {extra} has no value on a (Phi, D) map",
-            method.name()
+    let others: Vec<&str> =
+        method.params().iter().map(|s| s.name()).filter(|n| *n != "Phi" && *n != w.param).collect();
+    if !others.is_empty() {
+        return Err(Error::usage(format!(
+            "--param {}: method {} has further parameters ({}), which have no value on a (Phi, {}) map: give two --param ranges (and no --phi) for a map over two parameters",
+            w.param,
+            method.name(),
+            others.join(", "),
+            w.param
         )));
     }
     let derivation = loaded.derivation()?;
@@ -139,15 +151,16 @@ pub(crate) fn map(loaded: &LoadedMethod, w: &MapWindow) -> Result<StabilityMap, 
     let grid: Vec<GridPoint> = cells
         .par_iter()
         .map(|&(i, j)| {
-            let (phi_q, d_q) = (centre(&w.phi.0, &w.phi.1, i, n), centre(&w.d.0, &w.d.1, j, n));
+            let (phi_q, d_q) =
+                (centre(&w.phi.0, &w.phi.1, i, n), centre(&w.range.0, &w.range.1, j, n));
             let (phi, d) = (q_to_f64(&phi_q), q_to_f64(&d_q));
             // Classify the exact value of the float that the witnesses use.
             let (pe, de) = (f64_to_q(phi).unwrap_or(phi_q), f64_to_q(d).unwrap_or(d_q));
             let class = r.class_at(&pe, &de).unwrap_or(RootClass::Deadbeat);
             let agree = witnesses
-                .at(&Params::phi(phi).with("D", d), 0)
+                .at(&Params::phi(phi).with(&w.param, d), 0)
                 .is_ok_and(|rep| rep.agree() && rep.exact.class == class);
-            GridPoint { phi, d, class, witnesses_agree: agree }
+            GridPoint { phi, value: d, class, witnesses_agree: agree }
         })
         .collect();
     let disagreements = grid.iter().filter(|g| !g.witnesses_agree).count();
@@ -158,7 +171,7 @@ pub(crate) fn map(loaded: &LoadedMethod, w: &MapWindow) -> Result<StabilityMap, 
             let mut points: Vec<(f64, f64)> = (0..s)
                 .into_par_iter()
                 .flat_map_iter(|k| {
-                    let d = lin(&w.d.0, &w.d.1, k, s);
+                    let d = lin(&w.range.0, &w.range.1, k, s);
                     let dv = q_to_f64(&d);
                     r.curve_phis(c, &d, &w.phi.0, &w.phi.1)
                         .into_iter()
@@ -171,7 +184,7 @@ pub(crate) fn map(loaded: &LoadedMethod, w: &MapWindow) -> Result<StabilityMap, 
                     .flat_map_iter(|k| {
                         let phi = lin(&w.phi.0, &w.phi.1, k, s);
                         let pv = q_to_f64(&phi);
-                        r.curve_params(c, &phi, &w.d.0, &w.d.1)
+                        r.curve_params(c, &phi, &w.range.0, &w.range.1)
                             .into_iter()
                             .map(move |a| (pv, approx(&a)))
                     })
@@ -187,22 +200,24 @@ pub(crate) fn map(loaded: &LoadedMethod, w: &MapWindow) -> Result<StabilityMap, 
         .collect();
     let limits = (0..5)
         .map(|k| {
-            let d = lin(&w.d.0, &w.d.1, k, 5);
+            let d = lin(&w.range.0, &w.range.1, k, 5);
             let (phi_max, exact) = match r.phi_max(&d) {
                 Ok(PhiLimit::Below(m)) => (m.to_decimal(12), Some(m.describe("Phi"))),
                 Ok(PhiLimit::Every) => ("every".to_owned(), None),
                 Ok(PhiLimit::Never) => ("none".to_owned(), None),
                 Err(e) => (format!("error: {e}"), None),
             };
-            LimitAt { d: q_to_f64(&d), phi_max, exact }
+            LimitAt { value: q_to_f64(&d), phi_max, exact }
         })
         .collect();
     let unconditional = match r.unconditional()? {
         Unconditional::Stable { irrational_lines } => format!(
-            "stable for every Phi > 0 and D >= 0 ({irrational_lines} irrational critical D not analysed on the line itself)"
+            "stable for every Phi > 0 and {p} >= 0 ({irrational_lines} irrational critical {p} not analysed on the line itself)",
+            p = w.param
         ),
         Unconditional::Unstable { d, limit } => format!(
-            "not unconditionally stable: at D = {d}, {}",
+            "not unconditionally stable: at {} = {d}, {}",
+            w.param,
             match *limit {
                 PhiLimit::Below(m) => format!("unbounded from Phi_max = {}", m.to_decimal(12)),
                 PhiLimit::Never => "unbounded for every small Phi > 0".to_owned(),
@@ -212,8 +227,9 @@ pub(crate) fn map(loaded: &LoadedMethod, w: &MapWindow) -> Result<StabilityMap, 
     };
     Ok(StabilityMap {
         method: method.name().to_owned(),
+        axes: ["Phi".to_owned(), w.param.clone()],
         phi: (q_to_f64(&w.phi.0), q_to_f64(&w.phi.1)),
-        d: (q_to_f64(&w.d.0), q_to_f64(&w.d.1)),
+        range: (q_to_f64(&w.range.0), q_to_f64(&w.range.1)),
         grid,
         size: (n, n),
         curves,
@@ -223,7 +239,7 @@ pub(crate) fn map(loaded: &LoadedMethod, w: &MapWindow) -> Result<StabilityMap, 
     })
 }
 
-fn approx(a: &poly::Algebraic) -> f64 {
+pub(crate) fn approx(a: &poly::Algebraic) -> f64 {
     q_to_f64(&a.approx(&poly::q(1, 1 << 40)))
 }
 
@@ -260,23 +276,23 @@ pub(crate) fn draw_svg(m: &StabilityMap, path: &Path) -> Result<(), Error> {
     root.fill(&WHITE).map_err(|e| err(&e))?;
     let mut chart = ChartBuilder::on(&root)
         .caption(
-            format!("{}: root class over (Phi, D), exact critical curves", m.method),
+            format!("{}: root class over (Phi, {}), exact critical curves", m.method, m.axes[1]),
             ("sans-serif", 18),
         )
         .margin(10)
         .x_label_area_size(40)
         .y_label_area_size(50)
         .right_y_label_area_size(10)
-        .build_cartesian_2d(m.phi.0..m.phi.1, m.d.0..m.d.1)
+        .build_cartesian_2d(m.phi.0..m.phi.1, m.range.0..m.range.1)
         .map_err(|e| err(&e))?;
     chart
         .configure_mesh()
         .x_desc("Phi = w T")
-        .y_desc("D (damping ratio)")
+        .y_desc(if m.axes[1] == "D" { "D (damping ratio)".to_owned() } else { m.axes[1].clone() })
         .draw()
         .map_err(|e| err(&e))?;
     let (n, _) = m.size;
-    let (dx, dy) = ((m.phi.1 - m.phi.0) / n as f64, (m.d.1 - m.d.0) / n as f64);
+    let (dx, dy) = ((m.phi.1 - m.phi.0) / n as f64, (m.range.1 - m.range.0) / n as f64);
     let mut seen: Vec<RootClass> = Vec::new();
     chart
         .draw_series(m.grid.iter().map(|g| {
@@ -285,7 +301,7 @@ pub(crate) fn draw_svg(m: &StabilityMap, path: &Path) -> Result<(), Error> {
             }
             let c = class_colour(g.class);
             Rectangle::new(
-                [(g.phi - dx / 2.0, g.d - dy / 2.0), (g.phi + dx / 2.0, g.d + dy / 2.0)],
+                [(g.phi - dx / 2.0, g.value - dy / 2.0), (g.phi + dx / 2.0, g.value + dy / 2.0)],
                 c.filled(),
             )
         }))
@@ -295,7 +311,7 @@ pub(crate) fn draw_svg(m: &StabilityMap, path: &Path) -> Result<(), Error> {
             m.grid
                 .iter()
                 .filter(|g| !g.witnesses_agree)
-                .map(|g| Cross::new((g.phi, g.d), 4, RED.stroke_width(2))),
+                .map(|g| Cross::new((g.phi, g.value), 4, RED.stroke_width(2))),
         )
         .map_err(|e| err(&e))?;
     for c in &m.curves {

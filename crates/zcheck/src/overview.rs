@@ -80,11 +80,32 @@ pub fn summarize(method: &poly::Method, order: usize) -> Result<MethodSummary, E
 
 /// The overview row of a derived method whose χ is in z and Φ only.
 pub(crate) fn summary_of(d: &Derivation, order: usize) -> Result<MethodSummary, Error> {
+    summary_at(d, &poly::Params::new(), order)
+}
+
+/// The overview row of a derived method with its parameters bound in
+/// `params` (every one it declares; no other): the row is named with them,
+/// e.g. `newmark (beta = 1/4, gamma = 1/2)`.
+pub(crate) fn summary_at(
+    d: &Derivation,
+    params: &poly::Params,
+    order: usize,
+) -> Result<MethodSummary, Error> {
     let method = &d.method;
-    let chi = &d.charpoly;
     // From the derivation: a repeated root on the circle is decided from P
     // (Gauss–Legendre's P is −I at Φ = 2√3: bounded through it).
-    let report = d.stability(&poly::Params::new())?;
+    let report = d.stability(params)?;
+    let values: std::collections::HashMap<poly::Sym, Q> =
+        params.iter().map(|(k, v)| (poly::Sym::new(k), v.clone())).collect();
+    let bound = d.charpoly.eval_partial(&values);
+    let chi = &bound;
+    let p_q = d.p_q().map(|(p, q)| (p.eval_partial(&values), q.eval_partial(&values)));
+    let shown: Vec<String> = params.iter().map(|(k, v)| format!("{k} = {v}")).collect();
+    let name = if shown.is_empty() {
+        method.name().to_owned()
+    } else {
+        format!("{} ({})", method.name(), shown.join(", "))
+    };
     let (phi_max_exact, phi_max) = match report.phi_max() {
         Some(a) => {
             let exact = a.closed_form().unwrap_or_else(|| a.describe("Phi"));
@@ -114,8 +135,12 @@ pub(crate) fn summary_of(d: &Derivation, order: usize) -> Result<MethodSummary, 
         _ if constants => over_q(),
         // For a conjugate pair of a second-order χ, |z|² = z1·z2 = q exactly:
         // a polynomial, not a truncated series.
-        Ok(_) if d.p_q().is_some_and(|(_, q)| (q.degree_in(poly::Sym::phi()) as usize) < order) => {
-            let q = d.p_q().map(|(_, q)| q.to_string()).unwrap_or_default();
+        Ok(_)
+            if p_q
+                .as_ref()
+                .is_some_and(|(_, q)| (q.degree_in(poly::Sym::phi()) as usize) < order) =>
+        {
+            let q = p_q.as_ref().map(|(_, q)| q.to_string()).unwrap_or_default();
             (q, leading(series::dissipation_order(chi).map_err(series_error)?))
         }
         Ok(c) => {
@@ -125,7 +150,7 @@ pub(crate) fn summary_of(d: &Derivation, order: usize) -> Result<MethodSummary, 
     };
     let cost = d.cost();
     Ok(MethodSummary {
-        method: method.name().to_owned(),
+        method: name,
         charpoly: chi.to_string(),
         phi_max_exact,
         phi_max,

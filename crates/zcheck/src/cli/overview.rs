@@ -4,6 +4,7 @@
 use std::process::ExitCode;
 
 use super::format::{Format, MARKDOWN_JSON};
+use super::values::{self, ParamArg};
 use crate::error::Error;
 use crate::load::{try_builtin_derivation, LoadedMethod};
 
@@ -22,6 +23,10 @@ pub(crate) struct Args {
     /// soft spring) after the methods given or the paper's seven.
     #[arg(long)]
     pub implicit: bool,
+    /// A parameter value, `NAME=VALUE` (exact: 1/4, 0.25), bound in every
+    /// method that declares NAME; repeatable.
+    #[arg(long = "param", value_name = "NAME=VALUE", allow_hyphen_values = true)]
+    pub params: Vec<ParamArg>,
 }
 
 pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
@@ -31,12 +36,27 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
             args.order
         )));
     }
-    let mut rows = if args.methods.is_empty() {
+    let mut rows = if args.methods.is_empty() && args.params.is_empty() {
         crate::overview::paper_overview(args.order)?
     } else {
-        args.methods
+        let names: Vec<String> = if args.methods.is_empty() {
+            poly::advanced::builtins::PAPER_METHODS.iter().map(|s| s.to_string()).collect()
+        } else {
+            args.methods.clone()
+        };
+        let loaded = names.iter().map(|m| LoadedMethod::load(m)).collect::<Result<Vec<_>, _>>()?;
+        let methods: Vec<&poly::Method> = loaded.iter().map(|m| m.method()).collect();
+        values::check_declared(&args.params, &methods)?;
+        loaded
             .iter()
-            .map(|m| crate::overview::summary_of(LoadedMethod::load(m)?.derivation()?, args.order))
+            .map(|m| {
+                crate::overview::summary_at(
+                    m.derivation()?,
+                    &bind(&args.params, m.method()),
+                    args.order,
+                )
+                .map_err(|e| e.context(format!("method {}", m.method().name())))
+            })
             .collect::<Result<Vec<_>, Error>>()?
     };
     if args.implicit {
@@ -49,4 +69,12 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
         _ => super::output::emit(&crate::overview::to_markdown(&rows))?,
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// The `--param` values that `method` declares.
+fn bind(params: &[ParamArg], method: &poly::Method) -> poly::Params {
+    params
+        .iter()
+        .filter(|p| method.params().iter().any(|s| s.name() == p.name))
+        .fold(poly::Params::new(), |acc, p| acc.bind(&p.name, p.value.value.clone()))
 }

@@ -11,6 +11,7 @@ mod front_door;
 mod fuzz_corpus;
 mod hostile;
 mod measured_cost;
+mod params_cli;
 mod plot_cli;
 mod scene_advise;
 mod scene_cli;

@@ -271,7 +271,7 @@ fn map_of_false_euler() {
     }
     // Grid classes: bounded exactly below the closed-form limit.
     for g in v["grid"].as_array().unwrap() {
-        let (phi, d) = (g["phi"].as_f64().unwrap(), g["d"].as_f64().unwrap());
+        let (phi, d) = (g["phi"].as_f64().unwrap(), g["value"].as_f64().unwrap());
         let bounded = !g["class"].as_str().unwrap().contains("unstable");
         assert_eq!(bounded, phi < 2.0 * ((1.0 + d * d).sqrt() - d), "({phi}, {d}): {}", g["class"]);
     }
