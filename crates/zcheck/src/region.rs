@@ -216,7 +216,9 @@ fn window(reports: &[(String, PlaneReport)]) -> f64 {
 
 /// Draws the stability regions of one method or several overlaid.
 pub(crate) fn figure(reports: &[(String, PlaneReport)], path: &Path) -> Result<(), Error> {
-    let err = |e: &dyn std::error::Error| Error::file(&path.display().to_string(), 1, 1, &format!("cannot draw: {e}"));
+    let err = |e: &dyn std::error::Error| {
+        Error::file(&path.display().to_string(), 1, 1, &format!("cannot draw: {e}"))
+    };
     let r = window(reports);
     let (x0, x1, y0, y1) = (-r, r * 0.4, -r * 0.7, r * 0.7);
     let root = SVGBackend::new(path, (900, 700)).into_drawing_area();
@@ -238,20 +240,35 @@ pub(crate) fn figure(reports: &[(String, PlaneReport)], path: &Path) -> Result<(
                 for j in 0..n {
                     let w = C64::new(x0 + (i as f64 + 0.5) * dx, y0 + (j as f64 + 0.5) * dy);
                     if max_modulus(&p.charpoly, w) <= 1.0 + 1e-9 {
-                        cells.push(((w.re - dx / 2.0, w.im - dy / 2.0), (w.re + dx / 2.0, w.im + dy / 2.0)));
+                        cells.push((
+                            (w.re - dx / 2.0, w.im - dy / 2.0),
+                            (w.re + dx / 2.0, w.im + dy / 2.0),
+                        ));
                     }
                 }
             }
             chart
-                .draw_series(cells.into_iter().map(|(a, b)| Rectangle::new([a, b], colour.mix(0.18).filled())))?
+                .draw_series(
+                    cells
+                        .into_iter()
+                        .map(|(a, b)| Rectangle::new([a, b], colour.mix(0.18).filled())),
+                )?
                 .label(name.as_str())
-                .legend(move |(x, y)| Rectangle::new([(x, y - 5), (x + 12, y + 5)], colour.filled()));
+                .legend(move |(x, y)| {
+                    Rectangle::new([(x, y - 5), (x + 12, y + 5)], colour.filled())
+                });
             // The boundary locus: w with a root on the circle and none outside.
             let mut locus = Vec::new();
             for k in 0..2000 {
                 let theta = std::f64::consts::TAU * k as f64 / 2000.0;
-                for w in complex_polynomial_roots(&locus_at(&p.charpoly, theta)).unwrap_or_default() {
-                    if w.re >= x0 && w.re <= x1 && w.im >= y0 && w.im <= y1 && max_modulus(&p.charpoly, w) <= 1.0 + 1e-6 {
+                for w in complex_polynomial_roots(&locus_at(&p.charpoly, theta)).unwrap_or_default()
+                {
+                    if w.re >= x0
+                        && w.re <= x1
+                        && w.im >= y0
+                        && w.im <= y1
+                        && max_modulus(&p.charpoly, w) <= 1.0 + 1e-6
+                    {
                         locus.push((w.re, w.im));
                     }
                 }
@@ -264,7 +281,11 @@ pub(crate) fn figure(reports: &[(String, PlaneReport)], path: &Path) -> Result<(
             let im = p.imag_limit.as_ref().map_or(y1, to_f64).min(y1);
             chart.draw_series(LineSeries::new([(0.0, -im), (0.0, im)], colour.stroke_width(4)))?;
         }
-        chart.configure_series_labels().background_style(WHITE.mix(0.8)).border_style(BLACK.mix(0.3)).draw()?;
+        chart
+            .configure_series_labels()
+            .background_style(WHITE.mix(0.8))
+            .border_style(BLACK.mix(0.3))
+            .draw()?;
         Ok(())
     })();
     result.map_err(|e| err(e.as_ref()))?;

@@ -46,33 +46,36 @@ use crate::error::{line_col, Error};
 /// its text.
 pub(crate) fn read_file(path: &Path) -> Result<(String, String, String), Error> {
     let shown = path.display().to_string();
-        let fail = |message: String| Error::file(&shown, 1, 1, &message);
-        let meta = std::fs::metadata(path).map_err(|e| fail(format!("cannot read: {e}")))?;
-        if meta.is_dir() {
-            return Err(fail("is a directory: expected a .toml file (a Butcher tableau or a multistep method)".to_owned()));
+    let fail = |message: String| Error::file(&shown, 1, 1, &message);
+    let meta = std::fs::metadata(path).map_err(|e| fail(format!("cannot read: {e}")))?;
+    if meta.is_dir() {
+        return Err(fail(
+            "is a directory: expected a .toml file (a Butcher tableau or a multistep method)"
+                .to_owned(),
+        ));
+    }
+    if meta.len() > check::load::MAX_FILE_BYTES {
+        return Err(fail(format!(
+            "file too large: expected at most {} MiB",
+            check::load::MAX_FILE_BYTES >> 20
+        )));
+    }
+    let bytes = std::fs::read(path).map_err(|e| fail(format!("cannot read: {e}")))?;
+    let text = match String::from_utf8(bytes) {
+        Ok(t) => t,
+        Err(e) => {
+            let good = e.utf8_error().valid_up_to();
+            let text = String::from_utf8_lossy(&e.as_bytes()[..good]).into_owned();
+            let (line, col) = line_col(&text, good);
+            return Err(Error::file(
+                &shown,
+                line,
+                col,
+                "invalid UTF-8: expected a UTF-8 text file",
+            ));
         }
-        if meta.len() > check::load::MAX_FILE_BYTES {
-            return Err(fail(format!(
-                "file too large: expected at most {} MiB",
-                check::load::MAX_FILE_BYTES >> 20
-            )));
-        }
-        let bytes = std::fs::read(path).map_err(|e| fail(format!("cannot read: {e}")))?;
-        let text = match String::from_utf8(bytes) {
-            Ok(t) => t,
-            Err(e) => {
-                let good = e.utf8_error().valid_up_to();
-                let text = String::from_utf8_lossy(&e.as_bytes()[..good]).into_owned();
-                let (line, col) = line_col(&text, good);
-                return Err(Error::file(
-                    &shown,
-                    line,
-                    col,
-                    "invalid UTF-8: expected a UTF-8 text file",
-                ));
-            }
-        };
-        let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("method").to_owned();
+    };
+    let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("method").to_owned();
     Ok((shown, stem, text))
 }
 
@@ -94,7 +97,9 @@ pub(crate) fn exact_entry(
         toml::Value::Integer(i) => i.to_string(),
         toml::Value::String(s) => s.clone(),
         toml::Value::Float(f) if f.is_finite() => format!("{f}"),
-        toml::Value::Float(f) => return Err(at(format!("{f} is not a finite number: expected an exact coefficient"))),
+        toml::Value::Float(f) => {
+            return Err(at(format!("{f} is not a finite number: expected an exact coefficient")))
+        }
         other => {
             return Err(at(format!(
                 "expected an exact number (an integer, a decimal, or a string such as \"1/6\" or \

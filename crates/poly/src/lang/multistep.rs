@@ -130,7 +130,10 @@ impl Multistep {
 
     /// The method on y' = λy (a program in `w`), for the w-plane.
     pub fn scalar_method(&self) -> Result<Method, Error> {
-        Method::parse(&format!("<multistep>/{}.zm", self.name), &self.to_scalar_zm("the coefficients"))
+        Method::parse(
+            &format!("<multistep>/{}.zm", self.name),
+            &self.to_scalar_zm("the coefficients"),
+        )
     }
 
     /// The `.zm` program of the method on y' = λy: Σ α_j y_{n+j} =

@@ -55,18 +55,21 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
         .stability(&params)
         .map_err(|e| Error::from(e).context(format!("method {}", method.name())))?;
     let facts = ImplicitFacts::of(derivation, &chi)?;
+    let far = FarAndNear::of(derivation, &params);
     let out = match args.format {
         Format::Json => {
             let mut v = to_json(method.name(), &shown, &chi, &report);
             if let Some(f) = &facts {
                 f.add_json(&mut v);
             }
+            far.add_json(&mut v);
             serde_json::to_string_pretty(&v)? + "\n"
         }
         _ => {
             let mut names = Names::default();
             text(method.name(), &shown, &chi, &report, &mut names)
                 + &facts.as_ref().map_or(String::new(), |f| f.text(&mut names))
+                + &far.text(&mut names)
                 + &names.definitions()
         }
     };
@@ -114,6 +117,107 @@ impl ImplicitFacts {
         v["leading_coefficient"] = json!(self.lead);
         v["singular_points"] = json!(self.singular.iter().map(number_json).collect::<Vec<_>>());
         v["phi_to_infinity"] = json!(self.limit);
+    }
+}
+
+/// The spectral radius as Φ → ∞, and the leading terms of the principal
+/// root's phase and modulus errors as Φ → 0 (exact; an answer that does not
+/// exist is null with the reason).
+pub(crate) struct FarAndNear {
+    rho_inf: Result<Option<Algebraic>, String>,
+    phase: Result<poly::advanced::plane::PhaseErrors, String>,
+}
+
+impl FarAndNear {
+    pub(crate) fn of(derivation: &poly::Derivation, params: &poly::Params) -> FarAndNear {
+        FarAndNear {
+            rho_inf: derivation.rho_inf(params).map_err(|e| e.message().to_owned()),
+            phase: derivation.phase_errors(params).map_err(|e| e.message().to_owned()),
+        }
+    }
+
+    pub(crate) fn add_json(&self, v: &mut Value) {
+        match &self.rho_inf {
+            Ok(r) => v["rho_inf"] = json!(r.as_ref().map(number_json)),
+            Err(e) => {
+                v["rho_inf"] = Value::Null;
+                v["rho_inf_note"] = json!(e);
+            }
+        }
+        let term = |t: &Option<poly::advanced::plane::LeadingTerm>| {
+            (
+                json!(t.as_ref().map(|t| t.order)),
+                json!(t.as_ref().map(|t| {
+                    let value = poly::advanced::field::approx(&t.constant, &fine());
+                    json!({ "exact": t.constant.to_string(), "value": num_traits::ToPrimitive::to_f64(&value) })
+                })),
+            )
+        };
+        match &self.phase {
+            Ok(p) => {
+                (v["dispersion_order"], v["dispersion_constant"]) = term(&p.dispersion);
+                (v["dissipation_order"], v["dissipation_constant"]) = term(&p.dissipation);
+            }
+            Err(e) => {
+                for k in [
+                    "dispersion_order",
+                    "dispersion_constant",
+                    "dissipation_order",
+                    "dissipation_constant",
+                ] {
+                    v[k] = Value::Null;
+                }
+                v["phase_errors_note"] = json!(e);
+            }
+        }
+    }
+
+    pub(crate) fn text(&self, names: &mut Names) -> String {
+        let mut s = String::from("\n");
+        match &self.rho_inf {
+            Ok(Some(r)) => {
+                let _ =
+                    writeln!(s, "spectral radius as Phi -> infinity (rho_inf): {}", names.show(r));
+            }
+            Ok(None) => {
+                s += "spectral radius as Phi -> infinity: unbounded (a root tends to infinity)\n"
+            }
+            Err(e) => {
+                let _ = writeln!(s, "rho_inf: not available ({e})");
+            }
+        }
+        match &self.phase {
+            Ok(p) => {
+                match &p.dispersion {
+                    Some(t) => {
+                        let _ = writeln!(
+                            s,
+                            "dispersion: Phi - Psi = {} Phi^{} + ... (order {})",
+                            t.constant,
+                            t.order + 1,
+                            t.order
+                        );
+                    }
+                    None => s += "dispersion: none (the phase is exact)\n",
+                }
+                match &p.dissipation {
+                    Some(t) => {
+                        let _ = writeln!(
+                            s,
+                            "dissipation: 1 - |z| = {} Phi^{} + ... (order {})",
+                            t.constant,
+                            t.order + 1,
+                            t.order
+                        );
+                    }
+                    None => s += "dissipation: none (|z| = 1 near Phi = 0)\n",
+                }
+            }
+            Err(e) => {
+                let _ = writeln!(s, "dispersion and dissipation: not available ({e})");
+            }
+        }
+        s
     }
 }
 
@@ -211,7 +315,7 @@ pub(crate) fn to_json(
 /// of a degree-20 polynomial with 60-digit coefficients, and the report
 /// names it at every interval it bounds.
 #[derive(Default)]
-struct Names {
+pub(crate) struct Names {
     roots: Vec<Algebraic>,
 }
 

@@ -205,7 +205,10 @@ pub fn rho_at_infinity(chi: &Poly, t: Sym) -> Result<Option<Algebraic>, Error> {
     let n = g.len() - 1;
     let scaled = Poly::from_coeffs_in(
         z,
-        &g.iter().enumerate().map(|(k, c)| c * &Poly::sym(phi).pow((n - k) as u32)).collect::<Vec<_>>(),
+        &g.iter()
+            .enumerate()
+            .map(|(k, c)| c * &Poly::sym(phi).pow((n - k) as u32))
+            .collect::<Vec<_>>(),
     );
     let limit = match analyze(&scaled)?.stability {
         Stability::Limited { phi_max, .. } => phi_max,
@@ -213,7 +216,10 @@ pub fn rho_at_infinity(chi: &Poly, t: Sym) -> Result<Option<Algebraic>, Error> {
         other => {
             return Err(Error::analysis(
                 ErrorKind::NoSeries,
-                format!("ρ∞: the scaled limit polynomial is {}, expected a finite limit", other.name()),
+                format!(
+                    "ρ∞: the scaled limit polynomial is {}, expected a finite limit",
+                    other.name()
+                ),
             ))
         }
     };
@@ -308,7 +314,10 @@ fn rho_with_constants(g: &[Poly]) -> Result<Algebraic, Error> {
         }
         width = &width * &width;
     }
-    Err(Error::analysis(ErrorKind::NoSeries, "ρ∞: the enclosure does not single out a root".to_owned()))
+    Err(Error::analysis(
+        ErrorKind::NoSeries,
+        "ρ∞: the enclosure does not single out a root".to_owned(),
+    ))
 }
 
 /// A rational at most √q (q ≥ 0), within about 2⁻⁶⁰·(1 + √q).

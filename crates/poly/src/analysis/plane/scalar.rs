@@ -37,7 +37,7 @@ impl Derivation {
     /// # Ok::<(), poly::Error>(())
     /// ```
     pub fn scalar_charpoly(&self, params: &Params) -> Result<Poly, Error> {
-            let values = self.bind(params)?;
+        let values = self.bind(params)?;
         let chi = if self.method.is_scalar() {
             self.charpoly.eval_partial(&values)
         } else {
