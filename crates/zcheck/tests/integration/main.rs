@@ -13,6 +13,7 @@ mod hostile;
 mod measured_cost;
 mod params_cli;
 mod plot_cli;
+mod region_cli;
 mod scene_advise;
 mod scene_cli;
 use testkit::snapshot;
