@@ -55,7 +55,7 @@ enum Oscillator {
 impl LoadedMethod {
     /// The method `arg` names, shown as `arg`: a built-in, a `.zm` file, or
     /// a Butcher tableau's program on the undamped oscillator.
-    pub(crate) fn load(arg: &str) -> Result<LoadedMethod, Error> {
+    pub fn load(arg: &str) -> Result<LoadedMethod, Error> {
         let (method, scalar) = resolve(arg, Oscillator::Undamped)?;
         let mut loaded = LoadedMethod::new(method, arg.to_owned(), None, None);
         loaded.scalar = scalar;
@@ -157,7 +157,7 @@ impl LoadedMethod {
     /// The derivation the w-plane reads: the program on y' = λy of a
     /// tableau or multistep file, else the method's own derivation (a
     /// scalar program, or an oscillator program with a scalar form).
-    pub(crate) fn plane_derivation(&self) -> Result<&Derivation, Error> {
+    pub fn plane_derivation(&self) -> Result<&Derivation, Error> {
         match &self.scalar {
             Some(m) => self
                 .scalar_derivation

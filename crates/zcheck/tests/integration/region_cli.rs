@@ -65,7 +65,9 @@ fn limit(v: &Value) -> Option<f64> {
 #[track_caller]
 fn close(name: &str, what: &str, ours: Option<f64>, theirs: Option<f64>, tol: f64) {
     match (ours, theirs) {
-        (Some(a), Some(b)) => assert!((a - b).abs() <= tol * (1.0 + b.abs()), "{name} {what}: {a} vs {b}"),
+        (Some(a), Some(b)) => {
+            assert!((a - b).abs() <= tol * (1.0 + b.abs()), "{name} {what}: {a} vs {b}")
+        }
         (None, None) => {}
         _ => panic!("{name} {what}: {ours:?} vs {theirs:?}"),
     }
@@ -89,9 +91,27 @@ fn parity_with_nodepy_on_its_runge_kutta_catalogue() {
         if *exact {
             // The order on y' = λy (NodePy's `order()` is the nonlinear order).
             assert_eq!(doc["order"], own["linear_order"], "{stem}");
-            close(stem, "C", limit(&doc["error_constant"]), own["error_constant"]["value"].as_f64(), 1e-14);
-            close(stem, "real", limit(&doc["real_limit"]), own["real_limit"]["value"].as_f64(), 1e-12);
-            close(stem, "imag", limit(&doc["imag_limit"]), own["imag_limit"]["value"].as_f64(), 1e-12);
+            close(
+                stem,
+                "C",
+                limit(&doc["error_constant"]),
+                own["error_constant"]["value"].as_f64(),
+                1e-14,
+            );
+            close(
+                stem,
+                "real",
+                limit(&doc["real_limit"]),
+                own["real_limit"]["value"].as_f64(),
+                1e-12,
+            );
+            close(
+                stem,
+                "imag",
+                limit(&doc["imag_limit"]),
+                own["imag_limit"]["value"].as_f64(),
+                1e-12,
+            );
         }
         if r["nodepy_class"] == "ExplicitRungeKuttaMethod" && *exact {
             let re = nodepy["real_stability_interval"]["value"].as_f64();
@@ -101,7 +121,10 @@ fn parity_with_nodepy_on_its_runge_kutta_catalogue() {
             // empty; 1e-6 absolute tells them apart.
             let ours = limit(&doc["imag_limit"]).unwrap_or(f64::INFINITY);
             let theirs = im.unwrap_or(0.0);
-            assert!((ours - theirs).abs() < 1e-6 * (1.0 + theirs), "{stem} imag: {ours} vs NodePy {theirs}");
+            assert!(
+                (ours - theirs).abs() < 1e-6 * (1.0 + theirs),
+                "{stem} imag: {ours} vs NodePy {theirs}"
+            );
             compared += 1;
         }
     }
@@ -120,17 +143,28 @@ fn multistep_catalogue_against_an_independent_computation() {
     for ((stem, _, _), doc) in files.iter().zip(&docs) {
         let own = &reference["lmm"][stem.as_str()]["own"];
         assert_eq!(doc["order"], own["order"], "{stem}");
-        close(stem, "C", limit(&doc["error_constant"]), own["error_constant"]["value"].as_f64(), 1e-14);
+        close(
+            stem,
+            "C",
+            limit(&doc["error_constant"]),
+            own["error_constant"]["value"].as_f64(),
+            1e-14,
+        );
         close(stem, "real", limit(&doc["real_limit"]), own["real_limit"]["value"].as_f64(), 1e-12);
         close(stem, "imag", limit(&doc["imag_limit"]), own["imag_limit"]["value"].as_f64(), 1e-12);
         close(stem, "rho_inf", limit(&doc["rho_inf"]), own["rho_inf"]["value"].as_f64(), 1e-12);
-        let Some(floor) = reference["lmm"][stem.as_str()]["nodepy"]["A_alpha_stability_deg_floor"].as_f64() else {
+        let Some(floor) =
+            reference["lmm"][stem.as_str()]["nodepy"]["A_alpha_stability_deg_floor"].as_f64()
+        else {
             continue;
         };
         let ours = doc["a_alpha_deg"].as_f64().unwrap();
         if doc["real_limit"].is_null() {
             // NodePy's floor of a float computation: 89 for the exact 90.
-            assert!(floor <= ours && ours <= floor + 1.0, "{stem}: {ours} vs NodePy's floor {floor}");
+            assert!(
+                floor <= ours && ours <= floor + 1.0,
+                "{stem}: {ours} vs NodePy's floor {floor}"
+            );
         } else if floor > 0.0 {
             // NodePy measures the angle of the boundary locus only. Where the
             // negative axis itself is unstable just left of 0 (Milne–Simpson:
@@ -229,7 +263,8 @@ fn multistep_files_work_in_every_command() {
         assert!(out.status.success(), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
     }
     // The oscillator's limit of AB3 from its coefficients: 12√11/55.
-    let out = zcheck(&["stability", data("nodepy/lmm/AB3.toml").to_str().unwrap(), "--format", "json"]);
+    let out =
+        zcheck(&["stability", data("nodepy/lmm/AB3.toml").to_str().unwrap(), "--format", "json"]);
     let v: Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(v["phi_max_exact"], "12*sqrt(11)/55");
 }
@@ -239,10 +274,20 @@ fn multistep_bad_input_is_located() {
     let dir = std::env::temp_dir().join(format!("zcheck-lmm-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     for (name, text, at, says) in [
-        ("lengths.toml", "alpha = [-1, 1]\nbeta = [1]\n", ":2:8", "beta has 1 coefficients and alpha 2"),
+        (
+            "lengths.toml",
+            "alpha = [-1, 1]\nbeta = [1]\n",
+            ":2:8",
+            "beta has 1 coefficients and alpha 2",
+        ),
         ("zero.toml", "alpha = [-1, 1]\nbeta = [0, 0]\n", ":2:8", "beta is all zero"),
         ("ak.toml", "alpha = [-1, 0]\nbeta = [1, 0]\n", ":1:14", "alpha[1]"),
-        ("word.toml", "alpha = [-1, \"x\"]\nbeta = [1, 0]\n", ":1:14", "alpha[1]: unexpected name `x`"),
+        (
+            "word.toml",
+            "alpha = [-1, \"x\"]\nbeta = [1, 0]\n",
+            ":1:14",
+            "alpha[1]: unexpected name `x`",
+        ),
         ("nan.toml", "alpha = [-1, nan]\nbeta = [1, 0]\n", ":1:14", "not a finite number"),
     ] {
         let p = dir.join(name);

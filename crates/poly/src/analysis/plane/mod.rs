@@ -22,7 +22,7 @@ use num_traits::{One, Zero};
 pub use sector::Sector;
 
 use crate::analysis::stability::point::circle_counts;
-use crate::analysis::stability::{analyze, Stability};
+use crate::analysis::stability::{verdict, Stability};
 use crate::error::{Error, ErrorKind};
 use crate::multivariate::constants as field;
 use crate::{Algebraic, Derivation, Params, Poly, Sym, UPoly, Q};
@@ -91,8 +91,11 @@ pub fn plane_of(chi: Poly) -> Result<PlaneReport, Error> {
     } else {
         (Some(Algebraic::zero()), Some(Algebraic::zero()))
     };
-    let a_alpha =
-        if zero_stable && real_limit.is_none() { sector::sector(&chi)? } else { Sector::Empty };
+    let a_alpha = if zero_stable && real_limit.is_none() {
+        sector::sector(&chi, imag_limit.is_none())?
+    } else {
+        Sector::Empty
+    };
     let a_stable = a_alpha == Sector::HalfPlane && imag_limit.is_none();
     let rho_inf = rho_at_infinity(&chi, Sym::w())?;
     let l_stable = a_stable && rho_inf.as_ref().is_some_and(|r| r.sign().is_eq());
@@ -210,7 +213,7 @@ pub fn rho_at_infinity(chi: &Poly, t: Sym) -> Result<Option<Algebraic>, Error> {
             .map(|(k, c)| c * &Poly::sym(phi).pow((n - k) as u32))
             .collect::<Vec<_>>(),
     );
-    let limit = match analyze(&scaled)?.stability {
+    let limit = match verdict(&scaled)? {
         Stability::Limited { phi_max, .. } => phi_max,
         Stability::UndecidedAt { at, .. } => at,
         other => {

@@ -15,6 +15,8 @@
 //! divided out), so a factor of the step's determinant that every
 //! coefficient shares (D(−w) of D(w)D(−w)) cannot pose as a pole.
 
+use num_traits::{One, Zero};
+
 use crate::error::{Error, ErrorKind};
 use crate::multivariate::constants as field;
 use crate::{Derivation, Params, Poly, PolyMatrix, Sym, Q};
@@ -230,6 +232,9 @@ pub(crate) fn derivative(a: &[Poly]) -> Upf {
 /// that its leading coefficient's first nonzero rational is positive.
 pub(crate) fn primitive_in_z(chi: &Poly) -> Poly {
     let (z, w) = (Sym::z(), Sym::w());
+    if !field::has_generators(chi) {
+        return primitive_rational(chi);
+    }
     let cz: Vec<Upf> = chi.coeffs_in(z).iter().map(|c| c.coeffs_in(w)).collect();
     let mut g: Upf = Vec::new();
     for c in &cz {
@@ -252,4 +257,25 @@ pub(crate) fn primitive_in_z(chi: &Poly) -> Poly {
         Some(inv) => field::reduce(&(&Poly::from_coeffs_in(z, &parts) * &inv)),
         None => Poly::from_coeffs_in(z, &parts),
     }
+}
+
+/// [`primitive_in_z`] over Q: gcds of univariate polynomials in w.
+fn primitive_rational(chi: &Poly) -> Poly {
+    let (z, w) = (Sym::z(), Sym::w());
+    let cz: Vec<crate::UPoly> =
+        chi.coeffs_in(z).iter().map(|c| c.to_upoly(w).expect("a polynomial in w")).collect();
+    let mut g = crate::UPoly::zero();
+    for c in &cz {
+        g = g.gcd(c);
+        if g.degree() == Some(0) {
+            break;
+        }
+    }
+    let parts: Vec<crate::UPoly> =
+        if g.degree().unwrap_or(0) > 0 { cz.iter().map(|c| c.div_rem(&g).0).collect() } else { cz };
+    let lead = parts.last().cloned().unwrap_or_else(crate::UPoly::zero);
+    let low = lead.coeffs().iter().find(|c| !c.is_zero()).cloned().unwrap_or_else(Q::one);
+    let parts: Vec<Poly> =
+        parts.iter().map(|c| Poly::from_upoly(w, &c.scale(&(Q::one() / &low)))).collect();
+    Poly::from_coeffs_in(z, &parts)
 }

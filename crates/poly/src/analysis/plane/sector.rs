@@ -31,7 +31,7 @@ use std::cmp::Ordering;
 
 use num_traits::{One, Zero};
 
-use crate::analysis::stability::{analyze, Stability};
+use crate::analysis::stability::{verdict, Stability};
 use crate::error::{Error, ErrorKind};
 use crate::multivariate::constants as field;
 use crate::multivariate::resultant::resultant;
@@ -103,7 +103,7 @@ pub(crate) fn limit_along(chi: &Poly, d: (&Q, &Q)) -> Result<Option<Algebraic>, 
     if chi.degree_in(Sym::z()) == 1 {
         return limit_one_step(chi, d);
     }
-    Ok(match analyze(&ray_poly(chi, d))?.stability {
+    Ok(match verdict(&ray_poly(chi, d))? {
         Stability::BoundedForAllPhi => None,
         Stability::Limited { phi_max, .. } => Some(phi_max),
         Stability::UndecidedAt { at, .. } => Some(at),
@@ -287,9 +287,69 @@ fn ray_stable(chi: &Poly, m: &Q) -> Result<bool, Error> {
     Ok(limit_along(chi, (&dr, &di))?.is_none())
 }
 
+/// Routh's table for a real polynomial (lowest coefficient first): the
+/// number of roots in the open right half-plane, or `None` in a singular
+/// case (a zero in the first column), left to the general route.
+fn right_half_plane_roots(c: &[Q]) -> Option<usize> {
+    let mut c = c.to_vec();
+    while c.last().is_some_and(Zero::is_zero) {
+        c.pop();
+    }
+    let n = c.len().checked_sub(1)?;
+    // Rows of Routh's table from the highest power: a_n, a_{n−2}, … and
+    // a_{n−1}, a_{n−3}, ….
+    let hi: Vec<Q> = c.iter().rev().cloned().collect();
+    let mut r0: Vec<Q> = hi.iter().step_by(2).cloned().collect();
+    let mut r1: Vec<Q> = hi.iter().skip(1).step_by(2).cloned().collect();
+    let mut first = vec![r0[0].clone()];
+    for _ in 0..n {
+        if r1.is_empty() || r1[0].is_zero() {
+            return None;
+        }
+        first.push(r1[0].clone());
+        let next: Vec<Q> = (0..r0.len().saturating_sub(1))
+            .map(|k| {
+                let b = r1.get(k + 1).cloned().unwrap_or_default();
+                (&r1[0] * &r0[k + 1] - &r0[0] * &b) / &r1[0]
+            })
+            .collect();
+        r0 = std::mem::replace(&mut r1, next);
+        if first.len() == n + 1 {
+            break;
+        }
+    }
+    Some(first.windows(2).filter(|w| (w[0] > Q::zero()) != (w[1] > Q::zero())).count())
+}
+
+/// A one-step χ = Q(w)z − P(w) whose imaginary axis is stable is A-stable
+/// when R = P/Q has no pole in Re w < 0 and deg P ≤ deg Q (the maximum
+/// principle on the left half-plane); decided by Routh's table of Q(−w).
+/// `None` when that does not settle it.
+fn one_step_a_stable(chi: &Poly) -> Option<bool> {
+    let (z, w) = (Sym::z(), Sym::w());
+    if chi.degree_in(z) != 1 || field::has_generators(chi) {
+        return None;
+    }
+    let cz = chi.coeffs_in(z);
+    let (q, p) = (cz[1].to_upoly(w)?, cz[0].to_upoly(w)?);
+    if p.degree() > q.degree() {
+        return None;
+    }
+    let reflected: Vec<Q> = q
+        .coeffs()
+        .iter()
+        .enumerate()
+        .map(|(k, c)| if k % 2 == 1 { -c.clone() } else { c.clone() })
+        .collect();
+    (right_half_plane_roots(&reflected)? == 0).then_some(true)
+}
+
 /// The largest stable sector, for a χ whose negative real axis (and w = 0)
-/// is stable.
-pub(crate) fn sector(chi: &Poly) -> Result<Sector, Error> {
+/// is stable; `imag_stable` says whether the whole imaginary axis is.
+pub(crate) fn sector(chi: &Poly, imag_stable: bool) -> Result<Sector, Error> {
+    if imag_stable && one_step_a_stable(chi) == Some(true) {
+        return Ok(Sector::HalfPlane);
+    }
     let cands = candidate_slopes(chi)?;
     let mut prev: Option<&Algebraic> = None;
     for c in &cands {

@@ -431,7 +431,10 @@ pub(crate) fn exact_div_z(f: &[UPoly], g: &[UPoly]) -> ZPoly {
 }
 
 /// The critical conditions of χ, each a polynomial in Φ.
-pub(crate) fn critical_conditions(chi: &Charpoly) -> Vec<(Condition, UPoly)> {
+///
+/// With `circle_only`, only those under which a root meets the unit circle
+/// or arrives from infinity (no discriminant, no modulus ties).
+pub(crate) fn conditions_of(chi: &Charpoly, circle_only: bool) -> Vec<(Condition, UPoly)> {
     let a = &chi.a;
     let n = chi.degree();
     let one = Q::one();
@@ -448,6 +451,9 @@ pub(crate) fn critical_conditions(chi: &Charpoly) -> Vec<(Condition, UPoly)> {
         } else {
             out.extend(reciprocal_conditions(a));
         }
+    }
+    if circle_only {
+        return out;
     }
     out.push((Condition::Discriminant, discriminant(a)));
     if let Some(t) = opposite_tie(a) {

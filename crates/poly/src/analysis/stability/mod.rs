@@ -180,6 +180,16 @@ fn param_list(params: &[Sym]) -> String {
     }
 }
 
+/// Only the verdict over Φ > 0 of a bare χ (root condition: a repeated root
+/// on the circle is undecided), computing only the conditions where a root
+/// meets the unit circle: the w-plane's axes and rays ask nothing else.
+pub(crate) fn verdict(charpoly: &Poly) -> Result<Stability, Error> {
+    if has_generators(charpoly) {
+        return Ok(constants::analyze(charpoly, None)?.stability);
+    }
+    rational::verdict(charpoly)
+}
+
 /// The root class of χ at a rational Φ, exactly.
 pub fn class_at(charpoly: &Poly, phi: &Q) -> Result<RootClass, Error> {
     // Exact constants (sqrt(3), cbrt(2)): the norm-based layer.

@@ -8,7 +8,7 @@ use crate::error::Error;
 use crate::univariate::algebraic::Algebraic;
 use crate::{Poly, RootClass, UPoly, Q};
 
-use super::conditions::{critical_conditions, critical_points, discriminant, Charpoly};
+use super::conditions::{conditions_of, critical_points, discriminant, Charpoly};
 use super::point::{
     circle_counts, class_of_single_root, classify_quadratic_by, classify_with_counts,
     quadratic_counts, Counts,
@@ -72,6 +72,16 @@ pub(crate) fn analyze(
     Ok(run(&chi, step, Some(charpoly)))
 }
 
+/// The verdict alone (bare χ, no P), for callers that ask only where
+/// boundedness holds (the w-plane's axes and rays): only the conditions
+/// under which a root meets the unit circle or arrives from infinity are
+/// computed, so the classes between them are not class-exact, and no
+/// marginal analysis is made.
+pub(crate) fn verdict(charpoly: &Poly) -> Result<Stability, Error> {
+    let chi = Charpoly::new(charpoly)?;
+    Ok(run_with(&chi, None, None, true).stability)
+}
+
 /// The transition matrix P = numerator / denominator, entries polynomials
 /// in Φ (the denominator is det A of an implicit step's system, else 1).
 #[derive(Clone, Copy)]
@@ -81,7 +91,16 @@ pub(crate) struct StepMatrix<'a> {
 }
 
 fn run(chi: &Charpoly, p: Option<StepMatrix<'_>>, charpoly: Option<&Poly>) -> StabilityReport {
-    let conditions = critical_conditions(chi);
+    run_with(chi, p, charpoly, false)
+}
+
+fn run_with(
+    chi: &Charpoly,
+    p: Option<StepMatrix<'_>>,
+    charpoly: Option<&Poly>,
+    verdict_only: bool,
+) -> StabilityReport {
+    let conditions = conditions_of(chi, verdict_only);
     let mut points = critical_points(&conditions);
 
     // The class on each open interval, at a rational sample.
@@ -108,10 +127,15 @@ fn run(chi: &Charpoly, p: Option<StepMatrix<'_>>, charpoly: Option<&Poly>) -> St
     // The discriminant is one of the conditions already (computed once).
     // Only its roots may be used: for an even χ it is a₀·Disc F, with the
     // discriminant's roots but not its multiplicities or sign.
-    let disc = conditions
-        .iter()
-        .find(|(name, _)| *name == Condition::Discriminant)
-        .map_or_else(|| discriminant(&chi.a), |(_, d)| d.clone());
+    let disc = std::cell::OnceCell::new();
+    let disc = || {
+        disc.get_or_init(|| {
+            conditions
+                .iter()
+                .find(|(name, _)| *name == Condition::Discriminant)
+                .map_or_else(|| discriminant(&chi.a), |(_, d)| d.clone())
+        })
+    };
     for (k, point) in points.iter_mut().enumerate() {
         if classes[k].is_bounded() || classes[k + 1].is_bounded() {
             // A root on the circle is ±1 (χ(±1) = 0) or has its conjugate
@@ -129,7 +153,7 @@ fn run(chi: &Charpoly, p: Option<StepMatrix<'_>>, charpoly: Option<&Poly>) -> St
                 )
             });
             point.bounded = if on_circle || at_classes[k].is_some() {
-                bounded_at(chi, &point.at, at_classes[k], &disc, p)
+                bounded_at(chi, &point.at, at_classes[k], disc(), p)
             } else {
                 Some(true)
             };
