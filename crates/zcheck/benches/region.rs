@@ -27,7 +27,7 @@ fn files(kind: &str) -> Vec<String> {
 
 /// Load, derive and analyse one method from scratch.
 fn region(arg: &str) {
-    let m = LoadedMethod::load(arg).expect("loads");
+    let m = LoadedMethod::load_for_plane(arg).expect("loads");
     let d = m.plane_derivation().expect("derives");
     std::hint::black_box(d.plane(&poly::Params::new()).expect("a report"));
 }

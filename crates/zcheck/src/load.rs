@@ -62,6 +62,28 @@ impl LoadedMethod {
         Ok(loaded)
     }
 
+    /// The method `arg` names, for the w-plane only: a tableau or multistep
+    /// file as its program on y' = λy alone (its oscillator program is not
+    /// generated), anything else as [`LoadedMethod::load`] reads it.
+    pub fn load_for_plane(arg: &str) -> Result<LoadedMethod, Error> {
+        if !arg.ends_with(".toml") {
+            return LoadedMethod::load(arg);
+        }
+        let (shown, stem, text) = crate::tableau::read_file(Path::new(arg))?;
+        let (src, what) = if crate::tableau::is_multistep(&text) {
+            (Multistep::parse(&shown, &stem, &text)?.to_scalar_zm(), "multistep coefficients")
+        } else {
+            (Tableau::parse(&shown, &stem, &text)?.to_scalar_zm(), "tableau")
+        };
+        let method = Method::parse(arg, &src).map_err(|e| {
+            Error::method(format!(
+                "{arg}: the program generated from the {what} does not parse: {}",
+                e.message()
+            ))
+        })?;
+        Ok(LoadedMethod::new(method, arg.to_owned(), None, None))
+    }
+
     /// The method `arg` names, on the damped spring (`param D`), for the
     /// whole-scene advisor: a built-in's damped twin, shown by its base
     /// name and with its system kernel; a tableau's program on the damped

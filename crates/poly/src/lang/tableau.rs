@@ -47,6 +47,17 @@ impl Exact {
     /// Reads one entry. The error says what was expected; its caller knows
     /// where the entry stands (a file position, an index).
     pub fn parse(text: &str) -> Result<Exact, Error> {
+        // A plain number (`-3/8`, `0.125`, `1e-3`) needs no program to test.
+        let plain = text.trim();
+        let (negative, digits) = match plain.strip_prefix('-') {
+            Some(rest) => (true, rest.trim_start()),
+            None => (false, plain),
+        };
+        if let Ok(q) = crate::lang::syntax::parse_number(digits) {
+            let q = if negative { -q } else { q };
+            let zero = num_traits::Zero::is_zero(&q);
+            return Ok(Exact { expr: q.to_string(), radicals: Vec::new(), zero });
+        }
         let mut radicals = Vec::new();
         let expr = replace_radicals(text, &mut radicals).map_err(entry_error)?;
         let zero = probe(&expr, &radicals).map_err(entry_error)?;

@@ -40,7 +40,7 @@ pub(crate) struct Args {
 
 pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     let loaded: Vec<LoadedMethod> =
-        args.methods.iter().map(|m| LoadedMethod::load(m)).collect::<Result<_, _>>()?;
+        args.methods.iter().map(|m| LoadedMethod::load_for_plane(m)).collect::<Result<_, _>>()?;
     let methods: Vec<&poly::Method> = loaded.iter().map(LoadedMethod::method).collect();
     values::check_declared(&args.params, &methods)?;
     let mut reports = Vec::new();

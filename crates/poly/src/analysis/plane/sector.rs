@@ -77,6 +77,19 @@ fn along(chi: &Poly, d: (&Q, &Q)) -> (Poly, Poly) {
     (field::reduce(&a), field::reduce(&b))
 }
 
+/// c(Φ·d) for c over Q in w, as A + iB in Φ.
+fn along_rational(c: &UPoly, d: (&Q, &Q)) -> (UPoly, UPoly) {
+    let (mut re, mut im) = (Vec::new(), Vec::new());
+    let (mut pr, mut pi) = (Q::one(), Q::zero());
+    for ck in c.coeffs() {
+        re.push(ck * &pr);
+        im.push(ck * &pi);
+        let next = (&pr * d.0 - &pi * d.1, &pr * d.1 + &pi * d.0);
+        (pr, pi) = next;
+    }
+    (UPoly::new(re), UPoly::new(im))
+}
+
 /// The polynomial in z and Φ whose roots over Φ > 0 are those of χ along
 /// the ray w = Φ·d and their conjugates (A itself on the real axis).
 pub(crate) fn ray_poly(chi: &Poly, d: (&Q, &Q)) -> Poly {
@@ -116,9 +129,28 @@ pub(crate) fn limit_along(chi: &Poly, d: (&Q, &Q)) -> Result<Option<Algebraic>, 
 fn limit_one_step(chi: &Poly, d: (&Q, &Q)) -> Result<Option<Algebraic>, Error> {
     let phi = Sym::phi();
     let cz = chi.coeffs_in(Sym::z());
-    let (a0, b0) = along(&cz[0], d);
-    let (a1, b1) = along(&cz[1], d);
-    let e = field::reduce(&(&(&(&a1 * &a1) + &(&b1 * &b1)) - &(&(&a0 * &a0) + &(&b0 * &b0))));
+    let (a0, b0, a1, b1) = match (cz[0].to_upoly(Sym::w()), cz[1].to_upoly(Sym::w())) {
+        // Over Q: dense univariate arithmetic.
+        (Some(c0), Some(c1)) => {
+            let (a0, b0) = along_rational(&c0, d);
+            let (a1, b1) = along_rational(&c1, d);
+            let up = |u: UPoly| Poly::from_upoly(phi, &u);
+            (up(a0), up(b0), up(a1), up(b1))
+        }
+        _ => {
+            let (a0, b0) = along(&cz[0], d);
+            let (a1, b1) = along(&cz[1], d);
+            (a0, b0, a1, b1)
+        }
+    };
+    let e = match (a0.to_upoly(phi), b0.to_upoly(phi), a1.to_upoly(phi), b1.to_upoly(phi)) {
+        (Some(a0), Some(b0), Some(a1), Some(b1)) => {
+            let sq = |u: &UPoly| u * u;
+            let e = &(&sq(&a1) + &sq(&b1)) - &(&sq(&a0) + &sq(&b0));
+            Poly::from_upoly(phi, &e)
+        }
+        _ => field::reduce(&(&(&(&a1 * &a1) + &(&b1 * &b1)) - &(&(&a0 * &a0) + &(&b0 * &b0)))),
+    };
     if e.is_zero() {
         return Ok(None);
     }
@@ -140,8 +172,12 @@ fn limit_one_step(chi: &Poly, d: (&Q, &Q)) -> Result<Option<Algebraic>, Error> {
     }
     roots.sort_by(|a, b| a.partial_cmp(b).unwrap_or(Ordering::Equal));
     roots.dedup();
-    let negative_at = |x: &Q| {
-        field::sign(&field::reduce(&e.subs(phi, &Poly::constant(x.clone())))) == Ordering::Less
+    let rational = e.to_upoly(phi);
+    let negative_at = |x: &Q| match &rational {
+        Some(u) => u.eval(x) < Q::zero(),
+        None => {
+            field::sign(&field::reduce(&e.subs(phi, &Poly::constant(x.clone())))) == Ordering::Less
+        }
     };
     let mut lo = Algebraic::zero();
     for r in roots {
