@@ -256,6 +256,7 @@ fn class_colour(c: RootClass) -> RGBColor {
         RootClass::Alternating => RGBColor(200, 160, 230),
         RootClass::AlternatingUnstable => RGBColor(200, 80, 140),
         RootClass::DoubleRootOnCircle => RGBColor(120, 120, 120),
+        RootClass::Singular => RGBColor(0, 0, 0),
     }
 }
 

@@ -36,11 +36,13 @@ pub enum RootClass {
     /// A repeated root on the unit circle (z₁ = z₂ = ±1, or a repeated pair):
     /// polynomial growth when the root is defective, as section 4 notes.
     DoubleRootOnCircle,
+    /// The step is undefined: its implicit system is singular (det A = 0).
+    Singular,
 }
 
 impl RootClass {
     /// Every class, in a fixed order.
-    pub const ALL: [RootClass; 11] = [
+    pub const ALL: [RootClass; 12] = [
         RootClass::Deadbeat,
         RootClass::DampedOscillation,
         RootClass::Harmonic,
@@ -52,6 +54,7 @@ impl RootClass {
         RootClass::Alternating,
         RootClass::AlternatingUnstable,
         RootClass::DoubleRootOnCircle,
+        RootClass::Singular,
     ];
 
     /// The snake_case name used in JSON and reports.
@@ -68,6 +71,7 @@ impl RootClass {
             RootClass::Alternating => "alternating",
             RootClass::AlternatingUnstable => "alternating_unstable",
             RootClass::DoubleRootOnCircle => "double_root_on_circle",
+            RootClass::Singular => "singular",
         }
     }
 

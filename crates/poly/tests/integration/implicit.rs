@@ -542,3 +542,31 @@ mod singular_oracle {
         }
     }
 }
+
+/// Where the step's system is singular (det A = 0) the step is undefined:
+/// its own class, never bounded, and a stability limit even between two
+/// bounded intervals (here the trapezoidal rule with a stage k = y + Φk
+/// that nothing reads, singular at Φ = 1 only).
+#[test]
+fn a_singular_step_is_its_own_class_and_ends_stability() {
+    let src = "method trap_sing\nstate v y\nunknown k\nk = y + Phi*k\n\
+               v' = v - Phi*(y + y')/2\ny' = y + Phi*(v + v')/2\n";
+    let d = poly::derive(&poly::Method::parse("s.zm", src).unwrap()).unwrap();
+    let one = poly::q(1, 1);
+    // The oracle: det A vanishes at Φ = 1, by direct evaluation.
+    let at_one = d.p_denominator().subs(poly::Sym::phi(), &poly::Poly::constant(one.clone()));
+    assert!(at_one.is_zero(), "det A at 1 is {at_one}");
+    let params = poly::Params::new();
+    assert_eq!(d.class_at(&params, &one).unwrap(), poly::RootClass::Singular);
+    assert_eq!(d.class_at(&params, &poly::q(1, 2)).unwrap(), poly::RootClass::Harmonic);
+    let r = d.stability(&params).unwrap();
+    match &r.stability {
+        poly::Stability::Limited { phi_max, bounded_at_phi_max, boundary } => {
+            assert_eq!(phi_max.to_string(), "1");
+            assert!(!bounded_at_phi_max);
+            assert_eq!(*boundary, poly::Boundary::SingularStep);
+        }
+        other => panic!("{other:?}"),
+    }
+    assert!(r.class_changes.iter().any(|c| c.at_class == Some(poly::RootClass::Singular)));
+}

@@ -132,7 +132,7 @@ fn the_commands_read_tableaux() {
 #[rustfmt::skip]
 fn mistakes_are_located() {
     let cases: &[(&str, &str, &str)] = &[
-        ("A = [[0.5]]\nb = [1]\n", ":1:7:", "write it as a string"),
+        ("A = [[inf]]\nb = [1]\n", ":1:7:", "not a finite number"),
         ("A = [[0, 0], [1]]\nb = [1, 0]\n", ":1:14:", "row 2 of A has 1 entries: expected 2"),
         ("A = [[0]]\nb = [1, 2]\n", ":2:5:", "b has 2 entries: expected 1"),
         ("A = [[0]]\nb = [\"1/(1 - 1)\"]\n", ":2:6:", "b[1]"),
@@ -173,4 +173,28 @@ fn mistakes_are_located() {
         }
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+/// A TOML float is the decimal written: `0.1` is 1/10, so a tableau in
+/// floats derives the same χ as the one in fractions.
+#[test]
+fn toml_floats_are_the_decimals_written() {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("tableau-floats");
+    std::fs::create_dir_all(&dir).expect("dir");
+    let floats = dir.join("heun_floats.toml");
+    let exact = dir.join("heun_exact.toml");
+    std::fs::write(&floats, "A = [[0, 0], [1.0, 0]]\nb = [0.5, 0.5]\n").unwrap();
+    std::fs::write(&exact, "A = [[0, 0], [1, 0]]\nb = [\"1/2\", \"1/2\"]\n").unwrap();
+    let chi = |p: &PathBuf| {
+        let (code, out, err) = zcheck(&["stability", p.to_str().unwrap(), "--format", "json"]);
+        assert_eq!(code, 0, "{err}");
+        let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+        v["charpoly"].as_str().unwrap().to_owned()
+    };
+    assert_eq!(chi(&floats), chi(&exact));
+    // 0.1 is 1/10, not 3602879701896397/36028797018963968.
+    std::fs::write(&floats, "A = [[0.1]]\nb = [1]\n").unwrap();
+    let (code, out, _) = zcheck(&["from-tableau", floats.to_str().unwrap()]);
+    assert_eq!(code, 0);
+    assert!(out.contains("1/10"), "{out}");
 }

@@ -128,6 +128,16 @@ impl Derivation {
     /// parameters bound in `params`.
     pub fn class_at(&self, params: &Params, phi: &Q) -> Result<RootClass, Error> {
         let values = self.bind(params)?;
+        let mut at = values.clone();
+        at.insert(Sym::phi(), phi.clone());
+        if self
+            .p_denominator
+            .eval_partial(&at)
+            .as_constant()
+            .is_some_and(|d| num_traits::Zero::is_zero(&d))
+        {
+            return Ok(RootClass::Singular);
+        }
         class_at(&self.charpoly.eval_partial(&values), phi)
     }
 

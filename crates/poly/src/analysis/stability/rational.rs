@@ -120,8 +120,15 @@ fn run_with(
     let at_samples: Vec<(RootClass, Counts)> =
         samples.iter().map(|s| class_at_rational(chi, s)).collect();
     let classes: Vec<RootClass> = at_samples.iter().map(|c| c.0).collect();
-    let at_classes: Vec<Option<RootClass>> =
-        points.iter().map(|pt| class_at_point(chi, &pt.at)).collect();
+    // Where the step's system is singular (det A = 0) the step is
+    // undefined: its own class, never bounded.
+    let at_classes: Vec<Option<RootClass>> = points
+        .iter()
+        .map(|pt| match p {
+            Some(step) if pt.at.is_root_of(step.denominator) => Some(RootClass::Singular),
+            _ => class_at_point(chi, &pt.at),
+        })
+        .collect();
 
     // Boundedness exactly at every point next to a bounded interval.
     // The discriminant is one of the conditions already (computed once).
@@ -205,7 +212,11 @@ fn run_with(
             verdict = Stability::Limited {
                 phi_max: point.at.clone(),
                 bounded_at_phi_max: at_bounded,
-                boundary: boundary_at(chi, point),
+                boundary: if at_classes[k] == Some(RootClass::Singular) {
+                    Boundary::SingularStep
+                } else {
+                    boundary_at(chi, point)
+                },
             };
             break;
         }

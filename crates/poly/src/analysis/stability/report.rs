@@ -73,6 +73,8 @@ pub enum Boundary {
     RepeatedPairOnCircle,
     /// The leading coefficient vanishes: a root arrives from infinity.
     RootFromInfinity,
+    /// The step's implicit system is singular there: the step is undefined.
+    SingularStep,
     /// None of the above was recognised.
     Other,
 }
@@ -88,6 +90,7 @@ impl Boundary {
             Boundary::ComplexPairLeavesCircle => "complex_pair_leaves_circle",
             Boundary::RepeatedPairOnCircle => "repeated_pair_on_circle",
             Boundary::RootFromInfinity => "root_from_infinity",
+            Boundary::SingularStep => "singular_step",
             Boundary::Other => "other",
         }
     }
