@@ -67,7 +67,6 @@ def main():
     ap.add_argument("--repeat", type=int, default=3)
     args = ap.parse_args()
 
-    import nodepy
     import sympy
 
     import zcheck
@@ -88,7 +87,9 @@ def main():
     zb, zm = best_and_median(run_zcheck, args.repeat)
     nb, nm = best_and_median(run_nodepy, args.repeat)
     n = len(methods)
-    print(f"NodePy {nodepy.__version__ if hasattr(nodepy, '__version__') else '?'}, SymPy {sympy.__version__}, "
+    from importlib.metadata import version
+
+    print(f"NodePy {version('nodepy')}, SymPy {sympy.__version__}, "
           f"Python {sys.version.split()[0]}; {n} methods; best / median of {args.repeat}")
     print()
     print("| job | total best (ms) | total median (ms) | per method, median (ms) |")
