@@ -2,6 +2,8 @@
 //! The binary only calls [`cli::main`]; this library is public for the
 //! tests, benchmarks and fuzz targets, and shows them only what they use.
 //!
+//! - [`api`]: the door of other front ends (the Python package): each
+//!   question answered by the JSON document its command prints;
 //! - [`cli`]: one module per subcommand, the one output `Format`, and the
 //!   reporting of an [`Error`] (exit code 2);
 //! - [`load`]: a method argument (built-in, `.zm` file, Butcher tableau)
@@ -24,6 +26,7 @@
 //! The exact algebra lives in `poly`, the numeric witnesses in `check`; this
 //! crate depends on both and neither depends on it.
 
+pub mod api;
 pub mod cli;
 mod drift_figure;
 pub mod emit;

@@ -117,6 +117,13 @@ impl LoadedMethod {
         Ok(LoadedMethod::new(method, base_name(name).to_owned(), hand, system))
     }
 
+    /// A method already made (from `.zm` text, a tableau, multistep
+    /// coefficients), shown by its name.
+    pub(crate) fn of(method: Method) -> LoadedMethod {
+        let display = method.name().to_owned();
+        LoadedMethod::new(method, display, None, None)
+    }
+
     /// The seven direct methods on the damped spring, the whole-scene
     /// advisor's default candidates.
     pub(crate) fn damped_builtins() -> Result<Vec<LoadedMethod>, Error> {

@@ -284,20 +284,29 @@ fn run_scene(path: &std::path::Path, args: &Args) -> Result<ExitCode, Error> {
              (duration_s, [accuracy])",
         ));
     }
-    let simulate = !args.no_simulate;
-    let modal = modal_of(&scene, simulate)?;
-    let specs = if args.methods.is_empty() {
-        LoadedMethod::damped_builtins()?
-    } else {
-        args.methods.iter().map(|m| LoadedMethod::load_damped(m)).collect::<Result<_, _>>()?
-    };
-    let options = Options { simulate, gauss_seidel: args.sweep.is_some() };
-    let advice = advisor::advise(&scene, &modal, specs, options)?;
+    let options = Options { simulate: !args.no_simulate, gauss_seidel: args.sweep.is_some() };
+    let advice = scene_advice(&scene, &args.methods, options)?;
     match args.format {
         Format::Json => super::output::emitln(&serde_json::to_string_pretty(&advice)?)?,
         _ => super::output::emit(&scene_text(&path.display().to_string(), &advice))?,
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// The advice of `zcheck advise --scene` on a scene read: for `methods`
+/// (built-in names or `.zm` files; none: the seven direct methods).
+pub(crate) fn scene_advice(
+    scene: &SceneFile,
+    methods: &[String],
+    options: Options,
+) -> Result<advisor::SceneAdvice, Error> {
+    let modal = modal_of(scene, options.simulate)?;
+    let specs = if methods.is_empty() {
+        LoadedMethod::damped_builtins()?
+    } else {
+        methods.iter().map(|m| LoadedMethod::load_damped(m)).collect::<Result<_, _>>()?
+    };
+    advisor::advise(scene, &modal, specs, options)
 }
 
 /// The scene advice as text: the modes that matter, a table, a sentence.

@@ -138,19 +138,44 @@ fn read_params(args: &[String], method: &poly::Method) -> Result<ParamArgs, Erro
     Ok(out)
 }
 
-pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
-    let method = LoadedMethod::load(&args.method)?;
-    if !(2..=400).contains(&args.grid) || !(2..=5000).contains(&args.samples) {
+/// A map as `zcheck map` computes it, before it is drawn or printed.
+pub(crate) enum Map {
+    /// Over (Φ, NAME).
+    PhiParam(crate::map::StabilityMap),
+    /// Over two parameters, coloured by Φ_max.
+    TwoParams(crate::param_map::ParamMap),
+}
+
+impl Map {
+    /// The JSON document of `zcheck map --format json`.
+    pub(crate) fn to_json(&self) -> Result<serde_json::Value, Error> {
+        Ok(match self {
+            Map::PhiParam(m) => serde_json::to_value(m)?,
+            Map::TwoParams(m) => serde_json::to_value(m)?,
+        })
+    }
+}
+
+/// The map of `method` over `--phi` (one range) and the `--param`
+/// arguments as typed (`NAME=LO..HI` or `NAME=VALUE`), on a grid of `grid`
+/// points per axis with `samples` curve samples.
+pub(crate) fn compute(
+    method: &LoadedMethod,
+    phi: Option<&str>,
+    params: &[String],
+    grid: usize,
+    samples: usize,
+) -> Result<Map, Error> {
+    if !(2..=400).contains(&grid) || !(2..=5000).contains(&samples) {
         return Err(Error::usage(format!(
-            "--grid {} --samples {}: expected 2..=400 grid points and 2..=5000 samples",
-            args.grid, args.samples
+            "--grid {grid} --samples {samples}: expected 2..=400 grid points and 2..=5000 samples"
         )));
     }
-    let params = read_params(&args.params, method.method())?;
+    let params = read_params(params, method.method())?;
     if params.ranges.len() == 2 {
-        return run_two(&args, &method, params);
+        return compute_two(phi, method, params, grid, samples).map(Map::TwoParams);
     }
-    let Some(phi_text) = &args.phi else {
+    let Some(phi_text) = phi else {
         return Err(Error::usage(format!(
             "--param {}: a map over (Phi, {}) needs --phi LO..HI",
             params.typed[0], params.ranges[0].0
@@ -167,9 +192,26 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
         )));
     }
     let (param, range) = params.ranges.into_iter().next().expect("one range");
-    let window =
-        crate::map::MapWindow { phi, param, range, grid: args.grid, samples: args.samples };
-    let m = crate::map::map(&method, &window)?;
+    let window = crate::map::MapWindow { phi, param, range, grid, samples };
+    crate::map::map(method, &window).map(Map::PhiParam)
+}
+
+pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
+    let method = LoadedMethod::load(&args.method)?;
+    let map = compute(&method, args.phi.as_deref(), &args.params, args.grid, args.samples)?;
+    let m = match map {
+        Map::PhiParam(m) => m,
+        Map::TwoParams(m) => {
+            if let Some(path) = &args.svg {
+                crate::param_map::draw_svg(&m, path)?;
+            }
+            match args.format {
+                Format::Json => super::output::emitln(&serde_json::to_string_pretty(&m)?)?,
+                _ => super::output::emit(&two_text(&m, args.svg.as_deref()))?,
+            }
+            return Ok(if m.disagreements == 0 { ExitCode::SUCCESS } else { ExitCode::from(1) });
+        }
+    };
     if let Some(path) = &args.svg {
         crate::map::draw_svg(&m, path)?;
     }
@@ -231,8 +273,14 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
 }
 
 /// The map over two parameters.
-fn run_two(args: &Args, method: &LoadedMethod, params: ParamArgs) -> Result<ExitCode, Error> {
-    if let Some(phi) = &args.phi {
+fn compute_two(
+    phi: Option<&str>,
+    method: &LoadedMethod,
+    params: ParamArgs,
+    grid: usize,
+    samples: usize,
+) -> Result<crate::param_map::ParamMap, Error> {
+    if let Some(phi) = phi {
         return Err(Error::usage(format!(
             "--phi {phi}: a map over two parameters covers every Phi > 0 (each point is coloured by its Phi_max); drop --phi, or give one --param range for a (Phi, NAME) map"
         )));
@@ -256,18 +304,10 @@ fn run_two(args: &Args, method: &LoadedMethod, params: ParamArgs) -> Result<Exit
         names: [n0, n1],
         ranges: [r0, r1],
         fixed: params.fixed,
-        grid: args.grid,
-        samples: args.samples,
+        grid,
+        samples,
     };
-    let m = crate::param_map::param_map(method, &window)?;
-    if let Some(path) = &args.svg {
-        crate::param_map::draw_svg(&m, path)?;
-    }
-    match args.format {
-        Format::Json => super::output::emitln(&serde_json::to_string_pretty(&m)?)?,
-        _ => super::output::emit(&two_text(&m, args.svg.as_deref()))?,
-    }
-    Ok(if m.disagreements == 0 { ExitCode::SUCCESS } else { ExitCode::from(1) })
+    crate::param_map::param_map(method, &window)
 }
 
 fn two_text(m: &crate::param_map::ParamMap, svg: Option<&std::path::Path>) -> String {

@@ -19,22 +19,24 @@ pub(crate) struct Args {
 }
 
 pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
-    let claims = all_claims();
-    let overview = crate::overview::paper_overview(OVERVIEW_ORDER)?;
     let out = match args.format {
-        Format::Json => {
-            let mut doc = report::to_json(&claims);
-            doc["overview"] = serde_json::to_value(&overview)?;
-            serde_json::to_string_pretty(&doc)? + "\n"
-        }
+        Format::Json => serde_json::to_string_pretty(&json_document()?)? + "\n",
         _ => format!(
             "{}\n## Beyond the paper: every method side by side\n\n\
              Appendix A derives Ψ(Φ) for two methods; here it is for all seven, exact, with the \
              exact stability limit and the operations per step (`zcheck overview`).\n\n{}",
-            report::to_markdown(&claims),
-            crate::overview::to_markdown(&overview)
+            report::to_markdown(&all_claims()),
+            crate::overview::to_markdown(&crate::overview::paper_overview(OVERVIEW_ORDER)?)
         ),
     };
     super::output::emit(&out)?;
     Ok(ExitCode::SUCCESS)
+}
+
+/// The document of `zcheck paper --format json`: the claims, the summary
+/// and the overview.
+pub(crate) fn json_document() -> Result<serde_json::Value, Error> {
+    let mut doc = report::to_json(&all_claims());
+    doc["overview"] = serde_json::to_value(crate::overview::paper_overview(OVERVIEW_ORDER)?)?;
+    Ok(doc)
 }

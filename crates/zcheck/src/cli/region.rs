@@ -45,18 +45,7 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     values::check_declared(&args.params, &methods)?;
     let mut reports = Vec::new();
     for (arg, m) in args.methods.iter().zip(&loaded) {
-        let mut params = poly::Params::new();
-        let mut shown: Vec<(String, Q)> = Vec::new();
-        for p in &args.params {
-            if m.method().params().iter().any(|s| s.name() == p.name) {
-                params.insert(&p.name, p.value.value.clone());
-                shown.push((p.name.clone(), p.value.value.clone()));
-            }
-        }
-        let report = m
-            .plane_derivation()?
-            .plane(&params)
-            .map_err(|e| Error::from(e).context(format!("method {arg}")))?;
+        let (shown, report) = plane(arg, m, &args.params)?;
         reports.push((m.method().name().to_owned(), shown, report));
     }
     if let Some(path) = &args.svg {
@@ -79,4 +68,28 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     };
     output::emit(&out)?;
     Ok(ExitCode::SUCCESS)
+}
+
+/// The w-plane report of one method (shown as `arg` in an error), with the
+/// parameters it declares bound from `params` and the others left out
+/// (`zcheck region` takes one list for all its methods): the values bound,
+/// and the report.
+pub(crate) fn plane(
+    arg: &str,
+    m: &LoadedMethod,
+    params: &[ParamArg],
+) -> Result<(Vec<(String, Q)>, poly::PlaneReport), Error> {
+    let mut bound = poly::Params::new();
+    let mut shown: Vec<(String, Q)> = Vec::new();
+    for p in params {
+        if m.method().params().iter().any(|s| s.name() == p.name) {
+            bound.insert(&p.name, p.value.value.clone());
+            shown.push((p.name.clone(), p.value.value.clone()));
+        }
+    }
+    let report = m
+        .plane_derivation()?
+        .plane(&bound)
+        .map_err(|e| Error::from(e).context(format!("method {arg}")))?;
+    Ok((shown, report))
 }

@@ -37,44 +37,71 @@ pub(crate) struct Args {
 pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     let loaded = LoadedMethod::load(&args.method)?;
     // The one derivation: χ, the report and the implicit facts all read it.
-    let derivation = loaded.derivation()?;
-    let method = &derivation.method;
-    values::check_declared(&args.params, &[method])?;
-    let mut values = HashMap::new();
-    let mut params = poly::Params::new();
-    let mut shown = Vec::new();
-    for p in &args.params {
-        values.insert(Sym::new(&p.name), p.value.value.clone());
-        params.insert(&p.name, p.value.value.clone());
-        shown.push((p.name.clone(), p.value.value.clone()));
-    }
-    let chi = derivation.charpoly.eval_partial(&values);
-    // With the transition matrix, boundedness at a repeated root on the
-    // circle is decided from P's Jordan structure (Merson at 2√3: P = I).
-    let report = derivation
-        .stability(&params)
-        .map_err(|e| Error::from(e).context(format!("method {}", method.name())))?;
-    let facts = ImplicitFacts::of(derivation, &chi)?;
-    let far = FarAndNear::of(derivation, &params);
+    let analysis = Analysis::of(loaded.derivation()?, &args.params)?;
     let out = match args.format {
-        Format::Json => {
-            let mut v = to_json(method.name(), &shown, &chi, &report);
-            if let Some(f) = &facts {
-                f.add_json(&mut v);
-            }
-            far.add_json(&mut v);
-            serde_json::to_string_pretty(&v)? + "\n"
-        }
-        _ => {
-            let mut names = Names::default();
-            text(method.name(), &shown, &chi, &report, &mut names)
-                + &facts.as_ref().map_or(String::new(), |f| f.text(&mut names))
-                + &far.text(&mut names)
-                + &names.definitions()
-        }
+        Format::Json => serde_json::to_string_pretty(&analysis.to_json())? + "\n",
+        _ => analysis.text(),
     };
     output::emit(&out)?;
     Ok(ExitCode::SUCCESS)
+}
+
+/// What `zcheck stability` reports of a method at the given parameter
+/// values, before it is shown as text or JSON.
+pub(crate) struct Analysis {
+    name: String,
+    shown: Vec<(String, Q)>,
+    chi: poly::Poly,
+    report: StabilityReport,
+    facts: Option<ImplicitFacts>,
+    far: FarAndNear,
+}
+
+impl Analysis {
+    /// The analysis of `derivation` with `params` bound; a parameter the
+    /// method does not declare is an error.
+    pub(crate) fn of(
+        derivation: &poly::Derivation,
+        params: &[ParamArg],
+    ) -> Result<Analysis, Error> {
+        let method = &derivation.method;
+        values::check_declared(params, &[method])?;
+        let mut values = HashMap::new();
+        let mut bound = poly::Params::new();
+        let mut shown = Vec::new();
+        for p in params {
+            values.insert(Sym::new(&p.name), p.value.value.clone());
+            bound.insert(&p.name, p.value.value.clone());
+            shown.push((p.name.clone(), p.value.value.clone()));
+        }
+        let chi = derivation.charpoly.eval_partial(&values);
+        // With the transition matrix, boundedness at a repeated root on the
+        // circle is decided from P's Jordan structure (Merson at 2√3: P = I).
+        let report = derivation
+            .stability(&bound)
+            .map_err(|e| Error::from(e).context(format!("method {}", method.name())))?;
+        let facts = ImplicitFacts::of(derivation, &chi)?;
+        let far = FarAndNear::of(derivation, &bound);
+        Ok(Analysis { name: method.name().to_owned(), shown, chi, report, facts, far })
+    }
+
+    /// The JSON document of `zcheck stability --format json`.
+    pub(crate) fn to_json(&self) -> Value {
+        let mut v = to_json(&self.name, &self.shown, &self.chi, &self.report);
+        if let Some(f) = &self.facts {
+            f.add_json(&mut v);
+        }
+        self.far.add_json(&mut v);
+        v
+    }
+
+    fn text(&self) -> String {
+        let mut names = Names::default();
+        text(&self.name, &self.shown, &self.chi, &self.report, &mut names)
+            + &self.facts.as_ref().map_or(String::new(), |f| f.text(&mut names))
+            + &self.far.text(&mut names)
+            + &names.definitions()
+    }
 }
 
 /// For an implicit or constant-bearing method: the leading coefficient of

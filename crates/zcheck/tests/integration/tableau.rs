@@ -133,6 +133,7 @@ fn the_commands_read_tableaux() {
 fn mistakes_are_located() {
     let cases: &[(&str, &str, &str)] = &[
         ("A = [[inf]]\nb = [1]\n", ":1:7:", "not a finite number"),
+        ("A = [[nan]]\nb = [1]\n", ":1:7:", "NaN is not a finite number"),
         ("A = [[0, 0], [1]]\nb = [1, 0]\n", ":1:14:", "row 2 of A has 1 entries: expected 2"),
         ("A = [[0]]\nb = [1, 2]\n", ":2:5:", "b has 2 entries: expected 1"),
         ("A = [[0]]\nb = [\"1/(1 - 1)\"]\n", ":2:6:", "b[1]"),

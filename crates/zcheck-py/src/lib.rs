@@ -1,0 +1,237 @@
+//! `zcheck._native`: the Rust half of the Python package `zcheck`.
+//!
+//! Every function here is a thin call through a front door, `poly`'s for
+//! making a method and `zcheck::api` for every question, and returns what
+//! the command line would print with `--format json`, as a JSON string the
+//! Python half parses (DESIGN.md, "How does a result cross into Python?").
+//! There is no mathematics here.
+//!
+//! Each call runs with the GIL released and inside `catch_unwind`: a Rust
+//! panic becomes `zcheck.Error` and never unwinds into the interpreter
+//! (DESIGN.md, "How is a panic kept out of Python?").
+
+use std::panic::{self, AssertUnwindSafe};
+use std::path::PathBuf;
+
+use pyo3::create_exception;
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use zcheck::api::{self, LoadedMethod};
+
+create_exception!(
+    zcheck,
+    Error,
+    PyValueError,
+    "A method, a number, a parameter or a file zcheck cannot take, with the message the \
+     command line prints (file:line:column where there is one)."
+);
+
+/// What a call gives back before it crosses: a JSON document, or the
+/// message of an error.
+type Answer<T> = Result<T, String>;
+
+/// Runs `work` with the GIL released; an error and a panic both become
+/// `zcheck.Error`.
+fn run<T: Send>(py: Python<'_>, work: impl FnOnce() -> Answer<T> + Send) -> PyResult<T> {
+    let caught = py.detach(|| panic::catch_unwind(AssertUnwindSafe(work)));
+    match caught {
+        Ok(Ok(v)) => Ok(v),
+        Ok(Err(message)) => Err(Error::new_err(message)),
+        Err(payload) => {
+            let what = payload
+                .downcast_ref::<&str>()
+                .map(|s| (*s).to_owned())
+                .or_else(|| payload.downcast_ref::<String>().cloned())
+                .unwrap_or_else(|| "no message".to_owned());
+            Err(Error::new_err(format!(
+                "internal error (a bug in zcheck, please report it): {what}"
+            )))
+        }
+    }
+}
+
+fn message(e: &zcheck::Error) -> String {
+    api::message(e)
+}
+
+fn poly_message(e: &poly::Error) -> String {
+    api::message(&zcheck::Error::from(e.clone()))
+}
+
+fn json(v: Result<serde_json::Value, zcheck::Error>) -> Answer<String> {
+    let v = v.map_err(|e| message(&e))?;
+    serde_json::to_string(&v).map_err(|e| e.to_string())
+}
+
+/// A method, derived once and kept: made by `zcheck.Method`'s constructors.
+#[pyclass(frozen, module = "zcheck._native", name = "NativeMethod")]
+struct NativeMethod {
+    inner: LoadedMethod,
+}
+
+fn method(m: Answer<LoadedMethod>) -> Answer<NativeMethod> {
+    m.map(|inner| NativeMethod { inner })
+}
+
+#[pymethods]
+impl NativeMethod {
+    /// The method's name.
+    #[getter]
+    fn name(&self) -> String {
+        self.inner.method().name().to_owned()
+    }
+
+    /// The names of the method's parameters other than Phi.
+    #[getter]
+    fn params(&self) -> Vec<String> {
+        self.inner
+            .method()
+            .params()
+            .iter()
+            .map(|s| s.name().to_owned())
+            .filter(|n| n != "Phi")
+            .collect()
+    }
+
+    /// `zcheck derive --format json`, as JSON text.
+    fn derive(&self, py: Python<'_>) -> PyResult<String> {
+        run(py, || json(api::derive(&self.inner)))
+    }
+
+    /// `zcheck stability --format json` with `params` (`NAME=VALUE`) bound.
+    fn stability(&self, py: Python<'_>, params: Vec<String>) -> PyResult<String> {
+        run(py, || json(api::stability(&self.inner, &params)))
+    }
+
+    /// `zcheck region --format json` with `params` (`NAME=VALUE`) bound.
+    fn region(&self, py: Python<'_>, params: Vec<String>) -> PyResult<String> {
+        run(py, || json(api::region(&self.inner, &params)))
+    }
+
+    /// One point of `zcheck verify --format json`: the witnesses at Φ.
+    fn verify(
+        &self,
+        py: Python<'_>,
+        phi: String,
+        params: Vec<String>,
+        steps: u64,
+    ) -> PyResult<String> {
+        run(py, || json(api::verify(&self.inner, &phi, &params, steps)))
+    }
+
+    /// `zcheck map --format json`.
+    #[pyo3(signature = (phi, params, grid, samples))]
+    fn map(
+        &self,
+        py: Python<'_>,
+        phi: Option<String>,
+        params: Vec<String>,
+        grid: usize,
+        samples: usize,
+    ) -> PyResult<String> {
+        run(py, || json(api::map(&self.inner, phi.as_deref(), &params, grid, samples)))
+    }
+}
+
+/// A method as a command reads its argument: a `.zm`, or a `.toml` tableau
+/// or multistep file.
+#[pyfunction]
+fn load(py: Python<'_>, arg: String) -> PyResult<NativeMethod> {
+    run(py, || method(api::load(&arg).map_err(|e| message(&e))))
+}
+
+/// A built-in method by name.
+#[pyfunction]
+fn builtin(py: Python<'_>, name: String) -> PyResult<NativeMethod> {
+    run(py, || method(poly::Method::builtin(&name).map(api::loaded).map_err(|e| poly_message(&e))))
+}
+
+/// A method from `.zm` source text, `file` naming it in errors.
+#[pyfunction]
+fn from_zm(py: Python<'_>, file: String, text: String) -> PyResult<NativeMethod> {
+    run(py, || {
+        method(poly::Method::parse(&file, &text).map(api::loaded).map_err(|e| poly_message(&e)))
+    })
+}
+
+/// A Runge–Kutta method from its Butcher tableau, every entry exact text.
+#[pyfunction]
+#[pyo3(signature = (name, a, b, c=None))]
+fn from_tableau(
+    py: Python<'_>,
+    name: String,
+    a: Vec<Vec<String>>,
+    b: Vec<String>,
+    c: Option<Vec<String>>,
+) -> PyResult<NativeMethod> {
+    run(py, || {
+        let a: Vec<Vec<&str>> = a.iter().map(|r| r.iter().map(String::as_str).collect()).collect();
+        let b: Vec<&str> = b.iter().map(String::as_str).collect();
+        let c: Option<Vec<&str>> = c.as_ref().map(|c| c.iter().map(String::as_str).collect());
+        method(
+            poly::Method::from_tableau(&name, &a, &b, c.as_deref())
+                .map(api::loaded)
+                .map_err(|e| poly_message(&e)),
+        )
+    })
+}
+
+/// A linear multistep method from α and β (lowest j first), exact text.
+#[pyfunction]
+fn from_multistep(
+    py: Python<'_>,
+    name: String,
+    alpha: Vec<String>,
+    beta: Vec<String>,
+) -> PyResult<NativeMethod> {
+    run(py, || {
+        let alpha: Vec<&str> = alpha.iter().map(String::as_str).collect();
+        let beta: Vec<&str> = beta.iter().map(String::as_str).collect();
+        method(
+            poly::Method::from_multistep(&name, &alpha, &beta)
+                .map(api::loaded)
+                .map_err(|e| poly_message(&e)),
+        )
+    })
+}
+
+/// `zcheck advise --scene FILE --format json`.
+#[pyfunction]
+fn advise_file(py: Python<'_>, path: PathBuf) -> PyResult<String> {
+    run(py, || json(api::advise_scene_file(&path)))
+}
+
+/// The same, on a scene's TOML text (`name` shown in errors).
+#[pyfunction]
+fn advise_text(py: Python<'_>, name: String, text: String) -> PyResult<String> {
+    run(py, || json(api::advise_scene_text(&name, &text)))
+}
+
+/// `zcheck paper --format json`.
+#[pyfunction]
+fn paper(py: Python<'_>) -> PyResult<String> {
+    run(py, || json(api::paper()))
+}
+
+/// Panics inside the containment, for the test that no panic crosses.
+#[pyfunction]
+fn _panic_for_test(py: Python<'_>) -> PyResult<()> {
+    run(py, || -> Answer<()> { panic!("a test panic") })
+}
+
+/// The Rust half of `zcheck`; import `zcheck`, not this module.
+#[pymodule]
+fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add("Error", m.py().get_type::<Error>())?;
+    m.add_class::<NativeMethod>()?;
+    m.add_function(wrap_pyfunction!(load, m)?)?;
+    m.add_function(wrap_pyfunction!(builtin, m)?)?;
+    m.add_function(wrap_pyfunction!(from_zm, m)?)?;
+    m.add_function(wrap_pyfunction!(from_tableau, m)?)?;
+    m.add_function(wrap_pyfunction!(from_multistep, m)?)?;
+    m.add_function(wrap_pyfunction!(advise_file, m)?)?;
+    m.add_function(wrap_pyfunction!(advise_text, m)?)?;
+    m.add_function(wrap_pyfunction!(paper, m)?)?;
+    m.add_function(wrap_pyfunction!(_panic_for_test, m)?)?;
+    Ok(())
+}

@@ -1,0 +1,128 @@
+//! The door of other front ends, first the Python package
+//! (`crates/zcheck-py`): a method loaded as the command line loads it, and
+//! each question answered by the JSON document the matching command prints
+//! with `--format json`, built by the same function. A field therefore has
+//! one name and one meaning however it is reached, and a front end adds no
+//! mathematics of its own.
+//!
+//! Numbers come in as the command line takes them: a parameter is
+//! `NAME=VALUE` with an exact VALUE (`1/2`, `0.1`), a range `LO..HI`.
+//! Errors are the command line's, with their locations.
+
+use std::path::Path;
+
+use serde_json::Value;
+
+use crate::cli::values::ParamArg;
+use crate::error::Error;
+pub use crate::load::LoadedMethod;
+use crate::scene::advisor::Options;
+use crate::scene::file::SceneFile;
+
+/// A method argument as a command reads it: a built-in's name, a `.zm`
+/// file, or a `.toml` file (a Butcher tableau, or `alpha` and `beta` of a
+/// linear multistep method).
+pub fn load(arg: &str) -> Result<LoadedMethod, Error> {
+    LoadedMethod::load(arg)
+}
+
+/// A method made by `poly`'s front door (`.zm` text, a tableau, multistep
+/// coefficients, a built-in), shown by its name.
+pub fn loaded(method: poly::Method) -> LoadedMethod {
+    LoadedMethod::of(method)
+}
+
+/// `zcheck derive --format json`: M(z), P, χ(z) and, for an implicit
+/// method, P's denominator.
+pub fn derive(method: &LoadedMethod) -> Result<Value, Error> {
+    Ok(crate::cli::derive::to_json(method.derivation()?))
+}
+
+/// `zcheck stability --format json` with `params` (`NAME=VALUE`) bound.
+pub fn stability(method: &LoadedMethod, params: &[String]) -> Result<Value, Error> {
+    let params = read_params(params)?;
+    Ok(crate::cli::stability::Analysis::of(method.derivation()?, &params)?.to_json())
+}
+
+/// `zcheck region --format json` of one method with `params`
+/// (`NAME=VALUE`) bound; a parameter the method lacks is an error.
+pub fn region(method: &LoadedMethod, params: &[String]) -> Result<Value, Error> {
+    let params = read_params(params)?;
+    crate::cli::values::check_declared(&params, &[method.method()])?;
+    let name = method.method().name();
+    let (shown, report) = crate::cli::region::plane(name, method, &params)?;
+    Ok(crate::region::to_json(name, &shown, &report))
+}
+
+/// One point of `zcheck verify --format json` (`check::verify`): the
+/// numeric witnesses at Φ (exact text such as `1/2`, run at its nearest
+/// f64) with `params` bound, over `steps` steps.
+pub fn verify(
+    method: &LoadedMethod,
+    phi: &str,
+    params: &[String],
+    steps: u64,
+) -> Result<Value, Error> {
+    let phi: crate::cli::values::Exact =
+        phi.parse().map_err(|e: String| Error::usage(format!("phi {phi}: {e}")))?;
+    phi.to_f64("phi")?;
+    let params = read_params(params)?;
+    crate::cli::values::check_declared(&params, &[method.method()])?;
+    let mut bound = check::Params::default();
+    for p in &params {
+        p.value.to_f64(&format!("parameter {}", p.name))?;
+        bound.insert(&p.name, p.value.value.clone());
+    }
+    let bound = bound.bind("Phi", phi.value);
+    let point = check::verify(method.derivation()?, &bound, steps)?;
+    Ok(crate::cli::verify::point_json(&point))
+}
+
+/// `zcheck map --format json`: over (Φ, NAME) with `phi` (`LO..HI`) and
+/// one range, or over two parameters (two ranges, no `phi`); `params` as
+/// typed after `--param` (`NAME=LO..HI` or `NAME=VALUE`).
+pub fn map(
+    method: &LoadedMethod,
+    phi: Option<&str>,
+    params: &[String],
+    grid: usize,
+    samples: usize,
+) -> Result<Value, Error> {
+    crate::cli::map::compute(method, phi, params, grid, samples)?.to_json()
+}
+
+/// `zcheck advise --scene FILE --format json`, the prediction checked by
+/// simulation.
+pub fn advise_scene_file(path: &Path) -> Result<Value, Error> {
+    advise(&SceneFile::load(path)?)
+}
+
+/// [`advise_scene_file`] on the text of a scene file, named `name` in
+/// errors.
+pub fn advise_scene_text(name: &str, text: &str) -> Result<Value, Error> {
+    advise(&SceneFile::parse(name, text)?)
+}
+
+fn advise(scene: &SceneFile) -> Result<Value, Error> {
+    let options = Options { simulate: true, gauss_seidel: false };
+    Ok(serde_json::to_value(crate::cli::advise::scene_advice(scene, &[], options)?)?)
+}
+
+/// `zcheck paper --format json`: the claims, the summary and the overview.
+pub fn paper() -> Result<Value, Error> {
+    crate::cli::paper::json_document()
+}
+
+/// The error as the command line prints it after `error: `: its message,
+/// then each of its sources after `: `.
+pub fn message(e: &Error) -> String {
+    crate::cli::output::with_sources(e)
+}
+
+/// `NAME=VALUE` arguments read as `--param` reads them.
+fn read_params(params: &[String]) -> Result<Vec<ParamArg>, Error> {
+    params
+        .iter()
+        .map(|s| s.parse().map_err(|e: String| Error::usage(format!("parameter {s}: {e}"))))
+        .collect()
+}
