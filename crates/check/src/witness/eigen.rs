@@ -111,8 +111,9 @@ pub fn eigen_condition(p: &DMatrix<f64>, z: C64) -> (f64, Vec<C64>) {
 }
 
 /// The roots of a polynomial with complex coefficients (lowest power
-/// first; [`polynomial_roots`] takes real ones, highest first), as the eigenvalues of its companion matrix by nalgebra's
-/// complex Schur decomposition; leading zeros are dropped first.
+/// first; [`polynomial_roots`](crate::witness::polynomial_roots) takes real
+/// ones, highest first), as the eigenvalues of its companion matrix by
+/// nalgebra's complex Schur decomposition; leading zeros are dropped first.
 pub fn complex_polynomial_roots(coeffs: &[C64]) -> Result<Vec<C64>, Error> {
     let mut c = coeffs.to_vec();
     while c.last().is_some_and(|x| x.is_zero()) {

@@ -317,3 +317,31 @@ fn the_figure_overlays_every_method() {
     assert!(text.contains("stability regions"));
     std::fs::remove_file(&svg).ok();
 }
+
+/// Hughes' ρ∞ on the oscillator (The Finite Element Method, ch. 9):
+/// (1 + α)/(1 − α) for HHT-α (α ∈ [−1/3, 0]), and the chosen ρ∞ for
+/// Chung–Hulbert's generalized-α, from `zcheck stability`'s exact rho_inf.
+/// Both are unconditionally stable at these parameters.
+#[test]
+fn hughes_rho_inf_for_hht_alpha_and_generalized_alpha() {
+    let json = |file: &str, param: &str| -> Value {
+        let path = data(&format!("structural/{file}"));
+        let out =
+            zcheck(&["stability", path.to_str().unwrap(), "--param", param, "--format", "json"]);
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        serde_json::from_slice(&out.stdout).unwrap()
+    };
+    for (num, den) in [(0i64, 1i64), (-1, 10), (-1, 5), (-1, 3)] {
+        let a = num as f64 / den as f64;
+        let v = json("hht_alpha.zm", &format!("alpha={num}/{den}"));
+        let expected = (1.0 + a) / (1.0 - a);
+        let got = v["rho_inf"]["value"].as_f64().expect("a finite ρ∞");
+        assert!((got - expected).abs() < 1e-15, "HHT-α at {a}: {got} vs {expected}");
+        assert_eq!(v["stability"], "bounded_for_all_phi", "HHT-α at {a}");
+    }
+    for r in ["0", "1/4", "1/2", "9/10", "1"] {
+        let v = json("generalized_alpha.zm", &format!("rho_inf={r}"));
+        assert_eq!(v["rho_inf"]["exact"], r, "generalized-α at ρ∞ = {r}");
+        assert_eq!(v["stability"], "bounded_for_all_phi", "generalized-α at ρ∞ = {r}");
+    }
+}

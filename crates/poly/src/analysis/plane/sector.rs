@@ -284,7 +284,24 @@ fn candidate_slopes(chi: &Poly) -> Result<Vec<Algebraic>, Error> {
     let (g, x) = boundary_curve(chi);
     let gx = g.coeffs_in(x);
     let dx = g.derivative(x).coeffs_in(x);
-    let disc = resultant(&gx, &dx);
+    // Coefficients in x are polynomials in m over Q: the modular resultant
+    // over Z[m] (the engine's), else the Sylvester determinant.
+    let m = Sym::new("m");
+    // Integer coefficients: G scaled by the lcm of its denominators (a
+    // constant factor of the resultant).
+    let lcm = g
+        .terms()
+        .map(|(_, c)| c.denom().clone())
+        .fold(num_bigint::BigInt::from(1), |l, d| num_integer::Integer::lcm(&l, &d));
+    let scale = Q::from_integer(lcm);
+    let in_m_all =
+        |c: &[Poly]| c.iter().map(|p| p.scale(&scale).to_upoly(m)).collect::<Option<Vec<UPoly>>>();
+    let disc = match (in_m_all(&gx), in_m_all(&dx)) {
+        (Some(a), Some(b)) if a.len() >= 2 && b.len() >= 2 => {
+            Poly::from_upoly(m, &crate::univariate::modular::resultant(&a, &b))
+        }
+        _ => resultant(&gx, &dx),
+    };
     let undecided = |what: &str| {
         Error::analysis(
             ErrorKind::NoRoots,
