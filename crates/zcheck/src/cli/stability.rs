@@ -81,7 +81,7 @@ impl Analysis {
             .stability(&bound)
             .map_err(|e| Error::from(e).context(format!("method {}", method.name())))?;
         let facts = ImplicitFacts::of(derivation, &chi)?;
-        let far = FarAndNear::of(derivation, &bound);
+        let far = FarAndNear::of(derivation, &bound, &chi, &report);
         Ok(Analysis { name: method.name().to_owned(), shown, chi, report, facts, far })
     }
 
@@ -156,10 +156,22 @@ pub(crate) struct FarAndNear {
 }
 
 impl FarAndNear {
-    pub(crate) fn of(derivation: &poly::Derivation, params: &poly::Params) -> FarAndNear {
+    /// From the report already made (the phase series need only whether the
+    /// first interval's pair lies on the circle).
+    pub(crate) fn of(
+        derivation: &poly::Derivation,
+        params: &poly::Params,
+        chi: &poly::Poly,
+        report: &StabilityReport,
+    ) -> FarAndNear {
+        let on_circle = report
+            .intervals
+            .first()
+            .is_some_and(|i| i.lo.sign().is_eq() && i.class == poly::RootClass::Harmonic);
         FarAndNear {
             rho_inf: derivation.rho_inf(params).map_err(|e| e.message().to_owned()),
-            phase: derivation.phase_errors(params).map_err(|e| e.message().to_owned()),
+            phase: poly::advanced::plane::phase_errors(chi, on_circle)
+                .map_err(|e| e.message().to_owned()),
         }
     }
 
@@ -253,25 +265,62 @@ fn fine() -> Q {
     Q::from_integer(1.into()) / num_traits::pow(Q::from_integer(10.into()), 15)
 }
 
+/// One exact number rendered once: the same critical point stands in a
+/// report's class changes, intervals and critical points, and refining a
+/// root of a large polynomial to 1e-15 is the costly part of a document.
+struct Rendered {
+    value: f64,
+    exact: String,
+    decimal: String,
+    interval: (Q, Q),
+}
+
+thread_local! {
+    static RENDERED: std::cell::RefCell<HashMap<String, std::rc::Rc<Rendered>>> =
+        std::cell::RefCell::new(HashMap::new());
+}
+
+fn render(a: &Algebraic) -> std::rc::Rc<Rendered> {
+    let key = format!("{a:?}");
+    if let Some(r) = RENDERED.with(|c| c.borrow().get(&key).cloned()) {
+        return r;
+    }
+    let fine_a = a.refine(&fine());
+    let r = std::rc::Rc::new(Rendered {
+        value: fine_a.to_decimal(17).parse().expect("a decimal expansion parses as f64"),
+        exact: fine_a.describe("Phi"),
+        decimal: fine_a.to_decimal(15),
+        interval: fine_a.interval(),
+    });
+    RENDERED.with(|c| {
+        let mut c = c.borrow_mut();
+        if c.len() > 4096 {
+            c.clear();
+        }
+        c.insert(key, r.clone());
+    });
+    r
+}
+
 /// The f64 nearest the exact number, from its exact 17-digit expansion.
 fn to_f64(a: &Algebraic) -> f64 {
-    a.to_decimal(17).parse().expect("a decimal expansion parses as f64")
+    render(a).value
 }
 
 /// Exact text: the closed form, else the defining polynomial in Phi and an
 /// isolating interval of width at most 1e-15.
 fn exact(a: &Algebraic) -> String {
-    a.refine(&fine()).describe("Phi")
+    render(a).exact.clone()
 }
 
 fn number_json(a: &Algebraic) -> Value {
-    let (lo, hi) = a.refine(&fine()).interval();
+    let r = render(a);
     json!({
-        "value": to_f64(a),
-        "exact": exact(a),
-        "decimal": a.to_decimal(15),
+        "value": r.value,
+        "exact": r.exact,
+        "decimal": r.decimal,
         "defining_poly": a.defining_poly().to_string_in("Phi"),
-        "interval": [lo.to_string(), hi.to_string()],
+        "interval": [r.interval.0.to_string(), r.interval.1.to_string()],
     })
 }
 
