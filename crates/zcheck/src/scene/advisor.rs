@@ -585,6 +585,9 @@ fn advise_one(
     let tick = scene.tick_hz;
     let modes = &modal.modes;
     let band = scene.max_hz;
+    // The full-step analysis (non-proportional damping) runs without the
+    // rigid modes.
+    let full_sys = modal.full.as_ref().unwrap_or(system);
     // Float estimates for every mode, then exact answers for the limiting
     // ones (within a factor 0.9 of the largest estimate, or runaways).
     let estimates: Vec<Option<u64>> =
@@ -635,14 +638,8 @@ fn advise_one(
     }
     if modal.damping == DampingKind::NonProportional {
         match a.spec.system_kernel() {
-            _ if modal.rigid > 0 => {
-                // A rigid mode is a Jordan block at 1 in the full step,
-                // whose rounded eigenvalues leave the unit circle by √ε.
-                stability_from =
-                    "modal estimate only: non-proportional damping with rigid modes".to_owned()
-            }
-            Some(k) if system.n() <= MAX_FULL_DOF => {
-                substeps_stable = full_stable(k, Sweep::Vector, system, tick, substeps_stable.unwrap_or(1));
+            Some(k) if full_sys.n() <= MAX_FULL_DOF => {
+                substeps_stable = full_stable(k, Sweep::Vector, full_sys, tick, substeps_stable.unwrap_or(1));
                 stability_from = "full-step matrix (non-proportional damping)".to_owned();
             }
             _ => {
@@ -686,9 +683,7 @@ fn advise_one(
     let dof = scene.dof() as f64;
     let full = match a.spec.system_kernel() {
         Some(k)
-            if modal.damping == DampingKind::NonProportional
-                && system.n() <= MAX_FULL_DOF
-                && modal.rigid == 0 =>
+            if modal.damping == DampingKind::NonProportional && full_sys.n() <= MAX_FULL_DOF =>
         {
             Some(k)
         }
@@ -698,20 +693,20 @@ fn advise_one(
         // The modes are coupled: judge the full step's eigenvalues against
         // the continuous system's e^{λT}.
         // The targets apply to the eigenvalues in the band.
-        let lambdas: Vec<C64> = continuous_eigenvalues(system)
+        let lambdas: Vec<C64> = continuous_eigenvalues(full_sys)
             .into_iter()
             .filter(|l| in_band(band, l.norm()))
             .collect();
         let duration = scene.duration_s;
         let meets = |n: u64| {
-            full_errors(kernel, system, &lambdas, tick, n, duration)
+            full_errors(kernel, full_sys, &lambdas, tick, n, duration)
                 .is_some_and(|e| e.phase_rad <= target.phase_tol && e.amplitude <= target.amp_tol)
         };
         substeps_accurate = substeps_stable.and_then(|ns| smallest_meeting(meets, ns));
         let predicted = substeps_accurate
-            .and_then(|n| full_errors(kernel, system, &lambdas, tick, n, duration));
+            .and_then(|n| full_errors(kernel, full_sys, &lambdas, tick, n, duration));
         let simulated = match (simulate, substeps_accurate) {
-            (true, Some(n)) => simulate_full(kernel, system, &lambdas, tick, n, duration, target),
+            (true, Some(n)) => simulate_full(kernel, full_sys, &lambdas, tick, n, duration, target),
             _ => None,
         };
         (predicted, simulated)

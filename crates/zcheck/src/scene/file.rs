@@ -368,10 +368,15 @@ impl SceneFile {
                 {
                     let len2: f64 = pa.iter().zip(pb).map(|(x, y)| (y - x) * (y - x)).sum();
                     if !(len2.sqrt() > 0.0 && len2.is_finite()) {
+                        let what = if len2.is_finite() {
+                            "are at the same position: the spring has no direction; expected distinct positions"
+                        } else {
+                            "are too far apart for f64: expected a distance below 1e150"
+                        };
                         return Err(err(
                             Some(s.between.span()),
                             format!(
-                                "masses \"{}\" and \"{}\" are at the same position: the spring has no direction; expected distinct positions",
+                                "masses \"{}\" and \"{}\" {what}",
                                 masses[a].name, masses[b].name
                             ),
                         ));

@@ -261,6 +261,10 @@ pub struct Modal {
     pub(crate) modes: Vec<Mode>,
     /// Rigid-body modes dropped (ω = 0).
     pub(crate) rigid: usize,
+    /// With non-proportional damping, the system the full-step analysis
+    /// runs on: the assembled one, or, when there are rigid modes, its
+    /// restriction to the non-rigid modes (see [`reduce_system_with`]).
+    pub(crate) full: Option<System>,
     /// The damping's structure.
     pub(crate) damping: DampingKind,
 }
@@ -298,7 +302,7 @@ pub fn reduce_with(scene: &SceneFile, shapes: Shapes) -> Result<Modal, Error> {
             } else {
                 DampingKind::Proportional
             };
-            Ok(Modal { system: None, modes, rigid: 0, damping })
+            Ok(Modal { system: None, modes, rigid: 0, full: None, damping })
         }
         Body::Springs { masses, springs, dim } => {
             reduce_system_with(System::of_scene(masses, springs, *dim), shapes)
@@ -321,7 +325,8 @@ pub(crate) fn reduce_system_with(system: System, shapes: Shapes) -> Result<Modal
             dense[(i, j)] = x;
         }
     }
-    let vectors = shapes == Shapes::Compute || damping == DampingKind::Proportional;
+    let vectors = shapes == Shapes::Compute
+        || matches!(damping, DampingKind::Proportional | DampingKind::NonProportional);
     let fail = |e: faer::linalg::evd::EvdError| {
         Error::numeric(format!("the eigenproblem K phi = w^2 M phi did not converge: {e:?}"))
     };
@@ -335,6 +340,7 @@ pub(crate) fn reduce_system_with(system: System, shapes: Shapes) -> Result<Modal
     let lambda_max = s.iter().copied().fold(0.0f64, f64::max);
     let mut modes = Vec::with_capacity(n);
     let mut rigid = 0;
+    let mut kept = Vec::with_capacity(n);
     let mut col = vec![0.0; n];
     for i in 0..n {
         let lambda = s[i];
@@ -342,6 +348,7 @@ pub(crate) fn reduce_system_with(system: System, shapes: Shapes) -> Result<Modal
             rigid += 1;
             continue;
         }
+        kept.push(i);
         let omega = lambda.sqrt();
         if let Some(u) = &u {
             for (r, c) in col.iter_mut().enumerate() {
@@ -356,26 +363,55 @@ pub(crate) fn reduce_system_with(system: System, shapes: Shapes) -> Result<Modal
         let shape = u.is_some().then(|| col.iter().zip(&inv_sqrt).map(|(x, d)| x * d).collect());
         modes.push(Mode { omega, ratio, shape });
     }
+    let mut full_system = None;
     if damping == DampingKind::NonProportional {
         // Coupled by the damping: the modes are the continuous system's
         // complex eigenvalues λ = −ζω ± jω√(1−ζ²), ω = |λ|, ζ = −Re λ/|λ|
         // (real λ, overdamped, count as ζ = 1).
-        let lambdas = continuous_eigenvalues(&system);
-        let top = lambdas.iter().map(|l| l.norm()).fold(0.0, f64::max);
-        // Rigid modes (a double eigenvalue 0, perturbed by rounding to
-        // about √ε relative) are left out, as above.
-        let floor = if rigid > 0 { 1e-5 * top } else { 0.0 };
+        //
+        // A rigid mode would be a double eigenvalue 0 here, and a Jordan
+        // block at 1 in the full step, whose rounded eigenvalues leave the
+        // unit circle by about √ε. Every damper lies along a spring, so
+        // null(K) ⊆ null(C) and the rigid modes decouple exactly: the
+        // analysis runs on the other modes' coordinates q = U_fᵀ M^{1/2} y,
+        // with M = I, K = diag(ω²) and C = U_fᵀ C̃ U_f.
+        let full = match &u {
+            Some(u) if rigid > 0 => {
+                let cols: Vec<Vec<f64>> =
+                    kept.iter().map(|&i| (0..n).map(|r| u[(r, i)]).collect()).collect();
+                let ct_cols: Vec<Vec<f64>> = cols
+                    .iter()
+                    .map(|c| {
+                        (0..n).map(|r| ct.row(r).iter().map(|&(j, x)| x * c[j]).sum()).collect()
+                    })
+                    .collect();
+                let (mut kr, mut cr) = (Sparse::default(), Sparse::default());
+                for (a, &i) in kept.iter().enumerate() {
+                    kr.push_row(vec![(a, s[i])]);
+                    cr.push_row(
+                        (0..kept.len())
+                            .map(|b| (b, cols[a].iter().zip(&ct_cols[b]).map(|(x, y)| x * y).sum()))
+                            .collect(),
+                    );
+                }
+                System { mass: vec![1.0; kept.len()], k: kr, c: cr }
+            }
+            _ => system.clone(),
+        };
+        let lambdas = continuous_eigenvalues(&full);
         modes = lambdas
             .iter()
-            .filter(|l| l.norm() > floor)
+            .filter(|l| l.norm() > 0.0)
             .map(|l| Mode {
                 omega: l.norm(),
                 ratio: if l.im > 0.0 { -l.re / l.norm() } else { 1.0 },
                 shape: None,
             })
             .collect();
+        full_system = Some(full);
     }
-    Ok(Modal { system: Some(system), modes, rigid, damping })
+    let full = full_system.take();
+    Ok(Modal { system: Some(system), modes, rigid, full, damping })
 }
 
 /// Classifies the damping: zero, Rayleigh (C̃ = αI + βK̃, fitted on the
