@@ -312,7 +312,7 @@ pub(crate) fn scene_advice(
 /// The scene advice as text: the modes that matter, a table, a sentence.
 pub(crate) fn scene_text(name: &str, a: &advisor::SceneAdvice) -> String {
     let mut out = format!(
-        "scene {name}: {} degrees of freedom, {} modes ({} rigid left out), damping {}\n",
+        "scene {name}: {} degrees of freedom, {} modes ({} zero-frequency (rigid) left out: they need no substeps), damping {}\n",
         a.dof,
         a.modes.len(),
         a.rigid_modes,
@@ -326,8 +326,15 @@ pub(crate) fn scene_text(name: &str, a: &advisor::SceneAdvice) -> String {
         }
     );
     out += &format!(
-        "tick {} Hz, {} s; target: phase <= {} rad and amplitude <= {} for every mode\n",
-        a.tick_hz, a.duration_s, a.phase_rad, a.amplitude
+        "tick {} Hz, {} s; target: phase <= {} rad and amplitude <= {} for {}\n",
+        a.tick_hz,
+        a.duration_s,
+        a.phase_rad,
+        a.amplitude,
+        match a.max_hz {
+            Some(f) => format!("the modes at or below {f} Hz (every mode stable)"),
+            None => "every mode".to_owned(),
+        }
     );
     let show = |i: usize| format!("{:.3} Hz (ratio {:.4})", a.modes[i].hz, a.modes[i].ratio);
     let stab: Vec<String> =

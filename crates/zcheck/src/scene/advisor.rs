@@ -26,6 +26,12 @@
 //!   are judged for stability only.
 //! - the cost per tick: measured ns per step × substeps × degrees of freedom.
 //!
+//! With `[accuracy] max_hz = F` the targets (and the check by simulation)
+//! apply only to the modes at or below F Hz; every mode is still judged
+//! for stability. Zero-frequency (rigid) modes are left out of both: Φ = 0
+//! needs no substeps, and a scene with no other mode is stable and accurate
+//! at one substep.
+//!
 //! With non-proportional damping, `substeps_stable` of a built-in comes
 //! from the assembled full-step matrix (`vector`), not from the modes.
 //!
@@ -174,9 +180,12 @@ pub struct SceneAdvice {
     pub(crate) phase_rad: f64,
     /// Amplitude target.
     pub(crate) amplitude: f64,
+    /// The targets apply to modes at or below this frequency, Hz (`None`:
+    /// every mode).
+    pub(crate) max_hz: Option<f64>,
     /// Degrees of freedom.
     pub(crate) dof: usize,
-    /// Rigid-body modes left out.
+    /// Zero-frequency (rigid-body) modes left out: they need no substeps.
     pub(crate) rigid_modes: usize,
     /// The damping's structure.
     pub(crate) damping: DampingKind,
@@ -553,6 +562,7 @@ pub fn advise(
         duration_s: scene.duration_s,
         phase_rad: scene.phase_rad,
         amplitude: scene.amplitude,
+        max_hz: scene.max_hz,
         dof,
         rigid_modes: modal.rigid,
         damping: modal.damping,
@@ -574,6 +584,10 @@ fn advise_one(
 ) -> Result<CandidateAdvice, Error> {
     let tick = scene.tick_hz;
     let modes = &modal.modes;
+    let band = scene.max_hz;
+    // The full-step analysis (non-proportional damping) runs without the
+    // rigid modes.
+    let full_sys = modal.full.as_ref().unwrap_or(system);
     // Float estimates for every mode, then exact answers for the limiting
     // ones (within a factor 0.9 of the largest estimate, or runaways).
     let estimates: Vec<Option<u64>> =
@@ -605,7 +619,8 @@ fn advise_one(
         mode_stable[i] = exact;
     }
     let mut stability_from = "exact (Phi, D) region per mode".to_owned();
-    let mut substeps_stable = if never || modes.is_empty() {
+    // No mode at all (every one rigid): one substep, max over nothing.
+    let mut substeps_stable = if never {
         None
     } else {
         let mut n = mode_stable.iter().map(|s| s.unwrap_or(1)).max().unwrap_or(1);
@@ -623,8 +638,8 @@ fn advise_one(
     }
     if modal.damping == DampingKind::NonProportional {
         match a.spec.system_kernel() {
-            Some(k) if system.n() <= MAX_FULL_DOF => {
-                substeps_stable = full_stable(k, Sweep::Vector, system, tick, substeps_stable.unwrap_or(1));
+            Some(k) if full_sys.n() <= MAX_FULL_DOF => {
+                substeps_stable = full_stable(k, Sweep::Vector, full_sys, tick, substeps_stable.unwrap_or(1));
                 stability_from = "full-step matrix (non-proportional damping)".to_owned();
             }
             _ => {
@@ -644,12 +659,19 @@ fn advise_one(
     let mut substeps_accurate = None;
     if let (Some(ns), true) = (substeps_stable, a.second.is_some()) {
         for (i, m) in modes.iter().enumerate() {
-            mode_accurate[i] = smallest_meeting(|n| a.meets(m, tick, n, target), ns);
+            if in_band(band, m.omega) {
+                mode_accurate[i] = smallest_meeting(|n| a.meets(m, tick, n, target), ns);
+            }
         }
-        if mode_accurate.iter().all(Option::is_some) {
+        if modes.iter().zip(&mode_accurate).all(|(m, n)| n.is_some() || !in_band(band, m.omega)) {
             let mut n = mode_accurate.iter().flatten().copied().max().unwrap_or(ns);
             let mut guard = 0;
-            while !modes.iter().all(|m| a.meets(m, tick, n, target)) && guard < 64 {
+            while !modes
+                .iter()
+                .filter(|m| in_band(band, m.omega))
+                .all(|m| a.meets(m, tick, n, target))
+                && guard < 64
+            {
                 n += 1;
                 guard += 1;
             }
@@ -660,7 +682,9 @@ fn advise_one(
     let ns = ns_per_step(&a.spec, d_timing);
     let dof = scene.dof() as f64;
     let full = match a.spec.system_kernel() {
-        Some(k) if modal.damping == DampingKind::NonProportional && system.n() <= MAX_FULL_DOF => {
+        Some(k)
+            if modal.damping == DampingKind::NonProportional && full_sys.n() <= MAX_FULL_DOF =>
+        {
             Some(k)
         }
         _ => None,
@@ -668,23 +692,27 @@ fn advise_one(
     let (predicted, simulated) = if let Some(kernel) = full {
         // The modes are coupled: judge the full step's eigenvalues against
         // the continuous system's e^{λT}.
-        let lambdas = continuous_eigenvalues(system);
+        // The targets apply to the eigenvalues in the band.
+        let lambdas: Vec<C64> = continuous_eigenvalues(full_sys)
+            .into_iter()
+            .filter(|l| in_band(band, l.norm()))
+            .collect();
         let duration = scene.duration_s;
         let meets = |n: u64| {
-            full_errors(kernel, system, &lambdas, tick, n, duration)
+            full_errors(kernel, full_sys, &lambdas, tick, n, duration)
                 .is_some_and(|e| e.phase_rad <= target.phase_tol && e.amplitude <= target.amp_tol)
         };
         substeps_accurate = substeps_stable.and_then(|ns| smallest_meeting(meets, ns));
         let predicted = substeps_accurate
-            .and_then(|n| full_errors(kernel, system, &lambdas, tick, n, duration));
+            .and_then(|n| full_errors(kernel, full_sys, &lambdas, tick, n, duration));
         let simulated = match (simulate, substeps_accurate) {
-            (true, Some(n)) => simulate_full(kernel, system, &lambdas, tick, n, duration, target),
+            (true, Some(n)) => simulate_full(kernel, full_sys, &lambdas, tick, n, duration, target),
             _ => None,
         };
         (predicted, simulated)
     } else {
         let predicted =
-            substeps_accurate.map(|n| predicted_errors(a, modes, tick, n, target, None));
+            substeps_accurate.map(|n| predicted_errors(a, modes, tick, n, target, band, None));
         let simulated = match (simulate, substeps_accurate) {
             (true, Some(n)) => simulate_check(a, scene, modal, system, shapes, n, target),
             _ => None,
@@ -732,18 +760,26 @@ fn smallest_meeting(ok: impl Fn(u64) -> bool, from: u64) -> Option<u64> {
     Some(hi)
 }
 
-/// The largest predicted drifts over `modes` (or the listed ones).
+/// Whether a mode of angular frequency `omega` is held to the accuracy
+/// targets: at or below `max_hz` (every mode when `None`).
+fn in_band(max_hz: Option<f64>, omega: f64) -> bool {
+    max_hz.is_none_or(|f| omega / (2.0 * std::f64::consts::PI) <= f)
+}
+
+/// The largest predicted drifts over the `modes` in the band (or the
+/// listed ones).
 fn predicted_errors(
     a: &Analysed,
     modes: &[Mode],
     tick: f64,
     n: u64,
     target: &Target,
+    band: Option<f64>,
     only: Option<&[usize]>,
 ) -> Errors {
     let mut e = Errors { phase_rad: 0.0, amplitude: 0.0 };
     for (i, m) in modes.iter().enumerate() {
-        if only.is_some_and(|o| !o.contains(&i)) || m.ratio >= 1.0 {
+        if only.is_some_and(|o| !o.contains(&i)) || m.ratio >= 1.0 || !in_band(band, m.omega) {
             continue;
         }
         if let Some(acc) = a.accuracy(m.omega / (tick * n as f64), m.ratio) {
@@ -755,14 +791,23 @@ fn predicted_errors(
     e
 }
 
-/// The modes the check projects on: all when few, else the 12 whose
-/// predicted drifts are largest and the 4 lowest.
-fn checked_modes(a: &Analysed, modes: &[Mode], tick: f64, n: u64, target: &Target) -> Vec<usize> {
-    let osc: Vec<usize> = (0..modes.len()).filter(|&i| modes[i].ratio < 1.0).collect();
+/// The modes the check projects on (oscillating, in the band): all when
+/// few, else the 12 whose predicted drifts are largest and the 4 lowest.
+fn checked_modes(
+    a: &Analysed,
+    modes: &[Mode],
+    tick: f64,
+    n: u64,
+    target: &Target,
+    band: Option<f64>,
+) -> Vec<usize> {
+    let osc: Vec<usize> = (0..modes.len())
+        .filter(|&i| modes[i].ratio < 1.0 && in_band(band, modes[i].omega))
+        .collect();
     if osc.len() <= 16 {
         return osc;
     }
-    let err = |i: usize| predicted_errors(a, modes, tick, n, target, Some(&[i]));
+    let err = |i: usize| predicted_errors(a, modes, tick, n, target, band, Some(&[i]));
     let mut by_phase = osc.clone();
     by_phase.sort_by(|&x, &y| err(y).phase_rad.total_cmp(&err(x).phase_rad));
     let mut by_amp = osc.clone();
@@ -796,7 +841,7 @@ fn simulate_check(
 ) -> Option<Simulated> {
     let modes = &modal.modes;
     let tick = scene.tick_hz;
-    let checked = checked_modes(a, modes, tick, n, target);
+    let checked = checked_modes(a, modes, tick, n, target, scene.max_hz);
     if checked.is_empty() {
         return None;
     }
@@ -871,7 +916,7 @@ fn simulate_check(
     for ((s, &i), &m_stride) in seqs.iter().zip(&checked).zip(&stride) {
         let m = &modes[i];
         let phi = m.omega * t;
-        let pred = predicted_errors(a, modes, tick, n, target, Some(&[i]));
+        let pred = predicted_errors(a, modes, tick, n, target, scene.max_hz, Some(&[i]));
         // Fit where the mode is still well above rounding noise.
         let psi_eff = phi * m_stride as f64;
         let window = if m.ratio > 0.0 {

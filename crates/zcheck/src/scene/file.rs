@@ -18,8 +18,15 @@
 //!
 //! or `[[mode]]` entries with `hz` and `ratio`. A spring's `ratio` is
 //! ζ = c / (2√(k·μ)) with μ the reduced mass of its two ends (the mass
-//! itself for a spring to ground). Every mistake is reported with the line
-//! and column the TOML parser gives for the offending value.
+//! itself for a spring to ground or to a fixed mass). Every mistake is
+//! reported with the line and column the TOML parser gives for the
+//! offending value.
+//!
+//! Particles: when every mass carries `pos = [x, y]` or `pos = [x, y, z]`,
+//! each has 2 or 3 degrees of freedom and a spring acts along its rest
+//! direction (see `modal`); `fixed = true` pins a mass (in any scene).
+//! `[accuracy] max_hz = F` applies the phase and amplitude targets only
+//! to modes at or below F Hz; every mode must still be stable.
 
 use std::collections::HashMap;
 use std::ops::Range;
@@ -44,6 +51,9 @@ pub struct SceneFile {
     pub(crate) phase_rad: f64,
     /// Largest relative amplitude error of any mode over the duration.
     pub(crate) amplitude: f64,
+    /// The accuracy targets apply to modes at or below this frequency, Hz
+    /// (`None`: to every mode).
+    pub(crate) max_hz: Option<f64>,
     /// What moves.
     pub(crate) body: Body,
 }
@@ -57,6 +67,8 @@ pub(crate) enum Body {
         masses: Vec<Mass>,
         /// The springs.
         springs: Vec<Spring>,
+        /// Degrees of freedom per mass: 1 (scalar), or 2 or 3 (`pos`).
+        dim: usize,
     },
     /// Modes given directly.
     Modes(Vec<ModeSpec>),
@@ -69,6 +81,11 @@ pub(crate) struct Mass {
     pub name: String,
     /// Its mass, kg.
     pub kg: f64,
+    /// Its rest position (every mass has one, of the same length, or none
+    /// has).
+    pub pos: Option<Vec<f64>>,
+    /// Whether it is pinned (its degrees of freedom removed).
+    pub fixed: bool,
 }
 
 /// A linear spring with an optional viscous damper in parallel.
@@ -112,6 +129,7 @@ struct Raw {
 struct RawAccuracy {
     phase_rad: Option<Spanned<f64>>,
     amplitude: Option<Spanned<f64>>,
+    max_hz: Option<Spanned<f64>>,
 }
 
 #[derive(Deserialize)]
@@ -119,6 +137,8 @@ struct RawAccuracy {
 struct RawMass {
     name: Spanned<String>,
     kg: Spanned<f64>,
+    pos: Option<Spanned<Vec<f64>>>,
+    fixed: Option<Spanned<bool>>,
 }
 
 #[derive(Deserialize)]
@@ -192,7 +212,11 @@ impl SceneFile {
             None => DEFAULT_DURATION_S,
         };
         let (mut phase_rad, mut amplitude) = (DEFAULT_PHASE_RAD, DEFAULT_AMPLITUDE);
+        let mut max_hz = None;
         if let Some(acc) = &raw.accuracy {
+            if let Some(f) = &acc.max_hz {
+                max_hz = Some(positive(f, "max_hz")?);
+            }
             if let Some(p) = &acc.phase_rad {
                 phase_rad = positive(p, "phase_rad")?;
             }
@@ -237,9 +261,57 @@ impl SceneFile {
                     ));
                 }
                 let kg = positive(&m.kg, "kg")?;
+                let pos = match &m.pos {
+                    Some(p) => {
+                        let v = p.get_ref();
+                        if !(2..=3).contains(&v.len()) || v.iter().any(|x| !x.is_finite()) {
+                            return Err(err(
+                                Some(p.span()),
+                                format!(
+                                    "pos = {v:?}: expected [x, y] or [x, y, z] of finite numbers"
+                                ),
+                            ));
+                        }
+                        Some(v.clone())
+                    }
+                    None => None,
+                };
+                let fixed = m.fixed.as_ref().is_some_and(|f| *f.get_ref());
                 index.insert(name.clone(), masses.len());
-                masses.push(Mass { name, kg });
+                masses.push(Mass { name, kg, pos, fixed });
             }
+            // Either every mass has a position, all of one length, or none.
+            let dim = match raw.mass.iter().zip(&masses).find(|(_, m)| m.pos.is_some()) {
+                None => 1,
+                Some((_, fm)) => {
+                    let d = fm.pos.as_ref().map_or(1, Vec::len);
+                    for (rm, m) in raw.mass.iter().zip(&masses) {
+                        match (&rm.pos, &m.pos) {
+                            (None, _) | (_, None) => {
+                                return Err(err(
+                                    Some(rm.name.span()),
+                                    format!(
+                                        "mass \"{}\" has no pos but mass \"{}\" has: expected pos on every mass or on none",
+                                        m.name, fm.name
+                                    ),
+                                ))
+                            }
+                            (Some(p), Some(v)) if v.len() != d => {
+                                return Err(err(
+                                    Some(p.span()),
+                                    format!(
+                                        "pos has {} coordinates but mass \"{}\" has {d}: expected the same in every mass",
+                                        v.len(),
+                                        fm.name
+                                    ),
+                                ))
+                            }
+                            _ => {}
+                        }
+                    }
+                    d
+                }
+            };
             let mut springs = Vec::new();
             for s in &raw.spring {
                 let s_span = s.span();
@@ -291,6 +363,25 @@ impl SceneFile {
                         "a spring from a mass to itself: expected two different ends".into(),
                     ));
                 }
+                if let (Some(b), Some(pa), Some(pb)) =
+                    (b, &masses[a].pos, b.and_then(|b| masses[b].pos.as_ref()))
+                {
+                    let len2: f64 = pa.iter().zip(pb).map(|(x, y)| (y - x) * (y - x)).sum();
+                    if !(len2.sqrt() > 0.0 && len2.is_finite()) {
+                        let what = if len2.is_finite() {
+                            "are at the same position: the spring has no direction; expected distinct positions"
+                        } else {
+                            "are too far apart for f64: expected a distance below 1e150"
+                        };
+                        return Err(err(
+                            Some(s.between.span()),
+                            format!(
+                                "masses \"{}\" and \"{}\" {what}",
+                                masses[a].name, masses[b].name
+                            ),
+                        ));
+                    }
+                }
                 let stiffness = positive(&s.stiffness, "stiffness")?;
                 let damping = match (&s.damping, &s.ratio) {
                     (Some(_), Some(r)) => {
@@ -304,6 +395,8 @@ impl SceneFile {
                         let zeta = non_negative(r, "ratio")?;
                         let mu = match b {
                             None => masses[a].kg,
+                            Some(b) if masses[b].fixed => masses[a].kg,
+                            Some(b) if masses[a].fixed => masses[b].kg,
                             Some(b) => masses[a].kg * masses[b].kg / (masses[a].kg + masses[b].kg),
                         };
                         2.0 * zeta * (stiffness * mu).sqrt()
@@ -326,9 +419,16 @@ impl SceneFile {
                     "empty scene: the masses have no [[spring]]: expected at least one".into(),
                 ));
             }
-            Body::Springs { masses, springs }
+            if masses.iter().all(|m| m.fixed) {
+                return Err(err(
+                    Some(raw.mass[0].name.span()),
+                    "every mass is fixed: nothing moves; expected at least one mass without `fixed = true`"
+                        .into(),
+                ));
+            }
+            Body::Springs { masses, springs, dim }
         };
-        Ok(SceneFile { tick_hz, duration_s, phase_rad, amplitude, body })
+        Ok(SceneFile { tick_hz, duration_s, phase_rad, amplitude, max_hz, body })
     }
 
     /// A one-mode scene: a spring of `hz` with damping ratio `ratio`.
@@ -345,14 +445,16 @@ impl SceneFile {
             duration_s,
             phase_rad,
             amplitude,
+            max_hz: None,
             body: Body::Modes(vec![ModeSpec { hz, ratio }]),
         }
     }
 
-    /// Degrees of freedom: masses, or modes.
+    /// Degrees of freedom: per free mass, 1 (scalar) or its `pos`
+    /// length; or modes.
     pub fn dof(&self) -> usize {
         match &self.body {
-            Body::Springs { masses, .. } => masses.len(),
+            Body::Springs { masses, dim, .. } => dim * masses.iter().filter(|m| !m.fixed).count(),
             Body::Modes(m) => m.len(),
         }
     }
@@ -391,6 +493,53 @@ mod tests {
         bad("tick_hz = 60\n", 1, 1, "empty scene");
         bad("tick_hz = 60\n[[mode]]\nhz = 1.0\nfreq = 2\n", 4, 1, "unknown field");
         bad("tick_hz = \n", 1, 11, "");
+    }
+
+    /// The particle keys and `max_hz`: each mistake located at its value.
+    #[test]
+    fn bad_particles_are_located() {
+        let two = |pa: &str, pb: &str, extra: &str| {
+            format!(
+                "tick_hz = 60\n[[mass]]\nname = \"a\"\nkg = 1.0\n{pa}[[mass]]\nname = \"b\"\nkg = 1.0\n{pb}{extra}[[spring]]\nbetween = [\"a\", \"b\"]\nstiffness = 1.0\n"
+            )
+        };
+        // Mixed lengths: at the second pos.
+        bad(&two("pos = [0, 0]\n", "pos = [1, 0, 0]\n", ""), 9, 7, "pos has 3 coordinates");
+        // pos on only some masses: at the name of one without.
+        bad(&two("pos = [0, 0]\n", "", ""), 7, 8, "mass \"b\" has no pos");
+        bad(&two("", "pos = [0, 0]\n", ""), 3, 8, "mass \"a\" has no pos");
+        // One coordinate, or four, or not finite.
+        bad(&two("pos = [0]\n", "pos = [1]\n", ""), 5, 7, "expected [x, y] or [x, y, z]");
+        bad(&two("pos = [0, 0, 0, 0]\n", "pos = [1, 0, 0, 0]\n", ""), 5, 7, "expected [x, y]");
+        bad(&two("pos = [0, nan]\n", "pos = [1, 0]\n", ""), 5, 7, "finite numbers");
+        // Two masses at one position: the spring has no direction.
+        bad(&two("pos = [0.5, 1]\n", "pos = [0.5, 1]\n", ""), 11, 11, "same position");
+        // fixed must be a boolean.
+        bad(&two("pos = [0, 0]\nfixed = 1\n", "pos = [1, 0]\n", ""), 6, 9, "boolean");
+        // Every mass fixed: nothing moves.
+        bad(&two("fixed = true\n", "fixed = true\n", ""), 3, 8, "every mass is fixed");
+        // max_hz > 0 and finite.
+        for (v, col) in [("0", 10), ("-3", 10), ("inf", 10), ("nan", 10)] {
+            let text = format!("tick_hz = 60\n[accuracy]\nmax_hz = {v}\n[[mode]]\nhz = 1.0\n");
+            bad(&text, 3, col, "max_hz");
+        }
+    }
+
+    /// Positions give 2 or 3 degrees of freedom per free mass; `fixed`
+    /// removes them; a ratio to a fixed mass uses the free mass.
+    #[test]
+    fn particles_are_read() {
+        let s = SceneFile::parse(
+            "s.toml",
+            "tick_hz = 60\n[accuracy]\nmax_hz = 12.5\n[[mass]]\nname = \"a\"\nkg = 4.0\npos = [0, 0, 0]\nfixed = true\n[[mass]]\nname = \"b\"\nkg = 4.0\npos = [0, 0, 1]\n[[spring]]\nbetween = [\"a\", \"b\"]\nstiffness = 100.0\nratio = 0.5\n",
+        )
+        .unwrap();
+        assert_eq!(s.max_hz, Some(12.5));
+        assert_eq!(s.dof(), 3);
+        let Body::Springs { springs, dim, masses } = s.body else { panic!("springs") };
+        assert_eq!(dim, 3);
+        assert!(masses[0].fixed && !masses[1].fixed);
+        assert_eq!(springs[0].damping, 20.0);
     }
 
     /// A spring to ground given by its ratio gets c = 2ζ√(k m).

@@ -15,13 +15,25 @@
 //! full-step matrix instead (see `vector`).
 //!
 //! Modes with ω = 0 (a free body, or a chain not tied to the ground) move
-//! rigidly: Φ = 0 for every step, so they limit nothing and are dropped.
+//! rigidly: Φ = 0 for every step, so they limit nothing and are dropped
+//! (counted in [`Modal::rigid`]).
+//!
+//! Particles (every mass with `pos`, 2 or 3 degrees of freedom each): a
+//! spring between masses i and j is linearised about the rest positions
+//! with no pre-tension, so only the stretch along the rest direction d (the
+//! unit vector from i to j) stores energy, ½k(d·(u_j − u_i))²: its
+//! stiffness block is k·d·dᵀ (and −k·d·dᵀ off the diagonal), a damper's
+//! c·d·dᵀ. A spring to ground holds every axis, k·I. A fixed mass has no
+//! degrees of freedom; a spring to it is a spring to a point, k·d·dᵀ on
+//! the other end only. Motion across every spring through a mass (the
+//! out-of-plane motion of a flat cloth, the sideways motion of a straight
+//! rope) has no stiffness: a zero mode.
 
 use faer::Side;
 use nalgebra::DMatrix;
 use num_complex::Complex64 as C64;
 
-use super::file::{Body, SceneFile};
+use super::file::{Body, Mass, SceneFile, Spring};
 use crate::error::Error;
 
 /// A symmetric sparse matrix: for each row, its `(column, value)` entries.
@@ -42,14 +54,24 @@ impl Sparse {
         }
     }
 
-    /// Adds a two-ended element (a spring or damper of coefficient `x`
-    /// between `a` and `b`, or from `a` to ground).
-    fn add_link(&mut self, a: usize, b: Option<usize>, x: f64) {
-        self.add(a, a, x);
-        if let Some(b) = b {
-            self.add(b, b, x);
-            self.add(a, b, -x);
-            self.add(b, a, -x);
+    /// Adds a two-ended element of coefficient `x` and `dim`×`dim` block
+    /// B (row-major) between the degrees of freedom starting at `a` and
+    /// `b` (`None`: the end is ground or fixed): x·B on each free end's
+    /// diagonal block, −x·B between them. Exact zeros are not stored.
+    fn add_block(&mut self, a: Option<usize>, b: Option<usize>, dim: usize, block: &[f64], x: f64) {
+        let mut put = |i: usize, j: usize, v: f64| {
+            if v != 0.0 {
+                self.add(i, j, v);
+            }
+        };
+        for (r, c, sign) in [(a, a, 1.0), (b, b, 1.0), (a, b, -1.0), (b, a, -1.0)] {
+            if let (Some(r), Some(c)) = (r, c) {
+                for p in 0..dim {
+                    for q in 0..dim {
+                        put(r + p, c + q, sign * x * block[p * dim + q]);
+                    }
+                }
+            }
         }
     }
 
@@ -133,23 +155,60 @@ pub(crate) struct System {
 }
 
 impl System {
-    /// Assembles M, K, C from the masses and springs of a scene.
+    /// Assembles M, K, C from scalar masses (one degree of freedom each)
+    /// and the springs of a scene.
+    #[cfg(test)]
     pub(crate) fn assemble(masses: &[f64], springs: &[super::file::Spring]) -> System {
-        let n = masses.len();
-        let (mut k, mut c) = (Sparse::new(n), Sparse::new(n));
-        for s in springs {
-            k.add_link(s.a, s.b, s.stiffness);
-            if s.damping > 0.0 {
-                c.add_link(s.a, s.b, s.damping);
+        let masses: Vec<Mass> = masses
+            .iter()
+            .map(|&kg| Mass { name: String::new(), kg, pos: None, fixed: false })
+            .collect();
+        System::of_scene(&masses, springs, 1)
+    }
+
+    /// Assembles M, K, C of a scene with `dim` degrees of freedom per free
+    /// mass (1: scalar; 2 or 3: every mass has `pos`), in mass order,
+    /// fixed masses left out (see the module's note on particles).
+    pub(crate) fn of_scene(masses: &[Mass], springs: &[Spring], dim: usize) -> System {
+        let mut base = vec![None; masses.len()];
+        let mut mass = Vec::new();
+        for (i, m) in masses.iter().enumerate() {
+            if !m.fixed {
+                base[i] = Some(mass.len());
+                mass.extend(std::iter::repeat_n(m.kg, dim));
             }
         }
-        System { mass: masses.to_vec(), k, c }
+        let n = mass.len();
+        let (mut k, mut c) = (Sparse::new(n), Sparse::new(n));
+        for s in springs {
+            let block = link_block(masses, s, dim);
+            let (a, b) = (base[s.a], s.b.and_then(|b| base[b]));
+            k.add_block(a, b, dim, &block, s.stiffness);
+            if s.damping > 0.0 {
+                c.add_block(a, b, dim, &block, s.damping);
+            }
+        }
+        System { mass, k, c }
     }
 
     /// Degrees of freedom.
     pub(crate) fn n(&self) -> usize {
         self.mass.len()
     }
+}
+
+/// A spring's `dim`×`dim` block (row-major): d·dᵀ with d the unit rest
+/// direction between two masses with positions, the identity for a
+/// spring to ground or between scalar masses.
+pub(crate) fn link_block(masses: &[Mass], s: &Spring, dim: usize) -> Vec<f64> {
+    let identity = || (0..dim * dim).map(|i| if i % (dim + 1) == 0 { 1.0 } else { 0.0 }).collect();
+    let Some(b) = s.b else { return identity() };
+    let (Some(pa), Some(pb)) = (&masses[s.a].pos, &masses[b].pos) else { return identity() };
+    let diff: Vec<f64> = pa.iter().zip(pb).map(|(x, y)| y - x).collect();
+    let len = diff.iter().map(|x| x * x).sum::<f64>().sqrt();
+    // The file reader refuses coincident ends, so len > 0.
+    let d: Vec<f64> = diff.iter().map(|x| x / len).collect();
+    (0..dim * dim).map(|i| d[i / dim] * d[i % dim]).collect()
 }
 
 /// How the scene's damping relates to its modes.
@@ -202,6 +261,10 @@ pub struct Modal {
     pub(crate) modes: Vec<Mode>,
     /// Rigid-body modes dropped (ω = 0).
     pub(crate) rigid: usize,
+    /// With non-proportional damping, the system the full-step analysis
+    /// runs on: the assembled one, or, when there are rigid modes, its
+    /// restriction to the non-rigid modes (see [`reduce_system_with`]).
+    pub(crate) full: Option<System>,
     /// The damping's structure.
     pub(crate) damping: DampingKind,
 }
@@ -239,11 +302,10 @@ pub fn reduce_with(scene: &SceneFile, shapes: Shapes) -> Result<Modal, Error> {
             } else {
                 DampingKind::Proportional
             };
-            Ok(Modal { system: None, modes, rigid: 0, damping })
+            Ok(Modal { system: None, modes, rigid: 0, full: None, damping })
         }
-        Body::Springs { masses, springs } => {
-            let m: Vec<f64> = masses.iter().map(|m| m.kg).collect();
-            reduce_system_with(System::assemble(&m, springs), shapes)
+        Body::Springs { masses, springs, dim } => {
+            reduce_system_with(System::of_scene(masses, springs, *dim), shapes)
         }
     }
 }
@@ -263,7 +325,8 @@ pub(crate) fn reduce_system_with(system: System, shapes: Shapes) -> Result<Modal
             dense[(i, j)] = x;
         }
     }
-    let vectors = shapes == Shapes::Compute || damping == DampingKind::Proportional;
+    let vectors = shapes == Shapes::Compute
+        || matches!(damping, DampingKind::Proportional | DampingKind::NonProportional);
     let fail = |e: faer::linalg::evd::EvdError| {
         Error::numeric(format!("the eigenproblem K phi = w^2 M phi did not converge: {e:?}"))
     };
@@ -277,6 +340,7 @@ pub(crate) fn reduce_system_with(system: System, shapes: Shapes) -> Result<Modal
     let lambda_max = s.iter().copied().fold(0.0f64, f64::max);
     let mut modes = Vec::with_capacity(n);
     let mut rigid = 0;
+    let mut kept = Vec::with_capacity(n);
     let mut col = vec![0.0; n];
     for i in 0..n {
         let lambda = s[i];
@@ -284,6 +348,7 @@ pub(crate) fn reduce_system_with(system: System, shapes: Shapes) -> Result<Modal
             rigid += 1;
             continue;
         }
+        kept.push(i);
         let omega = lambda.sqrt();
         if let Some(u) = &u {
             for (r, c) in col.iter_mut().enumerate() {
@@ -298,11 +363,42 @@ pub(crate) fn reduce_system_with(system: System, shapes: Shapes) -> Result<Modal
         let shape = u.is_some().then(|| col.iter().zip(&inv_sqrt).map(|(x, d)| x * d).collect());
         modes.push(Mode { omega, ratio, shape });
     }
+    let mut full_system = None;
     if damping == DampingKind::NonProportional {
         // Coupled by the damping: the modes are the continuous system's
         // complex eigenvalues λ = −ζω ± jω√(1−ζ²), ω = |λ|, ζ = −Re λ/|λ|
         // (real λ, overdamped, count as ζ = 1).
-        let lambdas = continuous_eigenvalues(&system);
+        //
+        // A rigid mode would be a double eigenvalue 0 here, and a Jordan
+        // block at 1 in the full step, whose rounded eigenvalues leave the
+        // unit circle by about √ε. Every damper lies along a spring, so
+        // null(K) ⊆ null(C) and the rigid modes decouple exactly: the
+        // analysis runs on the other modes' coordinates q = U_fᵀ M^{1/2} y,
+        // with M = I, K = diag(ω²) and C = U_fᵀ C̃ U_f.
+        let full = match &u {
+            Some(u) if rigid > 0 => {
+                let cols: Vec<Vec<f64>> =
+                    kept.iter().map(|&i| (0..n).map(|r| u[(r, i)]).collect()).collect();
+                let ct_cols: Vec<Vec<f64>> = cols
+                    .iter()
+                    .map(|c| {
+                        (0..n).map(|r| ct.row(r).iter().map(|&(j, x)| x * c[j]).sum()).collect()
+                    })
+                    .collect();
+                let (mut kr, mut cr) = (Sparse::default(), Sparse::default());
+                for (a, &i) in kept.iter().enumerate() {
+                    kr.push_row(vec![(a, s[i])]);
+                    cr.push_row(
+                        (0..kept.len())
+                            .map(|b| (b, cols[a].iter().zip(&ct_cols[b]).map(|(x, y)| x * y).sum()))
+                            .collect(),
+                    );
+                }
+                System { mass: vec![1.0; kept.len()], k: kr, c: cr }
+            }
+            _ => system.clone(),
+        };
+        let lambdas = continuous_eigenvalues(&full);
         modes = lambdas
             .iter()
             .filter(|l| l.norm() > 0.0)
@@ -312,8 +408,10 @@ pub(crate) fn reduce_system_with(system: System, shapes: Shapes) -> Result<Modal
                 shape: None,
             })
             .collect();
+        full_system = Some(full);
     }
-    Ok(Modal { system: Some(system), modes, rigid, damping })
+    let full = full_system.take();
+    Ok(Modal { system: Some(system), modes, rigid, full, damping })
 }
 
 /// Classifies the damping: zero, Rayleigh (C̃ = αI + βK̃, fitted on the
@@ -441,7 +539,7 @@ mod tests {
     #[test]
     fn damping_structure_is_detected() {
         let scene = SceneFile::parse("c.toml", &chain(4, "")).unwrap();
-        let Body::Springs { masses, mut springs } = scene.body else { panic!() };
+        let Body::Springs { masses, mut springs, .. } = scene.body else { panic!() };
         let m: Vec<f64> = masses.iter().map(|m| m.kg).collect();
         for s in &mut springs {
             s.damping = 0.01 * s.stiffness;
@@ -462,5 +560,221 @@ mod tests {
         springs[2].damping = 3.0;
         let r = reduce_system_with(System::assemble(&m, &springs), Shapes::Compute).unwrap();
         assert_eq!(r.damping, DampingKind::NonProportional);
+    }
+
+    /// A random particle scene: masses on a small integer grid (distinct
+    /// positions), some fixed, springs between random pairs and to ground.
+    fn particle_scene() -> impl proptest::strategy::Strategy<Value = (Vec<Mass>, Vec<Spring>, usize)>
+    {
+        use proptest::prelude::*;
+        (2usize..=3, 2usize..=6).prop_flat_map(|(dim, n)| {
+            let cells = proptest::sample::subsequence((0..64usize).collect::<Vec<_>>(), n);
+            let kg = proptest::collection::vec(0.1f64..5.0, n);
+            let fixed = proptest::collection::vec(proptest::bool::weighted(0.2), n);
+            let springs =
+                proptest::collection::vec((0..n, 0..=n, 1.0f64..1000.0, 0.0f64..3.0), 1..12);
+            (Just(dim), cells, kg, fixed, springs).prop_map(|(dim, cells, kg, fixed, springs)| {
+                let masses: Vec<Mass> = cells
+                    .iter()
+                    .zip(&kg)
+                    .zip(&fixed)
+                    .enumerate()
+                    .map(|(i, ((&c, &kg), &fixed))| Mass {
+                        name: format!("m{i}"),
+                        kg,
+                        // Cells of a 4×4×4 grid (the plane z = 0 in 2D
+                        // when c < 16, else folded into it by the modulus).
+                        pos: Some(
+                            [(c % 4) as f64, ((c / 4) % 4) as f64, (c / 16) as f64][..dim].to_vec(),
+                        ),
+                        fixed,
+                    })
+                    .collect();
+                let springs = springs
+                    .into_iter()
+                    .filter(|&(a, b, _, _)| a != b)
+                    .filter(|&(a, b, _, _)| b == masses.len() || masses[a].pos != masses[b].pos)
+                    .map(|(a, b, k, c)| Spring {
+                        a,
+                        b: (b < masses.len()).then_some(b),
+                        stiffness: k,
+                        damping: c,
+                    })
+                    .collect();
+                (masses, springs, dim)
+            })
+        })
+    }
+
+    /// The spring energy ½k(d·(u_b − u_a))² (½k|u_a|² to ground), with the
+    /// displacements of fixed masses zero; `u` lists the free masses'
+    /// degrees of freedom in mass order.
+    fn energy(masses: &[Mass], springs: &[Spring], dim: usize, u: &[f64]) -> f64 {
+        let mut at = Vec::new();
+        let mut next = 0;
+        for m in masses {
+            if m.fixed {
+                at.push(vec![0.0; dim]);
+            } else {
+                at.push(u[next..next + dim].to_vec());
+                next += dim;
+            }
+        }
+        springs
+            .iter()
+            .map(|s| match s.b {
+                None => 0.5 * s.stiffness * at[s.a].iter().map(|x| x * x).sum::<f64>(),
+                Some(b) => {
+                    let (pa, pb) =
+                        (masses[s.a].pos.as_ref().unwrap(), masses[b].pos.as_ref().unwrap());
+                    let d: Vec<f64> = pa.iter().zip(pb).map(|(x, y)| y - x).collect();
+                    let len = d.iter().map(|x| x * x).sum::<f64>().sqrt();
+                    let stretch: f64 = (0..dim).map(|p| d[p] / len * (at[b][p] - at[s.a][p])).sum();
+                    0.5 * s.stiffness * stretch * stretch
+                }
+            })
+            .sum()
+    }
+
+    fn dense(a: &Sparse) -> DMatrix<f64> {
+        let mut m = DMatrix::zeros(a.n(), a.n());
+        for i in 0..a.n() {
+            for &(j, x) in a.row(i) {
+                m[(i, j)] += x;
+            }
+        }
+        m
+    }
+
+    proptest::proptest! {
+        /// The assembled K is the Hessian of the spring energy (by the
+        /// four-point difference, exact for a quadratic up to rounding),
+        /// symmetric and positive semi-definite, and its zero modes number
+        /// n − rank(B), B the compatibility matrix (a row d per spring, the
+        /// identity per spring to ground), by SVD; the modal reduction
+        /// counts the same rigid modes. C likewise with the damping.
+        #[test]
+        fn stiffness_is_the_hessian_of_the_spring_energy(scene in particle_scene()) {
+            let (masses, springs, dim) = scene;
+            proptest::prop_assume!(masses.iter().any(|m| !m.fixed));
+            proptest::prop_assume!(!springs.is_empty());
+            let sys = System::of_scene(&masses, &springs, dim);
+            let n = sys.n();
+            proptest::prop_assert_eq!(n, dim * masses.iter().filter(|m| !m.fixed).count());
+            let (k, c) = (dense(&sys.k), dense(&sys.c));
+            let scale = springs.iter().map(|s| s.stiffness).fold(1.0, f64::max);
+            let unit = |i: usize, x: f64| (0..n).map(|j| if j == i { x } else { 0.0 }).collect::<Vec<_>>();
+            let e = |u: &[f64]| energy(&masses, &springs, dim, u);
+            let damp: Vec<Spring> = springs.iter().map(|s| Spring { stiffness: s.damping, ..s.clone() }).collect();
+            let ec = |u: &[f64]| energy(&masses, &damp, dim, u);
+            for i in 0..n {
+                for j in 0..n {
+                    let add = |a: &[f64], b: &[f64]| a.iter().zip(b).map(|(x, y)| x + y).collect::<Vec<_>>();
+                    let h = |f: &dyn Fn(&[f64]) -> f64| {
+                        (f(&add(&unit(i, 1.0), &unit(j, 1.0))) - f(&add(&unit(i, 1.0), &unit(j, -1.0)))
+                            - f(&add(&unit(i, -1.0), &unit(j, 1.0)))
+                            + f(&add(&unit(i, -1.0), &unit(j, -1.0))))
+                            / 4.0
+                    };
+                    proptest::prop_assert!((k[(i, j)] - h(&e)).abs() <= 1e-12 * scale * 64.0, "K[{},{}] = {} vs {}", i, j, k[(i, j)], h(&e));
+                    proptest::prop_assert!((c[(i, j)] - h(&ec)).abs() <= 1e-12 * 64.0 * 3.0, "C[{},{}]", i, j);
+                    proptest::prop_assert_eq!(k[(i, j)], k[(j, i)]);
+                }
+            }
+            let lambda = k.clone().symmetric_eigenvalues();
+            let lmax = lambda.max().max(0.0);
+            proptest::prop_assert!(lambda.min() >= -1e-12 * lmax.max(1.0), "not PSD: {}", lambda.min());
+            // B: √k·dᵀ rows on the free ends (√k·I to ground).
+            let mut base = vec![None; masses.len()];
+            let mut next = 0;
+            for (i, m) in masses.iter().enumerate() {
+                if !m.fixed { base[i] = Some(next); next += dim; }
+            }
+            let mut rows: Vec<Vec<f64>> = Vec::new();
+            for s in &springs {
+                let w = s.stiffness.sqrt();
+                match s.b {
+                    None => for p in 0..dim {
+                        let mut r = vec![0.0; n];
+                        if let Some(a) = base[s.a] { r[a + p] = w; }
+                        rows.push(r);
+                    },
+                    Some(b) => {
+                        let (pa, pb) = (masses[s.a].pos.as_ref().unwrap(), masses[b].pos.as_ref().unwrap());
+                        let d: Vec<f64> = pa.iter().zip(pb).map(|(x, y)| y - x).collect();
+                        let len = d.iter().map(|x| x * x).sum::<f64>().sqrt();
+                        let mut r = vec![0.0; n];
+                        for p in 0..dim {
+                            if let Some(a) = base[s.a] { r[a + p] -= w * d[p] / len; }
+                            if let Some(bb) = base[b] { r[bb + p] += w * d[p] / len; }
+                        }
+                        rows.push(r);
+                    }
+                }
+            }
+            let bm = DMatrix::from_fn(rows.len(), n, |i, j| rows[i][j]);
+            let sv = bm.singular_values();
+            let smax = sv.max();
+            let rank = sv.iter().filter(|&&s| s > 1e-5 * smax).count();
+            // K = BᵀB exactly.
+            let ktb = bm.transpose() * &bm;
+            proptest::prop_assert!((&ktb - &k).abs().max() <= 1e-12 * scale * 64.0);
+            let zeros = lambda.iter().filter(|&&l| l <= 1e-10 * lmax).count();
+            proptest::prop_assert_eq!(zeros, n - rank);
+            // Undamped, so that every mode is a real ω (the damped reduction
+            // may list an overdamped pair as two).
+            let modal = reduce_system_with(System { c: Sparse::new(n), ..sys }, Shapes::WhenNeeded).unwrap();
+            let expected_rigid = if lmax > 0.0 { n - rank } else { n };
+            proptest::prop_assert_eq!(modal.rigid, expected_rigid);
+            proptest::prop_assert_eq!(modal.rigid + modal.modes.len(), n);
+            for m in &modal.modes {
+                proptest::prop_assert!(m.omega.is_finite() && m.omega > 0.0 && m.ratio.is_finite());
+            }
+        }
+    }
+
+    /// Free frames: a triangle in 2D has 3 rigid modes (two translations,
+    /// one rotation), a tetrahedron in 3D 6, a braced square flat in 3D 7
+    /// (3 in its plane, one out of the plane per corner).
+    #[test]
+    fn free_frames_have_their_rigid_modes() {
+        let mass =
+            |p: &[f64]| Mass { name: String::new(), kg: 1.0, pos: Some(p.to_vec()), fixed: false };
+        let spring = |a: usize, b: usize| Spring { a, b: Some(b), stiffness: 10.0, damping: 0.0 };
+        let all = |n: usize| {
+            (0..n)
+                .flat_map(|a| (a + 1..n).map(move |b| (a, b)))
+                .map(|(a, b)| spring(a, b))
+                .collect::<Vec<_>>()
+        };
+        for (masses, dim, rigid) in [
+            (vec![mass(&[0.0, 0.0]), mass(&[1.0, 0.0]), mass(&[0.3, 0.8])], 2, 3),
+            (
+                vec![
+                    mass(&[0.0, 0.0, 0.0]),
+                    mass(&[1.0, 0.0, 0.0]),
+                    mass(&[0.0, 1.0, 0.0]),
+                    mass(&[0.2, 0.3, 1.0]),
+                ],
+                3,
+                6,
+            ),
+            (
+                vec![
+                    mass(&[0.0, 0.0, 0.0]),
+                    mass(&[1.0, 0.0, 0.0]),
+                    mass(&[0.0, 1.0, 0.0]),
+                    mass(&[1.0, 1.0, 0.0]),
+                ],
+                3,
+                7,
+            ),
+        ] {
+            let springs = all(masses.len());
+            let r = reduce_system_with(System::of_scene(&masses, &springs, dim), Shapes::Compute)
+                .unwrap();
+            assert_eq!(r.rigid, rigid, "{dim}D, {} masses", masses.len());
+            assert_eq!(r.modes.len(), dim * masses.len() - rigid);
+        }
     }
 }

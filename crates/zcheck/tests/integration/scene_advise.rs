@@ -191,6 +191,42 @@ fn bad_scene_files_are_located_errors() {
         ("tick", "[[mode]]\nhz = 3\n".to_owned(), ":1:1:", "missing tick rate"),
         ("empty", "tick_hz = 60\nduration_s = 1\n".to_owned(), ":1:1:", "empty scene"),
         ("syntax", "tick_hz = 60\n[[mass]\n".to_owned(), ":2:", ""),
+        (
+            "pos-mixed",
+            format!("{head}pos = [0, 0]\n[[mass]]\nname = \"b\"\nkg = 1.0\npos = [1, 0, 0]\n"),
+            ":9:7:",
+            "pos has 3 coordinates",
+        ),
+        (
+            "pos-some",
+            format!("{head}pos = [0, 0]\n[[mass]]\nname = \"b\"\nkg = 1.0\n"),
+            ":7:8:",
+            "mass \"b\" has no pos",
+        ),
+        (
+            "fixed-not-bool",
+            format!("{head}fixed = \"yes\"\n"),
+            ":5:9:",
+            "boolean",
+        ),
+        (
+            "same-position",
+            format!("{head}pos = [2, 1]\n[[mass]]\nname = \"b\"\nkg = 1.0\npos = [2, 1]\n[[spring]]\nbetween = [\"a\", \"b\"]\nstiffness = 1.0\n"),
+            ":11:11:",
+            "same position",
+        ),
+        (
+            "max-hz",
+            "tick_hz = 60\n[accuracy]\nmax_hz = 0\n[[mode]]\nhz = 3\n".to_owned(),
+            ":3:10:",
+            "max_hz = 0",
+        ),
+        (
+            "max-hz-inf",
+            "tick_hz = 60\n[accuracy]\nmax_hz = inf\n[[mode]]\nhz = 3\n".to_owned(),
+            ":3:10:",
+            "max_hz = inf",
+        ),
     ] {
         let path = write(&format!("bad-{name}"), &text);
         let (code, out, err) = zcheck(&["advise", "--scene", path.to_str().unwrap()]);
@@ -292,4 +328,205 @@ fn damped_builtins_are_listed_and_analysed() {
     let (code, out, err) = zcheck(&["stability", "false_euler_damped", "--param", "D=1/2"]);
     assert_eq!(code, 0, "{err}");
     assert!(out.contains("sqrt(5) - 1"), "{out}");
+}
+
+/// The particle examples (a 3D cloth, a 2D rope): the degrees of freedom
+/// and zero modes counted from the geometry, and every candidate's
+/// simulation agreeing with its prediction.
+#[test]
+fn particle_examples_agree_with_simulation() {
+    // cloth8: 56 free particles × 3; nothing holds them out of the plane.
+    // rope2d: 10 free particles × 2; every triple is a triangle.
+    for (name, dof, rigid) in [("cloth8", 168u64, 56u64), ("rope2d", 20, 0)] {
+        let start = std::time::Instant::now();
+        let v = json(&["advise", "--scene", &example(name), "--format", "json"]);
+        eprintln!("{name}: {:?}", start.elapsed());
+        assert_eq!(v["dof"], dof, "{name}");
+        assert_eq!(v["rigid_modes"], rigid, "{name}");
+        assert_eq!(v["modes"].as_array().unwrap().len() as u64, dof - rigid, "{name}");
+        assert!(v["recommended"]["substeps"].is_u64(), "{name}: {}", v["recommended"]);
+        let mut checked = 0;
+        for c in v["candidates"].as_array().unwrap() {
+            if c["substeps_accurate"].is_u64() {
+                let s = &c["simulated"];
+                assert_eq!(s["agree"], true, "{name} {}: {c}", c["method"]);
+                assert!(s["modes_checked"].as_u64().unwrap() > 0, "{name}: {c}");
+                checked += 1;
+            }
+        }
+        assert!(checked >= 3, "{name}: {checked} candidates checked");
+        let (code, out, err) = zcheck(&["advise", "--scene", &example(name), "--no-simulate"]);
+        assert_eq!(code, 0, "{err}");
+        assert!(out.contains(&format!("{rigid} zero-frequency (rigid) left out")), "{out}");
+    }
+}
+
+/// False Euler on an undamped mode: the principal root has |z| = 1 and
+/// angle ψ with cos ψ = 1 − Φ²/2 (χ = z² − (2 − Φ²)z + 1), i.e.
+/// ψ = 2·asin(Φ/2) (the acos form loses half the digits at small Φ), so
+/// the phase drift over the duration is steps·(ψ − Φ), and it is stable
+/// for Φ < 2.
+fn false_euler_accurate(hz: f64, tick: f64, duration: f64, phase: f64) -> u64 {
+    (1u64..)
+        .find(|&n| {
+            let phi = 2.0 * std::f64::consts::PI * hz / (tick * n as f64);
+            phi < 2.0 && duration * tick * n as f64 * (2.0 * (phi / 2.0).asin() - phi) <= phase
+        })
+        .unwrap()
+}
+
+/// `max_hz` on two independent springs at 1 Hz and 200 Hz: with
+/// `max_hz = 10` the substeps are the stability of the 200 Hz mode and
+/// the accuracy of the 1 Hz one (closed forms for False Euler; for every
+/// method, the advisor on each spring alone); without it, the 200 Hz
+/// mode's accuracy sets them.
+#[test]
+fn max_hz_holds_only_the_band_to_the_target() {
+    let (tick, duration, phase) = (60.0, 100.0, 1e-3);
+    let k = |hz: f64| (2.0 * std::f64::consts::PI * hz).powi(2);
+    let spring = |name: &str, hz: f64| {
+        format!(
+            "[[mass]]\nname = \"{name}\"\nkg = 1.0\n[[spring]]\nbetween = [\"{name}\", \"ground\"]\nstiffness = {}\n",
+            k(hz)
+        )
+    };
+    let head = |max_hz: &str| {
+        format!(
+            "tick_hz = {tick}\nduration_s = {duration}\n[accuracy]\nphase_rad = {phase}\n{max_hz}"
+        )
+    };
+    let run = |name: &str, text: String| {
+        let path = write(name, &text);
+        json(&["advise", "--scene", path.to_str().unwrap(), "--format", "json", "--no-simulate"])
+    };
+    let both = format!("{}{}", spring("slow", 1.0), spring("fast", 200.0));
+    let banded = run("two-scale-band", format!("{}{both}", head("max_hz = 10\n")));
+    let all = run("two-scale-all", format!("{}{both}", head("")));
+    let slow = run("two-scale-slow", format!("{}{}", head(""), spring("slow", 1.0)));
+    let fast = run("two-scale-fast", format!("{}{}", head(""), spring("fast", 200.0)));
+    // Closed forms, False Euler.
+    let phi_fast = 2.0 * std::f64::consts::PI * 200.0 / tick;
+    let stable_fast = (phi_fast / 2.0).floor() as u64 + 1;
+    let accurate_slow = false_euler_accurate(1.0, tick, duration, phase);
+    assert!(accurate_slow > stable_fast, "choose numbers where accuracy sets it");
+    let fe = candidate(&banded, "false_euler");
+    assert_eq!(fe["substeps_stable"], stable_fast);
+    assert_eq!(fe["substeps_accurate"], accurate_slow);
+    assert_eq!(
+        candidate(&all, "false_euler")["substeps_accurate"],
+        false_euler_accurate(200.0, tick, duration, phase)
+    );
+    assert_eq!(banded["max_hz"], 10.0);
+    assert!(all["max_hz"].is_null());
+    // Every method: the band's answer from each spring alone.
+    for c in banded["candidates"].as_array().unwrap() {
+        let m = c["method"].as_str().unwrap();
+        let (s, f, a) = (candidate(&slow, m), candidate(&fast, m), candidate(&all, m));
+        assert_eq!(c["substeps_stable"], f["substeps_stable"], "{m}");
+        assert_eq!(a["substeps_stable"], f["substeps_stable"], "{m}");
+        let expected = match (f["substeps_stable"].as_u64(), s["substeps_accurate"].as_u64()) {
+            (Some(ns), Some(na)) => serde_json::json!(ns.max(na)),
+            _ => Value::Null,
+        };
+        assert_eq!(c["substeps_accurate"], expected, "{m}");
+        // Without the band the fast spring must be accurate too.
+        if let (Some(x), Some(y)) =
+            (a["substeps_accurate"].as_u64(), f["substeps_accurate"].as_u64())
+        {
+            assert_eq!(x, y.max(s["substeps_accurate"].as_u64().unwrap()), "{m}");
+        }
+    }
+    // The text says where the targets apply.
+    let path = write("two-scale-text", format!("{}{both}", head("max_hz = 10\n")).as_str());
+    let (code, out, err) = zcheck(&["advise", "--scene", path.to_str().unwrap(), "--no-simulate"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("the modes at or below 10 Hz (every mode stable)"), "{out}");
+}
+
+/// A scene whose every mode has zero frequency (a free particle, springs
+/// only between fixed ones): no crash, no division by zero; one substep is
+/// stable, and the zero modes are counted.
+#[test]
+fn zero_frequency_modes_need_no_substeps() {
+    let text = "tick_hz = 60\n[[mass]]\nname = \"a\"\nkg = 1.0\npos = [0, 0, 0]\nfixed = true\n[[mass]]\nname = \"b\"\nkg = 1.0\npos = [1, 0, 0]\nfixed = true\n[[mass]]\nname = \"c\"\nkg = 2.0\npos = [0, 1, 0]\n[[spring]]\nbetween = [\"a\", \"b\"]\nstiffness = 10.0\nratio = 0.1\n";
+    let path = write("all-rigid", text);
+    let v = json(&["advise", "--scene", path.to_str().unwrap(), "--format", "json"]);
+    assert_eq!(v["dof"], 3);
+    assert_eq!(v["rigid_modes"], 3);
+    assert!(v["modes"].as_array().unwrap().is_empty());
+    for c in v["candidates"].as_array().unwrap() {
+        assert_eq!(c["substeps_stable"], 1, "{c}");
+    }
+    // Two particles joined by one spring, free in 2D: one mode at
+    // ω² = k(1/m_a + 1/m_b) along the spring, three rigid.
+    let text = "tick_hz = 60\n[[mass]]\nname = \"a\"\nkg = 1.0\npos = [0, 0]\n[[mass]]\nname = \"b\"\nkg = 3.0\npos = [3, 4]\n[[spring]]\nbetween = [\"a\", \"b\"]\nstiffness = 300.0\n";
+    let path = write("free-pair", text);
+    let v =
+        json(&["advise", "--scene", path.to_str().unwrap(), "--format", "json", "--no-simulate"]);
+    assert_eq!(v["rigid_modes"], 3);
+    let modes = v["modes"].as_array().unwrap();
+    assert_eq!(modes.len(), 1);
+    let hz = (300.0f64 * (1.0 + 1.0 / 3.0)).sqrt() / (2.0 * std::f64::consts::PI);
+    assert!((modes[0]["hz"].as_f64().unwrap() - hz).abs() < 1e-9 * hz, "{}", modes[0]);
+}
+
+/// Non-proportional damping with rigid modes: a chain laid along x in 2D
+/// (pinned mass, two springs, a damper on the second) moves along x as the
+/// scalar chain does, and nothing holds it sideways (two zero modes). The
+/// full-step analysis runs without the zero modes (a Jordan block at 1
+/// otherwise), so every candidate's substeps equal the scalar chain's, and
+/// its simulation agrees with its prediction.
+#[test]
+fn rigid_modes_with_non_proportional_damping_match_the_scalar_chain() {
+    let springs = "[[spring]]\nbetween = [\"a\", \"b\"]\nstiffness = 400.0\n[[spring]]\nbetween = [\"b\", \"c\"]\nstiffness = 900.0\ndamping = 4.0\n";
+    let mass =
+        |name: &str, kg: f64, pos: &str| format!("[[mass]]\nname = \"{name}\"\nkg = {kg}\n{pos}");
+    let planar = format!(
+        "tick_hz = 60\n{}{}{}{springs}",
+        mass("a", 1.0, "pos = [0, 0]\nfixed = true\n"),
+        mass("b", 1.0, "pos = [1, 0]\n"),
+        mass("c", 2.0, "pos = [2, 0]\n")
+    );
+    let scalar = format!(
+        "tick_hz = 60\n{}{}{}{springs}",
+        mass("a", 1.0, "fixed = true\n"),
+        mass("b", 1.0, ""),
+        mass("c", 2.0, "")
+    );
+    let p = json(&[
+        "advise",
+        "--scene",
+        write("np-planar", &planar).to_str().unwrap(),
+        "--format",
+        "json",
+    ]);
+    let s = json(&[
+        "advise",
+        "--scene",
+        write("np-scalar", &scalar).to_str().unwrap(),
+        "--format",
+        "json",
+    ]);
+    assert_eq!(p["damping"]["kind"], "non_proportional");
+    assert_eq!(s["damping"]["kind"], "non_proportional");
+    assert_eq!((p["dof"].as_u64(), p["rigid_modes"].as_u64()), (Some(4), Some(2)));
+    assert_eq!((s["dof"].as_u64(), s["rigid_modes"].as_u64()), (Some(2), Some(0)));
+    let hz = |v: &Value| -> Vec<f64> {
+        v["modes"].as_array().unwrap().iter().map(|m| m["hz"].as_f64().unwrap()).collect()
+    };
+    let (hp, hs) = (hz(&p), hz(&s));
+    assert_eq!(hp.len(), hs.len());
+    for (x, y) in hp.iter().zip(&hs) {
+        assert!((x - y).abs() <= 1e-9 * y, "{hp:?} vs {hs:?}");
+    }
+    for c in p["candidates"].as_array().unwrap() {
+        let m = c["method"].as_str().unwrap();
+        let o = candidate(&s, m);
+        assert_eq!(c["stability_from"], "full-step matrix (non-proportional damping)", "{m}");
+        assert_eq!(c["substeps_stable"], o["substeps_stable"], "{m}");
+        assert_eq!(c["substeps_accurate"], o["substeps_accurate"], "{m}");
+        if c["substeps_accurate"].is_u64() {
+            assert_eq!(c["simulated"]["agree"], true, "{m}: {c}");
+        }
+    }
 }
