@@ -894,7 +894,11 @@ fn sqrt_parts(q: &Q) -> (Q, BigInt) {
     let mut rest = n.abs();
     let mut out = BigInt::one();
     let mut p = BigInt::from(2);
-    while &p * &p <= rest && p < BigInt::from(100_000) {
+    // Large radicands (a float-derived method's 60-digit coefficients) are
+    // searched for square factors up to 10³ only: the form stays exact, if
+    // less reduced, and printing it no longer costs milliseconds.
+    let bound = BigInt::from(if rest.bits() > 256 { 1_000 } else { 100_000 });
+    while &p * &p <= rest && p < bound {
         let pp = &p * &p;
         while (&rest % &pp).is_zero() {
             rest /= &pp;

@@ -281,7 +281,9 @@ thread_local! {
 }
 
 fn render(a: &Algebraic) -> std::rc::Rc<Rendered> {
-    let key = format!("{a:?}");
+    // A cheap key (Debug would print the closed form, the costly part).
+    let (lo, hi) = a.interval();
+    let key = format!("{} {lo} {hi}", a.defining_poly().to_string_in("x"));
     if let Some(r) = RENDERED.with(|c| c.borrow().get(&key).cloned()) {
         return r;
     }
