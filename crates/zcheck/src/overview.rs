@@ -29,6 +29,9 @@ pub struct MethodSummary {
     pub phi_max: Option<f64>,
     /// Steps per period at the limit, 2π/Φ_max.
     pub min_steps_per_period: Option<f64>,
+    /// The spectral radius as Φ → ∞ (exact), `∞` when a root escapes, or
+    /// why it is not given.
+    pub rho_inf: String,
     /// Ψ(Φ) as an exact truncated series, e.g. `Phi + 1/24*Phi^3 + O(Phi^5)`.
     pub psi_series: String,
     /// |z|² of the complex pair as an exact truncated series.
@@ -131,6 +134,30 @@ pub(crate) fn summary_at(
         Ok((d, c)) => (series_text(&c, &format!("sqrt({d})")), "order 1".to_owned()),
         Err(e) => (format!("n/a ({e})"), "n/a".to_owned()),
     };
+    // Where the second-order series stop (exact constants, three states),
+    // the principal root's own series still give the leading terms.
+    let on_circle = report
+        .intervals
+        .first()
+        .is_some_and(|i| i.lo.sign().is_eq() && i.class == poly::RootClass::Harmonic);
+    let general = poly::advanced::plane::phase_errors(chi, on_circle).ok();
+    // In this table's conventions: Ψ − Φ = −(Φ − Ψ), and |z|² − 1 =
+    // −2(1 − |z|) to leading order.
+    let term = |c: Poly, power: u32| {
+        let c = c.to_string();
+        if c.contains(' ') {
+            format!("({c})*Phi^{power}")
+        } else {
+            format!("{c}*Phi^{power}")
+        }
+    };
+    let phase_error = match (&general, phase_error.starts_with("n/a")) {
+        (Some(g), true) => match &g.dispersion {
+            Some(t) => term(-&t.constant, t.order + 1),
+            None => "0".to_owned(),
+        },
+        _ => phase_error,
+    };
     let (modulus_sq_series, amplitude_error) = match series::modulus_sq_series(chi, order) {
         _ if constants => over_q(),
         // For a conjugate pair of a second-order χ, |z|² = z1·z2 = q exactly:
@@ -148,6 +175,18 @@ pub(crate) fn summary_at(
         }
         Err(e) => (format!("n/a ({e})"), "n/a".to_owned()),
     };
+    let amplitude_error = match (&general, amplitude_error.starts_with("n/a")) {
+        (Some(g), true) => match &g.dissipation {
+            Some(t) => term(t.constant.scale(&Q::from_integer((-2).into())), t.order + 1),
+            None => "0".to_owned(),
+        },
+        _ => amplitude_error,
+    };
+    let rho_inf = match d.rho_inf(params) {
+        Ok(Some(r)) => r.closed_form().unwrap_or_else(|| r.to_decimal(6)),
+        Ok(None) => "∞".to_owned(),
+        Err(e) => format!("n/a ({})", e.message()),
+    };
     let cost = d.cost();
     Ok(MethodSummary {
         method: name,
@@ -155,6 +194,7 @@ pub(crate) fn summary_at(
         phi_max_exact,
         phi_max,
         min_steps_per_period: phi_max.map(|p| std::f64::consts::TAU / p),
+        rho_inf,
         psi_series,
         modulus_sq_series,
         phase_error,
@@ -181,19 +221,20 @@ pub fn paper_overview(order: usize) -> Result<Vec<MethodSummary>, Error> {
 pub fn to_markdown(rows: &[MethodSummary]) -> String {
     let implicit = rows.iter().any(|r| r.unknowns > 0);
     let mut s = String::from(
-        "| method | Φ_max (exact) | Φ_max | steps/period at Φ_max | Ψ(Φ) | \\|z\\|² | phase error Ψ−Φ | amplitude error \\|z\\|²−1 | mul | add |",
+        "| method | Φ_max (exact) | Φ_max | steps/period at Φ_max | ρ∞ | Ψ(Φ) | \\|z\\|² | phase error Ψ−Φ | amplitude error \\|z\\|²−1 | mul | add |",
     );
     s.push_str(if implicit { " of which the solve |\n" } else { "\n" });
-    s.push_str("|---|---|---:|---:|---|---|---|---|---:|---:|");
+    s.push_str("|---|---|---:|---:|---|---|---|---|---|---:|---:|");
     s.push_str(if implicit { "---|\n" } else { "\n" });
     for r in rows {
         let f = |x: Option<f64>| x.map_or("–".to_owned(), |v| format!("{v:.4}"));
         s.push_str(&format!(
-            "| {} | {} | {} | {} | `{}` | `{}` | `{}` | `{}` | {} | {} |",
+            "| {} | {} | {} | {} | {} | `{}` | `{}` | `{}` | `{}` | {} | {} |",
             r.method,
             r.phi_max_exact,
             f(r.phi_max),
             f(r.min_steps_per_period),
+            r.rho_inf,
             r.psi_series,
             r.modulus_sq_series,
             r.phase_error,

@@ -345,3 +345,22 @@ fn hughes_rho_inf_for_hht_alpha_and_generalized_alpha() {
         assert_eq!(v["stability"], "bounded_for_all_phi", "generalized-α at ρ∞ = {r}");
     }
 }
+
+/// `overview` shows ρ∞ and, for a three-state method whose Ψ series is
+/// n/a, the leading terms from the principal root in its own conventions
+/// (Ψ − Φ = −(Φ − Ψ), |z|² − 1 = −2(1 − |z|)), equal to `stability`'s.
+#[test]
+fn overview_shows_rho_inf_and_the_general_leading_terms() {
+    let path = data("structural/hht_alpha.zm");
+    let p = path.to_str().unwrap();
+    let out = zcheck(&["overview", p, "--param", "alpha=-1/10", "--format", "json"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let row = &serde_json::from_slice::<Value>(&out.stdout).unwrap()[0];
+    let out = zcheck(&["stability", p, "--param", "alpha=-1/10", "--format", "json"]);
+    let st: Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(row["rho_inf"], st["rho_inf"]["exact"]);
+    let q = st["dispersion_order"].as_u64().unwrap() + 1;
+    let c = st["dispersion_constant"]["exact"].as_str().unwrap();
+    let negated = c.strip_prefix('-').map_or(format!("-{c}"), str::to_owned);
+    assert_eq!(row["phase_error"], format!("{negated}*Phi^{q}"));
+}
