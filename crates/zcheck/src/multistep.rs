@@ -14,12 +14,11 @@
 //! file and blames every mistake on its line and column.
 
 use poly::advanced::multistep;
-use poly::advanced::tableau::method_ident;
 use serde::Deserialize;
 use toml::Spanned;
 
 use crate::error::{line_col, Error};
-use crate::tableau::exact_entry;
+use crate::tableau::{exact_entry, method_name};
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -89,22 +88,7 @@ impl Multistep {
                 "beta is all zero: expected a method that reads f (some beta_j ≠ 0)".to_owned(),
             ));
         }
-        let name = match &raw.name {
-            Some(n) => {
-                let id = method_ident(n.get_ref());
-                if id != *n.get_ref() {
-                    return Err(err(
-                        Some(n.span()),
-                        format!(
-                            "name = {:?}: expected letters, digits and `_` (such as {id:?})",
-                            n.get_ref()
-                        ),
-                    ));
-                }
-                id
-            }
-            None => method_ident(stem),
-        };
+        let name = method_name(path, text, raw.name.as_ref(), stem)?;
         let method = multistep::Multistep::new(&name, a, b)
             .map_err(|e| err(Some(alpha.span()), e.message().to_owned()))?;
         Ok(Multistep { source: path.to_owned(), method })

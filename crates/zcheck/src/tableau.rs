@@ -111,6 +111,30 @@ pub(crate) fn exact_entry(
     Exact::parse(&entry).map_err(|e| at(e.message().to_owned()))
 }
 
+/// The method's name in a coefficient file: its `name`, which must be a
+/// `.zm` identifier (blamed on its location), else the file's stem made one.
+pub(crate) fn method_name(
+    path: &str,
+    text: &str,
+    name: Option<&Spanned<String>>,
+    stem: &str,
+) -> Result<String, Error> {
+    let Some(n) = name else {
+        return Ok(method_ident(stem));
+    };
+    let id = method_ident(n.get_ref());
+    if id != *n.get_ref() {
+        let (line, col) = line_col(text, n.span().start);
+        return Err(Error::file(
+            path,
+            line,
+            col,
+            &format!("name = {:?}: expected letters, digits and `_` (such as {id:?})", n.get_ref()),
+        ));
+    }
+    Ok(id)
+}
+
 /// Whether a coefficient file holds a linear multistep method (`alpha`,
 /// `beta`) rather than a Butcher tableau.
 pub(crate) fn is_multistep(text: &str) -> bool {
@@ -208,22 +232,7 @@ impl Tableau {
             ),
             None => None,
         };
-        let name = match &raw.name {
-            Some(n) => {
-                let id = method_ident(n.get_ref());
-                if id != *n.get_ref() {
-                    return Err(err(
-                        Some(n.span()),
-                        format!(
-                            "name = {:?}: expected letters, digits and `_` (such as {id:?})",
-                            n.get_ref()
-                        ),
-                    ));
-                }
-                id
-            }
-            None => method_ident(stem),
-        };
+        let name = method_name(path, text, raw.name.as_ref(), stem)?;
         // The shape and the name were checked above, with their locations.
         let tableau =
             exact::Tableau::new(&name, a, b, c).map_err(|e| err(None, e.message().to_owned()))?;
