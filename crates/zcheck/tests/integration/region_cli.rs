@@ -183,8 +183,20 @@ fn multistep_catalogue_against_an_independent_computation() {
         &std::fs::read_to_string(data("nodepy/bdf_a_alpha.json")).expect("bdf_a_alpha.json"),
     )
     .expect("json");
-    let text = bdf.to_string();
-    assert!(text.contains("86.03"), "the file holds Hairer–Wanner's digits");
+    // Each BDF's A(α) against the 50-digit boundary-locus value and the
+    // digits Hairer–Wanner print.
+    for k in 1..=6 {
+        let name = format!("BDF{k}");
+        let doc = &docs[files.iter().position(|(s, _, _)| *s == name).expect("in the catalogue")];
+        let ours = doc["a_alpha_deg"].as_f64().unwrap();
+        let entry = &bdf["bdf"][name.as_str()];
+        let digits: f64 = entry["digits"].as_str().unwrap().parse().unwrap();
+        assert!((ours - digits).abs() < 1e-10, "{name}: {ours} vs {digits}");
+        if let Some(printed) = entry["printed_deg"].as_str() {
+            let printed: f64 = printed.parse().unwrap();
+            assert!((ours - printed).abs() <= 0.005 + 1e-12, "{name}: {ours} vs printed {printed}");
+        }
+    }
 }
 
 #[test]
