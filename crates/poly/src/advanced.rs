@@ -16,6 +16,7 @@ pub use crate::analysis::{cost, equiv, invariant, plane, region, series, stabili
 pub use crate::derive::routes::charpoly_z_route_dense;
 pub use crate::derive::routes::{
     charpoly, charpoly_state_route, charpoly_z_route, transition_matrix, w, z_matrix,
+    ReducedZMatrix,
 };
 pub use crate::error::show_invisible;
 pub use crate::lang::method::{

@@ -26,7 +26,7 @@
 //! keeps the old, quadratic route (a) as the tests' oracle.
 
 use crate::error::{Error, ErrorKind, Span};
-use crate::lang::method::{EndValue, Method, Operand};
+use crate::lang::method::{EndValue, Method, Operand, Target};
 use crate::multivariate::matrix::SparsePolyMatrix;
 use crate::{Poly, PolyMatrix, Sym};
 
@@ -102,6 +102,40 @@ impl Derivation {
         }
         let half = Poly::constant(crate::Q::new((-1).into(), 2.into()));
         Some((&c[1] * &half, c[2].clone()))
+    }
+
+    /// M with the temporaries eliminated: one row and column per value the
+    /// step keeps (each state variable's end-of-step value, then each
+    /// unknown of an implicit system), labelled by name. Its determinant
+    /// is det M, so it carries the same χ; its size is the state's, not
+    /// the program's, so a program of 10,000 temporaries prints in a few
+    /// lines. Entries are polynomials in w = z⁻¹ ([`w`]) and the
+    /// parameters.
+    pub fn z_matrix_reduced(&self) -> ReducedZMatrix {
+        let m = &self.method;
+        let kept = kept_unknowns(m);
+        let (order, matrix) = match reduce_z_matrix(&self.z_matrix, &kept) {
+            Some(reduced) => (kept, reduced),
+            None => eliminate_dense(self.z_matrix.to_dense(), &kept),
+        };
+        let n_a = m.assigns().len();
+        let carried = carried_unknowns(m);
+        let labels = order
+            .iter()
+            .map(|&i| {
+                if let Some(v) = carried.iter().position(|&c| c == i) {
+                    m.state()[v].clone()
+                } else if i >= n_a && i - n_a < m.unknowns().len() {
+                    m.unknowns()[i - n_a].name.clone()
+                } else {
+                    match &m.assigns()[i].target {
+                        Target::State(v) => m.state()[*v].clone(),
+                        Target::Temp(t) => t.clone(),
+                    }
+                }
+            })
+            .collect();
+        ReducedZMatrix { labels, matrix }
     }
 
     /// An entry of M written as a Laurent polynomial in z: `1 - z^-1`.
@@ -300,7 +334,21 @@ fn reduce_z_matrix(mat: &SparsePolyMatrix, carried: &[usize]) -> Option<PolyMatr
 /// no later step reads, then sparse Berkowitz on what remains: the slow
 /// route (a), the oracle the tests hold [`reduce_z_matrix`] and the fast
 /// determinants against, and the fallback for a matrix of another shape.
-fn det_z_matrix_dense(mut mat: PolyMatrix, carried: &[usize]) -> Poly {
+fn det_z_matrix_dense(mat: PolyMatrix, carried: &[usize]) -> Poly {
+    let (_, rest) = eliminate_dense(mat, carried);
+    let c = rest.charpoly_berkowitz_sparse();
+    let det = c.last().cloned().unwrap_or_else(Poly::one);
+    if rest.rows() % 2 == 1 {
+        -det
+    } else {
+        det
+    }
+}
+
+/// Gaussian elimination of every unknown of M with a unit diagonal that is
+/// not in `carried`: the unknowns that remain, by index, and M on them
+/// (whose determinant is det M: each pivot is 1).
+fn eliminate_dense(mut mat: PolyMatrix, carried: &[usize]) -> (Vec<usize>, PolyMatrix) {
     let n = mat.rows();
     let mut kept: Vec<usize> = Vec::new();
     let mut removed = vec![false; n];
@@ -327,13 +375,17 @@ fn det_z_matrix_dense(mut mat: PolyMatrix, carried: &[usize]) -> Poly {
     let rest = PolyMatrix::from_rows(
         kept.iter().map(|&i| kept.iter().map(|&j| mat[(i, j)].clone()).collect()).collect(),
     );
-    let c = rest.charpoly_berkowitz_sparse();
-    let det = c.last().cloned().unwrap_or_else(Poly::one);
-    if rest.rows() % 2 == 1 {
-        -det
-    } else {
-        det
-    }
+    (kept, rest)
+}
+
+/// [`Derivation::z_matrix_reduced`]: M on the values a step keeps.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ReducedZMatrix {
+    /// The value each row and column stands for: a state variable's
+    /// end-of-step value, or an unknown of the implicit system.
+    pub labels: Vec<String>,
+    /// The matrix, in w = z⁻¹ and the parameters.
+    pub matrix: PolyMatrix,
 }
 
 /// Route (a)'s characteristic polynomial, z^N det M(1/z).

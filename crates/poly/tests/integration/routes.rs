@@ -395,6 +395,22 @@ fn check_program(prog: &Program, phi: Q, k: Q) {
             .fold(Poly::zero(), |acc, (k, c)| acc + c * z.pow((n - k) as u32));
         assert_eq!(w_to_z, a, "z^N det M(1/z) on the whole matrix\n{src}");
     }
+    // M with the temporaries eliminated (what `derive` prints) keeps det M.
+    let d = poly::derive(&method).unwrap_or_else(|e| panic!("{e}\n{src}"));
+    let reduced = d.z_matrix_reduced();
+    assert_eq!(reduced.labels.len(), reduced.matrix.rows(), "{src}");
+    assert_eq!(reduced.labels, method.state(), "{src}");
+    if reduced.matrix.rows() <= 6 {
+        let z = Poly::sym(Sym::z());
+        let w_to_z = reduced
+            .matrix
+            .det()
+            .coeffs_in(poly::advanced::w())
+            .iter()
+            .enumerate()
+            .fold(Poly::zero(), |acc, (k, c)| acc + c * z.pow((n - k) as u32));
+        assert_eq!(w_to_z, a, "z^N det of the reduced M(1/z)\n{src}");
+    }
     // The fast route (a) (sparse M, forward substitution, modular
     // determinant) against the slow one (dense elimination, sparse Berkowitz).
     let slow =
@@ -479,4 +495,39 @@ fn oracle_reproduces_false_euler_by_hand() {
     let parsed = Method::parse("fe.zm", &prog.source()).expect("parses");
     let d = poly::derive(&parsed).expect("derives");
     assert_eq!(d.charpoly, Poly::parse("z^2 - (2 - Phi^2)*z + 1").expect("parses"));
+}
+
+/// On every built-in, implicit ones included, M with its temporaries
+/// eliminated has one row per kept value (the state, then the unknowns of
+/// an implicit system) and the determinant of the whole M: z^N det of it
+/// at 1/z is χ. The oracle is Berkowitz on the small reduced matrix,
+/// independent of the route that derived χ.
+#[test]
+fn reduced_z_matrix_keeps_the_determinant() {
+    for (name, src) in poly::advanced::builtins::BUILTINS {
+        let method = Method::parse(&format!("{name}.zm"), src).expect("built-in parses");
+        if !method.constants().is_empty() {
+            continue;
+        }
+        let d = poly::derive(&method).expect("built-in derives");
+        let reduced = d.z_matrix_reduced();
+        let n_kept =
+            method.state().len() + method.unknowns().iter().filter(|u| u.state.is_none()).count();
+        assert!(
+            reduced.labels.len() <= n_kept.max(method.state().len()),
+            "{name}: {:?}",
+            reduced.labels
+        );
+        assert!(reduced.labels.starts_with(method.state()), "{name}: {:?}", reduced.labels);
+        let z = Poly::sym(Sym::z());
+        let n = method.order();
+        let chi = reduced
+            .matrix
+            .det()
+            .coeffs_in(poly::advanced::w())
+            .iter()
+            .enumerate()
+            .fold(Poly::zero(), |acc, (k, c)| acc + c * z.pow((n - k) as u32));
+        assert_eq!(&chi, d.charpoly(), "{name}: reduced M on {:?}", reduced.labels);
+    }
 }

@@ -19,15 +19,40 @@ pub(crate) struct Args {
     pub method: String,
     #[arg(long, value_parser = Format::parser(FORMATS), default_value = "text")]
     pub format: Format,
+    /// Also print M(z) with one row per assignment (temporaries included),
+    /// for programs of at most 256 assignments; by default M(z) is printed
+    /// over the values the step keeps, with the temporaries eliminated.
+    #[arg(long)]
+    pub full_z_matrix: bool,
 }
+
+/// The largest M(z) `--full-z-matrix` prints: 256 rows make 65,536
+/// entries, most of them 0.
+const FULL_Z_MATRIX_ROWS: usize = 256;
 
 pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     let method = LoadedMethod::load(&args.method)?;
     let d = method.derivation()?;
+    let full = args.full_z_matrix;
+    if full && d.z_matrix.rows() > FULL_Z_MATRIX_ROWS {
+        return Err(Error::usage(format!(
+            "--full-z-matrix: M(z) of {} has {} rows, and prints at most {FULL_Z_MATRIX_ROWS} ({} entries); expected a shorter program, or no --full-z-matrix for M(z) over the state ({} rows)",
+            d.method.name(),
+            d.z_matrix.rows(),
+            d.z_matrix.rows() * d.z_matrix.rows(),
+            d.z_matrix_reduced().labels.len(),
+        )));
+    }
     let out = match args.format {
-        Format::Json => serde_json::to_string_pretty(&to_json(d))? + "\n",
-        Format::Latex => latex(d),
-        _ => text(d),
+        Format::Json => {
+            let mut v = to_json(d);
+            if full {
+                v["z_matrix_full"] = json!(full_rows(d, &Derivation::z_entry_string));
+            }
+            serde_json::to_string_pretty(&v)? + "\n"
+        }
+        Format::Latex => latex(d, full),
+        _ => text(d, full),
     };
     super::output::emit(&out)?;
     Ok(ExitCode::SUCCESS)
@@ -40,10 +65,7 @@ pub(crate) fn to_json(d: &Derivation) -> serde_json::Value {
     let rows = |mat: &poly::PolyMatrix, f: &dyn Fn(&Poly) -> String| -> Vec<Vec<String>> {
         (0..mat.rows()).map(|i| mat.row(i).iter().map(f).collect()).collect()
     };
-    let z_rows =
-        |mat: &poly::advanced::SparsePolyMatrix, f: &dyn Fn(&Poly) -> String| -> Vec<Vec<String>> {
-            (0..mat.rows()).map(|i| mat.row(i).iter().map(f).collect()).collect()
-        };
+    let reduced = d.z_matrix_reduced();
     let mut v = json!({
         "method": m.name(),
         "state": m.state(),
@@ -51,7 +73,8 @@ pub(crate) fn to_json(d: &Derivation) -> serde_json::Value {
         "order": m.order(),
         "slots": m.slots().iter().map(|&(v, l)| m.operand_name(poly::advanced::Operand::Start { var: v, lag: l })).collect::<Vec<_>>(),
         "program": m.to_string(),
-        "z_matrix": z_rows(&d.z_matrix, &Derivation::z_entry_string),
+        "z_matrix": rows(&reduced.matrix, &Derivation::z_entry_string),
+        "z_matrix_labels": reduced.labels,
         "transition_matrix": rows(&d.transition_matrix, &|p| p.to_string()),
         "charpoly": d.charpoly.to_string(),
         "charpoly_coeffs": d.coeffs().iter().map(ToString::to_string).collect::<Vec<_>>(),
@@ -72,7 +95,7 @@ pub(crate) fn to_json(d: &Derivation) -> serde_json::Value {
 }
 
 /// The human-readable derivation.
-pub(crate) fn text(d: &Derivation) -> String {
+pub(crate) fn text(d: &Derivation, full: bool) -> String {
     use std::fmt::Write;
     let m = &d.method;
     let mut s = String::new();
@@ -82,10 +105,22 @@ pub(crate) fn text(d: &Derivation) -> String {
     for line in m.to_string().lines().skip(3) {
         let _ = writeln!(s, "  {line}");
     }
-    let _ = writeln!(s, "\nM(z), one equation per assignment:");
-    for i in 0..d.z_matrix.rows() {
-        let row: Vec<String> = d.z_matrix.row(i).iter().map(Derivation::z_entry_string).collect();
+    let reduced = d.z_matrix_reduced();
+    let _ = writeln!(
+        s,
+        "\nM(z) on ({}), the temporaries eliminated (det M(z) is unchanged):",
+        reduced.labels.join(", ")
+    );
+    for i in 0..reduced.matrix.rows() {
+        let row: Vec<String> =
+            reduced.matrix.row(i).iter().map(Derivation::z_entry_string).collect();
         let _ = writeln!(s, "  [{}]", row.join(", "));
+    }
+    if full {
+        let _ = writeln!(s, "\nM(z), one equation per assignment:");
+        for row in full_rows(d, &Derivation::z_entry_string) {
+            let _ = writeln!(s, "  [{}]", row.join(", "));
+        }
     }
     let slots: Vec<String> = m
         .slots()
@@ -141,8 +176,13 @@ pub(crate) fn gauss_seidel_text(m: &poly::Method) -> String {
     s
 }
 
+/// M(z) with one row per assignment, as strings.
+fn full_rows(d: &Derivation, f: &dyn Fn(&Poly) -> String) -> Vec<Vec<String>> {
+    (0..d.z_matrix.rows()).map(|i| d.z_matrix.row(i).iter().map(f).collect()).collect()
+}
+
 /// LaTeX source of the derivation.
-pub(crate) fn latex(d: &Derivation) -> String {
+pub(crate) fn latex(d: &Derivation, full: bool) -> String {
     use std::fmt::Write;
     let mat = |m: &poly::PolyMatrix, f: &dyn Fn(&Poly) -> String| -> String {
         let rows: Vec<String> =
@@ -151,7 +191,13 @@ pub(crate) fn latex(d: &Derivation) -> String {
     };
     let mut s = String::new();
     let _ = writeln!(s, "% {}", d.method.name());
-    let _ = writeln!(s, "M(z) = {}", mat(&d.z_matrix.to_dense(), &Derivation::z_entry_latex));
+    let reduced = d.z_matrix_reduced();
+    let _ = writeln!(s, "% M(z) on ({})", reduced.labels.join(", "));
+    let _ = writeln!(s, "M(z) = {}", mat(&reduced.matrix, &Derivation::z_entry_latex));
+    if full {
+        let _ = writeln!(s, "% M(z), one equation per assignment");
+        let _ = writeln!(s, "M(z) = {}", mat(&d.z_matrix.to_dense(), &Derivation::z_entry_latex));
+    }
     let _ = writeln!(s, "\\mathbf{{P}} = {}", mat(&d.transition_matrix, &|p| p.latex()));
     let _ = writeln!(s, "\\det(zI - \\mathbf{{P}}) = {} = 0", d.charpoly.latex());
     if let Some((p, q)) = d.p_q() {

@@ -267,3 +267,42 @@ fn interrupt_ends_a_long_run() {
     assert!(out.stdout.is_empty());
     assert!(!String::from_utf8_lossy(&out.stderr).contains("panicked"));
 }
+
+/// A program of 10,000 chained temporaries derives to a document the size
+/// of its program: M(z) is printed over the state (2 × 2 here), and the
+/// full 10,002 × 10,002 matrix is refused with its size, while a small
+/// program still prints it on request.
+#[test]
+fn derive_output_is_bounded() {
+    let mut src = String::from("method chain\nstate y v\nt0 = y + Phi*v\n");
+    for k in 1..10_000 {
+        src += &format!("t{k} = t{}\n", k - 1);
+    }
+    src += "y = t9999\nv = v - Phi*y\n";
+    let path = dir().join("chain_10000.zm");
+    std::fs::write(&path, &src).expect("write chain");
+    let path = path.to_str().expect("utf-8 path").to_owned();
+    let (json, _) = run(&["derive".into(), path.clone(), "--format".into(), "json".into()], 0);
+    // The program itself is ~200 KB; the old document was 1.1 GB.
+    assert!(json.len() < 2 * src.len() + 4096, "{} bytes of JSON", json.len());
+    let v: serde_json::Value = serde_json::from_str(&json).expect("derive JSON");
+    assert_eq!(v["z_matrix_labels"], serde_json::json!(["y", "v"]));
+    assert_eq!(v["z_matrix"].as_array().map(Vec::len), Some(2));
+    assert_eq!(v["charpoly"], "z^2 - 2*z + Phi^2*z + 1");
+    assert!(v.get("z_matrix_full").is_none());
+    let (_, err) = run(&["derive".into(), path, "--full-z-matrix".into()], 2);
+    assert!(err.contains("10002 rows, and prints at most 256"), "{err}");
+    let (full, _) = run(
+        &[
+            "derive".into(),
+            "standard_heun".into(),
+            "--full-z-matrix".into(),
+            "--format".into(),
+            "json".into(),
+        ],
+        0,
+    );
+    let v: serde_json::Value = serde_json::from_str(&full).expect("derive JSON");
+    assert_eq!(v["z_matrix_full"].as_array().map(Vec::len), Some(8));
+    assert_eq!(v["z_matrix"].as_array().map(Vec::len), Some(2));
+}
