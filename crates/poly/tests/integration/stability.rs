@@ -373,3 +373,29 @@ fn classify_roots_on_known_roots() {
     check_class(&[(1, 2), (-1, 2)], &[], AlternatingStable); // tie: alternation wins
     check_class(&[(0, 1), (0, 1)], &[], Deadbeat);
 }
+
+/// The class exactly at an irrational limit of a cubic χ, through both
+/// ways `rational.rs` decides it. (2z + 1)(z² − 2(1 − Φ²/3)z + 1) keeps
+/// the self-reciprocal pair on the circle until p = 1 − Φ²/3 reaches −1 at
+/// Φ = √6, where it is a double root at −1: the reciprocal factor sends the
+/// point through the gcd over Q(√6).
+/// (3z + 1)(z² − (1 − Φ²/5)z + 1/2) has a pair of modulus 1/√2 that turns
+/// real, one of its roots leaving through −1 where
+/// χ(−1) = 0: 1 + (1 − Φ²/5) + 1/2 = 0, Φ = √(25/2) = 5/√2, with simple
+/// roots (the shortcut from the conditions).
+#[test]
+fn class_at_an_irrational_limit_of_a_cubic() {
+    let reciprocal = Poly::parse("(2*z + 1)*(z^2 - 2*(1 - Phi^2/3)*z + 1)").unwrap();
+    let r = analyze(&reciprocal).unwrap();
+    let six = root(&[-6, 0, 1], q(2, 1), q(3, 1));
+    assert_eq!(limit(&r), Some(six.clone()));
+    let at = r.class_changes.iter().find(|c| c.at == six).expect("a change at sqrt 6");
+    assert_eq!((at.from, at.at_class), (RootClass::Harmonic, Some(RootClass::DoubleRootOnCircle)));
+
+    let simple = Poly::parse("(3*z + 1)*(z^2 - (1 - Phi^2/5)*z + 1/2)").unwrap();
+    let r = analyze(&simple).unwrap();
+    let lim = limit(&r).expect("a limit");
+    assert_eq!(lim, root(&[-25, 0, 2], q(3, 1), q(4, 1)));
+    let at = r.class_changes.iter().find(|c| c.at == lim).expect("a change at the limit");
+    assert_eq!(at.at_class, Some(RootClass::Alternating), "{r:?}");
+}

@@ -10,6 +10,7 @@ mod extremes;
 mod front_door;
 mod fuzz_corpus;
 mod hostile;
+mod limit_class;
 mod measured_cost;
 mod params_cli;
 mod plot_cli;

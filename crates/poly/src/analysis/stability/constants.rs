@@ -152,7 +152,8 @@ pub(crate) fn analyze(
         if from == to {
             continue;
         }
-        class_changes.push(ClassChange { at: point.at.clone(), from, to, at_class: None });
+        let at_class = class_at_point(&a, &point.at, [&samples[k], &samples[k + 1]]);
+        class_changes.push(ClassChange { at: point.at.clone(), from, to, at_class });
         intervals.last_mut().expect("one interval at least").hi = Some(point.at.clone());
         intervals.push(ClassInterval {
             lo: point.at.clone(),
@@ -231,6 +232,40 @@ pub(crate) fn analyze(
         critical_points: points,
         marginal: None,
     })
+}
+
+/// The class of c + b z + a z² (polynomials in Φ over F) exactly at a
+/// critical point α, from the signs of the classifying terms there. A term
+/// T's sign at α is decided exactly from its signs at the rational samples
+/// on either side (α is the only critical point between them, and every
+/// root of T is a root of its norm N over Q, hence critical): different
+/// signs put a root of T at α; equal signs give that sign unless T has a
+/// root of even multiplicity at α, which makes α a multiple root of N. So
+/// where α is a simple root of N (or no root), the sign is the samples'.
+/// `None` only where a term's norm has a multiple root at α with equal
+/// signs on both sides.
+fn class_at_point(coeffs: &[Poly], alpha: &Algebraic, samples: [&Q; 2]) -> Option<RootClass> {
+    let terms = quadratic_terms(&coeffs[0], &coeffs[1], &coeffs[2]);
+    let signs: Vec<Ordering> = terms
+        .iter()
+        .map(|t| {
+            let t = field::reduce(t);
+            let at = |q: &Q| {
+                field::sign(&field::reduce(&t.subs(Sym::phi(), &Poly::constant(q.clone()))))
+            };
+            let (left, right) = (at(samples[0]), at(samples[1]));
+            if left != right || t.is_zero() {
+                return Some(Ordering::Equal);
+            }
+            let norm = field::norm(&t).to_upoly(Sym::phi())?;
+            if !alpha.is_root_of(&norm) || !alpha.is_root_of(&norm.derivative()) {
+                Some(left)
+            } else {
+                None
+            }
+        })
+        .collect::<Option<_>>()?;
+    Some(classify_quadratic_by(|k| signs[k]))
 }
 
 /// Whether χ is bounded exactly at the limit, from what happens there: a

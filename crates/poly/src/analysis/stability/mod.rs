@@ -29,9 +29,13 @@
 //! Limitations (stated, not hidden): for degree ≥ 5, ties for the largest
 //! modulus between a real root and a complex pair are not among the critical
 //! conditions, so a class change (monotonic ↔ oscillatory) from such a tie
-//! inside an interval could go unlisted; for degree ≥ 3 the class exactly at
-//! an irrational critical point is not computed (`at_class` is `None`),
-//! while boundedness there is. The stability limit and the bounded/unbounded
+//! inside an interval could go unlisted. For degree ≥ 3 the class exactly at
+//! an irrational critical point is computed where a neighbouring class keeps
+//! every root in the closed unit disc and a root lies on the circle there
+//! (every stability limit): the roots on the circle are then those of
+//! gcd(χ, z^n χ(1/z)) over Q(α). Elsewhere (a point strictly inside the
+//! stable range, or between two unbounded classes) it is not computed
+//! (`at_class` is `None`), while boundedness there is. The stability limit and the bounded/unbounded
 //! split are exact for every degree, because boundedness changes only where
 //! a root meets the unit circle.
 

@@ -60,6 +60,102 @@ pub(crate) fn class_at_point(chi: &Charpoly, phi: &Algebraic) -> Option<RootClas
     }
 }
 
+/// The discriminant condition (the square-free one the walk computed), or
+/// 0 when it was not computed.
+fn disc_of(conditions: &[(Condition, UPoly)]) -> UPoly {
+    conditions
+        .iter()
+        .find(|(name, _)| *name == Condition::Discriminant)
+        .map_or_else(UPoly::zero, |(_, d)| d.clone())
+}
+
+/// Whether every root of a class lies in the closed unit disc.
+fn in_closed_disc(class: RootClass) -> bool {
+    class.is_bounded() || class == RootClass::DoubleRootOnCircle
+}
+
+/// The class exactly at an irrational critical point α of a χ of any
+/// degree, when a neighbouring class keeps every root in the closed unit
+/// disc (a stability limit, or a point inside the bounded range). By
+/// continuity no root is outside the circle at α, so a root z whose
+/// reciprocal 1/z is also a root lies on the circle, and the roots on the
+/// circle are those of e = gcd(f, z^n f(1/z)) over Q(α), with their
+/// multiplicities. A repeated one gives
+/// [`RootClass::DoubleRootOnCircle`]; otherwise section 4's tie rules (as
+/// in `classify_roots_by_products`): a complex one gives
+/// [`RootClass::Harmonic`], else −1 [`RootClass::Alternating`], else +1
+/// [`RootClass::Constant`]. With no root on the circle the dominant root is
+/// inside, and which kind it is is not decided here (`None`).
+///
+/// Where the roots are simple (α is not a root of the discriminant) and χ
+/// is not self-reciprocal, no gcd over Q(α) is needed: a pair z_i z_j = 1
+/// of distinct roots, none outside, is a complex pair on the circle, so the
+/// unit-circle condition vanishing at α says Harmonic, and χ(∓1) = 0 says
+/// Alternating or Constant.
+fn class_on_circle_at(
+    chi: &Charpoly,
+    point: &CriticalPoint,
+    sides: [RootClass; 2],
+    conditions: &[(Condition, UPoly)],
+) -> Option<RootClass> {
+    if !sides.iter().any(|&c| in_closed_disc(c)) {
+        return None;
+    }
+    let alpha = &point.at;
+    let has = |c: Condition| point.conditions.contains(&c);
+    // A self-reciprocal factor's roots are paired with their reciprocals
+    // for every Φ: its unit-circle condition is replaced by the reciprocal
+    // discriminant, and the shortcut does not apply.
+    let reciprocal = conditions.iter().any(|(n, _)| *n == Condition::ReciprocalDiscriminant);
+    let disc = disc_of(conditions);
+    if !reciprocal && !disc.is_zero() && !alpha.is_root_of(&disc) {
+        return if has(Condition::UnitCircle) {
+            Some(RootClass::Harmonic)
+        } else if has(Condition::ChiAtMinusOne) {
+            Some(RootClass::Alternating)
+        } else if has(Condition::ChiAtOne) {
+            Some(RootClass::Constant)
+        } else {
+            None
+        };
+    }
+    let mut field = Field::new(alpha);
+    let f: FPoly = field.trim(chi.a.iter().map(|c| field.reduce(c)).collect());
+    // Roots at zero are inside the circle: strip them.
+    let lowest = f.iter().position(|c| !field.is_zero(c))?;
+    let f: FPoly = f[lowest..].to_vec();
+    if f.len() < 2 {
+        return Some(RootClass::Deadbeat);
+    }
+    let rev: FPoly = f.iter().rev().cloned().collect();
+    let e = field.gcd(&f, &rev);
+    if e.len() < 2 {
+        return None;
+    }
+    let de = field.derivative(&e);
+    if field.gcd(&e, &de).len() >= 2 {
+        return Some(RootClass::DoubleRootOnCircle);
+    }
+    let vanishes_at = |x: i64, field: &Field| {
+        let mut sum = UPoly::zero();
+        let mut power = Q::one();
+        for c in &e {
+            sum = &sum + &c.scale(&power);
+            power *= Q::from_integer(x.into());
+        }
+        field.is_zero(&sum)
+    };
+    let (at_one, at_minus_one) = (vanishes_at(1, &field), vanishes_at(-1, &field));
+    let real_on_circle = usize::from(at_one) + usize::from(at_minus_one);
+    Some(if e.len() - 1 > real_on_circle {
+        RootClass::Harmonic
+    } else if at_minus_one {
+        RootClass::Alternating
+    } else {
+        RootClass::Constant
+    })
+}
+
 /// The exact stability analysis of a χ(z; Φ) over Q, with the transition
 /// matrix P when there is one: with P, boundedness where a root on the unit
 /// circle is repeated is decided from P (bounded exactly when P is
@@ -124,9 +220,12 @@ fn run_with(
     // undefined: its own class, never bounded.
     let at_classes: Vec<Option<RootClass>> = points
         .iter()
-        .map(|pt| match p {
+        .enumerate()
+        .map(|(k, pt)| match p {
             Some(step) if pt.at.is_root_of(step.denominator) => Some(RootClass::Singular),
-            _ => class_at_point(chi, &pt.at),
+            _ if verdict_only => class_at_point(chi, &pt.at),
+            _ => class_at_point(chi, &pt.at)
+                .or_else(|| class_on_circle_at(chi, pt, [classes[k], classes[k + 1]], &conditions)),
         })
         .collect();
 
