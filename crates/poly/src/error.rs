@@ -287,3 +287,21 @@ impl Error {
         .located(file, &lossy)
     }
 }
+
+/// Something a program says that it probably does not mean, located as an
+/// [`Error`] is but never fatal: a value assigned and never read, a state
+/// variable the step never assigns, a tableau whose weights do not sum to
+/// 1. The caller decides whether to show it or to refuse the input.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Warning {
+    /// Where: the name or the entry the warning is about.
+    pub span: Span,
+    /// What is wrong and what was probably meant.
+    pub message: String,
+}
+
+impl fmt::Display for Warning {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}:{}: {}", self.span.line, self.span.col, self.message)
+    }
+}

@@ -31,7 +31,7 @@ use std::collections::{BTreeMap, HashMap};
 
 use num_traits::Zero;
 
-use crate::error::{Error, ErrorKind, Span};
+use crate::error::{Error, ErrorKind, Span, Warning};
 use crate::lang::constant::{self, use_before_declaration, ConstSource};
 use crate::lang::method::{Assign, Equation, GaussSeidelRead, Method, Operand, Target, Unknown};
 use crate::lang::syntax::{self, BinOp, Expr, ExprKind, Item};
@@ -315,6 +315,8 @@ impl Program {
             assign_lines: Vec::new(),
             gauss_seidel: Vec::new(),
             test_symbol: None,
+            temp_defs: HashMap::new(),
+            unread: Vec::new(),
         };
         let mut assigns: Vec<Assign> = Vec::new();
         // Whether each assignment's value depends on an unknown.
@@ -406,6 +408,9 @@ impl Program {
                     None => {}
                 }
             }
+            if !is_state {
+                lw.define_temp(&t, tspan);
+            }
             if !is_state && lin.is_scalar() {
                 // A temporary that depends on the parameters only (Appendix B's
                 // `D:=0.5*woT`) is folded into the coefficients that read it.
@@ -450,6 +455,18 @@ impl Program {
             &first_primed,
         )?;
         let scalar = matches!(lw.test_symbol, Some((true, _)));
+        let mut warnings = lw.unread_warnings(&finals_or_solved(&lw.latest_state, &unknowns));
+        for (v, name) in state.iter().enumerate() {
+            let solved = unknowns.iter().any(|u| u.state == Some(v));
+            if lw.latest_state[v].is_none() && !solved {
+                let span = self.declared.get(name).copied().unwrap_or_default();
+                warnings.push(Warning {
+                    span,
+                    message: format!("state variable `{name}` is never assigned: the step keeps its value (expected an assignment `{name} = ...` or an equation for `{name}'`)"),
+                });
+            }
+        }
+        warnings.sort_by_key(|w| (w.span.line, w.span.col));
         let (history, finals, gauss_seidel) = (lw.history, lw.latest_state, lw.gauss_seidel);
         Ok(Method {
             scalar,
@@ -463,8 +480,34 @@ impl Program {
             equations,
             constants,
             gauss_seidel,
+            warnings,
         })
     }
+}
+
+/// Which state variables the step sets (by an assignment or an equation
+/// for `x'`), for the did-you-mean of an unread temporary.
+fn finals_or_solved(latest: &[Option<usize>], unknowns: &[Unknown]) -> Vec<bool> {
+    (0..latest.len())
+        .map(|v| latest[v].is_some() || unknowns.iter().any(|u| u.state == Some(v)))
+        .collect()
+}
+
+/// The edit distance between two names (insertions, deletions and
+/// substitutions of characters).
+fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut prev = row[0];
+        row[0] = i + 1;
+        for (j, &cb) in b.iter().enumerate() {
+            let cur = row[j + 1];
+            row[j + 1] = (prev + usize::from(ca != cb)).min(row[j] + 1).min(cur + 1);
+            prev = cur;
+        }
+    }
+    row[b.len()]
 }
 
 impl Statement {
@@ -711,9 +754,59 @@ struct Lowerer<'a> {
     /// The first read of `Phi` (false) or of the scalar test equation's `w`
     /// (true): a program is written for one test equation, not both.
     test_symbol: Option<(bool, Span)>,
+    /// Each temporary's current definition: where, and whether it has been
+    /// read since.
+    temp_defs: HashMap<String, (Span, bool)>,
+    /// Definitions of temporaries overwritten before any read.
+    unread: Vec<(String, Span)>,
 }
 
 impl Lowerer<'_> {
+    /// Records a new definition of the temporary `t`; an earlier one that
+    /// nothing read is unread for good.
+    fn define_temp(&mut self, t: &str, span: Span) {
+        if let Some((s, false)) = self.temp_defs.insert(t.to_owned(), (span, false)) {
+            self.unread.push((t.to_owned(), s));
+        }
+    }
+
+    /// A warning per definition of a temporary that nothing reads, with a
+    /// did-you-mean for the closest state variable (`sets[v]`: whether the
+    /// step sets state variable v; one it never sets is the likelier
+    /// meaning).
+    fn unread_warnings(&mut self, sets: &[bool]) -> Vec<Warning> {
+        let mut unread = std::mem::take(&mut self.unread);
+        unread.extend(
+            self.temp_defs.iter().filter(|(_, (_, read))| !read).map(|(t, (s, _))| (t.clone(), *s)),
+        );
+        unread
+            .into_iter()
+            .map(|(t, span)| {
+                let closest = self
+                    .state
+                    .iter()
+                    .enumerate()
+                    .map(|(v, s)| (edit_distance(&t, s), sets[v], s))
+                    // One edit away, or two from a variable the step never
+                    // sets (a typo leaves one behind).
+                    .filter(|(d, sets, s)| {
+                        (*d == 1 || (*d == 2 && !sets))
+                            && *d < s.chars().count().max(t.chars().count())
+                    })
+                    .min_by_key(|(d, sets, _)| (*d, *sets));
+                let message = match closest {
+                    Some((_, _, s)) => format!(
+                        "`{t}` is assigned but never read: did you mean the state variable `{s}`?"
+                    ),
+                    None => {
+                        format!("`{t}` is assigned but never read: no later line uses this value")
+                    }
+                };
+                Warning { span, message }
+            })
+            .collect()
+    }
+
     /// Records a read of `Phi` or `w`, refusing the second kind.
     fn note_test_symbol(&mut self, is_w: bool, span: Span) -> Result<(), Error> {
         match self.test_symbol {
@@ -938,6 +1031,9 @@ impl Lowerer<'_> {
         }
         if let Some(&u) = self.unknown_of.get(n) {
             return Ok(Lin::operand(Operand::Unknown(u)));
+        }
+        if let Some(d) = self.temp_defs.get_mut(n) {
+            d.1 = true;
         }
         if let Some(p) = self.scalar_temps.get(n) {
             return Ok(Lin::scalar(p.clone()));

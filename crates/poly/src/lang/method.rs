@@ -16,6 +16,7 @@ use std::fmt;
 
 use num_traits::Zero;
 
+use crate::error::Warning;
 pub use crate::lang::constant::Constant;
 use crate::{Poly, Sym};
 
@@ -131,12 +132,21 @@ pub struct Method {
     /// Whether the program is written for the scalar test equation
     /// y' = λy (it reads `w` = hλ) rather than the oscillator (`Phi`).
     pub(crate) scalar: bool,
+    /// What the program says that it probably does not mean.
+    pub(crate) warnings: Vec<Warning>,
 }
 
 impl Method {
     /// The method's name.
     pub fn name(&self) -> &str {
         &self.name
+    }
+
+    /// What the program says that it probably does not mean (a value
+    /// assigned and never read, a state variable never assigned), in file
+    /// order. A method with warnings derives as written.
+    pub fn warnings(&self) -> &[Warning] {
+        &self.warnings
     }
 
     /// The state variables, in declaration order.
