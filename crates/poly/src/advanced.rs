@@ -18,7 +18,7 @@ pub use crate::derive::routes::{
     charpoly, charpoly_state_route, charpoly_z_route, transition_matrix, w, z_matrix,
     ReducedZMatrix,
 };
-pub use crate::error::show_invisible;
+pub use crate::error::{show_invisible, Warning};
 pub use crate::lang::method::{
     Assign, Constant, EndValue, Equation, GaussSeidelRead, Operand, Target, Unknown,
 };

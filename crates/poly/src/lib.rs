@@ -92,7 +92,7 @@ pub use crate::analysis::stability::{
 };
 pub use crate::arith::rational::{q, Q};
 pub use crate::derive::routes::{derive, derive_source, Derivation};
-pub use crate::error::{Error, ErrorKind, Span, Warning};
+pub use crate::error::{Error, ErrorKind, Span};
 pub use crate::lang::builtins::builtin;
 pub use crate::lang::method::Method;
 pub use crate::lang::params::Params;

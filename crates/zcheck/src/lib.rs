@@ -43,5 +43,6 @@ pub mod scene;
 mod spectral;
 pub mod tableau;
 pub mod tradeoff;
+mod warn;
 
 pub use error::{Error, ErrorKind, Location};

@@ -71,9 +71,13 @@ impl LoadedMethod {
         }
         let (shown, stem, text) = crate::tableau::read_file(Path::new(arg))?;
         let (src, what) = if crate::tableau::is_multistep(&text) {
-            (Multistep::parse(&shown, &stem, &text)?.to_scalar_zm(), "multistep coefficients")
+            let m = Multistep::parse(&shown, &stem, &text)?;
+            crate::warn::report(m.warnings().to_vec())?;
+            (m.to_scalar_zm(), "multistep coefficients")
         } else {
-            (Tableau::parse(&shown, &stem, &text)?.to_scalar_zm(), "tableau")
+            let t = Tableau::parse(&shown, &stem, &text)?;
+            crate::warn::report(t.warnings().to_vec())?;
+            (t.to_scalar_zm(), "tableau")
         };
         let method = Method::parse(arg, &src).map_err(|e| {
             Error::method(format!(
@@ -230,9 +234,11 @@ fn resolve(arg: &str, oscillator: Oscillator) -> Result<(Method, Option<Method>)
         let damped = oscillator == Oscillator::Damped;
         let (src, scalar, what) = if crate::tableau::is_multistep(&text) {
             let m = Multistep::parse(&shown, &stem, &text)?;
+            crate::warn::report(m.warnings().to_vec())?;
             (m.to_zm(damped), m.to_scalar_zm(), "multistep coefficients")
         } else {
             let t = Tableau::parse(&shown, &stem, &text)?;
+            crate::warn::report(t.warnings().to_vec())?;
             (t.to_zm(damped), t.to_scalar_zm(), "tableau")
         };
         let parse = |src: &str| {
@@ -245,7 +251,11 @@ fn resolve(arg: &str, oscillator: Oscillator) -> Result<(Method, Option<Method>)
         };
         return Ok((parse(&src)?, Some(parse(&scalar)?)));
     }
-    Ok((check::load::load_method(arg)?, None))
+    let method = check::load::load_method(arg)?;
+    if poly::advanced::builtins::builtin_source(arg).is_none() {
+        crate::warn::report(crate::warn::of_method(arg, &method))?;
+    }
+    Ok((method, None))
 }
 
 /// The damped twin of a built-in's name: itself for a damped built-in,

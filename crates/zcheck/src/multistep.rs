@@ -18,7 +18,7 @@ use serde::Deserialize;
 use toml::Spanned;
 
 use crate::error::{line_col, Error};
-use crate::tableau::{exact_entry, method_name};
+use crate::tableau::{entry_hint, exact_entry, method_name};
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -33,6 +33,7 @@ struct Raw {
 pub(crate) struct Multistep {
     source: String,
     method: multistep::Multistep,
+    warnings: Vec<String>,
 }
 
 impl Multistep {
@@ -67,11 +68,15 @@ impl Multistep {
                 ),
             ));
         }
-        let read = |what: &str, xs: &Spanned<Vec<Spanned<toml::Value>>>| {
+        let mut warnings = Vec::new();
+        let mut read = |what: &str, xs: &Spanned<Vec<Spanned<toml::Value>>>| {
             xs.get_ref()
                 .iter()
                 .enumerate()
-                .map(|(j, v)| exact_entry(path, text, v, &format!("{what}[{j}]")))
+                .map(|(j, v)| {
+                    warnings.extend(entry_hint(path, text, v, &format!("{what}[{j}]")));
+                    exact_entry(path, text, v, &format!("{what}[{j}]"))
+                })
                 .collect::<Result<Vec<_>, _>>()
         };
         let (a, b) = (read("alpha", alpha)?, read("beta", beta)?);
@@ -91,11 +96,34 @@ impl Multistep {
         let name = method_name(path, text, raw.name.as_ref(), stem)?;
         let method = multistep::Multistep::new(&name, a, b)
             .map_err(|e| err(Some(alpha.span()), e.message().to_owned()))?;
-        Ok(Multistep { source: path.to_owned(), method })
+        let exact_err = |e: poly::Error| err(Some(alpha.span()), e.message().to_owned());
+        let (line, col) = line_col(text, alpha.span().start);
+        let [rho, drho, sigma] = method.at_one().map_err(exact_err)?;
+        if !rho.is_zero() {
+            warnings.push(format!(
+                "{path}:{line}:{col}: ρ(1) = Σα_j = {}, expected 0: the method is not consistent",
+                crate::warn::value_near(&rho, &poly::Poly::zero())
+            ));
+        } else if drho != sigma {
+            warnings.push(format!(
+                "{path}:{line}:{col}: ρ'(1) = Σjα_j = {} but σ(1) = Σβ_j = {}, expected them equal: the method is not consistent", crate::warn::value_near(&drho, &sigma), crate::warn::value(&sigma)
+            ));
+        }
+        if !method.zero_stable().map_err(exact_err)? {
+            warnings.push(format!(
+                "{path}:{line}:{col}: ρ(z) = Σα_j z^j has a root outside the unit circle, or a repeated one on it: the method is not zero-stable, so it does not converge"
+            ));
+        }
+        Ok(Multistep { source: path.to_owned(), method, warnings })
     }
 
     /// The `.zm` program of the method on the oscillator, or on the damped
     /// oscillator (`param D`) when `damped`.
+    /// What the file says that it probably does not mean, located.
+    pub(crate) fn warnings(&self) -> &[String] {
+        &self.warnings
+    }
+
     pub(crate) fn to_zm(&self, damped: bool) -> String {
         self.method.to_zm(&self.source, damped)
     }

@@ -111,6 +111,26 @@ pub(crate) fn exact_entry(
     Exact::parse(&entry).map_err(|e| at(e.message().to_owned()))
 }
 
+/// The warning for an entry written as a long decimal that is within 1e-12
+/// of a simple closed form (`0.3333333333333333` for 1/3), at the entry.
+pub(crate) fn entry_hint(
+    path: &str,
+    text: &str,
+    v: &Spanned<toml::Value>,
+    what: &str,
+) -> Option<String> {
+    let decimal = match v.get_ref() {
+        toml::Value::Float(f) if f.is_finite() => format!("{f}"),
+        toml::Value::String(s) => s.trim().to_owned(),
+        _ => return None,
+    };
+    let hint = crate::warn::closed_form_hint(&decimal)?;
+    let (line, col) = line_col(text, v.span().start);
+    Some(format!(
+        "{path}:{line}:{col}: {what} = {decimal} is within 1e-12 of {hint}: write \"{hint}\" if that is meant (the analysis uses the decimal as written)"
+    ))
+}
+
 /// The method's name in a coefficient file: its `name`, which must be a
 /// `.zm` identifier (blamed on its location), else the file's stem made one.
 pub(crate) fn method_name(
@@ -157,6 +177,7 @@ struct Raw {
 pub struct Tableau {
     source: String,
     tableau: exact::Tableau,
+    warnings: Vec<String>,
 }
 
 impl Tableau {
@@ -209,7 +230,11 @@ impl Tableau {
                 ));
             }
         }
-        let entry = |v: &Spanned<toml::Value>, what: String| exact_entry(path, text, v, &what);
+        let mut warnings = Vec::new();
+        let mut entry = |v: &Spanned<toml::Value>, what: String| {
+            warnings.extend(entry_hint(path, text, v, &what));
+            exact_entry(path, text, v, &what)
+        };
         let mut a = Vec::with_capacity(s);
         for (i, row) in raw.a.get_ref().iter().enumerate() {
             let mut r = Vec::with_capacity(s);
@@ -236,7 +261,39 @@ impl Tableau {
         // The shape and the name were checked above, with their locations.
         let tableau =
             exact::Tableau::new(&name, a, b, c).map_err(|e| err(None, e.message().to_owned()))?;
-        Ok(Tableau { source: path.to_owned(), tableau })
+        let at = |span: Range<usize>, message: String| {
+            let (line, col) = line_col(text, span.start);
+            format!("{path}:{line}:{col}: {message}")
+        };
+        let exact_err = |e: poly::Error| err(None, e.message().to_owned());
+        let sum = tableau.weights_sum().map_err(exact_err)?;
+        if !sum.is_one() {
+            warnings.push(at(
+                raw.b.span(),
+                format!(
+                    "b sums to {}, not 1: the method is not consistent (not even order 1)",
+                    crate::warn::value_near(&sum, &poly::Poly::one())
+                ),
+            ));
+        }
+        if let (Some(rows), Some(c)) = (tableau.c_mismatch(), &raw.c) {
+            let sums = tableau.row_sums().map_err(exact_err)?;
+            for &i in rows {
+                warnings.push(at(
+                    c.get_ref()[i - 1].span(),
+                    format!(
+                        "c[{i}] differs from row {i} of A, which sums to {}: expected c_i = Σ_j a_ij (the stage is evaluated at the time A gives)",
+                        crate::warn::value(&sums[i - 1])
+                    ),
+                ));
+            }
+        }
+        Ok(Tableau { source: path.to_owned(), tableau, warnings })
+    }
+
+    /// What the file says that it probably does not mean, located.
+    pub(crate) fn warnings(&self) -> &[String] {
+        &self.warnings
     }
 
     /// The number of stages.

@@ -20,9 +20,10 @@
 
 use std::fmt::Write as _;
 
-use super::tableau::{entry_error, method_ident, probe, Exact};
+use super::tableau::{entry_error, method_ident, probe, sum_of, Exact};
 use crate::error::{Error, ErrorKind, Span};
 use crate::lang::method::Method;
+use crate::Poly;
 
 /// The most steps read: beyond any published method, and a bound on the
 /// size of the generated program.
@@ -117,6 +118,19 @@ impl Multistep {
             probe(&rho1, &self.constants).map_err(entry_error)?,
             probe(&drho_minus_sigma, &self.constants).map_err(entry_error)?,
         ))
+    }
+
+    /// ρ(1) = Σα_j, ρ'(1) = Σ jα_j and σ(1) = Σβ_j, exactly: a consistent
+    /// method has ρ(1) = 0 and ρ'(1) = σ(1).
+    pub fn at_one(&self) -> Result<[Poly; 3], Error> {
+        let c = &self.constants;
+        let scaled: Vec<Exact> = self
+            .alpha
+            .iter()
+            .enumerate()
+            .map(|(j, a)| Exact { expr: format!("{j}*({})", a.expr), ..a.clone() })
+            .collect();
+        Ok([sum_of(self.alpha.iter(), c)?, sum_of(scaled.iter(), c)?, sum_of(self.beta.iter(), c)?])
     }
 
     /// The method on the oscillator, or on the damped oscillator (`param

@@ -29,6 +29,7 @@ use std::fmt::Write as _;
 
 use crate::error::{Error, ErrorKind, Span};
 use crate::lang::method::Method;
+use crate::Poly;
 
 /// The most stages read: beyond any published method, and a bound on the
 /// size of the generated program.
@@ -166,6 +167,16 @@ impl Tableau {
     /// The method's name.
     pub fn name(&self) -> &str {
         &self.name
+    }
+
+    /// Σ b_i, exactly: 1 for a consistent method (order at least 1).
+    pub fn weights_sum(&self) -> Result<Poly, Error> {
+        sum_of(self.b.iter(), &self.constants)
+    }
+
+    /// The row sums of A, exactly: the `c` a tableau without one uses.
+    pub fn row_sums(&self) -> Result<Vec<Poly>, Error> {
+        self.a.iter().map(|row| sum_of(row.iter(), &self.constants)).collect()
     }
 
     /// The rows where the given `c` differs from A's row sums (empty when
@@ -477,13 +488,28 @@ fn replace_radicals(text: &str, constants: &mut Vec<(String, String)>) -> Result
 /// Checks one expression with the `.zm` parser (exact, constants included)
 /// and says whether it is exactly zero.
 pub(crate) fn probe(expr: &str, constants: &[(String, String)]) -> Result<bool, String> {
+    Ok(value(expr, constants)?.is_zero())
+}
+
+/// The exact value of a constant expression in the named radicals, by the
+/// `.zm` parser (a polynomial in the radicals' generators, reduced).
+pub(crate) fn value(expr: &str, constants: &[(String, String)]) -> Result<Poly, String> {
     let mut src = String::from("method probe\nstate v\n");
     for (name, radical) in constants {
         writeln!(src, "const {name} = {radical}").expect("string");
     }
     writeln!(src, "v = ({expr})*v").expect("string");
     let m = Method::parse("entry", &src).map_err(|e| e.message().to_owned())?;
-    Ok(m.assigns().last().is_none_or(|a| a.terms.is_empty()))
+    Ok(m.assigns().last().and_then(|a| a.terms.first()).map_or_else(Poly::zero, |(_, c)| c.clone()))
+}
+
+/// Σ of exact entries, exactly.
+pub(crate) fn sum_of<'a>(
+    entries: impl Iterator<Item = &'a Exact>,
+    constants: &[(String, String)],
+) -> Result<Poly, Error> {
+    let terms: Vec<String> = entries.map(|e| format!("({})", e.expr)).collect();
+    value(&format!("0 + {}", terms.join(" + ")), constants).map_err(entry_error)
 }
 
 #[cfg(test)]

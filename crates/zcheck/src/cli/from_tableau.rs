@@ -20,6 +20,7 @@ pub(crate) struct Args {
 
 pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     let tableau = Tableau::load(std::path::Path::new(&args.file))?;
+    crate::warn::report(tableau.warnings().to_vec())?;
     let src = tableau.to_zm(args.damped);
     // The program parses (and derives) before it is printed.
     poly::Method::parse(&args.file, &src).map_err(|e| {

@@ -54,6 +54,11 @@ pub fn main() -> ExitCode {
 #[derive(Parser)]
 #[command(name = "zcheck", version, about, long_about = None)]
 pub(crate) struct Cli {
+    /// Treat warnings (an unread value, a tableau whose weights do not sum
+    /// to 1, a decimal that is probably 1/3) as errors: exit 2 before any
+    /// output.
+    #[arg(long, global = true)]
+    deny_warnings: bool,
     #[command(subcommand)]
     command: Command,
 }
@@ -98,6 +103,7 @@ impl Cli {
     /// Runs the subcommand: its exit code (a verification that disagrees
     /// is a failure, not an error), or why it could not run.
     pub(crate) fn run(self) -> Result<ExitCode, Error> {
+        crate::warn::deny(self.deny_warnings);
         match self.command {
             Command::Methods(a) => methods::run(a),
             Command::Derive(a) => derive::run(a),

@@ -22,3 +22,4 @@ mod stability_cli;
 mod tableau;
 mod tradeoff;
 mod verify_cli;
+mod warnings_cli;

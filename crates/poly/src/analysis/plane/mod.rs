@@ -125,6 +125,15 @@ pub fn plane_of(chi: Poly) -> Result<PlaneReport, Error> {
 /// The root condition at w = 0. With constants, the roots are those of
 /// the norm (a superset: χ's and its conjugates'), and the repeated ones
 /// those of the norm of gcd(f, f') over F.
+impl crate::lang::multistep::Multistep {
+    /// Whether ρ(z) = Σ α_j z^j satisfies the root condition (every root
+    /// in the closed unit disc, those on the circle simple), decided
+    /// exactly on χ(z, 0) of the method on y' = λy.
+    pub fn zero_stable(&self) -> Result<bool, Error> {
+        zero_stable(crate::derive(&self.scalar_method()?)?.charpoly())
+    }
+}
+
 fn zero_stable(chi: &Poly) -> Result<bool, Error> {
     let z = Sym::z();
     let at0 = field::reduce(&chi.subs(Sym::w(), &Poly::zero()));

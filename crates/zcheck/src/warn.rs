@@ -1,0 +1,183 @@
+//! Warnings: what an input says that it probably does not mean (a value
+//! assigned and never read, a tableau whose weights do not sum to 1, a
+//! decimal that is 1/3 to twelve digits). Each goes to stderr once, as
+//! `warning: file:line:col: ...`, and the command goes on (exit 0), unless
+//! `--deny-warnings` turns them into an error (exit 2) before any output.
+
+use std::collections::HashSet;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::{Mutex, OnceLock};
+
+use crate::error::Error;
+
+static DENY: AtomicBool = AtomicBool::new(false);
+
+fn shown() -> &'static Mutex<Vec<String>> {
+    static SHOWN: OnceLock<Mutex<Vec<String>>> = OnceLock::new();
+    SHOWN.get_or_init(Default::default)
+}
+
+/// `--deny-warnings`: every warning is an error.
+pub(crate) fn deny(on: bool) {
+    DENY.store(on, Ordering::Relaxed);
+}
+
+/// Shows the warnings of one input (`file:line:col: message` each), each at
+/// most once per run however often the input is read; with
+/// `--deny-warnings`, refuses the input when it has any.
+pub(crate) fn report(warnings: Vec<String>) -> Result<(), Error> {
+    if warnings.is_empty() {
+        return Ok(());
+    }
+    let mut seen = shown().lock().unwrap_or_else(|e| e.into_inner());
+    let known: HashSet<&String> = seen.iter().collect();
+    let new: Vec<String> = warnings.into_iter().filter(|w| !known.contains(w)).collect();
+    for w in &new {
+        crate::cli::output::print_error(&format!("warning: {w}"));
+    }
+    let n = new.len();
+    seen.extend(new);
+    if DENY.load(Ordering::Relaxed) && n > 0 {
+        return Err(Error::usage(format!(
+            "{n} warning{} above, and --deny-warnings makes them errors",
+            if n == 1 { "" } else { "s" }
+        )));
+    }
+    Ok(())
+}
+
+/// An exact value as a warning shows it: as written when short; a long
+/// rational (the sum of decimals read exactly) as its 17-digit decimal.
+pub(crate) fn value(p: &poly::Poly) -> String {
+    let s = p.to_string();
+    match p.as_constant() {
+        Some(q) if s.len() > 24 => {
+            format!(
+                "{} (exactly a ratio of {}-digit integers)",
+                check::numeric::q_to_f64(&q),
+                q.denom().to_string().len()
+            )
+        }
+        _ => s,
+    }
+}
+
+/// An exact value against the one expected: as written when short, else as
+/// its distance from the expected value (`1 + 4.4e-17`, the sum of
+/// decimals that nearly cancel).
+pub(crate) fn value_near(p: &poly::Poly, expected: &poly::Poly) -> String {
+    let s = p.to_string();
+    match (p - expected).as_constant() {
+        Some(d) if s.len() > 24 && check::numeric::q_to_f64(&d).abs() < 1e-6 => {
+            let d = check::numeric::q_to_f64(&d);
+            let sign = if d < 0.0 { '-' } else { '+' };
+            format!("{expected} {sign} {:.2e}", d.abs())
+        }
+        _ => value(p),
+    }
+}
+
+/// The warnings of a `.zm` program read from `path`.
+pub(crate) fn of_method(path: &str, m: &poly::Method) -> Vec<String> {
+    m.warnings().iter().map(|w| format!("{path}:{w}")).collect()
+}
+
+/// The exact closed form a decimal was probably meant as, when it has ten
+/// or more significant digits and lies within 1e-12 of a fraction p/q with
+/// q ≤ 1000 or of (a + b√N)/k with small integers: `0.3333333333333333`
+/// suggests `1/3`, `0.7886751345948129` suggests `(3 + sqrt(3))/6`. The
+/// search is in floats (it only suggests); the analysis keeps what was
+/// written.
+pub(crate) fn closed_form_hint(decimal: &str) -> Option<String> {
+    let digits = decimal.trim_start_matches(['-', '+']);
+    let mantissa = digits.split(['e', 'E']).next().unwrap_or("");
+    let significant =
+        mantissa.trim_start_matches(['0', '.']).chars().filter(char::is_ascii_digit).count();
+    if significant < 10 {
+        return None;
+    }
+    let x: f64 = decimal.parse().ok().filter(|x: &f64| x.is_finite() && *x != 0.0)?;
+    let close = |y: f64| (x - y).abs() <= 1e-12 * x.abs().max(1.0);
+    for q in 1..=1000i64 {
+        let p = (x * q as f64).round();
+        if close(p / q as f64) {
+            // Exactly p/q already (a decimal like 0.1234567890 is itself).
+            if decimal_is(decimal, p as i64, q) {
+                return None;
+            }
+            return Some(if q == 1 { format!("{p}") } else { format!("{p}/{q}") });
+        }
+    }
+    const SQUAREFREE: [i64; 15] = [2, 3, 5, 6, 7, 10, 11, 13, 14, 15, 17, 19, 21, 22, 23];
+    for k in 1..=24i64 {
+        for b in 1..=4i64 {
+            for n in SQUAREFREE {
+                for a in -12..=12i64 {
+                    for sign in [1i64, -1] {
+                        let y = (a as f64 + (sign * b) as f64 * (n as f64).sqrt()) / k as f64;
+                        if close(y) {
+                            return Some(surd(a, sign * b, n, k));
+                        }
+                    }
+                }
+            }
+        }
+    }
+    None
+}
+
+/// Whether the decimal text is exactly p/q.
+fn decimal_is(decimal: &str, p: i64, q: i64) -> bool {
+    poly::advanced::parse_number(decimal.trim_start_matches('-'))
+        .map(|v| {
+            let v = if decimal.starts_with('-') { -v } else { v };
+            v == poly::Q::new(p.into(), q.into())
+        })
+        .unwrap_or(false)
+}
+
+/// (a + b√n)/k as the entry syntax writes it.
+fn surd(a: i64, b: i64, n: i64, k: i64) -> String {
+    let root = match b.abs() {
+        1 => format!("sqrt({n})"),
+        m => format!("{m}*sqrt({n})"),
+    };
+    let num = match (a, b < 0) {
+        (0, false) => root,
+        (0, true) => format!("-{root}"),
+        (a, false) => format!("{a} + {root}"),
+        (a, true) => format!("{a} - {root}"),
+    };
+    match (k, a) {
+        (1, _) => num,
+        (_, 0) => format!("{num}/{k}"),
+        _ => format!("({num})/{k}"),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::closed_form_hint;
+
+    /// What each decimal was probably meant as, computed back exactly from
+    /// the suggestion: the hint is within 1e-12 and is never the decimal
+    /// itself.
+    #[test]
+    fn hints() {
+        for (decimal, hint) in [
+            ("0.3333333333333333", Some("1/3")),
+            ("-0.16666666666666666", Some("-1/6")),
+            ("0.7886751345948129", Some("(3 + sqrt(3))/6")),
+            ("0.21132486540518713", Some("(3 - sqrt(3))/6")),
+            ("0.7071067811865476", Some("sqrt(2)/2")),
+            ("1.4142135623730951", Some("sqrt(2)")),
+            ("0.1", None),
+            ("0.125", None),
+            ("0.1234567891", None),
+            ("0.3333333", None),
+            ("0.5000000000", None),
+        ] {
+            assert_eq!(closed_form_hint(decimal).as_deref(), hint, "{decimal}");
+        }
+    }
+}
