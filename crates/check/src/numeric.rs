@@ -190,6 +190,18 @@ pub fn f64_to_q(x: f64) -> Option<poly::Q> {
     poly::Q::from_float(x)
 }
 
+/// The decimal a finite `f64` was typed as: the shortest decimal that
+/// reads back as `x` (Rust's `Display` of an `f64`), exactly, so `0.1` is
+/// 1/10 and not 3602879701896397/36028797018963968 (None for NaN or ±∞).
+/// The value a user wrote in a scene or on the command line is this one.
+pub fn f64_to_decimal_q(x: f64) -> Option<poly::Q> {
+    if !x.is_finite() {
+        return None;
+    }
+    let q = poly::advanced::parse_number(&format!("{}", x.abs())).ok()?;
+    Some(if x.is_sign_negative() { -q } else { q })
+}
+
 /// One instruction: `dst = Σ coef[i]·reg[src[i]]` over `len` terms (or
 /// `dst += ...` when `accumulate`). When `unit_first`, `coef[0]` is exactly
 /// 1 and the first product is skipped.

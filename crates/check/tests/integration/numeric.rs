@@ -112,3 +112,27 @@ fn initial_slots_fill_history() {
     let m = poly::builtin("verlet").unwrap();
     assert_eq!(initial_slots(&m, |v| if v == "y" { 1.0 } else { 0.0 }), [1.0, 1.0]);
 }
+
+/// A float read as the decimal it was typed as: what a user writes reads
+/// back as exactly that decimal, and every finite float is recovered from
+/// its decimal (the slow oracle: the decimal text through `parse_number`,
+/// and the float back through `q_to_f64`).
+#[test]
+fn floats_read_as_their_decimals() {
+    use check::numeric::{f64_to_decimal_q, q_to_f64};
+    for typed in ["0.1", "2.675", "1e-7", "123456.789", "0.3333333333333333", "5e-324"] {
+        let x: f64 = typed.parse().unwrap();
+        let q = poly::advanced::parse_number(typed).unwrap();
+        assert_eq!(f64_to_decimal_q(x), Some(q.clone()), "{typed}");
+        assert_eq!(f64_to_decimal_q(-x), Some(-q), "-{typed}");
+    }
+    assert_eq!(f64_to_decimal_q(f64::NAN), None);
+    assert_eq!(f64_to_decimal_q(f64::INFINITY), None);
+    proptest::proptest!(|(bits in proptest::num::u64::ANY)| {
+        let x = f64::from_bits(bits);
+        if x.is_finite() {
+            let q = f64_to_decimal_q(x).unwrap();
+            proptest::prop_assert_eq!(q_to_f64(&q).to_bits(), x.to_bits() & !(u64::from(x == 0.0) << 63));
+        }
+    });
+}

@@ -44,7 +44,7 @@
 use std::collections::HashMap;
 use std::time::Duration;
 
-use check::numeric::{f64_to_q, Params, ParamsF64, Step};
+use check::numeric::{f64_to_decimal_q, f64_to_q, Params, ParamsF64, Step};
 use nalgebra::DMatrix;
 use num_complex::Complex64 as C64;
 use poly::advanced::region::{PhiLimit, Region};
@@ -316,9 +316,12 @@ impl Analysed {
         self.inside_exact(phi, d)
     }
 
-    /// Exact membership of (Φ, D), with no float deciding.
+    /// Exact membership of (Φ, D), with no float deciding. D is read as
+    /// the decimal it prints as (a typed `--damping 0.1` or `ratio = 0.1`
+    /// is 1/10, as everywhere else); Φ, a computed ωT/n, as its exact
+    /// binary value.
     fn inside_exact(&self, phi: f64, d: f64) -> bool {
-        let (Some(p), Some(dq)) = (f64_to_q(phi), f64_to_q(d)) else { return false };
+        let (Some(p), Some(dq)) = (f64_to_q(phi), f64_to_decimal_q(d)) else { return false };
         let mut cache = self.at_param.borrow_mut();
         let (chi, intervals) = cache.entry(d.to_bits()).or_insert_with(|| {
             let chi = self.region.at_param(&dq);
@@ -351,7 +354,7 @@ impl Analysed {
         if let Some(l) = self.exact_limits.get(&d.to_bits()) {
             return Some(l.clone());
         }
-        let l = self.region.phi_max(&f64_to_q(d)?).ok()?;
+        let l = self.region.phi_max(&f64_to_decimal_q(d)?).ok()?;
         self.exact_limits.insert(d.to_bits(), l.clone());
         Some(l)
     }
@@ -1237,7 +1240,7 @@ mod tests {
             let a = Analysed::new(spec).unwrap();
             for d in [0.0, 0.05, 0.3, 0.9] {
                 let mut phis: Vec<f64> = (1..=40).map(|k| k as f64 * 0.1).collect();
-                if let Ok(PhiLimit::Below(m)) = a.region.phi_max(&f64_to_q(d).unwrap()) {
+                if let Ok(PhiLimit::Below(m)) = a.region.phi_max(&f64_to_decimal_q(d).unwrap()) {
                     let m: f64 = m.to_decimal(17).parse().unwrap();
                     phis.extend([m * (1.0 - 1e-9), m * (1.0 + 1e-9), m * 0.999, m * 1.001]);
                 }
