@@ -40,8 +40,13 @@ fn bench(c: &mut Criterion) {
                     .iter()
                     .map(|n| LoadedMethod::builtin(n).unwrap())
                     .collect();
-                advise(&scene, &modal, specs, Options { simulate: false, gauss_seidel: false })
-                    .unwrap()
+                advise(
+                    &scene,
+                    &modal,
+                    specs,
+                    Options { simulate: false, simulate_all: false, gauss_seidel: false },
+                )
+                .unwrap()
             })
         });
     }

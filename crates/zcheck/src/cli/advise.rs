@@ -38,6 +38,11 @@ pub(crate) struct Args {
     /// Skip the simulation that checks the prediction.
     #[arg(long)]
     pub no_simulate: bool,
+    /// Check every candidate that meets the target by simulation; by
+    /// default only the recommended one and those within 4x its cost per
+    /// tick are simulated, and the others are named.
+    #[arg(long, conflicts_with = "no_simulate")]
+    pub simulate_all: bool,
     /// How long the scene must stay within tolerance, seconds.
     #[arg(long, default_value_t = SpringScene::DEFAULT_DURATION_S)]
     pub duration: f64,
@@ -121,7 +126,7 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
         SceneFile::one_mode(freq_hz, d, tick_hz, args.duration, args.phase_tol, args.amp_tol);
     let simulate = !args.no_simulate;
     let modal = modal_of(&one_mode, simulate)?;
-    let options = Options { simulate, gauss_seidel: false };
+    let options = Options { simulate, simulate_all: args.simulate_all, gauss_seidel: false };
     let as_scene = advisor::advise(&one_mode, &modal, damped, options)?;
     match args.format {
         Format::Json => {
@@ -284,7 +289,11 @@ fn run_scene(path: &std::path::Path, args: &Args) -> Result<ExitCode, Error> {
              (duration_s, [accuracy])",
         ));
     }
-    let options = Options { simulate: !args.no_simulate, gauss_seidel: args.sweep.is_some() };
+    let options = Options {
+        simulate: !args.no_simulate,
+        simulate_all: args.simulate_all,
+        gauss_seidel: args.sweep.is_some(),
+    };
     let advice = scene_advice(&scene, &args.methods, options)?;
     match args.format {
         Format::Json => super::output::emitln(&serde_json::to_string_pretty(&advice)?)?,
@@ -386,6 +395,21 @@ pub(crate) fn scene_text(name: &str, a: &advisor::SceneAdvice) -> String {
         "\nagreement: simulated within {} of the target (plus 1e-9) of the prediction\n",
         advisor::AGREE_FRACTION
     );
+    if !a.simulation_left_out.is_empty() {
+        let names: Vec<String> = a
+            .simulation_left_out
+            .iter()
+            .map(|l| match l.cost_ratio {
+                Some(r) => format!("{} ({r:.1}x)", l.method),
+                None => l.method.clone(),
+            })
+            .collect();
+        out += &format!(
+            "not simulated (more than {}x the recommended's cost per tick): {}\n",
+            advisor::SIM_COST_FACTOR,
+            names.join(", ")
+        );
+    }
     for c in &a.candidates {
         if let Some(s) = &c.simulated {
             if !s.agree {

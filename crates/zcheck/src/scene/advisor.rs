@@ -195,6 +195,9 @@ pub struct SceneAdvice {
     pub(crate) candidates: Vec<CandidateAdvice>,
     /// The cheapest candidate meeting the target.
     pub(crate) recommended: Option<Recommended>,
+    /// The candidates meeting the target that the checking simulation left
+    /// out: more than [`SIM_COST_FACTOR`] times the recommended's cost.
+    pub(crate) simulation_left_out: Vec<LeftOut>,
     /// The Gauss–Seidel analysis, when asked for.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub(crate) sweep: Option<Vec<SweepReport>>,
@@ -484,6 +487,9 @@ fn system_of(modal: &Modal) -> (System, Vec<Vec<f64>>) {
 pub struct Options {
     /// Simulate to check the prediction.
     pub simulate: bool,
+    /// Simulate every candidate that meets the target, not only those
+    /// within [`SIM_COST_FACTOR`] of the recommended's cost.
+    pub simulate_all: bool,
     /// Analyse the Gauss–Seidel sweep too.
     pub gauss_seidel: bool,
 }
@@ -512,7 +518,7 @@ pub fn advise(
             )));
         }
         let mut a = Analysed::new(spec)?;
-        let adv = advise_one(&mut a, scene, modal, &system, &shapes, &target, options.simulate)?;
+        let adv = advise_one(&mut a, scene, modal, &system, &target)?;
         candidates.push(adv);
         analysed_all.push(a);
     }
@@ -522,6 +528,37 @@ pub fn advise(
         .filter(|(ns, _, _)| ns.is_finite())
         .min_by(|a, b| a.0.total_cmp(&b.0))
         .map(|(_, n, c)| Recommended { method: c.method.clone(), substeps: n });
+    // The checking simulation: the recommended method and those within
+    // SIM_COST_FACTOR of its cost, in parallel; the others are named.
+    let rec_ns = recommended
+        .as_ref()
+        .and_then(|r| candidates.iter().find(|c| c.method == r.method).and_then(|c| c.ns_per_tick));
+    let mut simulation_left_out = Vec::new();
+    if options.simulate {
+        let close_in_cost = |c: &CandidateAdvice| match (c.ns_per_tick, rec_ns) {
+            _ if options.simulate_all => true,
+            (Some(ns), Some(rec)) => ns <= SIM_COST_FACTOR * rec,
+            _ => false,
+        };
+        for c in candidates.iter().filter(|c| c.substeps_accurate.is_some() && !close_in_cost(c)) {
+            simulation_left_out.push(LeftOut {
+                method: c.method.clone(),
+                cost_ratio: match (c.ns_per_tick, rec_ns) {
+                    (Some(ns), Some(rec)) if rec > 0.0 => Some(ns / rec),
+                    _ => None,
+                },
+            });
+        }
+        use rayon::prelude::*;
+        analysed_all
+            .par_iter_mut()
+            .zip(candidates.par_iter_mut())
+            .filter(|(_, c)| c.substeps_accurate.is_some() && close_in_cost(c))
+            .for_each(|(a, c)| {
+                let n = c.substeps_accurate.expect("filtered");
+                c.simulated = simulate_candidate(a, scene, modal, &system, &shapes, &target, n);
+            });
+    }
     let reference = recommended
         .as_ref()
         .and_then(|r| candidates.iter().find(|c| c.method == r.method))
@@ -572,6 +609,7 @@ pub fn advise(
         modes,
         candidates,
         recommended,
+        simulation_left_out,
         sweep,
     })
 }
@@ -581,9 +619,7 @@ fn advise_one(
     scene: &SceneFile,
     modal: &Modal,
     system: &System,
-    shapes: &[Vec<f64>],
     target: &Target,
-    simulate: bool,
 ) -> Result<CandidateAdvice, Error> {
     let tick = scene.tick_hz;
     let modes = &modal.modes;
@@ -684,43 +720,20 @@ fn advise_one(
     let d_timing = modes.iter().map(|m| m.ratio).fold(0.0, f64::max).min(1.0);
     let ns = ns_per_step(&a.spec, d_timing);
     let dof = scene.dof() as f64;
-    let full = match a.spec.system_kernel() {
-        Some(k)
-            if modal.damping == DampingKind::NonProportional && full_sys.n() <= MAX_FULL_DOF =>
-        {
-            Some(k)
-        }
-        _ => None,
-    };
-    let (predicted, simulated) = if let Some(kernel) = full {
+    let full = full_kernel(a, modal, full_sys);
+    let predicted = if let Some(kernel) = full {
         // The modes are coupled: judge the full step's eigenvalues against
         // the continuous system's e^{λT}.
-        // The targets apply to the eigenvalues in the band.
-        let lambdas: Vec<C64> = continuous_eigenvalues(full_sys)
-            .into_iter()
-            .filter(|l| in_band(band, l.norm()))
-            .collect();
+        let lambdas = band_eigenvalues(full_sys, band);
         let duration = scene.duration_s;
         let meets = |n: u64| {
             full_errors(kernel, full_sys, &lambdas, tick, n, duration)
                 .is_some_and(|e| e.phase_rad <= target.phase_tol && e.amplitude <= target.amp_tol)
         };
         substeps_accurate = substeps_stable.and_then(|ns| smallest_meeting(meets, ns));
-        let predicted = substeps_accurate
-            .and_then(|n| full_errors(kernel, full_sys, &lambdas, tick, n, duration));
-        let simulated = match (simulate, substeps_accurate) {
-            (true, Some(n)) => simulate_full(kernel, full_sys, &lambdas, tick, n, duration, target),
-            _ => None,
-        };
-        (predicted, simulated)
+        substeps_accurate.and_then(|n| full_errors(kernel, full_sys, &lambdas, tick, n, duration))
     } else {
-        let predicted =
-            substeps_accurate.map(|n| predicted_errors(a, modes, tick, n, target, band, None));
-        let simulated = match (simulate, substeps_accurate) {
-            (true, Some(n)) => simulate_check(a, scene, modal, system, shapes, n, target),
-            _ => None,
-        };
-        (predicted, simulated)
+        substeps_accurate.map(|n| predicted_errors(a, modes, tick, n, target, band, None))
     };
     Ok(CandidateAdvice {
         method: a.spec.display().to_owned(),
@@ -729,13 +742,68 @@ fn advise_one(
         ns_per_step: ns,
         ns_per_tick: substeps_accurate.map(|n| ns * n as f64 * dof),
         predicted,
-        simulated,
+        simulated: None,
         phi_max,
         stability_from,
         mode_stable,
         mode_accurate,
     })
 }
+
+/// The eigenvalues λ of the continuous system whose |λ| lies in the band:
+/// those the targets apply to.
+fn band_eigenvalues(full_sys: &System, band: Option<f64>) -> Vec<C64> {
+    continuous_eigenvalues(full_sys).into_iter().filter(|l| in_band(band, l.norm())).collect()
+}
+
+/// The full-step kernel a candidate is judged by: its system kernel, under
+/// non-proportional damping, for a scene small enough.
+fn full_kernel(a: &Analysed, modal: &Modal, full_sys: &System) -> Option<Kernel> {
+    match a.spec.system_kernel() {
+        Some(k)
+            if modal.damping == DampingKind::NonProportional && full_sys.n() <= MAX_FULL_DOF =>
+        {
+            Some(k)
+        }
+        _ => None,
+    }
+}
+
+/// The checking simulation of one candidate at its accurate substeps `n`:
+/// the full step's (coupled modes) or the modal one's.
+fn simulate_candidate(
+    a: &Analysed,
+    scene: &SceneFile,
+    modal: &Modal,
+    system: &System,
+    shapes: &[Vec<f64>],
+    target: &Target,
+    n: u64,
+) -> Option<Simulated> {
+    let full_sys = modal.full.as_ref().unwrap_or(system);
+    match full_kernel(a, modal, full_sys) {
+        Some(kernel) => {
+            let lambdas = band_eigenvalues(full_sys, scene.max_hz);
+            simulate_full(kernel, full_sys, &lambdas, scene.tick_hz, n, scene.duration_s, target)
+        }
+        None => simulate_check(a, scene, modal, system, shapes, n, target),
+    }
+}
+
+/// A candidate the checking simulation left out, and its cost against the
+/// recommended's (`None` when either cost is unknown).
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct LeftOut {
+    /// The method.
+    pub method: String,
+    /// Its ns per tick over the recommended's.
+    pub cost_ratio: Option<f64>,
+}
+
+/// The checking simulation runs the recommended method and those within
+/// this factor of its cost per tick: they are the ones a user would pick
+/// instead. A method that needs 10⁵ substeps per tick is not simulated.
+pub const SIM_COST_FACTOR: f64 = 4.0;
 
 /// The smallest n ≥ `from` with `ok(n)`, by doubling then bisection
 /// (assumes `ok` monotone), `None` past [`MAX_SUBSTEPS`].
@@ -826,7 +894,7 @@ fn checked_modes(
 const FIT_SAMPLES: usize = 200;
 
 /// Largest simulated work, steps × degrees of freedom.
-const SIM_WORK: f64 = 2e8;
+const SIM_WORK: f64 = 3e7;
 
 /// Simulates the whole scene at `n` substeps and fits each checked mode's
 /// per-step root from its projected sequence. Each mode is sampled every

@@ -129,7 +129,7 @@ fn example(name: &str) -> String {
 #[test]
 fn prediction_agrees_with_simulation_on_every_example() {
     for name in ["chain10", "quarter_car", "cloth_strip", "building3", "spring_120hz"] {
-        let v = json(&["advise", "--scene", &example(name), "--format", "json"]);
+        let v = json(&["advise", "--scene", &example(name), "--format", "json", "--simulate-all"]);
         let rec = &v["recommended"];
         assert!(rec["method"].is_string() && rec["substeps"].is_u64(), "{name}: {rec}");
         for m in v["modes"].as_array().unwrap() {
@@ -339,7 +339,7 @@ fn particle_examples_agree_with_simulation() {
     // rope2d: 10 free particles × 2; every triple is a triangle.
     for (name, dof, rigid) in [("cloth8", 168u64, 56u64), ("rope2d", 20, 0)] {
         let start = std::time::Instant::now();
-        let v = json(&["advise", "--scene", &example(name), "--format", "json"]);
+        let v = json(&["advise", "--scene", &example(name), "--format", "json", "--simulate-all"]);
         eprintln!("{name}: {:?}", start.elapsed());
         assert_eq!(v["dof"], dof, "{name}");
         assert_eq!(v["rigid_modes"], rigid, "{name}");
@@ -499,6 +499,7 @@ fn rigid_modes_with_non_proportional_damping_match_the_scalar_chain() {
         write("np-planar", &planar).to_str().unwrap(),
         "--format",
         "json",
+        "--simulate-all",
     ]);
     let s = json(&[
         "advise",
@@ -506,6 +507,7 @@ fn rigid_modes_with_non_proportional_damping_match_the_scalar_chain() {
         write("np-scalar", &scalar).to_str().unwrap(),
         "--format",
         "json",
+        "--simulate-all",
     ]);
     assert_eq!(p["damping"]["kind"], "non_proportional");
     assert_eq!(s["damping"]["kind"], "non_proportional");
@@ -527,6 +529,46 @@ fn rigid_modes_with_non_proportional_damping_match_the_scalar_chain() {
         assert_eq!(c["substeps_accurate"], o["substeps_accurate"], "{m}");
         if c["substeps_accurate"].is_u64() {
             assert_eq!(c["simulated"]["agree"], true, "{m}: {c}");
+        }
+    }
+}
+
+/// By default the checking simulation is bounded: the recommended method
+/// and every candidate within SIM_COST_FACTOR (4x) of its cost per tick
+/// are simulated (and agree); every other candidate that meets the target
+/// is named with its cost ratio, above 4, and not simulated. Together they
+/// are every candidate that meets the target.
+#[test]
+fn the_default_simulation_checks_the_close_candidates_and_names_the_rest() {
+    for name in
+        ["chain10", "quarter_car", "cloth_strip", "building3", "spring_120hz", "cloth8", "rope2d"]
+    {
+        let v = json(&["advise", "--scene", &example(name), "--format", "json"]);
+        let rec = v["recommended"]["method"].as_str().unwrap();
+        let left: Vec<&str> = v["simulation_left_out"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|l| {
+                assert!(l["cost_ratio"].as_f64().unwrap() > 4.0, "{name}: {l}");
+                l["method"].as_str().unwrap()
+            })
+            .collect();
+        assert!(!left.contains(&rec), "{name}: the recommended {rec} left out");
+        for c in v["candidates"].as_array().unwrap() {
+            let m = c["method"].as_str().unwrap();
+            if !c["substeps_accurate"].is_u64() {
+                assert!(c["simulated"].is_null() && !left.contains(&m), "{name} {m}");
+            } else if left.contains(&m) {
+                assert!(c["simulated"].is_null(), "{name} {m}: simulated though left out");
+            } else {
+                assert_eq!(c["simulated"]["agree"], true, "{name} {m}: {c}");
+            }
+        }
+        let (code, out, _) = zcheck(&["advise", "--scene", &example(name)]);
+        assert_eq!(code, 0);
+        for m in &left {
+            assert!(out.contains("not simulated") && out.contains(m), "{name}: {out}");
         }
     }
 }
