@@ -1,7 +1,9 @@
 //! The whole-scene advisor on a 1000-mass chain: modal reduction (eigenvalues of
 //! a 1000×1000 symmetric matrix), the exact (Φ, D) region of the seven
 //! direct methods, exact membership of every mode, accuracy per mode and a
-//! brief timing of each method's kernel; no checking simulation.
+//! brief timing of each method's kernel; no checking simulation. Then the
+//! default command's work (with the checking simulation) on that chain and
+//! on every example scene (`crates/zcheck/scenes/`).
 //!
 //! Run: `cargo bench -p zcheck --bench advise -- --warm-up-time 1 --measurement-time 3`
 
@@ -45,6 +47,38 @@ fn bench(c: &mut Criterion) {
                     &modal,
                     specs,
                     Options { simulate: false, simulate_all: false, gauss_seidel: false },
+                )
+                .unwrap()
+            })
+        });
+    }
+    g.finish();
+    let mut g = c.benchmark_group("advise_default");
+    g.sample_size(10);
+    let examples = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
+    let mut scenes: Vec<(String, SceneFile)> =
+        vec![("chain1000_undamped".into(), chain(1000, false))];
+    let mut files: Vec<_> =
+        std::fs::read_dir(&examples).unwrap().map(|e| e.unwrap().path()).collect();
+    files.sort();
+    for f in files {
+        let name = f.file_stem().unwrap().to_string_lossy().into_owned();
+        let text = std::fs::read_to_string(&f).unwrap();
+        scenes.push((name, SceneFile::parse(f.to_str().unwrap(), &text).unwrap()));
+    }
+    for (name, scene) in &scenes {
+        g.bench_function(name.as_str(), |b| {
+            b.iter(|| {
+                let modal = reduce_with(scene, Shapes::Compute).unwrap();
+                let specs: Vec<LoadedMethod> = poly::advanced::builtins::DAMPED_METHODS
+                    .iter()
+                    .map(|n| LoadedMethod::builtin(n).unwrap())
+                    .collect();
+                advise(
+                    scene,
+                    &modal,
+                    specs,
+                    Options { simulate: true, simulate_all: false, gauss_seidel: false },
                 )
                 .unwrap()
             })
