@@ -35,6 +35,9 @@ pub(crate) struct Args {
     /// Also analyse body-by-body (Gauss-Seidel) updates of the scene.
     #[arg(long, value_enum, requires = "scene")]
     pub sweep: Option<SweepArg>,
+    /// How a mesh (`--scene FILE.obj`) becomes a scene.
+    #[command(flatten)]
+    pub mesh: crate::scene::mesh::MeshOptions,
     /// Skip the simulation that checks the prediction.
     #[arg(long)]
     pub no_simulate: bool,
@@ -279,7 +282,17 @@ pub(crate) fn text(a: &SpringAdvice) -> String {
 
 /// `zcheck advise --scene FILE`.
 fn run_scene(path: &std::path::Path, args: &Args) -> Result<ExitCode, Error> {
-    let scene = SceneFile::load(path)?;
+    let scene = if crate::scene::mesh::is_mesh(path) {
+        let text = crate::scene::mesh::scene_toml(path, &args.mesh)?;
+        SceneFile::parse(&format!("{} (as a scene)", path.display()), &text)?
+    } else if args.mesh.any() {
+        return Err(Error::usage(format!(
+            "--density, --stiffness, --bending, --spring-ratio, --fix-group, --fix-box and --tick-hz describe a mesh: expected --scene FILE.obj, not {}",
+            path.display()
+        )));
+    } else {
+        SceneFile::load(path)?
+    };
     if args.duration != SpringScene::DEFAULT_DURATION_S
         || args.phase_tol != SpringScene::DEFAULT_PHASE_TOL
         || args.amp_tol != SpringScene::DEFAULT_AMP_TOL

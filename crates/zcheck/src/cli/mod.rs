@@ -15,6 +15,7 @@ pub(crate) mod equiv;
 pub(crate) mod format;
 pub(crate) mod from_tableau;
 pub(crate) mod map;
+pub(crate) mod mesh;
 pub(crate) mod methods;
 pub(crate) mod output;
 pub(crate) mod overview;
@@ -97,6 +98,8 @@ enum Command {
     FromTableau(from_tableau::Args),
     /// The method on y' = λy in the complex w = hλ plane: order, error constant, axis limits, A(α), ρ∞.
     Region(region::Args),
+    /// Write a scene (TOML) from a triangle mesh (OBJ): particles, edge and bending springs.
+    SceneFromMesh(mesh::Args),
 }
 
 impl Cli {
@@ -121,6 +124,7 @@ impl Cli {
             Command::Emit(a) => emit::run(a),
             Command::FromTableau(a) => from_tableau::run(a),
             Command::Region(a) => region::run(a),
+            Command::SceneFromMesh(a) => mesh::run(a),
         }
     }
 }

@@ -16,6 +16,7 @@ pub mod advisor;
 pub mod aircraft;
 pub(crate) mod figure;
 pub mod file;
+pub mod mesh;
 pub mod modal;
 pub(crate) mod reference;
 pub mod three_body;

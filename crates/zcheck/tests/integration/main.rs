@@ -12,6 +12,7 @@ mod fuzz_corpus;
 mod hostile;
 mod limit_class;
 mod measured_cost;
+mod mesh_cli;
 mod params_cli;
 mod plot_cli;
 mod region_cli;
