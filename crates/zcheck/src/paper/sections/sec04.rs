@@ -474,6 +474,7 @@ fn method_identities(s: &mut Section) {
             "similar by the permutation {perm:?} and the scaling ({})",
             scale.iter().map(ToString::to_string).collect::<Vec<_>>().join(", ")
         ),
+        Relation::ChangeOfVariables(_) => "similar by a change of variables T(Φ)".to_owned(),
         Relation::SameCharpoly => "the same χ only".to_owned(),
         Relation::Different => "nothing".to_owned(),
     };
@@ -508,7 +509,8 @@ fn method_identities(s: &mut Section) {
         ),
         Finding::all(stated),
         "Derivation::relate on every pair of built-ins: equal P, similar by a permutation and/or a constant \
-         diagonal scaling (exact, every permutation tried), or only the same χ; the _matrix twins are \
+         diagonal scaling (exact, every permutation tried), similar by a change of variables T(Φ) (T·P_a = P_b·T \
+         multiplied out), or only the same χ; the _matrix twins are \
          left out of the lists (Appendix B makes them equal to their direct branches)",
     );
 }
