@@ -49,8 +49,8 @@ fn parameters(change: &Change) -> String {
 }
 
 /// Each slot of `to` as a combination of the slots of `from`, one equation
-/// per slot: `v = (y - y@1)/Phi`.
-fn equations(
+/// per slot: `v = (y - y@1)/Phi` (the report's claims print them too).
+pub(crate) fn equations(
     row: impl Fn(usize) -> (Vec<Poly>, Poly),
     from: &poly::Method,
     to: &poly::Method,
@@ -58,17 +58,55 @@ fn equations(
     (0..to.order())
         .map(|i| {
             let (entries, den) = row(i);
-            let sum = entries.iter().enumerate().fold(Poly::zero(), |acc, (j, e)| {
-                &acc + &(e * &Poly::sym(Sym::new(&slot(from, j))))
-            });
-            let rhs = match (den.is_one(), sum.len() > 1) {
-                (true, _) => sum.to_string(),
+            let sum = combination(&entries, from);
+            let rhs = match (den.is_one(), entries.iter().filter(|e| !e.is_zero()).count() > 1) {
+                (true, _) => sum,
                 (false, true) => format!("({sum})/{}", divisor(&den)),
                 (false, false) => format!("{sum}/{}", divisor(&den)),
             };
             format!("{} = {rhs}", slot(to, i))
         })
         .collect()
+}
+
+/// `Σ entries[j]·(slot j of m)`, the added terms before the subtracted
+/// ones: `y - y@1`, `y - Phi*v`.
+fn combination(entries: &[Poly], m: &poly::Method) -> String {
+    use num_traits::Signed;
+    let mut terms: Vec<(bool, String)> = entries
+        .iter()
+        .enumerate()
+        .filter(|(_, e)| !e.is_zero())
+        .map(|(j, e)| {
+            let negative = e.len() == 1 && e.terms().all(|(_, c)| c.is_negative());
+            let e = if negative { -e } else { e.clone() };
+            let name = slot(m, j);
+            let body = if e.is_one() {
+                name
+            } else if e.len() == 1 {
+                format!("{e}*{name}")
+            } else {
+                format!("({e})*{name}")
+            };
+            (negative, body)
+        })
+        .collect();
+    terms.sort_by_key(|(negative, _)| *negative);
+    let mut out = String::new();
+    for (k, (negative, body)) in terms.iter().enumerate() {
+        out.push_str(match (k, negative) {
+            (0, true) => "-",
+            (0, false) => "",
+            (_, true) => " - ",
+            (_, false) => " + ",
+        });
+        out.push_str(body);
+    }
+    if out.is_empty() {
+        "0".to_owned()
+    } else {
+        out
+    }
 }
 
 /// A denominator as written after `/`: bare when it is one name (`Phi`),

@@ -60,7 +60,7 @@ fn verlet_and_false_euler_through_t_of_phi() {
     let stdout = text(&out.stdout);
     for line in [
         "verlet and false_euler: similar by a change of variables T(Phi), not by a permutation or scaling",
-        "  v = (-y@1 + y)/Phi",
+        "  v = (y - y@1)/Phi",
         "  y@1 = y - Phi*v",
         "T = [[1, -1], [Phi, 0]] / Phi",
         "T^-1 = [[0, 1], [-Phi, 1]]",
@@ -74,7 +74,7 @@ fn verlet_and_false_euler_through_t_of_phi() {
     let change = &v["change"];
     assert_eq!(change["observed"], "y");
     assert_eq!(change["t_denominator"], "Phi");
-    assert_eq!(change["b_from_a"][0], "v = (-y@1 + y)/Phi");
+    assert_eq!(change["b_from_a"][0], "v = (y - y@1)/Phi");
     let matrix = |m: &Value| {
         PolyMatrix::from_rows(
             m.as_array()
