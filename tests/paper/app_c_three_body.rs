@@ -33,7 +33,22 @@ pub const COVERED: &[(&str, Verdict)] = &[
     ("appC.averaged_clover_leaf", Refined),
     ("appC.velocity_reads_new_positions", Errata),
     ("appC.force_law", Refined),
+    ("appC.update_order", Confirmed),
 ];
+
+/// The update order read from the listing itself: velocities first from the
+/// old positions, positions from the new velocities (False Euler); the same
+/// reader on Appendix D's listing finds the old velocities (Standard Euler),
+/// so the claim tells the two apart.
+#[test]
+fn update_order_is_read_from_the_listing() {
+    let claims = appendix_claims();
+    let derived = |id: &str| claims.iter().find(|c| c.id == id).expect("claim").derived.clone();
+    let (c, d) = (derived("appC.update_order"), derived("appD.update_order"));
+    assert!(c.contains("each position the new velocity") && c.contains("false_euler"), "{c}");
+    assert!(d.contains("each position the old velocity") && d.contains("standard_euler"), "{d}");
+    assert!(!c.contains("standard_euler") && !d.contains("false_euler"), "{c} | {d}");
+}
 
 #[test]
 fn verdicts() {

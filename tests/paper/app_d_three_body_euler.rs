@@ -20,6 +20,7 @@ pub const COVERED: &[(&str, Verdict)] = &[
     ("appD.control_by_partial_derivatives", Confirmed),
     ("appD.sec12_chaotic_but_bounded", Confirmed),
     ("appD.velocity_reads_new_positions", Errata),
+    ("appD.update_order", Confirmed),
 ];
 
 /// Appendix D's loop reads x1..y3 before setting them: with zeroed memory the

@@ -15,6 +15,7 @@ pub const COVERED: &[(&str, Verdict)] = &[
     ("sec06.eigenvalues", Confirmed),
     ("sec06.r_squared", Confirmed),
     ("sec06.damping_choice", Confirmed),
+    ("sec06.y_first_symplectic", Confirmed),
     ("sec06.now_harmonic", Refined),
     ("sec06.tan_psi_d", Confirmed),
     ("sec06.tan_psi", Confirmed),

@@ -11,6 +11,7 @@ pub const COVERED: &[(&str, Verdict)] = &[
     ("sec08.oscillator_recursion", Confirmed),
     ("sec08.charpoly", Confirmed),
     ("sec08.same_as_false_euler", Confirmed),
+    ("sec08.secant_change_of_variables", Confirmed),
     ("sec08.initial_velocity", Refined),
     ("sec08.operations", Refined),
     ("sec08.bad_formulation", Refined),

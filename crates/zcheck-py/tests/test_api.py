@@ -86,7 +86,7 @@ def test_map_gives_numpy_arrays():
 
 def test_paper_and_advise():
     claims = zcheck.paper()
-    assert len(claims) == 133 and {"id", "statement", "verdict"} <= set(claims[0])
+    assert len(claims) == 137 and {"id", "statement", "verdict"} <= set(claims[0])
     scene = "tick_hz = 60\nduration_s = 1\n[[mode]]\nhz = 120\n"
     a = zcheck.advise(scene)
     assert a["recommended"] is not None

@@ -215,9 +215,10 @@ pub fn paper_overview(order: usize) -> Result<Vec<MethodSummary>, Error> {
         .collect()
 }
 
-/// The overview as a Markdown table (numbers rounded to 4 decimals). When
-/// a row is implicit, a column says what its mul/add include: the solve,
-/// applied as A⁻¹E with the LU factorisation once per Φ.
+/// The overview as a Markdown table (numbers rounded to 4 decimals, the
+/// exact limit in the report's notation, Φ). When a row is implicit, a
+/// column says what its mul/add include: the solve, applied as A⁻¹E with
+/// the LU factorisation once per Φ.
 pub fn to_markdown(rows: &[MethodSummary]) -> String {
     let implicit = rows.iter().any(|r| r.unknowns > 0);
     let mut s = String::from(
@@ -231,7 +232,7 @@ pub fn to_markdown(rows: &[MethodSummary]) -> String {
         s.push_str(&format!(
             "| {} | {} | {} | {} | {} | `{}` | `{}` | `{}` | `{}` | {} | {} |",
             r.method,
-            r.phi_max_exact,
+            crate::paper::notation::math(&r.phi_max_exact),
             f(r.phi_max),
             f(r.min_steps_per_period),
             r.rho_inf,

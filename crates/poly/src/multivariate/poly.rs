@@ -93,6 +93,61 @@ impl Monomial {
         Monomial(out)
     }
 
+    /// `self / d` when `d` divides `self` (every exponent of `d` at most
+    /// this monomial's).
+    fn divide(&self, d: &Monomial) -> Option<Monomial> {
+        let mut out = Vec::with_capacity(self.0.len());
+        let mut j = 0;
+        for &(s, e) in &self.0 {
+            let f = match d.0.get(j) {
+                Some(&(t, f)) if t == s => {
+                    j += 1;
+                    f
+                }
+                Some(&(t, _)) if t < s => return None,
+                _ => 0,
+            };
+            if f > e {
+                return None;
+            }
+            if e > f {
+                out.push((s, e - f));
+            }
+        }
+        (j == d.0.len()).then_some(Monomial(out))
+    }
+
+    /// The graded lexicographic order: total degree first, then the
+    /// exponent of the symbol with the smallest id, and so on. Unlike the
+    /// derived `Ord` (which sorts the map), it is a monomial order:
+    /// `a < b` implies `a·m < b·m`, which polynomial division needs.
+    fn grlex_cmp(&self, other: &Monomial) -> std::cmp::Ordering {
+        self.degree().cmp(&other.degree()).then_with(|| {
+            let (a, b) = (&self.0, &other.0);
+            let (mut i, mut j) = (0, 0);
+            loop {
+                match (a.get(i), b.get(j)) {
+                    (None, None) => return std::cmp::Ordering::Equal,
+                    (Some(_), None) => return std::cmp::Ordering::Greater,
+                    (None, Some(_)) => return std::cmp::Ordering::Less,
+                    (Some(&(s, e)), Some(&(t, f))) => {
+                        if s < t {
+                            return std::cmp::Ordering::Greater;
+                        }
+                        if t < s {
+                            return std::cmp::Ordering::Less;
+                        }
+                        if e != f {
+                            return e.cmp(&f);
+                        }
+                        i += 1;
+                        j += 1;
+                    }
+                }
+            }
+        })
+    }
+
     /// Factors sorted by symbol name, for printing.
     fn by_name(&self) -> Vec<(Sym, u32)> {
         let mut f = self.0.clone();
@@ -263,6 +318,69 @@ impl Poly {
         Poly::from_terms(
             u.coeffs().iter().enumerate().map(|(k, c)| (c.clone(), Monomial::power(sym, k as u32))),
         )
+    }
+
+    /// The leading term in the graded lexicographic order (`None` for zero).
+    pub(crate) fn leading_term(&self) -> Option<(&Monomial, &Q)> {
+        self.terms.iter().max_by(|a, b| a.0.grlex_cmp(b.0))
+    }
+
+    /// `self / d` when `d` divides `self` exactly in Q[symbols], by
+    /// multivariate division in the graded lexicographic order (whose
+    /// remainder is zero exactly when `d` divides); `None` otherwise, and for
+    /// `d = 0`.
+    pub(crate) fn div_exact(&self, d: &Poly) -> Option<Poly> {
+        let (dm, dc) = d.leading_term()?;
+        if let Some(c) = d.constant_ref() {
+            return Some(self.times_constant(&(Q::one() / c)));
+        }
+        let mut rest = self.clone();
+        let mut quotient = Poly::zero();
+        while let Some((m, c)) = rest.leading_term() {
+            let t = Poly::term(c / dc, m.divide(dm)?);
+            rest -= &(&t * d);
+            quotient += &t;
+        }
+        Some(quotient)
+    }
+
+    /// A greatest common divisor in Q[symbols], up to a rational factor
+    /// (zero only when both are zero): the recursive primitive remainder
+    /// sequence in the largest symbol, with contents taken in the others.
+    /// For the small polynomials of a change of variables; the analysis
+    /// proper works in one symbol, with [`UPoly::gcd`].
+    pub(crate) fn gcd(&self, other: &Poly) -> Poly {
+        if self.is_zero() {
+            return other.clone();
+        }
+        if other.is_zero() {
+            return self.clone();
+        }
+        let Some(&x) = self.symbols().union(&other.symbols()).max() else {
+            return Poly::one();
+        };
+        let content = |p: &Poly| {
+            p.coeffs_in(x).iter().filter(|c| !c.is_zero()).fold(Poly::zero(), |g, c| g.gcd(c))
+        };
+        let primitive = |p: &Poly| p.div_exact(&content(p)).expect("the content divides");
+        let common = content(self).gcd(&content(other));
+        let (mut f, mut g) = (primitive(self), primitive(other));
+        if f.degree_in(x) < g.degree_in(x) {
+            std::mem::swap(&mut f, &mut g);
+        }
+        while !g.is_zero() {
+            // The pseudo-remainder of f by g in x.
+            let (dg, lg) = (g.degree_in(x), g.coeffs_in(x).pop().expect("nonzero"));
+            let mut r = f;
+            while !r.is_zero() && r.degree_in(x) >= dg {
+                let shift = Poly::term(Q::one(), Monomial::power(x, r.degree_in(x) - dg));
+                let lr = r.coeffs_in(x).pop().expect("nonzero");
+                r = &(&lg * &r) - &(&(&lr * &shift) * &g);
+            }
+            f = g;
+            g = if r.is_zero() { r } else { primitive(&r) };
+        }
+        &common * &f
     }
 
     /// Multiplies every coefficient by `c`.

@@ -22,6 +22,10 @@ pub struct Claim {
     pub statement: String,
     /// What zcheck derived.
     pub derived: String,
+    /// The printed line as it should read, where the claim is an erratum or
+    /// a slip and the section computed it; the report falls back on the
+    /// finding's derived object or intended text.
+    pub corrected: Option<String>,
     /// The verdict: always `policy::verdict(&finding)`.
     verdict: Verdict,
     /// How the verdict was reached (exact derivation, numbers, runs).
@@ -41,7 +45,7 @@ impl Claim {
         evidence: String,
     ) -> Claim {
         let verdict = policy::verdict(&finding);
-        Claim { id, section, statement, derived, verdict, evidence, finding }
+        Claim { id, section, statement, derived, corrected: None, verdict, evidence, finding }
     }
 
     /// The verdict.
@@ -54,16 +58,49 @@ impl Claim {
         &self.finding
     }
 
+    /// The corrected line: the one the section computed, else the finding's
+    /// derived object (an object against its transcription) or intended
+    /// text (a slip); `None` for a statement checked case by case without
+    /// a computed correction.
+    pub fn correction(&self) -> Option<&str> {
+        self.corrected.as_deref().or(match &self.finding {
+            Finding::Same { derived, .. } => Some(derived.as_str()),
+            Finding::Slip { intended, .. } => Some(intended.as_str()),
+            Finding::Cases { .. } => None,
+        })
+    }
+
+    /// The cases where the statement fails, each with the reason it lies
+    /// beyond what the paper states (`None` for a stated case).
+    pub fn failing_cases(&self) -> Vec<(&str, Option<&str>)> {
+        match &self.finding {
+            Finding::Cases { cases } => cases
+                .iter()
+                .filter(|c| !c.holds)
+                .map(|c| {
+                    let reason = match &c.scope {
+                        super::finding::Scope::Wording { reason } => Some(reason.as_str()),
+                        super::finding::Scope::Stated => None,
+                    };
+                    (c.case.as_str(), reason)
+                })
+                .collect(),
+            _ => Vec::new(),
+        }
+    }
+
     /// The same claim judged on another finding (for tests that perturb a
     /// claim's computed inputs and watch its verdict move).
     pub fn with_finding(&self, finding: Finding) -> Claim {
-        Claim::new(
+        let mut c = Claim::new(
             self.id.clone(),
             self.section.clone(),
             self.statement.clone(),
             self.derived.clone(),
             finding,
             self.evidence.clone(),
-        )
+        );
+        c.corrected = self.corrected.clone();
+        c
     }
 }

@@ -5,7 +5,7 @@
 use serde::Serialize;
 
 /// Where a case lies relative to what the paper asserts.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Scope {
     /// Inside the range the paper states for the claim (or under the
@@ -13,8 +13,25 @@ pub enum Scope {
     /// every case the wording covers is stated.
     Stated,
     /// Covered only by the wording ("always", "for all systems") beyond the
-    /// range the paper states elsewhere.
-    Wording,
+    /// range the paper states elsewhere. A case is never put here without
+    /// the reason, which the report prints with the claim's evidence.
+    Wording {
+        /// Why the paper's statement does not reach the case: the range it
+        /// states, computed, or the reading its words leave open.
+        reason: String,
+    },
+}
+
+impl Scope {
+    /// Covered only by the wording, for `reason`.
+    pub(crate) fn wording(reason: impl Into<String>) -> Scope {
+        Scope::Wording { reason: reason.into() }
+    }
+
+    /// Whether the paper states the case.
+    pub fn is_stated(&self) -> bool {
+        matches!(self, Scope::Stated)
+    }
 }
 
 /// One case of a statement checked case by case: a piece of the Φ axis, a

@@ -7,6 +7,7 @@
 
 mod claim;
 mod finding;
+pub(crate) mod notation;
 pub mod policy;
 
 pub use claim::Claim;

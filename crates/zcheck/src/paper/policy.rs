@@ -12,7 +12,7 @@
 
 use serde::Serialize;
 
-use super::finding::{Finding, Scope};
+use super::finding::Finding;
 
 /// How a claim of the paper fares against the derivation (DESIGN.md, "the
 /// verdict policy").
@@ -55,8 +55,8 @@ pub fn verdict(finding: &Finding) -> Verdict {
             }
         }
         Finding::Cases { cases } => {
-            let stated_fail = cases.iter().any(|c| c.scope == Scope::Stated && !c.holds);
-            let stated_any = cases.iter().any(|c| c.scope == Scope::Stated);
+            let stated_fail = cases.iter().any(|c| c.scope.is_stated() && !c.holds);
+            let stated_any = cases.iter().any(|c| c.scope.is_stated());
             if cases.is_empty() || !stated_any || stated_fail {
                 Verdict::Errata
             } else if cases.iter().all(|c| c.holds) {
@@ -80,7 +80,7 @@ pub fn verdict(finding: &Finding) -> Verdict {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::paper::finding::Case;
+    use crate::paper::finding::{Case, Scope};
 
     fn case(holds: bool, scope: Scope) -> Case {
         Case { case: String::new(), holds, scope }
@@ -92,12 +92,18 @@ mod tests {
         let check = |f: Finding, v: Verdict| assert_eq!(verdict(&f), v, "{f:?}");
         check(Finding::same("1", "1"), Verdict::Confirmed);
         check(Finding::same("1", "2"), Verdict::Errata);
-        use Scope::*;
+        let (stated, wording) = (Scope::Stated, Scope::wording("a reason"));
         let cases = |c: Vec<Case>| Finding::Cases { cases: c };
-        check(cases(vec![case(true, Stated), case(true, Wording)]), Verdict::Confirmed);
-        check(cases(vec![case(true, Stated), case(false, Wording)]), Verdict::Refined);
-        check(cases(vec![case(false, Stated), case(true, Wording)]), Verdict::Errata);
-        check(cases(vec![case(true, Wording)]), Verdict::Errata);
+        check(
+            cases(vec![case(true, stated.clone()), case(true, wording.clone())]),
+            Verdict::Confirmed,
+        );
+        check(
+            cases(vec![case(true, stated.clone()), case(false, wording.clone())]),
+            Verdict::Refined,
+        );
+        check(cases(vec![case(false, stated), case(true, wording.clone())]), Verdict::Errata);
+        check(cases(vec![case(true, wording)]), Verdict::Errata);
         check(cases(vec![]), Verdict::Errata);
         let slip = |p: &str, i: &str, m: bool| Finding::Slip {
             printed: p.into(),

@@ -9,7 +9,8 @@ use serde::Serialize;
 use serde_json::json;
 
 use crate::paper::claim::Claim;
-
+use crate::paper::finding::{Finding, Scope};
+use crate::paper::notation;
 use crate::paper::policy::Verdict;
 
 /// The paper's sections that carry claims, in the paper's order, with their
@@ -113,8 +114,123 @@ fn heading(section: &str) -> String {
     }
 }
 
+/// A text in the report's notation, as the Markdown prints it (Φ for
+/// `Phi`, powers as superscripts; code spans untouched).
+pub fn in_notation(text: &str) -> String {
+    notation::math(text)
+}
+
+/// Bullets longer than this are split into one sub-bullet per clause.
+pub(crate) const BULLET: usize = 300;
+
+/// A text's clauses: split at `; ` outside parentheses, brackets and code
+/// spans, and a
+/// clause still about as long as a [`BULLET`] at its sentences.
+pub(crate) fn clauses(text: &str) -> Vec<String> {
+    let split = |text: &str, at: &dyn Fn(&[char], usize) -> bool, skip: usize| {
+        let chars: Vec<char> = text.chars().collect();
+        let (mut out, mut start, mut depth, mut code) = (Vec::new(), 0, 0i32, false);
+        for k in 0..chars.len() {
+            match chars[k] {
+                '(' | '[' => depth += 1,
+                ')' | ']' => depth -= 1,
+                '`' => code = !code,
+                _ => {}
+            }
+            if depth == 0 && !code && at(&chars, k) {
+                out.push(
+                    chars[start..=k]
+                        .iter()
+                        .collect::<String>()
+                        .trim_end_matches(';')
+                        .trim()
+                        .to_owned(),
+                );
+                start = k + 1 + skip;
+            }
+        }
+        out.push(chars[start.min(chars.len())..].iter().collect::<String>().trim().to_owned());
+        out.retain(|c| !c.is_empty());
+        out
+    };
+    let semicolon = |c: &[char], k: usize| c[k] == ';' && c.get(k + 1) == Some(&' ');
+    // A sentence ends at ". " before a letter, not after "e.g" or "i.e".
+    let sentence = |c: &[char], k: usize| {
+        let abbreviation = k >= 3 && matches!(c[k - 3..k], ['e', '.', 'g'] | ['i', '.', 'e']);
+        c[k] == '.'
+            && c.get(k + 1) == Some(&' ')
+            && c.get(k + 2).is_some_and(|x| x.is_alphabetic())
+            && !abbreviation
+    };
+    // Split a little below the limit: the bullet's dash and indent count too.
+    split(text, &semicolon, 1)
+        .into_iter()
+        .flat_map(
+            |c| if c.chars().count() > BULLET - 10 { split(&c, &sentence, 1) } else { vec![c] },
+        )
+        .collect()
+}
+
+/// One labelled bullet, `- **Label:** text`, or, past [`BULLET`]
+/// characters, the label with one sub-bullet per clause.
+fn bullet(out: &mut String, indent: &str, label: &str, text: &str) {
+    let text = notation::math(text);
+    if text.chars().count() + label.len() + 8 <= BULLET {
+        let _ = writeln!(out, "{indent}- **{label}:** {text}");
+    } else {
+        let _ = writeln!(out, "{indent}- **{label}:**");
+        for c in clauses(&text) {
+            let _ = writeln!(out, "{indent}  - {c}");
+        }
+    }
+}
+
+/// A statement as printed: a Pascal listing line (it opens with `name:=`
+/// or `Var`) is code.
+fn printed(statement: &str) -> String {
+    let name: String = statement.chars().take_while(|c| c.is_ascii_alphanumeric()).collect();
+    let rest = statement[name.len()..].trim_start();
+    if !name.is_empty() && (rest.starts_with(":=") || name == "Var") {
+        format!("`{statement}`")
+    } else {
+        statement.to_owned()
+    }
+}
+
+/// The failing cases of a claim; cases beyond what the paper states are
+/// followed by the reason, once for a run of cases that share it.
+fn failing(c: &Claim) -> Vec<String> {
+    let mut out: Vec<String> = Vec::new();
+    let cases = c.failing_cases();
+    let mut run = 0;
+    for (k, (case, reason)) in cases.iter().enumerate() {
+        run += 1;
+        let next_shares = cases.get(k + 1).is_some_and(|(_, r)| r == reason);
+        match reason {
+            Some(r) if !next_shares => {
+                let which = match run {
+                    1 => "",
+                    2 => "both ",
+                    _ => "all ",
+                };
+                out.push(format!("{case} ({which}beyond what the paper states: {r})"));
+                run = 0;
+            }
+            Some(_) => out.push((*case).to_owned()),
+            None => {
+                out.push((*case).to_owned());
+                run = 0;
+            }
+        }
+    }
+    out
+}
+
 /// The Markdown report: summary table, the list of differences from the
-/// paper, then every claim section by section.
+/// paper (each erratum and slip printed against corrected, each refined
+/// claim with the case where it fails), then every claim section by
+/// section. Mathematics is written in the paper's notation (Φ); `Phi`
+/// appears only in code.
 pub fn to_markdown(claims: &[Claim]) -> String {
     let (total, sections) = summary(claims);
     let mut out = String::new();
@@ -148,22 +264,32 @@ pub fn to_markdown(claims: &[Claim]) -> String {
         total.claims, total.confirmed, total.refined, total.errata, total.typo
     );
     let _ = writeln!(out, "## Differences from the paper\n");
-    for v in [Verdict::Errata, Verdict::Refined, Verdict::Typo] {
+    for (v, heading_text) in
+        [(Verdict::Errata, "Errata"), (Verdict::Refined, "Refined"), (Verdict::Typo, "Typos")]
+    {
         if total.get(v) == 0 {
             continue;
         }
+        let _ = writeln!(out, "### {heading_text}\n");
         for c in claims.iter().filter(|c| c.verdict() == v) {
-            let _ = writeln!(
-                out,
-                "- **{}** `{}` ({}): {}",
-                v.name(),
-                c.id,
-                heading(&c.section),
-                c.derived
-            );
+            let _ = writeln!(out, "- `{}` ({})", c.id, heading(&c.section));
+            match v {
+                Verdict::Refined => {
+                    bullet(&mut out, "  ", "Fails where", &failing(c).join("; "));
+                }
+                _ => {
+                    bullet(&mut out, "  ", "Printed", &printed(&c.statement));
+                    match c.correction() {
+                        Some(k) => bullet(&mut out, "  ", "Corrected", &printed(k)),
+                        None => bullet(&mut out, "  ", "Fails where", &failing(c).join("; ")),
+                    }
+                    let first = clauses(&c.evidence).into_iter().next().unwrap_or_default();
+                    bullet(&mut out, "  ", "Evidence", &first);
+                }
+            }
         }
+        let _ = writeln!(out);
     }
-    let _ = writeln!(out);
     for (s, _) in SECTIONS {
         let here: Vec<&Claim> = claims.iter().filter(|c| c.section == s).collect();
         if here.is_empty() {
@@ -171,10 +297,34 @@ pub fn to_markdown(claims: &[Claim]) -> String {
         }
         let _ = writeln!(out, "## {}\n", heading(s));
         for c in here {
-            let _ = writeln!(out, "### `{}`: {}\n", c.id, c.verdict().name());
-            let _ = writeln!(out, "- **Paper:** {}", c.statement);
-            let _ = writeln!(out, "- **Derived:** {}", c.derived);
-            let _ = writeln!(out, "- **Evidence:** {}\n", c.evidence);
+            let v = c.verdict();
+            let _ = writeln!(out, "### `{}`: {}\n", c.id, v.name());
+            let differs = matches!(v, Verdict::Errata | Verdict::Typo);
+            bullet(&mut out, "", if differs { "Printed" } else { "Paper" }, &printed(&c.statement));
+            if differs {
+                if let Some(k) = c.correction() {
+                    bullet(&mut out, "", "Corrected", &printed(k));
+                }
+            }
+            bullet(&mut out, "", "Derived", &c.derived);
+            let fails = failing(c);
+            if !fails.is_empty() {
+                bullet(&mut out, "", "Fails where", &fails.join("; "));
+            }
+            bullet(&mut out, "", "Evidence", &c.evidence);
+            if let Finding::Cases { cases } = c.finding() {
+                for case in cases.iter().filter(|k| k.holds) {
+                    if let Scope::Wording { reason } = &case.scope {
+                        bullet(
+                            &mut out,
+                            "  ",
+                            "Beyond what the paper states",
+                            &format!("{} (holds): {reason}", case.case),
+                        );
+                    }
+                }
+            }
+            let _ = writeln!(out);
         }
     }
     out

@@ -1,5 +1,7 @@
 //! Reference integrators that judge the scenes' accuracy: classic RK4 with a
-//! small fixed step, and adaptive Dormand–Prince 5(4) at a tight tolerance.
+//! small fixed step, and adaptive Dormand–Prince 5(4) at a tight tolerance;
+//! and any embedded explicit pair with step control (RK-Merson in the
+//! report's section 12), given its coefficients.
 //!
 //! Both work on a fixed-size state `[f64; N]` of an autonomous system
 //! `y' = f(y)`, which is all the appendix scenes need. They are written here
@@ -163,6 +165,84 @@ pub(crate) fn dopri5<const N: usize>(
     Ok(y)
 }
 
+/// An explicit Runge–Kutta pair with an error estimate: the stages `a`
+/// (strictly lower triangular), the weights `b` of the solution kept, and
+/// the weights `e` of the local error estimate `h·Σ e_i k_i`, whose size
+/// goes as `h^order`.
+pub(crate) struct EmbeddedPair {
+    pub a: Vec<Vec<f64>>,
+    pub b: Vec<f64>,
+    pub e: Vec<f64>,
+    pub order: i32,
+}
+
+/// Adaptive integration by an embedded pair (no local extrapolation beyond
+/// what `b` holds, the classic step control), advancing an autonomous
+/// system by exactly `duration`; `step` carries the step size as in
+/// [`dopri5`].
+pub(crate) fn embedded<const N: usize>(
+    f: &impl Fn(&[f64; N]) -> [f64; N],
+    y: &[f64; N],
+    duration: f64,
+    tolerance: Tolerance,
+    step: &mut f64,
+    pair: &EmbeddedPair,
+) -> Result<[f64; N], Error> {
+    let mut y = *y;
+    let mut done = 0.0;
+    let mut h = step.abs().max(f64::MIN_POSITIVE);
+    let exponent = -1.0 / f64::from(pair.order);
+    while done < duration {
+        let last = h >= duration - done;
+        let h_try = if last { duration - done } else { h };
+        let mut k: Vec<[f64; N]> = Vec::with_capacity(pair.b.len());
+        for row in &pair.a {
+            let terms: Vec<(f64, &[f64; N])> = row
+                .iter()
+                .zip(&k)
+                .filter(|(c, _)| **c != 0.0)
+                .map(|(c, ki)| (h_try * c, ki))
+                .collect();
+            k.push(f(&axpy(&y, &terms)));
+        }
+        let weighted = |w: &[f64]| -> Vec<(f64, &[f64; N])> {
+            w.iter().zip(&k).filter(|(c, _)| **c != 0.0).map(|(c, ki)| (h_try * c, ki)).collect()
+        };
+        let y_new = axpy(&y, &weighted(&pair.b));
+        let error = axpy(&[0.0; N], &weighted(&pair.e));
+        let mut sum = 0.0;
+        for i in 0..N {
+            let scale = tolerance.absolute + tolerance.relative * y[i].abs().max(y_new[i].abs());
+            sum += (error[i] / scale) * (error[i] / scale);
+        }
+        let err = (sum / N as f64).sqrt();
+        if !err.is_finite() || y_new.iter().any(|v| !v.is_finite()) {
+            h = h_try * 0.1;
+            if h <= f64::EPSILON * (1.0 + done.abs()) {
+                return Err(Error::numeric(format!("state became non-finite at t = {done}")));
+            }
+            continue;
+        }
+        let factor = if err == 0.0 { 5.0 } else { (0.9 * err.powf(exponent)).clamp(0.2, 5.0) };
+        if err <= 1.0 {
+            y = y_new;
+            done += h_try;
+            if last {
+                *step = h.max(h_try * factor);
+                return Ok(y);
+            }
+            h = h_try * factor;
+        } else {
+            h = h_try * factor.min(1.0);
+        }
+        if h <= 4.0 * f64::EPSILON * (1.0 + done.abs()) {
+            return Err(Error::numeric(format!("step size underflowed at t = {done}")));
+        }
+    }
+    *step = h;
+    Ok(y)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -198,6 +278,30 @@ mod tests {
         };
         let ratio = error(0.02) / error(0.01);
         assert!((ratio - 16.0).abs() < 0.5, "ratio {ratio}");
+    }
+
+    #[test]
+    fn embedded_pair_converges_with_its_tolerance() {
+        // Heun–Euler 2(1): the second-order solution, the first-order one
+        // for the error estimate (e = b − b̂).
+        let pair = EmbeddedPair {
+            a: vec![vec![], vec![1.0]],
+            b: vec![0.5, 0.5],
+            e: vec![-0.5, 0.5],
+            order: 2,
+        };
+        let error_at = |tolerance: f64| {
+            let mut step = 1e-3;
+            let mut y = [1.0, 0.0];
+            for _ in 0..100 {
+                let t = Tolerance { relative: tolerance, absolute: tolerance };
+                y = embedded(&oscillator, &y, 0.3, t, &mut step, &pair).unwrap();
+            }
+            (y[0] - 30f64.cos()).hypot(y[1] + 30f64.sin())
+        };
+        let (loose, tight) = (error_at(1e-5), error_at(1e-8));
+        assert!(loose < 1e-2, "{loose}");
+        assert!(tight < loose / 100.0, "{tight} against {loose}");
     }
 
     #[test]

@@ -21,10 +21,14 @@
 //! - the sparse multivariate Berkowitz ([`polymatrix`]), always applicable, the
 //!   reference the others are tested against.
 //!
+//! [`echelon`] is fraction-free Gauss–Jordan elimination (ranks, null spaces
+//! and solutions over the rational functions, without fractions).
+//!
 //! [`sparse`] holds [`SparsePolyMatrix`], the storage for matrices with one
 //! row per program line (the z-domain matrix M), which are mostly zero.
 
 mod dense;
+pub(crate) mod echelon;
 pub(crate) mod modular;
 pub(crate) mod polymatrix;
 mod routes;

@@ -105,7 +105,16 @@ fn step(s: &mut Section, key: &str, method: &str, statement: &str, lhs: &str, rh
     s.push(
         key,
         statement,
-        format!("through Φ³: left side = {left}; right side(s) = {}", shown.join(", ")),
+        format!(
+            "through Φ³: left side = {left}; {}",
+            match shown.as_slice() {
+                [one] => format!("right side = {one}"),
+                [first, ..] if shown.iter().all(|x| x == first) => {
+                    format!("each of the {} right sides = {first}", shown.len())
+                }
+                _ => format!("right sides = {}", shown.join(", ")),
+            }
+        ),
         finding,
         format!(
             "Ψ replaced by its exact series Ψ = {psi} + O(Φ⁷) ({method}, Derivation::psi_series), products truncated \

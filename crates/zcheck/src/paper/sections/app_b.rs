@@ -129,9 +129,11 @@ fn slips(s: &mut Section) {
     let printed = odd.first().map_or_else(|| intended.clone(), |c| (*c).clone());
     let mended = pascal::APPENDIX_B.replace(&printed, &intended);
     let changes_math = pascal::tokens(pascal::APPENDIX_B) != pascal::tokens(&mended);
+    let statement = "Standard Heun: { Transition matrixix }";
+    let corrected = statement.replace(&printed, &intended);
     s.push(
         "typo_matrixix",
-        "Standard Heun: { Transition matrixix }",
+        statement,
         format!(
             "{} of the {} \"Transition\" comments read {{ {printed} }} where the others read {{ {intended} }}; \
              the listing's tokens without comments are {} after mending it",
@@ -143,6 +145,7 @@ fn slips(s: &mut Section) {
         "the Appendix B listing, transcribed verbatim, scanned (paper/sections/pascal.rs): comments compared \
          with each other, tokens compared with and without the slip",
     );
+    s.correct(corrected);
     undeclared(s);
 }
 
@@ -170,4 +173,7 @@ fn undeclared(s: &mut Section) {
          are the screen coordinates MapP returns, which every listing of the paper uses without declaring. Each \
          is written before it is read, so declaring it changes nothing the program computes",
     );
+    if !names.is_empty() {
+        s.correct(format!("the Var list, with {list} declared too"));
+    }
 }

@@ -49,6 +49,19 @@ impl Section {
         ));
     }
 
+    /// Sets the corrected line of the claim recorded last (an erratum's
+    /// printed line as it should read, computed by the section).
+    pub(crate) fn correct(&mut self, corrected: impl Into<String>) {
+        if let Some(c) = self.claims.last_mut() {
+            c.corrected = Some(corrected.into());
+        }
+    }
+
+    /// The derived text of the claim recorded last (empty when none).
+    pub(crate) fn last_derived(&self) -> String {
+        self.claims.last().map(|c| c.derived.clone()).unwrap_or_default()
+    }
+
     /// Adds to the evidence of the claim recorded last.
     pub(crate) fn append_evidence(&mut self, more: &str) {
         if let Some(c) = self.claims.last_mut() {
@@ -412,6 +425,32 @@ pub(crate) fn ode_claim(
         Finding::same(matrix_text(&defect), matrix_text(&zero)),
         evidence,
     );
+    if !ok {
+        s.correct(if is_zero_matrix(&canonical) {
+            ode_text(&ode_matrix(OSCILLATOR))
+        } else {
+            "no oscillator fits: see the evidence".to_owned()
+        });
+    }
+}
+
+/// An ODE matrix over the state (v, y) as the paper writes it:
+/// `v̇ = −ω0 y, ẏ = ω0 v`.
+fn ode_text(a: &PolyMatrix) -> String {
+    use num_traits::Signed;
+    let names = ["v", "y"];
+    let rows: Vec<String> = ["v̇", "ẏ"]
+        .iter()
+        .enumerate()
+        .map(|(i, dot)| {
+            let e = (0..2).fold(Poly::zero(), |acc, j| &acc + &(&a[(i, j)] * &Poly::var(names[j])));
+            let negative = e.terms().all(|(_, c)| c.is_negative());
+            let (sign, e) = if negative { ("−", -&e) } else { ("", e) };
+            let body = if e.len() > 1 { format!("({e})") } else { e.to_string() };
+            format!("{dot} = {sign}ω0 {body}")
+        })
+        .collect();
+    rows.join(", ")
 }
 
 /// Records "the solution is always an unstable oscillation" (sections 5

@@ -92,7 +92,10 @@ pub(crate) fn too_high(s: &mut Section, method: &str, statement: &str) {
         (
             format!("1 ≤ Φ < {}, the rest of the oscillating range", fixed(hi, 3)),
             crossing.is_none(),
-            Scope::Wording,
+            Scope::wording(
+                "the paper derives \"too high\" from its approximations, which section 6 gives for \
+                 Φ < 1; beyond, only \"always\" reaches",
+            ),
         ),
     ]);
     let (derived, evidence) = match crossing {

@@ -246,9 +246,16 @@ pub(crate) fn always(
             class.filter(|c| !ok(*c)).map(|c| format!("{} for {}", class_words(c), piece.text()))
         })
         .collect();
+    let outside = match (stated, &bound) {
+        (Some(text), Some(b)) => format!(
+            "the paper states 0 < Φ < {} (where {text} first vanishes); only \"always\" reaches beyond",
+            show(b),
+        ),
+        _ => String::new(),
+    };
     let finding = Finding::scoped(map.iter().filter_map(|(piece, class)| {
         class.map(|c| {
-            let scope = if inside(piece) { Scope::Stated } else { Scope::Wording };
+            let scope = if inside(piece) { Scope::Stated } else { Scope::wording(outside.clone()) };
             (format!("{}: {}", piece.text(), class_words(c)), ok(c), scope)
         })
     }));

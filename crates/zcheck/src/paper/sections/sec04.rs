@@ -88,8 +88,17 @@ fn eigenvalues_decide(s: &mut Section) {
         "true when the roots on the unit circle are simple; a repeated root on the circle needs the Jordan \
          structure of P as well",
         Finding::scoped([
-            ("diagonalisable P (P = I, roots on the circle): bounded as the location predicts", stays(&still), Scope::Stated),
-            ("defective P (Jordan block, the same roots): bounded as the location predicts", stays(&grows), Scope::Wording),
+            (
+                "defective double root 1 (a Jordan block, as the paper's methods have at their limits): \
+                 grows, as the double-root rows predict from the location",
+                !stays(&grows),
+                Scope::Stated,
+            ),
+            (
+                "diagonalisable double root 1 (P = I, the same location): grows as predicted",
+                !stays(&still),
+                scalar_p_scope(),
+            ),
         ]),
         format!(
             "P = I and P = [[1, 1], [0, 1]] both have z1 = z2 = 1; exactly, after {n} steps the first keeps \
@@ -99,6 +108,51 @@ fn eigenvalues_decide(s: &mut Section) {
             still[n][0], still[n][1], grows[n][0], grows[n][1]
         ),
     );
+}
+
+/// Why the taxonomy's rows do not reach a root z1 ≤ 0.
+const ROWS_ARE_POSITIVE: &str =
+    "the three rows state 0 < z1 only; a root z1 ≤ 0 is covered by the \
+                                 heading \"single real eigenvalues\", under no row";
+
+/// The paper's methods whose P is a multiple of I at some Φ > 0: there the
+/// off-diagonal entries and the difference of the diagonal ones vanish
+/// together. An entry that holds another parameter (D) is left out, which
+/// can only add candidate points.
+fn scalar_p_methods() -> Vec<String> {
+    let phi = Sym::phi();
+    poly::advanced::builtins::paper_builtin_names()
+        .filter(|name| {
+            let p = builtin_derivation(name).transition_matrix;
+            let n = p.rows();
+            let mut common = poly::UPoly::zero();
+            for i in 0..n {
+                for j in 0..n {
+                    let e = if i == j { &p[(i, i)] - &p[(0, 0)] } else { p[(i, j)].clone() };
+                    if let Some(u) = e.to_upoly(phi) {
+                        common = common.gcd(&u);
+                    }
+                }
+            }
+            common.is_zero() || !ranges::positive_roots(&Poly::from_upoly(phi, &common)).is_empty()
+        })
+        .map(str::to_owned)
+        .collect()
+}
+
+/// The scope of a diagonalisable repeated root on the circle (P = ±I):
+/// stated if one of the paper's methods has such a P at some Φ > 0,
+/// otherwise only the rows' wording covers it.
+fn scalar_p_scope() -> Scope {
+    let methods = scalar_p_methods();
+    if methods.is_empty() {
+        Scope::wording(
+            "no method of the paper has P = ±I at a Φ > 0 (computed), so their repeated roots on the \
+             circle are Jordan blocks; P = ±I fits only the words",
+        )
+    } else {
+        Scope::Stated
+    }
 }
 
 /// Whether an exact run never leaves the size of its start (largest
@@ -142,8 +196,16 @@ fn taxonomy_real(s: &mut Section) {
             ("z1 = 1/2: monotonic and decaying", half.0 && half.1, Scope::Stated),
             ("z1 = 1: constant", one.0 && one.2, Scope::Stated),
             ("z1 = 2: monotonic and growing", two.0 && two.3, Scope::Stated),
-            ("z1 = −1/2 falls in one of the three rows (a monotonic sequence)", minus_half.0, Scope::Wording),
-            ("every real root the paper's methods reach is in one of the rows", missing == "none", Scope::Wording),
+            (
+                "z1 = −1/2 falls in one of the three rows (a monotonic sequence)",
+                minus_half.0,
+                Scope::wording(ROWS_ARE_POSITIVE),
+            ),
+            (
+                "every real root the paper's methods reach is in one of the rows",
+                missing == "none",
+                Scope::wording(ROWS_ARE_POSITIVE),
+            ),
         ]),
         format!(
             "a root z1 gives samples c·z1^i; for z1 < 0 they flip sign every step. Classes the paper's \
@@ -203,7 +265,10 @@ fn psi_arctan(s: &mut Section) {
             (
                 format!("read as the plain arctan(b1/a1): case 3 gives {}°", fixed(arctan, 1)),
                 (arctan - 150.0).abs() < 1e-9,
-                Scope::Wording,
+                Scope::wording(
+                    "the printed range 0 … π states the quadrant-aware angle; only the formula arctan(b1/a1), \
+                     read literally, gives another",
+                ),
             ),
         ]),
         format!(
@@ -260,7 +325,7 @@ fn double_roots(s: &mut Section) {
         "monotonic unstable only when the double root is defective (a Jordan block); P = I gives a constant g(t)",
         Finding::scoped([
             ("defective double root 1 (Jordan block): grows", !stays(&jordan), Scope::Stated),
-            ("diagonalisable double root 1 (P = I): grows", !stays(&identity), Scope::Wording),
+            ("diagonalisable double root 1 (P = I): grows", !stays(&identity), scalar_p_scope()),
         ]),
         format!(
             "exact iteration from (1, 1): P = [[1, 1], [0, 1]] reaches {} after {n} steps (linear growth), \
@@ -282,7 +347,7 @@ fn double_roots(s: &mut Section) {
         "an unstable oscillation only when the double root is defective; P = −I alternates with bounded amplitude",
         Finding::scoped([
             ("defective double root −1 (False Euler at Φ = 2): grows", !stays(&fe_run), Scope::Stated),
-            ("diagonalisable double root −1 (P = −I): grows", !stays(&neg_identity), Scope::Wording),
+            ("diagonalisable double root −1 (P = −I): grows", !stays(&neg_identity), scalar_p_scope()),
         ]),
         format!(
             "P = −I from (1, 1) is at {} after {} steps; False Euler at Φ = 2 has P = {} ≠ −I and y goes \
@@ -474,6 +539,7 @@ fn method_identities(s: &mut Section) {
             "similar by the permutation {perm:?} and the scaling ({})",
             scale.iter().map(ToString::to_string).collect::<Vec<_>>().join(", ")
         ),
+        Relation::ChangeOfVariables(_) => "similar by a change of variables T(Φ)".to_owned(),
         Relation::SameCharpoly => "the same χ only".to_owned(),
         Relation::Different => "nothing".to_owned(),
     };
@@ -508,7 +574,8 @@ fn method_identities(s: &mut Section) {
         ),
         Finding::all(stated),
         "Derivation::relate on every pair of built-ins: equal P, similar by a permutation and/or a constant \
-         diagonal scaling (exact, every permutation tried), or only the same χ; the _matrix twins are \
+         diagonal scaling (exact, every permutation tried), similar by a change of variables T(Φ) (T·P_a = P_b·T \
+         multiplied out), or only the same χ; the _matrix twins are \
          left out of the lists (Appendix B makes them equal to their direct branches)",
     );
 }

@@ -51,6 +51,7 @@ pub(crate) fn claims() -> Vec<Claim> {
     eigenvalues(&mut s);
     r_squared(&mut s);
     damping_choice(&mut s);
+    y_first_symplectic(&mut s);
     now_harmonic(&mut s);
     tan_claim(
         &mut s,
@@ -147,6 +148,44 @@ fn damping_choice(s: &mut Section) {
         ]),
         "exact: q − 1 factors as Φ(Φ − 2D); substituting D = Φ/2 gives q = 1, and the built-in \
          damped_euler (Appendix B: D:=0.5*woT) has q = 1",
+    );
+}
+
+/// The symplectic Euler that updates y first, as written in
+/// `crates/zcheck/methods/symplectic_euler_y_first.zm`.
+const Y_FIRST: &str = include_str!("../../../methods/symplectic_euler_y_first.zm");
+
+/// With D = Φ/2, Damped Euler is exactly the symplectic Euler that updates
+/// y first (`poly::advanced::equiv`): the "artificial damping" cancels
+/// Standard Euler's growth by reading the new y.
+fn y_first_symplectic(s: &mut Section) {
+    use poly::advanced::equiv::{self, Relation};
+    let damped = builtin_derivation("damped_euler");
+    let y_first = poly::Method::parse("symplectic_euler_y_first.zm", Y_FIRST)
+        .ok()
+        .and_then(|m| poly::derive(&m).ok());
+    let relation = |b: &poly::Derivation| {
+        y_first.as_ref().map(|a| equiv::relate(a, b)).unwrap_or(Relation::Different)
+    };
+    let equal = relation(&damped) == Relation::Equal;
+    let to_false_euler = relation(&builtin_derivation("false_euler"));
+    let signed = matches!(to_false_euler, Relation::PermutationAndScaling { .. });
+    s.push(
+        "y_first_symplectic",
+        "The artificial damping D has only the purpose of stabilizing the solution of an undamped oscillator \
+         numerically, by r1² = 1: D = 0.5Φ",
+        format!(
+            "with D = Φ/2 the step is exactly the symplectic Euler that updates y first (`y = y + Phi*v; \
+             v = v - Phi*y`): the same transition matrix, P = {}; that is False Euler with v and y exchanged \
+             and one sign flipped, so the artificial damping leaves no damping, which is why r1² = 1",
+            matrix_text(&damped.transition_matrix),
+        ),
+        Finding::all([
+            ("Damped Euler (D = Φ/2) and the y-first symplectic Euler have equal P", equal),
+            ("the y-first symplectic Euler is False Euler up to a signed permutation", signed),
+        ]),
+        "Derivation::relate on the built-in damped_euler (Appendix B: D:=0.5*woT) and \
+         crates/zcheck/methods/symplectic_euler_y_first.zm (zcheck equiv), exact",
     );
 }
 

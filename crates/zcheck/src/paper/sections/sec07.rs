@@ -197,7 +197,10 @@ fn nyquist(s: &mut Section, phi_max: Option<&poly::Algebraic>) {
             (
                 "read as a stability limit: no method is stable beyond T/T0 = 1/2".to_owned(),
                 !trapezoid_harmonic,
-                Scope::Wording,
+                Scope::wording(
+                    "Nyquist's criterion bounds what samples can represent; the paper compares False Euler's \
+                     limit with it, and only that comparison's wording makes it a bound on stability",
+                ),
             ),
         ]),
         format!(

@@ -178,7 +178,14 @@ fn scheme_with_input(s: &mut Section) {
                 err_constant.is_zero(),
                 Scope::Stated,
             ),
-            (format!("time-varying input (x1 ≠ 0): second order, local error {err_printed}"), err_printed.is_zero(), Scope::Wording),
+            (
+                format!("time-varying input (x1 ≠ 0): second order, local error {err_printed}"),
+                err_printed.is_zero(),
+                Scope::wording(
+                    "section 4 samples the input once per step (x_(i−1)), the case stated; an input that \
+                     varies within the step is reached only by the words \"general formulation\"",
+                ),
+            ),
         ]),
         "exact symbolic step (poly) against the Taylor expansion of the true solution, truncated after τ²",
     );

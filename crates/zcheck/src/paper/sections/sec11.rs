@@ -101,6 +101,7 @@ fn always_stable(s: &mut Section) {
             crossings.join(", ")
         ),
     );
+    s.correct(format!("The solution is stable for 0 < Φ < {limit} only."));
 }
 
 fn damped_small(s: &mut Section) {
@@ -142,16 +143,13 @@ fn as_accurate(s: &mut Section) {
         "as_accurate",
         "... as accurate as Standard Heun (which is unstable).",
         format!(
-            "Semi-False Heun: Ψ = {}, |z|² = {}; Standard Heun: Ψ = {}, |z|² = {}; dispersion orders {} vs \
-             {}, dissipation orders {} vs {}",
+            "Semi-False Heun: Ψ = {}, |z|² = {}; Standard Heun: Ψ = {}, |z|² = {}; {}; {}",
             frequency::series_poly(&psi_sf),
             frequency::series_poly(&m_sf),
             frequency::series_poly(&psi_sh),
             frequency::series_poly(&m_sh),
-            show_order(disp(&d_sf)),
-            show_order(disp(&d_sh)),
-            show_order(diss(&d_sf)),
-            show_order(diss(&d_sh))
+            orders("dispersion", disp(&d_sf), disp(&d_sh)),
+            orders("dissipation", diss(&d_sf), diss(&d_sh)),
         ),
         Finding::all([
             ("the same dispersion order", disp(&d_sf) == disp(&d_sh)),
@@ -169,6 +167,19 @@ fn as_accurate(s: &mut Section) {
 
 fn term(t: &Option<(usize, poly::Q)>) -> String {
     t.as_ref().map_or_else(|| "0".to_owned(), |(k, c)| format!("{c}·Φ^{k}"))
+}
+
+/// Two methods' orders of one error, said once when they agree.
+fn orders(what: &str, semi_false: Option<usize>, standard: Option<usize>) -> String {
+    if semi_false == standard {
+        format!("both of {what} order {}", show_order(semi_false))
+    } else {
+        format!(
+            "{what} orders {} (Semi-False Heun) and {} (Standard Heun)",
+            show_order(semi_false),
+            show_order(standard)
+        )
+    }
 }
 
 fn show_order(k: Option<usize>) -> String {
