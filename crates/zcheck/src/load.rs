@@ -252,8 +252,13 @@ fn resolve(arg: &str, oscillator: Oscillator) -> Result<(Method, Option<Method>)
         return Ok((parse(&src)?, Some(parse(&scalar)?)));
     }
     let method = check::load::load_method(arg)?;
-    if poly::advanced::builtins::builtin_source(arg).is_none() {
-        crate::warn::report(crate::warn::of_method(arg, &method))?;
+    if check::load::is_path(arg) {
+        let mut warnings = crate::warn::of_method(arg, &method);
+        // The file parsed, so it is UTF-8 text within the size limit.
+        if let Ok(text) = std::fs::read_to_string(arg) {
+            warnings.extend(crate::warn::zm_decimal_hints(arg, &text));
+        }
+        crate::warn::report(warnings)?;
     }
     Ok((method, None))
 }

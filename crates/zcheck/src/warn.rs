@@ -82,6 +82,55 @@ pub(crate) fn of_method(path: &str, m: &poly::Method) -> Vec<String> {
     m.warnings().iter().map(|w| format!("{path}:{w}")).collect()
 }
 
+/// The long decimals of a `.zm` program's text that are within 1e-12 of a
+/// simple closed form, located (comments skipped).
+pub(crate) fn zm_decimal_hints(path: &str, text: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    for (i, raw) in text.lines().enumerate() {
+        let line = raw.split('#').next().unwrap_or("");
+        let chars: Vec<char> = line.chars().collect();
+        let mut k = 0;
+        while k < chars.len() {
+            let starts = chars[k].is_ascii_digit()
+                && (k == 0
+                    || !(chars[k - 1].is_alphanumeric()
+                        || chars[k - 1] == '_'
+                        || chars[k - 1] == '.'));
+            if !starts {
+                k += 1;
+                continue;
+            }
+            let begin = k;
+            while k < chars.len() && (chars[k].is_ascii_digit() || chars[k] == '.') {
+                k += 1;
+            }
+            if k < chars.len() && (chars[k] == 'e' || chars[k] == 'E') {
+                let mut e = k + 1;
+                if e < chars.len() && (chars[e] == '+' || chars[e] == '-') {
+                    e += 1;
+                }
+                if e < chars.len() && chars[e].is_ascii_digit() {
+                    k = e;
+                    while k < chars.len() && chars[k].is_ascii_digit() {
+                        k += 1;
+                    }
+                }
+            }
+            let token: String = chars[begin..k].iter().collect();
+            if token.contains('.') {
+                if let Some(hint) = closed_form_hint(&token) {
+                    out.push(format!(
+                        "{path}:{}:{}: {token} is within 1e-12 of {hint}: write {hint} if that is meant (the analysis uses the decimal as written)",
+                        i + 1,
+                        begin + 1
+                    ));
+                }
+            }
+        }
+    }
+    out
+}
+
 /// The exact closed form a decimal was probably meant as, when it has ten
 /// or more significant digits and lies within 1e-12 of a fraction p/q with
 /// q ≤ 1000 or of (a + b√N)/k with small integers: `0.3333333333333333`

@@ -55,6 +55,12 @@ fn program_warnings() {
         "method m\nstate y v\ny = y + Phi*v\nv = v - Phi*y\n",
     );
     fires(
+        "decimal.zm",
+        "method m\nstate y v\nv = v - 0.3333333333333333*Phi*y  # 0.5000000000000001 in a comment\ny = y + Phi*v\n",
+        &[":3:9: 0.3333333333333333 is within 1e-12 of 1/3"],
+        "method m\nstate y v\nv = v - 0.5*Phi*y\ny = y + 1e-3*v + Phi*v\n",
+    );
+    fires(
         "unread.zm",
         "method m\nstate y v\nk = Phi*y\nv = v - Phi*y\ny = y + Phi*v\n",
         &[":3:1: `k` is assigned but never read: no later line uses this value"],
