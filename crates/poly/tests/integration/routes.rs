@@ -401,15 +401,7 @@ fn check_program(prog: &Program, phi: Q, k: Q) {
     assert_eq!(reduced.labels.len(), reduced.matrix.rows(), "{src}");
     assert_eq!(reduced.labels, method.state(), "{src}");
     if reduced.matrix.rows() <= 6 {
-        let z = Poly::sym(Sym::z());
-        let w_to_z = reduced
-            .matrix
-            .det()
-            .coeffs_in(poly::advanced::w())
-            .iter()
-            .enumerate()
-            .fold(Poly::zero(), |acc, (k, c)| acc + c * z.pow((n - k) as u32));
-        assert_eq!(w_to_z, a, "z^N det of the reduced M(1/z)\n{src}");
+        assert_eq!(chi_of_det(&reduced.matrix, n), a, "z^N det of the reduced M(1/z)\n{src}");
     }
     // The fast route (a) (sparse M, forward substitution, modular
     // determinant) against the slow one (dense elimination, sparse Berkowitz).
@@ -519,15 +511,17 @@ fn reduced_z_matrix_keeps_the_determinant() {
             reduced.labels
         );
         assert!(reduced.labels.starts_with(method.state()), "{name}: {:?}", reduced.labels);
-        let z = Poly::sym(Sym::z());
-        let n = method.order();
-        let chi = reduced
-            .matrix
-            .det()
-            .coeffs_in(poly::advanced::w())
-            .iter()
-            .enumerate()
-            .fold(Poly::zero(), |acc, (k, c)| acc + c * z.pow((n - k) as u32));
+        let chi = chi_of_det(&reduced.matrix, method.order());
         assert_eq!(&chi, d.charpoly(), "{name}: reduced M on {:?}", reduced.labels);
     }
+}
+
+/// z^N det M(1/z) of a matrix in w = 1/z, by Berkowitz (`PolyMatrix::det`).
+fn chi_of_det(m: &poly::PolyMatrix, n: usize) -> Poly {
+    let z = Poly::sym(Sym::z());
+    m.det()
+        .coeffs_in(poly::advanced::w())
+        .iter()
+        .enumerate()
+        .fold(Poly::zero(), |acc, (k, c)| acc + c * z.pow((n - k) as u32))
 }
