@@ -372,7 +372,22 @@ pub(crate) fn scene_text(name: &str, a: &advisor::SceneAdvice) -> String {
         "modes limiting accuracy:  {}\n",
         if acc.is_empty() { "none".into() } else { acc.join(", ") }
     );
-    out += &format!("modes that do not matter: {rest}\n\n");
+    out += &format!("modes that do not matter: {rest}\n");
+    if let (Some(h), Some(b)) = (a.highest_hz, a.highest_hz_bound) {
+        out += &format!(
+            "highest mode {h:.3} Hz, certified <= {b:.3} Hz (Gershgorin on M^-1/2 K M^-1/2)"
+        );
+        let certified: Vec<String> = a
+            .candidates
+            .iter()
+            .filter_map(|c| Some(format!("{} {}", c.method, c.substeps_stable_certified?)))
+            .collect();
+        if !certified.is_empty() {
+            out += &format!("; stable substeps at the bound: {}", certified.join(", "));
+        }
+        out += "\n";
+    }
+    out += "\n";
     let header = [
         "method",
         "substeps stable",

@@ -103,6 +103,11 @@ pub(crate) struct CandidateAdvice {
     /// Fewest substeps per tick with every mode inside the region (`None`:
     /// none found).
     pub(crate) substeps_stable: Option<u64>,
+    /// On an undamped scene, the fewest substeps that keep the certified
+    /// bound on the highest frequency stable: never fewer than the exact
+    /// answer (`None` elsewhere).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(crate) substeps_stable_certified: Option<u64>,
     /// Fewest substeps meeting the target (`None`: none found).
     pub(crate) substeps_accurate: Option<u64>,
     /// Measured ns per step of one degree of freedom.
@@ -195,6 +200,11 @@ pub struct SceneAdvice {
     pub(crate) candidates: Vec<CandidateAdvice>,
     /// The cheapest candidate meeting the target.
     pub(crate) recommended: Option<Recommended>,
+    /// The highest mode's frequency, Hz, as the eigensolver gives it.
+    pub(crate) highest_hz: Option<f64>,
+    /// A certified upper bound on the highest undamped frequency, Hz
+    /// (Gershgorin; `None` for a scene of modes).
+    pub(crate) highest_hz_bound: Option<f64>,
     /// The candidates meeting the target that the checking simulation left
     /// out: more than [`SIM_COST_FACTOR`] times the recommended's cost.
     pub(crate) simulation_left_out: Vec<LeftOut>,
@@ -609,6 +619,12 @@ pub fn advise(
         modes,
         candidates,
         recommended,
+        highest_hz: modal
+            .modes
+            .iter()
+            .map(|m| m.hz())
+            .fold(None, |a: Option<f64>, h| Some(a.map_or(h, |a| a.max(h)))),
+        highest_hz_bound: modal.omega_bound.map(|w| w / (2.0 * std::f64::consts::PI)),
         simulation_left_out,
         sweep,
     })
@@ -688,6 +704,13 @@ fn advise_one(
             }
         }
     }
+    // On an undamped scene the highest frequency limits stability, so the
+    // substeps that keep its certified bound stable are never too few,
+    // whatever the eigensolver's error.
+    let substeps_stable_certified = match (modal.damping, modal.omega_bound, substeps_stable) {
+        (DampingKind::Undamped, Some(w), Some(n)) => a.exact_stable(w / tick, 0.0, n),
+        _ => None,
+    };
     let phi_max = limiting.and_then(|i| match a.limit(modes[i].ratio)? {
         PhiLimit::Below(m) => Some(m.to_decimal(12)),
         PhiLimit::Every => Some("every Phi".to_owned()),
@@ -738,6 +761,7 @@ fn advise_one(
     Ok(CandidateAdvice {
         method: a.spec.display().to_owned(),
         substeps_stable,
+        substeps_stable_certified,
         substeps_accurate,
         ns_per_step: ns,
         ns_per_tick: substeps_accurate.map(|n| ns * n as f64 * dof),

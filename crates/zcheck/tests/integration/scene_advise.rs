@@ -572,3 +572,24 @@ fn the_default_simulation_checks_the_close_candidates_and_names_the_rest() {
         }
     }
 }
+
+/// Every example reports its highest mode below its certified bound, and on
+/// an undamped scene every candidate's substeps at the bound are at least
+/// the substeps the eigensolver's frequencies give (never fewer).
+#[test]
+fn the_certified_bound_covers_the_highest_mode_and_its_substeps() {
+    let mut certified = 0;
+    for name in ["chain10", "quarter_car", "cloth_strip", "building3", "cloth8", "rope2d"] {
+        let v = json(&["advise", "--scene", &example(name), "--format", "json", "--no-simulate"]);
+        let (h, b) = (v["highest_hz"].as_f64().unwrap(), v["highest_hz_bound"].as_f64().unwrap());
+        assert!(h <= b * (1.0 + 1e-12), "{name}: {h} > {b}");
+        for c in v["candidates"].as_array().unwrap() {
+            if let Some(at_bound) = c["substeps_stable_certified"].as_u64() {
+                assert!(at_bound >= c["substeps_stable"].as_u64().unwrap(), "{name}: {c}");
+                certified += 1;
+            }
+        }
+    }
+    // rope2d is undamped: its five stable candidates.
+    assert!(certified >= 5, "{certified}");
+}
