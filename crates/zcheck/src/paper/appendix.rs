@@ -8,6 +8,7 @@
 //! references only short windows. The longer checks live in the proof tests.
 
 use super::sections::pascal;
+use super::sections::ranges::title;
 use crate::paper::claim::Claim;
 use crate::paper::finding::{Case, Finding, Scope};
 use crate::scene::aircraft::{self, AircraftConfig};
@@ -230,17 +231,6 @@ fn reads_before_writes(listing: &str) -> (Vec<String>, Finding) {
 /// Appendices C and D name them.
 const COORDINATES: [(&str, &str); 6] =
     [("x1", "v1"), ("y1", "w1"), ("x2", "v2"), ("y2", "w2"), ("x3", "v3"), ("y3", "w3")];
-
-/// A built-in's name in the paper's words: `false_euler` as "False Euler".
-fn title(name: &str) -> String {
-    name.split('_')
-        .map(|w| {
-            let mut c = w.chars();
-            c.next().map(|f| f.to_uppercase().collect::<String>() + c.as_str()).unwrap_or_default()
-        })
-        .collect::<Vec<_>>()
-        .join(" ")
-}
 
 /// The oscillator's step (v̇ = −ω0 y, ẏ = ω0 v) with a listing's update
 /// order: each update reads the other variable's old or new value as the

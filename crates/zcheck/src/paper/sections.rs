@@ -10,7 +10,7 @@ mod common;
 mod exact;
 mod frequency;
 pub(crate) mod pascal;
-mod ranges;
+pub(crate) mod ranges;
 mod sec04;
 mod sec05;
 mod sec06;

@@ -179,27 +179,15 @@ pub(crate) fn read_before_written(src: &str) -> Vec<String> {
     while k < t.len() {
         if let (Some(n), Some(next)) = (ident(&t[k]), t.get(k + 1)) {
             if is(next, ":=") {
-                // The right-hand side runs to the next ';', keyword or `:=`.
-                let mut j = k + 2;
-                let stop = |x: &Token| {
-                    is(x, ";")
-                        || is(x, ":=")
-                        || matches!(
-                            ident(x),
-                            Some("end" | "to" | "downto" | "do" | "then" | "else" | "begin" | "of")
-                        )
-                };
-                while j < t.len() && !stop(&t[j]) && !is(t.get(j + 1).unwrap_or(&t[j]), ":=") {
-                    if let Some(r) = ident(&t[j]) {
-                        let later = assigned.iter().any(|a| a == r);
-                        if later && !written.contains(r) && !out.iter().any(|x| x == r) {
-                            out.push(r.to_owned());
-                        }
+                let rhs = right_side(&t, k + 1);
+                for r in t[rhs.clone()].iter().filter_map(ident) {
+                    let later = assigned.iter().any(|a| a == r);
+                    if later && !written.contains(r) && !out.iter().any(|x| x == r) {
+                        out.push(r.to_owned());
                     }
-                    j += 1;
                 }
                 written.insert(n.to_owned());
-                k = j;
+                k = rhs.end;
                 continue;
             }
         }
