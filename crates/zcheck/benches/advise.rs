@@ -46,7 +46,12 @@ fn bench(c: &mut Criterion) {
                     &scene,
                     &modal,
                     specs,
-                    Options { simulate: false, simulate_all: false, gauss_seidel: false },
+                    Options {
+                        simulate: false,
+                        simulate_all: false,
+                        gauss_seidel: false,
+                        route: Default::default(),
+                    },
                 )
                 .unwrap()
             })
@@ -78,7 +83,12 @@ fn bench(c: &mut Criterion) {
                     scene,
                     &modal,
                     specs,
-                    Options { simulate: true, simulate_all: false, gauss_seidel: false },
+                    Options {
+                        simulate: true,
+                        simulate_all: false,
+                        gauss_seidel: false,
+                        route: Default::default(),
+                    },
                 )
                 .unwrap()
             })

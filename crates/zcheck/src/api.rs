@@ -104,7 +104,12 @@ pub fn advise_scene_text(name: &str, text: &str) -> Result<Value, Error> {
 }
 
 fn advise(scene: &SceneFile) -> Result<Value, Error> {
-    let options = Options { simulate: true, simulate_all: false, gauss_seidel: false };
+    let options = Options {
+        simulate: true,
+        simulate_all: false,
+        gauss_seidel: false,
+        route: Default::default(),
+    };
     Ok(serde_json::to_value(crate::cli::advise::scene_advice(scene, &[], options)?)?)
 }
 

@@ -46,6 +46,11 @@ pub(crate) struct Args {
     /// tick are simulated, and the others are named.
     #[arg(long, conflicts_with = "no_simulate")]
     pub simulate_all: bool,
+    /// The eigensolver for a scene of masses and springs: dense (every
+    /// mode) up to 1500 degrees of freedom and sparse (the certified highest
+    /// mode, the lowest or in-band modes, samples between) beyond, or forced.
+    #[arg(long, value_enum, default_value_t = modal::Route::Auto, requires = "scene")]
+    pub spectrum: modal::Route,
     /// How long the scene must stay within tolerance, seconds.
     #[arg(long, default_value_t = SpringScene::DEFAULT_DURATION_S)]
     pub duration: f64,
@@ -128,8 +133,13 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     let one_mode =
         SceneFile::one_mode(freq_hz, d, tick_hz, args.duration, args.phase_tol, args.amp_tol);
     let simulate = !args.no_simulate;
-    let modal = modal_of(&one_mode, simulate)?;
-    let options = Options { simulate, simulate_all: args.simulate_all, gauss_seidel: false };
+    let modal = modal_of(&one_mode, simulate, modal::Route::Auto)?;
+    let options = Options {
+        simulate,
+        simulate_all: args.simulate_all,
+        gauss_seidel: false,
+        route: modal::Route::Auto,
+    };
     let as_scene = advisor::advise(&one_mode, &modal, damped, options)?;
     match args.format {
         Format::Json => {
@@ -174,9 +184,9 @@ struct OneSpring<'a> {
 
 /// The scene reduced to its modes, with mode shapes when the prediction
 /// is to be checked by simulation.
-fn modal_of(scene: &SceneFile, simulate: bool) -> Result<Modal, Error> {
+fn modal_of(scene: &SceneFile, simulate: bool, route: modal::Route) -> Result<Modal, Error> {
     let shapes = if simulate { Shapes::Compute } else { Shapes::WhenNeeded };
-    modal::reduce_with(scene, shapes)
+    modal::reduce_with_route(scene, shapes, route)
 }
 
 /// Rows under a header, each column as wide as its widest cell (phi_max
@@ -306,6 +316,7 @@ fn run_scene(path: &std::path::Path, args: &Args) -> Result<ExitCode, Error> {
         simulate: !args.no_simulate,
         simulate_all: args.simulate_all,
         gauss_seidel: args.sweep.is_some(),
+        route: args.spectrum,
     };
     let advice = scene_advice(&scene, &args.methods, options)?;
     match args.format {
@@ -322,7 +333,7 @@ pub(crate) fn scene_advice(
     methods: &[String],
     options: Options,
 ) -> Result<advisor::SceneAdvice, Error> {
-    let modal = modal_of(scene, options.simulate)?;
+    let modal = modal_of(scene, options.simulate, options.route)?;
     let specs = if methods.is_empty() {
         LoadedMethod::damped_builtins()?
     } else {
@@ -336,7 +347,7 @@ pub(crate) fn scene_text(name: &str, a: &advisor::SceneAdvice) -> String {
     let mut out = format!(
         "scene {name}: {} degrees of freedom, {} modes ({} zero-frequency (rigid) left out: they need no substeps), damping {}\n",
         a.dof,
-        a.modes.len(),
+        a.modes.iter().filter(|m| !m.sampled).count(),
         a.rigid_modes,
         match a.damping {
             modal::DampingKind::Undamped => "none".to_owned(),
@@ -358,11 +369,38 @@ pub(crate) fn scene_text(name: &str, a: &advisor::SceneAdvice) -> String {
             None => "every mode".to_owned(),
         }
     );
-    let show = |i: usize| format!("{:.3} Hz (ratio {:.4})", a.modes[i].hz, a.modes[i].ratio);
-    let stab: Vec<String> =
-        (0..a.modes.len()).filter(|&i| a.modes[i].limits_stability).map(show).collect();
-    let acc: Vec<String> =
-        (0..a.modes.len()).filter(|&i| a.modes[i].limits_accuracy).map(show).collect();
+    if a.spectrum.route == "sparse" {
+        out += &format!(
+            "spectrum: sparse route: {} modes computed{}, {} sampled frequencies stand for the rest (every mode lies below the certified bound); {} degrees of freedom no spring touches\n",
+            a.spectrum.computed,
+            match (a.max_hz, a.spectrum.band_complete) {
+                (Some(f), Some(true)) => format!(" (every mode at or below {f} Hz)"),
+                (Some(f), _) => format!(" (the lowest of those at or below {f} Hz; samples cover the rest of the band)"),
+                _ => " (the lowest)".to_owned(),
+            },
+            a.spectrum.sampled,
+            a.spectrum.untouched_dofs,
+        );
+    }
+    let show = |i: usize| {
+        format!(
+            "{:.3} Hz (ratio {:.4}){}",
+            a.modes[i].hz,
+            a.modes[i].ratio,
+            if a.modes[i].sampled { ", sampled" } else { "" }
+        )
+    };
+    // A long list is cut: the JSON has every mode.
+    let list = |keep: &dyn Fn(usize) -> bool| -> Vec<String> {
+        let all: Vec<usize> = (0..a.modes.len()).filter(|&i| keep(i)).collect();
+        let mut v: Vec<String> = all.iter().take(8).map(|&i| show(i)).collect();
+        if all.len() > 8 {
+            v.push(format!("and {} more", all.len() - 8));
+        }
+        v
+    };
+    let stab = list(&|i| a.modes[i].limits_stability);
+    let acc = list(&|i| a.modes[i].limits_accuracy);
     let rest = a.modes.iter().filter(|m| !m.limits_stability && !m.limits_accuracy).count();
     out += &format!(
         "modes limiting stability: {}\n",
@@ -375,7 +413,12 @@ pub(crate) fn scene_text(name: &str, a: &advisor::SceneAdvice) -> String {
     out += &format!("modes that do not matter: {rest}\n");
     if let (Some(h), Some(b)) = (a.highest_hz, a.highest_hz_bound) {
         out += &format!(
-            "highest mode {h:.3} Hz, certified <= {b:.3} Hz (Gershgorin on M^-1/2 K M^-1/2)"
+            "highest mode {h:.3} Hz, certified <= {b:.3} Hz ({})",
+            match a.spectrum.certificate {
+                modal::Certificate::Cholesky =>
+                    "Cholesky factor of s I - M^-1/2 K M^-1/2 at s just above the Lanczos value",
+                modal::Certificate::Gershgorin => "Gershgorin on M^-1/2 K M^-1/2",
+            }
         );
         let certified: Vec<String> = a
             .candidates

@@ -137,6 +137,10 @@ pub(crate) struct ModeReport {
     pub hz: f64,
     /// Damping ratio.
     pub ratio: f64,
+    /// A sample of the unresolved spectrum of a large scene, not a mode
+    /// found (see `spectrum` in the advice).
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub sampled: bool,
     /// Whether it sets the recommended method's `substeps_stable`.
     pub limits_stability: bool,
     /// Whether it sets the recommended method's `substeps_accurate`.
@@ -203,8 +207,11 @@ pub struct SceneAdvice {
     /// The highest mode's frequency, Hz, as the eigensolver gives it.
     pub(crate) highest_hz: Option<f64>,
     /// A certified upper bound on the highest undamped frequency, Hz
-    /// (Gershgorin; `None` for a scene of modes).
+    /// (Gershgorin, or a Cholesky certificate on the sparse route; `None`
+    /// for a scene of modes).
     pub(crate) highest_hz_bound: Option<f64>,
+    /// How the spectrum was found: dense (every mode) or sparse.
+    pub(crate) spectrum: super::modal::RouteReport,
     /// The candidates meeting the target that the checking simulation left
     /// out: more than [`SIM_COST_FACTOR`] times the recommended's cost.
     pub(crate) simulation_left_out: Vec<LeftOut>,
@@ -483,11 +490,9 @@ fn system_of(modal: &Modal) -> (System, Vec<Vec<f64>>) {
         return (sys.clone(), shapes);
     }
     let n = modal.modes.len();
-    let (mut k, mut c) = (Sparse::default(), Sparse::default());
-    for m in &modal.modes {
-        k.push_row(vec![(k.n(), m.omega * m.omega)]);
-        c.push_row(vec![(c.n(), 2.0 * m.ratio * m.omega)]);
-    }
+    let k: Vec<f64> = modal.modes.iter().map(|m| m.omega * m.omega).collect();
+    let c: Vec<f64> = modal.modes.iter().map(|m| 2.0 * m.ratio * m.omega).collect();
+    let (k, c) = (Sparse::diagonal(&k), Sparse::diagonal(&c));
     let shapes = (0..n).map(|i| (0..n).map(|j| if i == j { 1.0 } else { 0.0 }).collect()).collect();
     (System { mass: vec![1.0; n], k, c }, shapes)
 }
@@ -502,6 +507,8 @@ pub struct Options {
     pub simulate_all: bool,
     /// Analyse the Gauss–Seidel sweep too.
     pub gauss_seidel: bool,
+    /// The eigensolver that reduces the scene.
+    pub route: super::modal::Route,
 }
 
 /// Advises on a scene.
@@ -580,6 +587,7 @@ pub fn advise(
         .map(|(i, m)| ModeReport {
             hz: m.hz(),
             ratio: m.ratio,
+            sampled: m.sampled,
             limits_stability: reference.is_some_and(|c| {
                 c.substeps_stable.is_some() && c.mode_stable[i] == c.substeps_stable
             }),
@@ -619,11 +627,15 @@ pub fn advise(
         modes,
         candidates,
         recommended,
-        highest_hz: modal
-            .modes
-            .iter()
-            .map(|m| m.hz())
-            .fold(None, |a: Option<f64>, h| Some(a.map_or(h, |a| a.max(h)))),
+        highest_hz: modal.route.highest_ritz_hz.or_else(|| {
+            modal
+                .modes
+                .iter()
+                .filter(|m| !m.sampled)
+                .map(|m| m.hz())
+                .fold(None, |a: Option<f64>, h| Some(a.map_or(h, |a| a.max(h))))
+        }),
+        spectrum: modal.route.clone(),
         highest_hz_bound: modal.omega_bound.map(|w| w / (2.0 * std::f64::consts::PI)),
         simulation_left_out,
         sweep,
@@ -897,7 +909,7 @@ fn checked_modes(
     band: Option<f64>,
 ) -> Vec<usize> {
     let osc: Vec<usize> = (0..modes.len())
-        .filter(|&i| modes[i].ratio < 1.0 && in_band(band, modes[i].omega))
+        .filter(|&i| modes[i].ratio < 1.0 && !modes[i].sampled && in_band(band, modes[i].omega))
         .collect();
     if osc.len() <= 16 {
         return osc;

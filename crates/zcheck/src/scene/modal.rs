@@ -29,29 +29,46 @@
 //! out-of-plane motion of a flat cloth, the sideways motion of a straight
 //! rope) has no stiffness: a zero mode.
 
+use faer::sparse::{SparseRowMat, SparseRowMatRef, Triplet};
 use faer::Side;
 use nalgebra::DMatrix;
 use num_complex::Complex64 as C64;
 
 use super::file::{Body, Mass, SceneFile, Spring};
+use super::spectrum;
+pub(crate) use super::spectrum::Certificate;
 use crate::error::Error;
 
-/// A symmetric sparse matrix: for each row, its `(column, value)` entries.
-#[derive(Clone, Debug, Default, PartialEq)]
+/// A symmetric sparse matrix, compressed by rows (faer's `SparseRowMat`):
+/// K, C, and the scaled K̃ = M^{-1/2} K M^{-1/2}. Built by [`Assembly`]
+/// from (row, column, value) triplets, duplicates summed.
+#[derive(Clone, Debug)]
 pub(crate) struct Sparse {
-    rows: Vec<Vec<(usize, f64)>>,
+    mat: SparseRowMat<usize, f64>,
 }
 
-impl Sparse {
-    fn new(n: usize) -> Sparse {
-        Sparse { rows: vec![Vec::new(); n] }
+impl PartialEq for Sparse {
+    fn eq(&self, other: &Sparse) -> bool {
+        self.n() == other.n() && (0..self.n()).all(|i| self.row(i).eq(other.row(i)))
+    }
+}
+
+/// Triplets of a symmetric matrix being assembled.
+#[derive(Clone, Debug)]
+pub(crate) struct Assembly {
+    n: usize,
+    triplets: Vec<Triplet<usize, usize, f64>>,
+}
+
+impl Assembly {
+    /// An n×n matrix with no entries yet.
+    pub(crate) fn new(n: usize) -> Assembly {
+        Assembly { n, triplets: Vec::new() }
     }
 
-    fn add(&mut self, i: usize, j: usize, x: f64) {
-        match self.rows[i].iter_mut().find(|(c, _)| *c == j) {
-            Some(e) => e.1 += x,
-            None => self.rows[i].push((j, x)),
-        }
+    /// Adds x at (i, j).
+    pub(crate) fn add(&mut self, i: usize, j: usize, x: f64) {
+        self.triplets.push(Triplet::new(i, j, x));
     }
 
     /// Adds a two-ended element of coefficient `x` and `dim`×`dim` block
@@ -59,51 +76,109 @@ impl Sparse {
     /// `b` (`None`: the end is ground or fixed): x·B on each free end's
     /// diagonal block, −x·B between them. Exact zeros are not stored.
     fn add_block(&mut self, a: Option<usize>, b: Option<usize>, dim: usize, block: &[f64], x: f64) {
-        let mut put = |i: usize, j: usize, v: f64| {
-            if v != 0.0 {
-                self.add(i, j, v);
-            }
-        };
         for (r, c, sign) in [(a, a, 1.0), (b, b, 1.0), (a, b, -1.0), (b, a, -1.0)] {
             if let (Some(r), Some(c)) = (r, c) {
                 for p in 0..dim {
                     for q in 0..dim {
-                        put(r + p, c + q, sign * x * block[p * dim + q]);
+                        let v = sign * x * block[p * dim + q];
+                        if v != 0.0 {
+                            self.add(r + p, c + q, v);
+                        }
                     }
                 }
             }
         }
     }
 
-    /// Appends a row.
-    pub(crate) fn push_row(&mut self, row: Vec<(usize, f64)>) {
-        self.rows.push(row);
+    /// The compressed matrix (duplicates summed).
+    pub(crate) fn finish(self) -> Sparse {
+        let mat = SparseRowMat::try_new_from_triplets(self.n, self.n, &self.triplets)
+            .expect("indices are in range by construction");
+        Sparse { mat }
+    }
+}
+
+impl Sparse {
+    /// The n×n zero matrix.
+    #[cfg(test)]
+    pub(crate) fn zeros(n: usize) -> Sparse {
+        Assembly::new(n).finish()
+    }
+
+    /// diag(d).
+    pub(crate) fn diagonal(d: &[f64]) -> Sparse {
+        let mut a = Assembly::new(d.len());
+        for (i, &x) in d.iter().enumerate() {
+            a.add(i, i, x);
+        }
+        a.finish()
     }
 
     /// The size.
     pub(crate) fn n(&self) -> usize {
-        self.rows.len()
+        self.mat.nrows()
     }
 
-    /// Row i's entries.
-    pub(crate) fn row(&self, i: usize) -> &[(usize, f64)] {
-        &self.rows[i]
+    /// Row i's `(column, value)` entries, increasing column.
+    pub(crate) fn row(&self, i: usize) -> impl Iterator<Item = (usize, f64)> + '_ {
+        let m = self.mat.as_ref();
+        m.symbolic().col_idx_of_row_raw(i).iter().copied().zip(m.val_of_row(i).iter().copied())
+    }
+
+    /// Entry (i, j).
+    pub(crate) fn get(&self, i: usize, j: usize) -> f64 {
+        let m = self.mat.as_ref();
+        let cols = m.symbolic().col_idx_of_row_raw(i);
+        cols.binary_search(&j).map_or(0.0, |p| m.val_of_row(i)[p])
+    }
+
+    /// faer's view, compressed by rows.
+    pub(crate) fn as_faer(&self) -> SparseRowMatRef<'_, usize, f64> {
+        self.mat.as_ref()
     }
 
     /// Whether every entry is zero.
     pub(crate) fn is_zero(&self) -> bool {
-        self.rows.iter().all(|r| r.iter().all(|&(_, x)| x == 0.0))
+        self.mat.as_ref().val().iter().all(|&x| x == 0.0)
+    }
+
+    /// Whether row i has no non-zero entry.
+    pub(crate) fn row_is_zero(&self, i: usize) -> bool {
+        self.mat.as_ref().val_of_row(i).iter().all(|&x| x == 0.0)
     }
 
     /// (D A D) for the diagonal D = diag(d).
-    fn scaled(&self, d: &[f64]) -> Sparse {
-        Sparse {
-            rows: self
-                .rows
-                .iter()
-                .enumerate()
-                .map(|(i, r)| r.iter().map(|&(j, x)| (j, d[i] * x * d[j])).collect())
-                .collect(),
+    pub(crate) fn scaled(&self, d: &[f64]) -> Sparse {
+        let mut a = Assembly::new(self.n());
+        for i in 0..self.n() {
+            for (j, x) in self.row(i) {
+                a.add(i, j, d[i] * x * d[j]);
+            }
+        }
+        a.finish()
+    }
+
+    /// The principal submatrix on the indices `keep` (increasing).
+    pub(crate) fn restricted(&self, keep: &[usize]) -> Sparse {
+        let mut at = vec![usize::MAX; self.n()];
+        for (new, &old) in keep.iter().enumerate() {
+            at[old] = new;
+        }
+        let mut a = Assembly::new(keep.len());
+        for (new, &old) in keep.iter().enumerate() {
+            for (j, x) in self.row(old) {
+                if at[j] != usize::MAX {
+                    a.add(new, at[j], x);
+                }
+            }
+        }
+        a.finish()
+    }
+
+    /// y = A x.
+    pub(crate) fn mul_vec(&self, x: &[f64], y: &mut [f64]) {
+        for (i, yi) in y.iter_mut().enumerate() {
+            *yi = self.row(i).map(|(j, a)| a * x[j]).sum();
         }
     }
 
@@ -112,27 +187,23 @@ impl Sparse {
     /// its length times ε (the error of a sum of that many non-negative
     /// terms), so no rounding brings it below the exact bound.
     pub(crate) fn gershgorin_upper(&self) -> f64 {
-        self.rows
-            .iter()
-            .map(|r| {
-                let sum: f64 = r.iter().map(|&(_, x)| x.abs()).sum();
+        (0..self.n())
+            .map(|i| {
+                let r = self.mat.as_ref().val_of_row(i);
+                let sum: f64 = r.iter().map(|x| x.abs()).sum();
                 sum * (1.0 + (r.len() as f64 + 2.0) * f64::EPSILON)
             })
             .fold(0.0, f64::max)
     }
 
     /// The largest absolute entry.
-    fn max_abs(&self) -> f64 {
-        self.rows.iter().flatten().fold(0.0, |m, &(_, x)| m.max(x.abs()))
+    pub(crate) fn max_abs(&self) -> f64 {
+        self.mat.as_ref().val().iter().fold(0.0, |m, &x| m.max(x.abs()))
     }
 
     /// xᵀ A x.
-    fn quad(&self, x: &[f64]) -> f64 {
-        self.rows
-            .iter()
-            .enumerate()
-            .map(|(i, r)| x[i] * r.iter().map(|&(j, a)| a * x[j]).sum::<f64>())
-            .sum()
+    pub(crate) fn quad(&self, x: &[f64]) -> f64 {
+        (0..self.n()).map(|i| x[i] * self.row(i).map(|(j, a)| a * x[j]).sum::<f64>()).sum()
     }
 
     /// Whether A B is symmetric (A, B symmetric: whether they commute), to
@@ -141,8 +212,8 @@ impl Sparse {
         let n = self.n();
         let mut prod: Vec<std::collections::HashMap<usize, f64>> = vec![Default::default(); n];
         for (i, row) in prod.iter_mut().enumerate() {
-            for &(k, a) in &self.rows[i] {
-                for &(j, x) in &b.rows[k] {
+            for (k, a) in self.row(i) {
+                for (j, x) in b.row(k) {
                     *row.entry(j).or_insert(0.0) += a * x;
                 }
             }
@@ -193,7 +264,7 @@ impl System {
             }
         }
         let n = mass.len();
-        let (mut k, mut c) = (Sparse::new(n), Sparse::new(n));
+        let (mut k, mut c) = (Assembly::new(n), Assembly::new(n));
         for s in springs {
             let block = link_block(masses, s, dim);
             let (a, b) = (base[s.a], s.b.and_then(|b| base[b]));
@@ -202,7 +273,7 @@ impl System {
                 c.add_block(a, b, dim, &block, s.damping);
             }
         }
-        System { mass, k, c }
+        System { mass, k: k.finish(), c: c.finish() }
     }
 
     /// Degrees of freedom.
@@ -257,6 +328,10 @@ pub(crate) struct Mode {
     /// φ = M^{-1/2} u with φᵀ M φ = 1, in physical coordinates (`None` for
     /// a scene given as modes).
     pub shape: Option<Vec<f64>>,
+    /// Not an eigenvalue found but a sample of the unresolved part of a
+    /// large scene's spectrum (see [`super::spectrum`]): a frequency some
+    /// mode may have, with the damping ratio it would have.
+    pub sampled: bool,
 }
 
 impl Mode {
@@ -282,9 +357,59 @@ pub struct Modal {
     /// The damping's structure.
     pub(crate) damping: DampingKind,
     /// A certified upper bound on the highest angular frequency, rad/s
-    /// (Gershgorin on M^{-1/2} K M^{-1/2}), independent of the
-    /// eigensolver; `None` for a scene given as modes.
+    /// (Gershgorin on M^{-1/2} K M^{-1/2}, or on the sparse route the
+    /// Cholesky certificate), independent of the dense eigensolver; `None`
+    /// for a scene given as modes.
     pub(crate) omega_bound: Option<f64>,
+    /// How the spectrum was found.
+    pub(crate) route: RouteReport,
+}
+
+/// Which eigensolver reduced a scene, and what it found.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub(crate) struct RouteReport {
+    /// `dense` (every mode) or `sparse` (the highest and the lowest or
+    /// in-band modes; the rest sampled).
+    pub route: &'static str,
+    /// Degrees of freedom no spring or damper touches (zero modes, left
+    /// out before the eigenproblem).
+    pub untouched_dofs: usize,
+    /// Modes computed as eigenpairs.
+    pub computed: usize,
+    /// Sampled frequencies standing for the unresolved modes.
+    pub sampled: usize,
+    /// The highest frequency's Ritz value, Hz (sparse route).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub highest_ritz_hz: Option<f64>,
+    /// How the bound on the highest frequency is certified.
+    pub certificate: Certificate,
+    /// Lanczos steps for the highest frequency (sparse route).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub lanczos_steps: Option<usize>,
+    /// Whether every mode at or below `max_hz` was computed (sparse route
+    /// with a band); otherwise samples cover the rest of the band.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub band_complete: Option<bool>,
+}
+
+/// Largest system (after untouched degrees of freedom are dropped) reduced
+/// densely, every mode; larger ones take the sparse route.
+pub(crate) const DENSE_MAX_DOF: usize = 1500;
+
+/// Samples spanning the unresolved part of a large scene's spectrum.
+const SAMPLES: usize = 48;
+
+/// Which eigensolver reduces a scene of masses and springs.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
+pub enum Route {
+    /// Dense up to 1500 degrees of freedom (after those no spring touches
+    /// are dropped), sparse beyond.
+    #[default]
+    Auto,
+    /// Dense: every mode, whatever the size.
+    Dense,
+    /// Sparse: the highest mode, certified, and the lowest or in-band modes.
+    Sparse,
 }
 
 /// Relative tolerance of the structural tests (Rayleigh fit, commutation,
@@ -302,8 +427,13 @@ pub enum Shapes {
     WhenNeeded,
 }
 
-/// Reduces a scene to its modes.
+/// Reduces a scene to its modes, by the eigensolver its size calls for.
 pub fn reduce_with(scene: &SceneFile, shapes: Shapes) -> Result<Modal, Error> {
+    reduce_with_route(scene, shapes, Route::Auto)
+}
+
+/// Reduces a scene to its modes by the eigensolver given.
+pub fn reduce_with_route(scene: &SceneFile, shapes: Shapes, route: Route) -> Result<Modal, Error> {
     match &scene.body {
         Body::Modes(list) => {
             let mut modes: Vec<Mode> = list
@@ -312,6 +442,7 @@ pub fn reduce_with(scene: &SceneFile, shapes: Shapes) -> Result<Modal, Error> {
                     omega: 2.0 * std::f64::consts::PI * m.hz,
                     ratio: m.ratio,
                     shape: None,
+                    sampled: false,
                 })
                 .collect();
             modes.sort_by(|a, b| a.omega.total_cmp(&b.omega));
@@ -320,12 +451,143 @@ pub fn reduce_with(scene: &SceneFile, shapes: Shapes) -> Result<Modal, Error> {
             } else {
                 DampingKind::Proportional
             };
-            Ok(Modal { system: None, modes, rigid: 0, full: None, damping, omega_bound: None })
+            let computed = modes.len();
+            Ok(Modal {
+                system: None,
+                modes,
+                rigid: 0,
+                full: None,
+                damping,
+                omega_bound: None,
+                route: RouteReport {
+                    route: "given",
+                    untouched_dofs: 0,
+                    computed,
+                    sampled: 0,
+                    highest_ritz_hz: None,
+                    certificate: Certificate::Gershgorin,
+                    lanczos_steps: None,
+                    band_complete: None,
+                },
+            })
         }
-        Body::Springs { masses, springs, dim } => {
-            reduce_system_with(System::of_scene(masses, springs, *dim), shapes)
+        Body::Springs { masses, springs, dim } => reduce_system_route(
+            System::of_scene(masses, springs, *dim),
+            shapes,
+            scene.max_hz,
+            route,
+        ),
+    }
+}
+
+/// Reduces an assembled system by the route given: dense when it is small
+/// enough (after dropping the untouched degrees of freedom) and the route
+/// is `Auto`, else sparse.
+pub(crate) fn reduce_system_route(
+    system: System,
+    shapes: Shapes,
+    max_hz: Option<f64>,
+    route: Route,
+) -> Result<Modal, Error> {
+    let n = system.n();
+    let touched = (0..n).filter(|&i| !(system.k.row_is_zero(i) && system.c.row_is_zero(i))).count();
+    match route {
+        Route::Dense => reduce_system_with(system, shapes),
+        Route::Auto if touched <= DENSE_MAX_DOF => reduce_system_with(system, shapes),
+        _ => reduce_sparse(system, max_hz),
+    }
+}
+
+/// The sparse route (see [`super::spectrum`]).
+fn reduce_sparse(system: System, max_hz: Option<f64>) -> Result<Modal, Error> {
+    let n = system.n();
+    let inv_sqrt: Vec<f64> = system.mass.iter().map(|m| 1.0 / m.sqrt()).collect();
+    let keep: Vec<usize> =
+        (0..n).filter(|&i| !(system.k.row_is_zero(i) && system.c.row_is_zero(i))).collect();
+    let untouched = n - keep.len();
+    let kt_all = system.k.scaled(&inv_sqrt);
+    let ct_all = system.c.scaled(&inv_sqrt);
+    let damping = damping_kind(&kt_all, &ct_all);
+    let (kt, ct) = (kt_all.restricted(&keep), ct_all.restricted(&keep));
+    let gershgorin = kt.gershgorin_upper();
+    let top = spectrum::highest(&kt, gershgorin)?;
+    let zero_tol = STRUCTURE_TOL * top.upper;
+    let tau = max_hz.map(|f| (2.0 * std::f64::consts::PI * f).powi(2));
+    let low = if keep.is_empty() {
+        spectrum::Lowest::default()
+    } else {
+        spectrum::lowest(&kt, tau, 4, zero_tol, top.upper)?
+    };
+    let ratio_of = |omega: f64, u: Option<&[f64]>| match damping {
+        DampingKind::Undamped => 0.0,
+        DampingKind::Rayleigh { alpha, beta } => alpha / (2.0 * omega) + beta * omega / 2.0,
+        _ => u.map_or(0.0, |u| ct.quad(u) / (2.0 * omega)),
+    };
+    let mut rigid = untouched;
+    let mut modes = Vec::new();
+    for (&l, u) in low.values.iter().zip(&low.vectors) {
+        if l <= zero_tol {
+            rigid += 1;
+            continue;
+        }
+        let omega = l.sqrt();
+        let mut shape = vec![0.0; n];
+        for (&i, x) in keep.iter().zip(u) {
+            shape[i] = x * inv_sqrt[i];
+        }
+        modes.push(Mode {
+            omega,
+            ratio: ratio_of(omega, Some(u)),
+            shape: Some(shape),
+            sampled: false,
+        });
+    }
+    let computed = modes.len();
+    // Samples from the highest computed mode (or the band's edge) up to the
+    // certified bound, log-spaced, the bound itself last.
+    let hi = top.upper.sqrt();
+    let lo = match (tau, low.complete) {
+        (Some(t), true) => t.sqrt(),
+        _ => modes.last().map_or(hi * 1e-3, |m| m.omega),
+    }
+    .min(hi);
+    // Under damping other than Rayleigh the ratio of an unresolved mode is
+    // only bounded: 2ζω = uᵀC̃u ≤ λ_max(C̃), so each sample runs at both ends.
+    let c_bound = ct.gershgorin_upper();
+    let count = if lo < hi { SAMPLES } else { 1 };
+    for k in 1..=count {
+        let omega = lo * (hi / lo).powf(k as f64 / count as f64);
+        if omega <= 0.0 || !omega.is_finite() {
+            continue;
+        }
+        let ratios: Vec<f64> = match damping {
+            DampingKind::Undamped | DampingKind::Rayleigh { .. } => vec![ratio_of(omega, None)],
+            _ => vec![0.0, (c_bound / (2.0 * omega)).min(1.0)],
+        };
+        for ratio in ratios {
+            modes.push(Mode { omega, ratio, shape: None, sampled: true });
         }
     }
+    let sampled = modes.len() - computed;
+    let route = RouteReport {
+        route: "sparse",
+        untouched_dofs: untouched,
+        computed,
+        sampled,
+        highest_ritz_hz: Some(top.ritz.sqrt() / (2.0 * std::f64::consts::PI)),
+        certificate: top.certificate,
+        lanczos_steps: Some(top.steps),
+        band_complete: tau.map(|_| low.complete),
+    };
+    Ok(Modal {
+        system: Some(system),
+        modes,
+        rigid,
+        full: None,
+        damping,
+        omega_bound: Some(hi),
+        route,
+    })
 }
 
 /// Reduces an assembled system to its modes.
@@ -339,7 +601,7 @@ pub(crate) fn reduce_system_with(system: System, shapes: Shapes) -> Result<Modal
     // Rayleigh; the verification simulation needs shapes in any case.
     let mut dense = faer::Mat::<f64>::zeros(n, n);
     for i in 0..n {
-        for &(j, x) in kt.row(i) {
+        for (j, x) in kt.row(i) {
             dense[(i, j)] = x;
         }
     }
@@ -379,7 +641,7 @@ pub(crate) fn reduce_system_with(system: System, shapes: Shapes) -> Result<Modal
             _ => ct.quad(&col) / (2.0 * omega),
         };
         let shape = u.is_some().then(|| col.iter().zip(&inv_sqrt).map(|(x, d)| x * d).collect());
-        modes.push(Mode { omega, ratio, shape });
+        modes.push(Mode { omega, ratio, shape, sampled: false });
     }
     let mut full_system = None;
     if damping == DampingKind::NonProportional {
@@ -399,20 +661,16 @@ pub(crate) fn reduce_system_with(system: System, shapes: Shapes) -> Result<Modal
                     kept.iter().map(|&i| (0..n).map(|r| u[(r, i)]).collect()).collect();
                 let ct_cols: Vec<Vec<f64>> = cols
                     .iter()
-                    .map(|c| {
-                        (0..n).map(|r| ct.row(r).iter().map(|&(j, x)| x * c[j]).sum()).collect()
-                    })
+                    .map(|c| (0..n).map(|r| ct.row(r).map(|(j, x)| x * c[j]).sum()).collect())
                     .collect();
-                let (mut kr, mut cr) = (Sparse::default(), Sparse::default());
-                for (a, &i) in kept.iter().enumerate() {
-                    kr.push_row(vec![(a, s[i])]);
-                    cr.push_row(
-                        (0..kept.len())
-                            .map(|b| (b, cols[a].iter().zip(&ct_cols[b]).map(|(x, y)| x * y).sum()))
-                            .collect(),
-                    );
+                let kr: Vec<f64> = kept.iter().map(|&i| s[i]).collect();
+                let mut cr = Assembly::new(kept.len());
+                for a in 0..kept.len() {
+                    for b in 0..kept.len() {
+                        cr.add(a, b, cols[a].iter().zip(&ct_cols[b]).map(|(x, y)| x * y).sum());
+                    }
                 }
-                System { mass: vec![1.0; kept.len()], k: kr, c: cr }
+                System { mass: vec![1.0; kept.len()], k: Sparse::diagonal(&kr), c: cr.finish() }
             }
             _ => system.clone(),
         };
@@ -424,13 +682,24 @@ pub(crate) fn reduce_system_with(system: System, shapes: Shapes) -> Result<Modal
                 omega: l.norm(),
                 ratio: if l.im > 0.0 { -l.re / l.norm() } else { 1.0 },
                 shape: None,
+                sampled: false,
             })
             .collect();
         full_system = Some(full);
     }
     let full = full_system.take();
     let omega_bound = Some(kt.gershgorin_upper().sqrt());
-    Ok(Modal { system: Some(system), modes, rigid, full, damping, omega_bound })
+    let route = RouteReport {
+        route: "dense",
+        untouched_dofs: 0,
+        computed: modes.len(),
+        sampled: 0,
+        highest_ritz_hz: None,
+        certificate: Certificate::Gershgorin,
+        lanczos_steps: None,
+        band_complete: None,
+    };
+    Ok(Modal { system: Some(system), modes, rigid, full, damping, omega_bound, route })
 }
 
 /// Classifies the damping: zero, Rayleigh (C̃ = αI + βK̃, fitted on the
@@ -443,29 +712,29 @@ fn damping_kind(kt: &Sparse, ct: &Sparse) -> DampingKind {
     let n = kt.n();
     let (mut num, mut den) = (0.0, 0.0);
     for i in 0..n {
-        for &(j, c) in ct.row(i) {
+        for (j, c) in ct.row(i) {
             if i != j {
-                let k = kt.row(i).iter().find(|e| e.0 == j).map_or(0.0, |e| e.1);
+                let k = kt.get(i, j);
                 num += c * k;
                 den += k * k;
             }
         }
     }
     let beta = if den > 0.0 { num / den } else { 0.0 };
-    let diag = |a: &Sparse, i: usize| a.row(i).iter().find(|e| e.0 == i).map_or(0.0, |e| e.1);
+    let diag = |a: &Sparse, i: usize| a.get(i, i);
     let alpha = (0..n).map(|i| diag(ct, i) - beta * diag(kt, i)).sum::<f64>() / n as f64;
     let scale = ct.max_abs();
     let fits = (0..n).all(|i| {
         let mut ok = true;
         let mut seen_diag = false;
-        for &(j, c) in ct.row(i) {
-            let k = kt.row(i).iter().find(|e| e.0 == j).map_or(0.0, |e| e.1);
+        for (j, c) in ct.row(i) {
+            let k = kt.get(i, j);
             let model = beta * k + if i == j { alpha } else { 0.0 };
             seen_diag |= i == j;
             ok &= (c - model).abs() <= STRUCTURE_TOL * scale;
         }
-        for &(j, k) in kt.row(i) {
-            if !ct.row(i).iter().any(|e| e.0 == j) {
+        for (j, k) in kt.row(i) {
+            if !ct.row(i).any(|e| e.0 == j) {
                 let model = beta * k + if i == j { alpha } else { 0.0 };
                 ok &= model.abs() <= STRUCTURE_TOL * scale;
             }
@@ -492,10 +761,10 @@ pub(crate) fn continuous_eigenvalues(sys: &System) -> Vec<C64> {
     let mut a = DMatrix::zeros(2 * n, 2 * n);
     for i in 0..n {
         a[(i, n + i)] = 1.0;
-        for &(j, k) in sys.k.row(i) {
+        for (j, k) in sys.k.row(i) {
             a[(n + i, j)] = -k / sys.mass[i];
         }
-        for &(j, c) in sys.c.row(i) {
+        for (j, c) in sys.c.row(i) {
             a[(n + i, n + j)] = -c / sys.mass[i];
         }
     }
@@ -542,7 +811,7 @@ mod tests {
                 let phi = m.shape.as_ref().unwrap();
                 // K φ, row by row.
                 let kphi: Vec<f64> =
-                    sys.k.rows.iter().map(|r| r.iter().map(|&(j, a)| a * phi[j]).sum()).collect();
+                    (0..n).map(|i| sys.k.row(i).map(|(j, a)| a * phi[j]).sum()).collect();
                 for i in 0..n {
                     let r = kphi[i] - m.omega * m.omega * sys.mass[i] * phi[i];
                     assert!(r.abs() <= 500.0 * f64::EPSILON * scale, "n {n}: residual {r}");
@@ -658,7 +927,7 @@ mod tests {
     fn dense(a: &Sparse) -> DMatrix<f64> {
         let mut m = DMatrix::zeros(a.n(), a.n());
         for i in 0..a.n() {
-            for &(j, x) in a.row(i) {
+            for (j, x) in a.row(i) {
                 m[(i, j)] += x;
             }
         }
@@ -771,7 +1040,7 @@ mod tests {
             proptest::prop_assert_eq!(zeros, n - rank);
             // Undamped, so that every mode is a real ω (the damped reduction
             // may list an overdamped pair as two).
-            let modal = reduce_system_with(System { c: Sparse::new(n), ..sys }, Shapes::WhenNeeded).unwrap();
+            let modal = reduce_system_with(System { c: Sparse::zeros(n), ..sys }, Shapes::WhenNeeded).unwrap();
             let expected_rigid = if lmax > 0.0 { n - rank } else { n };
             proptest::prop_assert_eq!(modal.rigid, expected_rigid);
             proptest::prop_assert_eq!(modal.rigid + modal.modes.len(), n);

@@ -91,10 +91,10 @@ impl Forces<'_> {
     /// (K y + (C + eK) v)_i with y_j, v_j given by functions.
     fn row(&self, i: usize, y: impl Fn(usize) -> f64, v: impl Fn(usize) -> f64) -> f64 {
         let mut f = 0.0;
-        for &(j, k) in self.sys.k.row(i) {
+        for (j, k) in self.sys.k.row(i) {
             f += k * (y(j) + self.extra * v(j));
         }
-        for &(j, c) in self.sys.c.row(i) {
+        for (j, c) in self.sys.c.row(i) {
             f += c * v(j);
         }
         f
@@ -293,8 +293,6 @@ mod tests {
     }
 
     fn sparse1(x: f64) -> Sparse {
-        let mut s = Sparse::default();
-        s.push_row(vec![(0, x)]);
-        s
+        Sparse::diagonal(&[x])
     }
 }

@@ -540,9 +540,16 @@ fn rigid_modes_with_non_proportional_damping_match_the_scalar_chain() {
 /// are every candidate that meets the target.
 #[test]
 fn the_default_simulation_checks_the_close_candidates_and_names_the_rest() {
-    for name in
-        ["chain10", "quarter_car", "cloth_strip", "building3", "spring_120hz", "cloth8", "rope2d"]
-    {
+    for name in [
+        "chain10",
+        "quarter_car",
+        "cloth_strip",
+        "building3",
+        "spring_120hz",
+        "cloth8",
+        "rope2d",
+        "cloth64",
+    ] {
         let v = json(&["advise", "--scene", &example(name), "--format", "json"]);
         let rec = v["recommended"]["method"].as_str().unwrap();
         let left: Vec<&str> = v["simulation_left_out"]
@@ -579,7 +586,9 @@ fn the_default_simulation_checks_the_close_candidates_and_names_the_rest() {
 #[test]
 fn the_certified_bound_covers_the_highest_mode_and_its_substeps() {
     let mut certified = 0;
-    for name in ["chain10", "quarter_car", "cloth_strip", "building3", "cloth8", "rope2d"] {
+    for name in
+        ["chain10", "quarter_car", "cloth_strip", "building3", "cloth8", "rope2d", "cloth64"]
+    {
         let v = json(&["advise", "--scene", &example(name), "--format", "json", "--no-simulate"]);
         let (h, b) = (v["highest_hz"].as_f64().unwrap(), v["highest_hz_bound"].as_f64().unwrap());
         assert!(h <= b * (1.0 + 1e-12), "{name}: {h} > {b}");
