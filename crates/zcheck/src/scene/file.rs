@@ -157,6 +157,41 @@ struct RawMode {
     ratio: Option<Spanned<f64>>,
 }
 
+/// Files above this size are parsed in chunks of about this size.
+const CHUNK_BYTES: usize = 4 << 20;
+
+/// The text cut into chunks of at least [`CHUNK_BYTES`] at lines that open
+/// a `[[mass]]`, `[[spring]]` or `[[mode]]` table, each with its byte
+/// offset; the whole text as one chunk when it is small or holds a
+/// multi-line string (a header inside one is not a header).
+fn chunks(text: &str) -> Vec<(usize, &str)> {
+    chunks_of(text, CHUNK_BYTES)
+}
+
+/// [`chunks`] with the chunk size given (tests cut small files).
+fn chunks_of(text: &str, chunk_bytes: usize) -> Vec<(usize, &str)> {
+    if text.len() <= 2 * chunk_bytes || text.contains("\"\"\"") || text.contains("'''") {
+        return vec![(0, text)];
+    }
+    let mut out = Vec::new();
+    let mut start = 0;
+    let mut line = 0;
+    while line < text.len() {
+        let end = text[line..].find('\n').map_or(text.len(), |i| line + i + 1);
+        let head = text[line..end].trim_end();
+        let header = ["[[mass]]", "[[spring]]", "[[mode]]"].iter().any(|h| {
+            head == *h || head.strip_prefix(h).is_some_and(|r| r.trim_start().starts_with('#'))
+        });
+        if header && line - start >= chunk_bytes {
+            out.push((start, &text[start..line]));
+            start = line;
+        }
+        line = end;
+    }
+    out.push((start, &text[start..]));
+    out
+}
+
 /// Defaults for a scene file that leaves them out.
 pub(crate) const DEFAULT_DURATION_S: f64 = 1.0;
 /// Default phase target, radians.
@@ -175,32 +210,69 @@ impl SceneFile {
 
     /// Parses and checks the text of a scene file; `path` names it in errors.
     pub fn parse(path: &str, text: &str) -> Result<SceneFile, Error> {
+        // A large file is parsed in chunks cut at its `[[mass]]`,
+        // `[[spring]]` and `[[mode]]` headers, so the parser's tree of one
+        // chunk at a time is held, not the whole file's; each span is then
+        // shifted by its chunk's offset.
+        SceneFile::parse_chunks(path, text, chunks(text))
+    }
+
+    /// [`SceneFile::parse`] over the chunks given.
+    fn parse_chunks(
+        path: &str,
+        text: &str,
+        chunks: Vec<(usize, &str)>,
+    ) -> Result<SceneFile, Error> {
         let err = |span: Option<Range<usize>>, message: String| {
             let (line, col) = line_col(text, span.map_or(0, |s| s.start));
             Error::file(path, line, col, &message)
         };
-        let raw: Raw = toml::from_str(text).map_err(|e| {
-            err(e.span(), e.message().trim_end_matches('\n').replace('\n', "; ").to_string())
-        })?;
-        let positive = |v: &Spanned<f64>, what: &str| {
+        let mut raws: Vec<(usize, Raw)> = Vec::new();
+        for (off, chunk) in chunks {
+            let raw: Raw = toml::from_str(chunk).map_err(|e| {
+                err(
+                    e.span().map(|s| s.start + off..s.end + off),
+                    e.message().trim_end_matches('\n').replace('\n', "; ").to_string(),
+                )
+            })?;
+            raws.push((off, raw));
+        }
+        let at = |off: usize, span: Range<usize>| Some(span.start + off..span.end + off);
+        let positive = |off: usize, v: &Spanned<f64>, what: &str| {
             let x = *v.get_ref();
             if x.is_finite() && x > 0.0 {
                 Ok(x)
             } else {
-                Err(err(Some(v.span()), format!("{what} = {x}: expected a finite number > 0")))
+                Err(err(at(off, v.span()), format!("{what} = {x}: expected a finite number > 0")))
             }
         };
-        let non_negative = |v: &Spanned<f64>, what: &str| {
+        let non_negative = |off: usize, v: &Spanned<f64>, what: &str| {
             let x = *v.get_ref();
             if x.is_finite() && x >= 0.0 {
                 Ok(x)
             } else {
-                Err(err(Some(v.span()), format!("{what} = {x}: expected a finite number >= 0")))
+                Err(err(at(off, v.span()), format!("{what} = {x}: expected a finite number >= 0")))
             }
         };
+        // Later chunks start at a table header, so only the first holds
+        // top-level keys; [accuracy] may come anywhere, once.
+        let raw = &raws[0].1;
+        let mut accuracy: Option<(usize, &RawAccuracy)> = None;
+        for (off, r) in &raws {
+            if let Some(a) = &r.accuracy {
+                if accuracy.is_some() {
+                    return Err(err(at(*off, 0..0), "duplicate table [accuracy]".into()));
+                }
+                accuracy = Some((*off, a));
+            }
+        }
+        let all_mass = || raws.iter().flat_map(|(off, r)| r.mass.iter().map(move |m| (*off, m)));
+        let all_spring =
+            || raws.iter().flat_map(|(off, r)| r.spring.iter().map(move |m| (*off, m)));
+        let all_mode = || raws.iter().flat_map(|(off, r)| r.mode.iter().map(move |m| (*off, m)));
         let tick_hz =
             match &raw.tick_hz {
-                Some(t) => positive(t, "tick_hz")?,
+                Some(t) => positive(0, t, "tick_hz")?,
                 None => return Err(err(
                     None,
                     "missing tick rate: expected `tick_hz = ...` (the simulation ticks per second)"
@@ -208,36 +280,36 @@ impl SceneFile {
                 )),
             };
         let duration_s = match &raw.duration_s {
-            Some(d) => positive(d, "duration_s")?,
+            Some(d) => positive(0, d, "duration_s")?,
             None => DEFAULT_DURATION_S,
         };
         let (mut phase_rad, mut amplitude) = (DEFAULT_PHASE_RAD, DEFAULT_AMPLITUDE);
         let mut max_hz = None;
-        if let Some(acc) = &raw.accuracy {
+        if let Some((off, acc)) = accuracy {
             if let Some(f) = &acc.max_hz {
-                max_hz = Some(positive(f, "max_hz")?);
+                max_hz = Some(positive(off, f, "max_hz")?);
             }
             if let Some(p) = &acc.phase_rad {
-                phase_rad = positive(p, "phase_rad")?;
+                phase_rad = positive(off, p, "phase_rad")?;
             }
             if let Some(a) = &acc.amplitude {
-                amplitude = positive(a, "amplitude")?;
+                amplitude = positive(off, a, "amplitude")?;
             }
         }
-        let body = if !raw.mode.is_empty() {
-            if let Some(m) = raw.mass.first() {
+        let body = if all_mode().next().is_some() {
+            if let Some((off, m)) = all_mass().next() {
                 return Err(err(
-                    Some(m.name.span()),
+                    at(off, m.name.span()),
                     "a scene lists either [[mass]] and [[spring]] entries or [[mode]] entries, \
                      not both"
                         .into(),
                 ));
             }
             let mut modes = Vec::new();
-            for m in &raw.mode {
-                let hz = positive(&m.hz, "hz")?;
+            for (off, m) in all_mode() {
+                let hz = positive(off, &m.hz, "hz")?;
                 let ratio = match &m.ratio {
-                    Some(r) => non_negative(r, "ratio")?,
+                    Some(r) => non_negative(off, r, "ratio")?,
                     None => 0.0,
                 };
                 modes.push(ModeSpec { hz, ratio });
@@ -246,27 +318,27 @@ impl SceneFile {
         } else {
             let mut index: HashMap<String, usize> = HashMap::new();
             let mut masses = Vec::new();
-            for m in &raw.mass {
+            for (off, m) in all_mass() {
                 let name = m.name.get_ref().clone();
                 if name == GROUND {
                     return Err(err(
-                        Some(m.name.span()),
+                        at(off, m.name.span()),
                         format!("mass name \"{GROUND}\" is reserved for the world"),
                     ));
                 }
                 if index.contains_key(&name) {
                     return Err(err(
-                        Some(m.name.span()),
+                        at(off, m.name.span()),
                         format!("mass \"{name}\" is defined twice: expected unique names"),
                     ));
                 }
-                let kg = positive(&m.kg, "kg")?;
+                let kg = positive(off, &m.kg, "kg")?;
                 let pos = match &m.pos {
                     Some(p) => {
                         let v = p.get_ref();
                         if !(2..=3).contains(&v.len()) || v.iter().any(|x| !x.is_finite()) {
                             return Err(err(
-                                Some(p.span()),
+                                at(off, p.span()),
                                 format!(
                                     "pos = {v:?}: expected [x, y] or [x, y, z] of finite numbers"
                                 ),
@@ -281,15 +353,15 @@ impl SceneFile {
                 masses.push(Mass { name, kg, pos, fixed });
             }
             // Either every mass has a position, all of one length, or none.
-            let dim = match raw.mass.iter().zip(&masses).find(|(_, m)| m.pos.is_some()) {
+            let dim = match masses.iter().find(|m| m.pos.is_some()) {
                 None => 1,
-                Some((_, fm)) => {
+                Some(fm) => {
                     let d = fm.pos.as_ref().map_or(1, Vec::len);
-                    for (rm, m) in raw.mass.iter().zip(&masses) {
+                    for ((off, rm), m) in all_mass().zip(&masses) {
                         match (&rm.pos, &m.pos) {
                             (None, _) | (_, None) => {
                                 return Err(err(
-                                    Some(rm.name.span()),
+                                    at(off, rm.name.span()),
                                     format!(
                                         "mass \"{}\" has no pos but mass \"{}\" has: expected pos on every mass or on none",
                                         m.name, fm.name
@@ -298,7 +370,7 @@ impl SceneFile {
                             }
                             (Some(p), Some(v)) if v.len() != d => {
                                 return Err(err(
-                                    Some(p.span()),
+                                    at(off, p.span()),
                                     format!(
                                         "pos has {} coordinates but mass \"{}\" has {d}: expected the same in every mass",
                                         v.len(),
@@ -313,13 +385,12 @@ impl SceneFile {
                 }
             };
             let mut springs = Vec::new();
-            for s in &raw.spring {
-                let s_span = s.span();
+            for (off, s) in all_spring() {
                 let s = s.get_ref();
                 let ends = s.between.get_ref();
                 if ends.len() != 2 {
                     return Err(err(
-                        Some(s.between.span()),
+                        at(off, s.between.span()),
                         format!(
                             "between has {} names: expected two, e.g. [\"a\", \"ground\"]",
                             ends.len()
@@ -335,13 +406,21 @@ impl SceneFile {
                     match index.get(name) {
                         Some(&i) => idx[k] = Some(i),
                         None => {
+                            // At most eight names, so a large scene's
+                            // message stays a line.
                             let known: Vec<&str> =
-                                raw.mass.iter().map(|m| m.name.get_ref().as_str()).collect();
+                                masses.iter().take(8).map(|m| m.name.as_str()).collect();
+                            let more = masses.len().saturating_sub(8);
                             return Err(err(
-                                Some(e.span()),
+                                at(off, e.span()),
                                 format!(
-                                    "unknown mass \"{name}\": expected one of {}{GROUND}",
-                                    known.iter().map(|k| format!("{k}, ")).collect::<String>()
+                                    "unknown mass \"{name}\": expected one of {}{}{GROUND}",
+                                    known.iter().map(|k| format!("{k}, ")).collect::<String>(),
+                                    if more > 0 {
+                                        format!("... ({more} more), ")
+                                    } else {
+                                        String::new()
+                                    }
                                 ),
                             ));
                         }
@@ -352,14 +431,14 @@ impl SceneFile {
                     [None, Some(b)] => (b, None),
                     [None, None] => {
                         return Err(err(
-                            Some(s.between.span()),
+                            at(off, s.between.span()),
                             "a spring between ground and ground moves nothing: expected a mass at one end".into(),
                         ))
                     }
                 };
                 if b == Some(a) {
                     return Err(err(
-                        Some(s.between.span()),
+                        at(off, s.between.span()),
                         "a spring from a mass to itself: expected two different ends".into(),
                     ));
                 }
@@ -374,7 +453,7 @@ impl SceneFile {
                             "are too far apart for f64: expected a distance below 1e150"
                         };
                         return Err(err(
-                            Some(s.between.span()),
+                            at(off, s.between.span()),
                             format!(
                                 "masses \"{}\" and \"{}\" {what}",
                                 masses[a].name, masses[b].name
@@ -382,17 +461,17 @@ impl SceneFile {
                         ));
                     }
                 }
-                let stiffness = positive(&s.stiffness, "stiffness")?;
+                let stiffness = positive(off, &s.stiffness, "stiffness")?;
                 let damping = match (&s.damping, &s.ratio) {
                     (Some(_), Some(r)) => {
                         return Err(err(
-                            Some(r.span()),
+                            at(off, r.span()),
                             "a spring gives either damping (N·s/m) or ratio, not both".into(),
                         ))
                     }
-                    (Some(c), None) => non_negative(c, "damping")?,
+                    (Some(c), None) => non_negative(off, c, "damping")?,
                     (None, Some(r)) => {
-                        let zeta = non_negative(r, "ratio")?;
+                        let zeta = non_negative(off, r, "ratio")?;
                         let mu = match b {
                             None => masses[a].kg,
                             Some(b) if masses[b].fixed => masses[a].kg,
@@ -403,7 +482,6 @@ impl SceneFile {
                     }
                     (None, None) => 0.0,
                 };
-                let _ = s_span;
                 springs.push(Spring { a, b, stiffness, damping });
             }
             if masses.is_empty() {
@@ -413,15 +491,17 @@ impl SceneFile {
                         .into(),
                 ));
             }
+            let first_name = all_mass().next().map(|(off, m)| (off, m.name.span()));
+            let first_name = first_name.and_then(|(off, span)| at(off, span));
             if springs.is_empty() {
                 return Err(err(
-                    Some(raw.mass[0].name.span()),
+                    first_name.clone(),
                     "empty scene: the masses have no [[spring]]: expected at least one".into(),
                 ));
             }
             if masses.iter().all(|m| m.fixed) {
                 return Err(err(
-                    Some(raw.mass[0].name.span()),
+                    first_name,
                     "every mass is fixed: nothing moves; expected at least one mass without `fixed = true`"
                         .into(),
                 ));
@@ -462,6 +542,49 @@ impl SceneFile {
 
 #[cfg(test)]
 mod tests {
+
+    /// A file cut into chunks parses as it does whole, and an error in a
+    /// later chunk is located in the whole file.
+    #[test]
+    fn chunked_parsing_is_whole_parsing() {
+        let mut text = String::from("tick_hz = 60\nduration_s = 2\n");
+        for i in 0..40 {
+            text +=
+                &format!("[[mass]]\nname = \"m{i}\"\nkg = {}\npos = [{i}, 0]\n", 1.0 + i as f64);
+        }
+        for i in 1..40 {
+            text += &format!(
+                "[[spring]] # link\nbetween = [\"m{}\", \"m{i}\"]\nstiffness = 7\n",
+                i - 1
+            );
+        }
+        text += "[accuracy]\nmax_hz = 3\n";
+        let cut = chunks_of(&text, 300);
+        assert!(cut.len() > 5, "{}", cut.len());
+        assert_eq!(cut.iter().map(|c| c.1).collect::<String>(), text);
+        let whole = SceneFile::parse_chunks("s.toml", &text, vec![(0, &text)]).unwrap();
+        let chunked = SceneFile::parse_chunks("s.toml", &text, cut).unwrap();
+        assert_eq!(whole, chunked);
+        assert_eq!(chunked.max_hz, Some(3.0));
+        // An unknown mass near the end.
+        let bad = text.replace("between = [\"m37\", \"m38\"]", "between = [\"m37\", \"zz\"]");
+        let line = bad.lines().position(|l| l.contains("zz")).unwrap() + 1;
+        for cut in [vec![(0, bad.as_str())], chunks_of(&bad, 300)] {
+            let e = SceneFile::parse_chunks("s.toml", &bad, cut).unwrap_err().to_string();
+            assert!(e.contains(&format!("s.toml:{line}:")), "{e}");
+        }
+        // [accuracy] twice, in different chunks.
+        let twice = format!(
+            "{}[accuracy]\nphase_rad = 1\n",
+            text.replace("[accuracy]\nmax_hz = 3\n", "").replacen(
+                "[[spring]]",
+                "[accuracy]\nmax_hz = 3\n[[spring]]",
+                1
+            )
+        );
+        let e = SceneFile::parse_chunks("s.toml", &twice, chunks_of(&twice, 300)).unwrap_err();
+        assert!(e.to_string().contains("duplicate table [accuracy]"), "{e}");
+    }
     use super::*;
     use crate::error::Location;
 

@@ -90,9 +90,26 @@ impl Assembly {
         }
     }
 
-    /// The compressed matrix (duplicates summed).
+    /// The compressed matrix, duplicates summed. The matrix is symmetric
+    /// and every entry is added on both sides of the diagonal: the upper
+    /// triangle's sums are kept and mirrored, so it is symmetric to the last
+    /// bit whatever the order of the sums.
     pub(crate) fn finish(self) -> Sparse {
-        let mat = SparseRowMat::try_new_from_triplets(self.n, self.n, &self.triplets)
+        let upper: Vec<Triplet<usize, usize, f64>> =
+            self.triplets.iter().filter(|t| t.row <= t.col).copied().collect();
+        let upper = SparseRowMat::try_new_from_triplets(self.n, self.n, &upper)
+            .expect("indices are in range by construction");
+        let mut full = Vec::with_capacity(2 * upper.compute_nnz());
+        for i in 0..self.n {
+            let m = upper.as_ref();
+            for (&j, &v) in m.symbolic().col_idx_of_row_raw(i).iter().zip(m.val_of_row(i)) {
+                full.push(Triplet::new(i, j, v));
+                if j != i {
+                    full.push(Triplet::new(j, i, v));
+                }
+            }
+        }
+        let mat = SparseRowMat::try_new_from_triplets(self.n, self.n, &full)
             .expect("indices are in range by construction");
         Sparse { mat }
     }
@@ -175,10 +192,23 @@ impl Sparse {
         a.finish()
     }
 
-    /// y = A x.
+    /// y = A x, rows in parallel (rayon) on large matrices.
     pub(crate) fn mul_vec(&self, x: &[f64], y: &mut [f64]) {
-        for (i, yi) in y.iter_mut().enumerate() {
-            *yi = self.row(i).map(|(j, a)| a * x[j]).sum();
+        use rayon::prelude::*;
+        let m = self.mat.as_ref();
+        let (ptr, cols, vals) = (m.symbolic().row_ptr(), m.symbolic().col_idx(), m.val());
+        let row = |i: usize| -> f64 {
+            let (a, b) = (ptr[i], ptr[i + 1]);
+            cols[a..b].iter().zip(&vals[a..b]).map(|(&j, &v)| v * x[j]).sum()
+        };
+        if y.len() < 1 << 15 {
+            y.iter_mut().enumerate().for_each(|(i, yi)| *yi = row(i));
+        } else {
+            y.par_chunks_mut(1 << 13).enumerate().for_each(|(c, ys)| {
+                for (k, yi) in ys.iter_mut().enumerate() {
+                    *yi = row((c << 13) + k);
+                }
+            });
         }
     }
 
