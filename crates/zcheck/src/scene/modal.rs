@@ -695,9 +695,9 @@ pub(crate) fn reduce_system_with(system: System, shapes: Shapes) -> Result<Modal
                     .collect();
                 let kr: Vec<f64> = kept.iter().map(|&i| s[i]).collect();
                 let mut cr = Assembly::new(kept.len());
-                for a in 0..kept.len() {
-                    for b in 0..kept.len() {
-                        cr.add(a, b, cols[a].iter().zip(&ct_cols[b]).map(|(x, y)| x * y).sum());
+                for (a, col) in cols.iter().enumerate() {
+                    for (b, ct_col) in ct_cols.iter().enumerate() {
+                        cr.add(a, b, col.iter().zip(ct_col).map(|(x, y)| x * y).sum());
                     }
                 }
                 System { mass: vec![1.0; kept.len()], k: Sparse::diagonal(&kr), c: cr.finish() }
