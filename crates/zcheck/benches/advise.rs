@@ -5,6 +5,8 @@
 //! default command's work (with the checking simulation) on that chain and
 //! on every example scene (`crates/zcheck/scenes/`).
 //!
+//! Then the 10⁶-mass grid (`advise_large`, half a minute an iteration).
+//!
 //! Run: `cargo bench -p zcheck --bench advise -- --warm-up-time 1 --measurement-time 3`
 
 use criterion::{criterion_group, criterion_main, Criterion};
@@ -63,8 +65,11 @@ fn bench(c: &mut Criterion) {
     let examples = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
     let mut scenes: Vec<(String, SceneFile)> =
         vec![("chain1000_undamped".into(), chain(1000, false))];
-    let mut files: Vec<_> =
-        std::fs::read_dir(&examples).unwrap().map(|e| e.unwrap().path()).collect();
+    let mut files: Vec<_> = std::fs::read_dir(&examples)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
+        .collect();
     files.sort();
     for f in files {
         let name = f.file_stem().unwrap().to_string_lossy().into_owned();
@@ -95,6 +100,60 @@ fn bench(c: &mut Criterion) {
         });
     }
     g.finish();
+    // The scalar grid of 1000×1000 masses (10⁶ DOF, springs to the four
+    // neighbours and to ground along the edges), `--no-simulate`: the file
+    // read (164 MB of TOML, parsed in chunks), the sparse route and the
+    // advice. About 30 s an iteration: run it by name.
+    let mut g = c.benchmark_group("advise_large");
+    g.sample_size(10);
+    let text = grid_text(1000);
+    g.bench_function("grid1000_no_simulate", |b| {
+        b.iter(|| {
+            let scene = SceneFile::parse("grid1000.toml", &text).unwrap();
+            let modal = reduce_with(&scene, Shapes::WhenNeeded).unwrap();
+            let specs: Vec<LoadedMethod> = poly::advanced::builtins::DAMPED_METHODS
+                .iter()
+                .map(|n| LoadedMethod::builtin(n).unwrap())
+                .collect();
+            let options = Options {
+                simulate: false,
+                simulate_all: false,
+                gauss_seidel: false,
+                route: Default::default(),
+            };
+            advise(&scene, &modal, specs, options).unwrap()
+        })
+    });
+    g.finish();
+}
+
+/// The n×n scalar grid as a scene file: 10 g masses, 100 N/m springs to
+/// the four neighbours, and to ground along the edges; 60 Hz, 1 s.
+fn grid_text(n: usize) -> String {
+    use std::fmt::Write as _;
+    let mut s = String::from("tick_hz = 60\nduration_s = 1\n");
+    for i in 0..n {
+        for j in 0..n {
+            let _ = write!(s, "[[mass]]\nname = \"m{i}_{j}\"\nkg = 0.01\n");
+        }
+    }
+    let mut spring = |a: String, b: String| {
+        let _ = write!(s, "[[spring]]\nbetween = [\"{a}\", \"{b}\"]\nstiffness = 100.0\n");
+    };
+    for i in 0..n {
+        for j in 0..n {
+            if j + 1 < n {
+                spring(format!("m{i}_{j}"), format!("m{i}_{}", j + 1));
+            }
+            if i + 1 < n {
+                spring(format!("m{i}_{j}"), format!("m{}_{j}", i + 1));
+            }
+            if i == 0 || j == 0 || i == n - 1 || j == n - 1 {
+                spring("ground".to_owned(), format!("m{i}_{j}"));
+            }
+        }
+    }
+    s
 }
 
 criterion_group!(benches, bench);

@@ -34,6 +34,7 @@ mod error;
 pub mod load;
 mod map;
 mod multistep;
+pub mod native;
 pub mod overview;
 pub mod paper;
 mod param_map;

@@ -75,6 +75,11 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
         }
     }
     candidates.extend(user_candidates(&wanted, &args.params, &candidates)?);
+    // Every candidate's native step in one rustc call (or from the cache).
+    let timing: Vec<Params> = candidates.iter().map(timing_params).collect();
+    let _ = crate::native::prepare(
+        &candidates.iter().zip(&timing).map(|(c, p)| (&c.method, p)).collect::<Vec<_>>(),
+    );
     let mut ns = Vec::with_capacity(candidates.len());
     let mut hand = Vec::with_capacity(candidates.len());
     for c in &candidates {
@@ -116,12 +121,17 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
 /// The compiled step of `c` timed at the timing Φ (and `c`'s other
 /// parameters).
 pub(crate) fn measure(c: &Candidate, budget: Duration) -> Result<f64, Error> {
+    measure_ns_per_step_within(&c.method, &timing_params(c), budget)
+        .map_err(|e| e.context(format!("method {}", c.display)))
+}
+
+/// The parameters `c` is timed at: the timing Φ and its own values.
+pub(crate) fn timing_params(c: &Candidate) -> Params {
     let mut params = Params::phi(kernels::TIMING_PHI);
     for (sym, q) in &c.params {
         params.set(sym.name(), q_to_f64(q));
     }
-    measure_ns_per_step_within(&c.method, &params, budget)
-        .map_err(|e| e.context(format!("method {}", c.display)))
+    params
 }
 
 /// The `--method` candidates: each shown by its argument (a path or a

@@ -458,28 +458,12 @@ fn target_of(scene: &SceneFile) -> Target {
 
 /// ns per step of one degree of freedom.
 fn ns_per_step(spec: &LoadedMethod, d: f64) -> f64 {
+    // The method's own compiled step (native by default), as `tradeoff`
+    // ranks: the hand kernels are a baseline, never the ranking.
     let budget = Duration::from_millis(3);
-    if let Some(h) = spec.hand_kernel() {
-        if let Some(ns) = kernels::time_hand_kernel(h, d, budget) {
-            return ns;
-        }
-    }
     let params = Params::phi(kernels::TIMING_PHI).with("D", d);
-    match Step::compile(spec.method(), &params) {
-        Ok(step) => {
-            let start: Vec<f64> =
-                (0..step.order()).map(|i| if i == 0 { 1.0 } else { 0.0 }).collect();
-            kernels::time_ns_per_step(
-                |n| {
-                    let mut s = step.state(&start);
-                    step.advance(&mut s, n);
-                    std::hint::black_box(s.slots());
-                },
-                budget,
-            )
-        }
-        Err(_) => f64::NAN,
-    }
+    crate::tradeoff::measure::measure_ns_per_step_within(spec.method(), &params, budget)
+        .unwrap_or(f64::NAN)
 }
 
 /// The system a scene simulates: its own, or (a scene of modes) one unit
@@ -524,6 +508,11 @@ pub fn advise(
     let (system, shapes) = system_of(modal);
     let mut candidates = Vec::new();
     let mut analysed_all = Vec::new();
+    // Every candidate's native step in one rustc call (or from the cache).
+    let d_timing = modal.modes.iter().map(|m| m.ratio).fold(0.0, f64::max).min(1.0);
+    let timing = Params::phi(kernels::TIMING_PHI).with("D", d_timing);
+    let _ =
+        crate::native::prepare(&specs.iter().map(|s| (s.method(), &timing)).collect::<Vec<_>>());
     for spec in specs {
         if !spec.method().params().iter().any(|s| s.name() == "D")
             && modal.modes.iter().any(|m| m.ratio != 0.0)

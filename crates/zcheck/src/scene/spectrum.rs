@@ -23,7 +23,7 @@ use faer::linalg::solvers::SolveCore;
 use faer::sparse::linalg::solvers::{Llt, SymbolicLlt};
 use faer::{Conj, Mat, Side};
 
-use super::modal::{Assembly, Sparse};
+use super::sparse::{Assembly, Sparse};
 use crate::error::Error;
 
 /// Relative margin above the Ritz value at which the highest eigenvalue is

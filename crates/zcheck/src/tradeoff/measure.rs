@@ -1,13 +1,13 @@
 //! The measured cost of any method: its compiled step, timed on this machine.
 //!
-//! A method, built-in or a user's `.zm` file, is compiled to the
-//! interpreter's instructions ([`check::numeric::Step`]) and specialised
-//! ([`check::kernel::Kernel`]); the specialised step is what is timed, on one
-//! state, with the same brief timer as the hand-written kernels
-//! ([`super::kernels::time_ns_per_step`]). The hand kernels stay as a
-//! baseline column beside it. Built with the feature `jit`, the step timed
-//! is the native one ([`check::jit::JitStep`]), bit for bit the same
-//! operations compiled to machine code.
+//! A method, built-in or a user's `.zm` file, is emitted as Rust and
+//! compiled by the rustc at hand ([`crate::native`]); that native step is
+//! what is timed, on one state, with the same brief timer as the
+//! hand-written kernels ([`super::kernels::time_ns_per_step`]), which stay
+//! as a baseline column beside it. Without a rustc the specialised
+//! interpreter ([`check::kernel::Kernel`]) is timed instead. Built with the
+//! feature `jit`, the step timed is cranelift's ([`check::jit::JitStep`]).
+//! All three are bit for bit the interpreter's operations.
 //!
 //! The state is renormalised between chunks of steps, so an unstable method
 //! at a large Φ never reaches infinities or subnormal numbers (which would
@@ -51,8 +51,25 @@ pub(crate) fn measure_ns_per_step_within(
     params: &Params,
     budget: Duration,
 ) -> Result<f64, Error> {
+    #[cfg(not(feature = "jit"))]
+    if let Ok(native) = crate::native::native_step(method, params) {
+        let ones = vec![1.0; native.slots()];
+        let mut slots = ones.clone();
+        return Ok(time_ns_per_step(
+            |n| {
+                let mut left = n;
+                while left > 0 {
+                    let k = left.min(CHUNK);
+                    native.advance(black_box(&mut slots), k);
+                    left -= k;
+                    renormalise(&mut slots, &ones);
+                }
+            },
+            budget,
+        ));
+    }
     let step = Step::compile(method, params)?;
-    // The native step (feature `jit`), else the specialised interpreter:
+    // The cranelift step (feature `jit`), else the specialised interpreter:
     // bit for bit the same operations.
     #[cfg(feature = "jit")]
     let kernel = check::jit::JitStep::compile(&step)?;
