@@ -165,7 +165,7 @@ pub(crate) fn closed_form_hint(decimal: &str) -> Option<String> {
     // increasing, the sign + first) is kept. Beyond |x| = 10^9 the
     // tolerance is wide, and the whole search runs.
     if x.abs() > 1e9 {
-        return surd_search(x, &close);
+        return surd_search(&close);
     }
     for k in 1..=24i64 {
         for b in 1..=4i64 {
@@ -197,7 +197,7 @@ const SQUAREFREE: [i64; 15] = [2, 3, 5, 6, 7, 10, 11, 13, 14, 15, 17, 19, 21, 22
 
 /// The search for (a + b√N)/k near x, every candidate in order: the oracle
 /// of [`closed_form_hint`]'s shortcut, and its route for huge |x|.
-fn surd_search(x: f64, close: &dyn Fn(f64) -> bool) -> Option<String> {
+fn surd_search(close: &dyn Fn(f64) -> bool) -> Option<String> {
     for k in 1..=24i64 {
         for b in 1..=4i64 {
             for n in SQUAREFREE {
@@ -267,7 +267,7 @@ mod tests {
         for x in xs.into_iter().filter(|x| *x != 0.0) {
             let text = format!("{x}");
             let close = |y: f64| (x - y).abs() <= 1e-12 * x.abs().max(1.0);
-            let slow = super::surd_search(x, &close);
+            let slow = super::surd_search(&close);
             let significant = text
                 .split(['e', 'E'])
                 .next()

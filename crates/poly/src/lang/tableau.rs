@@ -26,10 +26,12 @@
 //! ```
 
 use std::fmt::Write as _;
+use std::sync::Arc;
 
 use crate::error::{Error, ErrorKind, Span};
-use crate::lang::method::Method;
-use crate::Poly;
+use crate::lang::method::{Method, StabilityFunction};
+use crate::multivariate::constants as field;
+use crate::{Poly, PolyMatrix, Sym};
 
 /// The most stages read: beyond any published method, and a bound on the
 /// size of the generated program.
@@ -188,14 +190,118 @@ impl Tableau {
     /// The method on the oscillator, or on the damped oscillator (`param
     /// D`) when `damped`.
     pub fn method(&self, damped: bool) -> Result<Method, Error> {
-        Method::parse(&format!("<tableau>/{}.zm", self.name), &self.to_zm("the tableau", damped))
+        self.program(&format!("<tableau>/{}.zm", self.name), "the tableau", damped)
     }
 
     /// The method on the scalar test equation y' = λy (a program in `w`),
     /// for the w-plane: one state and one stage value per stage, so it
     /// derives faster than the oscillator's program, to the same χ(z, w).
     pub fn scalar_method(&self) -> Result<Method, Error> {
-        Method::parse(&format!("<tableau>/{}.zm", self.name), &self.to_scalar_zm("the tableau"))
+        self.scalar_program(&format!("<tableau>/{}.zm", self.name), "the tableau")
+    }
+
+    /// [`Tableau::method`] with the program's file name (in error messages)
+    /// and `source` (in its first comment) given. The method carries the
+    /// tableau's stability function (not on the damped oscillator), from
+    /// which `derive` reads χ and P without solving the stages' system.
+    pub fn program(&self, file: &str, source: &str, damped: bool) -> Result<Method, Error> {
+        let mut m = Method::parse(file, &self.to_zm(source, damped))?;
+        if !damped {
+            m.stability_function = self.stability_function()?;
+        }
+        Ok(m)
+    }
+
+    /// [`Tableau::scalar_method`] with the file name and `source` given,
+    /// carrying the stability function as [`Tableau::program`] does.
+    pub fn scalar_program(&self, file: &str, source: &str) -> Result<Method, Error> {
+        let mut m = Method::parse(file, &self.to_scalar_zm(source))?;
+        m.stability_function = self.stability_function()?;
+        Ok(m)
+    }
+
+    /// R(w) = P(w)/Q(w): Q = det(I − wA), P = det(I − wA + w·1bᵀ), exactly.
+    /// Explicit: Q = 1 and P = 1 + Σ_k w^(k+1)·bᵀA^k·1 (A is nilpotent).
+    fn stability_function(&self) -> Result<StabilityFunction, Error> {
+        let constants = !self.constants.is_empty();
+        let fix = |p: Poly| if constants { field::reduce(&p) } else { p };
+        let entry = |e: &Exact| -> Result<Poly, Error> {
+            if e.radicals.is_empty() {
+                let t = e.expr.trim();
+                let (negative, digits) = match t.strip_prefix('-') {
+                    Some(rest) => (true, rest.trim_start()),
+                    None => (false, t),
+                };
+                if let Ok(q) = crate::lang::syntax::parse_number(digits) {
+                    return Ok(Poly::constant(if negative { -q } else { q }));
+                }
+            }
+            value(&e.expr, &self.constants).map_err(entry_error)
+        };
+        let a = self
+            .a
+            .iter()
+            .map(|row| {
+                row.iter().map(|e| if e.zero { Ok(Poly::zero()) } else { entry(e) }).collect()
+            })
+            .collect::<Result<Vec<Vec<Poly>>, Error>>()?;
+        let b = self
+            .b
+            .iter()
+            .map(|e| if e.zero { Ok(Poly::zero()) } else { entry(e) })
+            .collect::<Result<Vec<Poly>, Error>>()?;
+        let s = b.len();
+        let w = Poly::sym(Sym::w());
+        let (p, q) = if self.is_explicit() {
+            let mut p = Poly::one();
+            let mut v = vec![Poly::one(); s];
+            let mut wk = w.clone();
+            for _ in 0..s {
+                let mut term = Poly::zero();
+                for (bi, vi) in b.iter().zip(&v) {
+                    if !bi.is_zero() && !vi.is_zero() {
+                        term += &(bi * vi);
+                    }
+                }
+                p += &(&fix(term) * &wk);
+                wk = &wk * &w;
+                v = a
+                    .iter()
+                    .map(|row| {
+                        let mut acc = Poly::zero();
+                        for (aij, vj) in row.iter().zip(&v) {
+                            if !aij.is_zero() && !vj.is_zero() {
+                                acc += &(aij * vj);
+                            }
+                        }
+                        fix(acc)
+                    })
+                    .collect();
+            }
+            (p, Poly::one())
+        } else {
+            let matrix = |with_b: bool| {
+                let rows = (0..s)
+                    .map(|i| {
+                        (0..s)
+                            .map(|j| {
+                                let mut x = -&(&a[i][j] * &w);
+                                if with_b {
+                                    x += &(&b[j] * &w);
+                                }
+                                if i == j {
+                                    x += &Poly::one();
+                                }
+                                x
+                            })
+                            .collect()
+                    })
+                    .collect();
+                fix(PolyMatrix::from_rows(rows).det())
+            };
+            (matrix(true), matrix(false))
+        };
+        Ok(StabilityFunction(Some(Arc::new((p, q)))))
     }
 
     /// The `.zm` program of the method on y' = λy: stages K_i = h·k_i =
