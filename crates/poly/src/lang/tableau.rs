@@ -88,6 +88,8 @@ pub struct Tableau {
     c_mismatch: Option<Vec<usize>>,
     /// `(name, radical)`: `("sqrt_3", "sqrt(3)")`, in order of appearance.
     constants: Vec<(String, String)>,
+    /// R = P/Q, computed once for both programs.
+    stability_function: std::sync::OnceLock<StabilityFunction>,
 }
 
 impl Tableau {
@@ -153,7 +155,14 @@ impl Tableau {
             }
             None => None,
         };
-        Ok(Tableau { name: id, a, b, c_mismatch, constants })
+        Ok(Tableau {
+            name: id,
+            a,
+            b,
+            c_mismatch,
+            constants,
+            stability_function: std::sync::OnceLock::new(),
+        })
     }
 
     /// The number of stages.
@@ -223,6 +232,14 @@ impl Tableau {
     /// R(w) = P(w)/Q(w): Q = det(I − wA), P = det(I − wA + w·1bᵀ), exactly.
     /// Explicit: Q = 1 and P = 1 + Σ_k w^(k+1)·bᵀA^k·1 (A is nilpotent).
     fn stability_function(&self) -> Result<StabilityFunction, Error> {
+        if let Some(r) = self.stability_function.get() {
+            return Ok(r.clone());
+        }
+        let r = self.compute_stability_function()?;
+        Ok(self.stability_function.get_or_init(|| r).clone())
+    }
+
+    fn compute_stability_function(&self) -> Result<StabilityFunction, Error> {
         let constants = !self.constants.is_empty();
         let fix = |p: Poly| if constants { field::reduce(&p) } else { p };
         let entry = |e: &Exact| -> Result<Poly, Error> {
@@ -252,7 +269,14 @@ impl Tableau {
             .collect::<Result<Vec<Poly>, Error>>()?;
         let s = b.len();
         let w = Poly::sym(Sym::w());
-        let (p, q) = if self.is_explicit() {
+        let rationals = |v: &[Poly]| v.iter().map(Poly::as_constant).collect::<Option<Vec<_>>>();
+        let (p, q) = if let (true, Some(b), Some(a)) = (
+            self.is_explicit(),
+            rationals(&b),
+            a.iter().map(|row| rationals(row)).collect::<Option<Vec<_>>>(),
+        ) {
+            (Poly::from_upoly(Sym::w(), &explicit_stability_polynomial(&a, &b)), Poly::one())
+        } else if self.is_explicit() {
             let mut p = Poly::one();
             let mut v = vec![Poly::one(); s];
             let mut wk = w.clone();
@@ -493,6 +517,33 @@ impl Method {
             .transpose()?;
         Tableau::new(name, a, b, c)?.method(false)
     }
+}
+
+/// P(w) = 1 + Σ_k w^(k+1)·bᵀA^k·1 of an explicit tableau over Q, in
+/// integers: with A = Â/D and b = b̂/D_b, bᵀA^k·1 = b̂ᵀÂ^k·1 / (D_b·D^k),
+/// so one rational is reduced per coefficient (not one per product: the
+/// decimals of a float-derived tableau are 17-digit fractions).
+fn explicit_stability_polynomial(a: &[Vec<crate::Q>], b: &[crate::Q]) -> crate::UPoly {
+    use num_bigint::BigInt;
+    let lcm = |qs: &mut dyn Iterator<Item = &crate::Q>| {
+        qs.fold(BigInt::from(1), |l, q| num_integer::Integer::lcm(&l, q.denom()))
+    };
+    let d = lcm(&mut a.iter().flatten());
+    let db = lcm(&mut b.iter());
+    let scaled = |q: &crate::Q, d: &BigInt| q.numer() * (d / q.denom());
+    let ai: Vec<Vec<BigInt>> =
+        a.iter().map(|r| r.iter().map(|q| scaled(q, &d)).collect()).collect();
+    let bi: Vec<BigInt> = b.iter().map(|q| scaled(q, &db)).collect();
+    let mut v = vec![BigInt::from(1); b.len()];
+    let mut den = db;
+    let mut coeffs = vec![crate::Q::from_integer(1.into())];
+    for _ in 0..b.len() {
+        let num: BigInt = bi.iter().zip(&v).map(|(x, y)| x * y).sum();
+        coeffs.push(crate::Q::new(num, den.clone()));
+        v = ai.iter().map(|row| row.iter().zip(&v).map(|(x, y)| x * y).sum()).collect();
+        den *= &d;
+    }
+    crate::UPoly::new(coeffs)
 }
 
 /// A name fit for a `.zm` method: letters, digits and `_`, not starting
