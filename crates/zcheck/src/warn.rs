@@ -157,31 +157,30 @@ pub(crate) fn closed_form_hint(decimal: &str) -> Option<String> {
             return Some(if q == 1 { format!("{p}") } else { format!("{p}/{q}") });
         }
     }
-    let surd_value =
-        |a: i64, sb: i64, n: i64, k: i64| (a as f64 + sb as f64 * (n as f64).sqrt()) / k as f64;
+    // √N once (the same correctly rounded values the search computes).
+    let roots = SQUAREFREE.map(|n| (n as f64).sqrt());
+    let surd_value = |a: i64, sb: i64, root: f64, k: i64| (a as f64 + sb as f64 * root) / k as f64;
     // Within the tolerance, neighbouring a (1/k ≥ 1/24 apart) cannot both
-    // be close: only the a next to k·x − s·b·√n can be, so three are tried
-    // per sign instead of 25, and the first in the search order (a
-    // increasing, the sign + first) is kept. Beyond |x| = 10^9 the
+    // be close: only the a nearest k·x − s·b·√n can be, so one is tried per
+    // sign instead of 25, and the first in the search order (a increasing,
+    // the sign + first) is kept. Beyond |x| = 10^9 the
     // tolerance is wide, and the whole search runs.
     if x.abs() > 1e9 {
         return surd_search(&close);
     }
     for k in 1..=24i64 {
         for b in 1..=4i64 {
-            for n in SQUAREFREE {
+            for (n, root) in SQUAREFREE.into_iter().zip(roots) {
                 let mut best: Option<(i64, i64)> = None;
                 for sign in [1i64, -1] {
-                    let centre = (k as f64 * x - (sign * b) as f64 * (n as f64).sqrt()).round();
-                    for a in [centre - 1.0, centre, centre + 1.0] {
-                        if !(-12.0..=12.0).contains(&a) {
-                            continue;
-                        }
-                        let a = a as i64;
-                        let earlier = best.is_none_or(|(ba, bs)| (a, -sign) < (ba, -bs));
-                        if earlier && close(surd_value(a, sign * b, n, k)) {
-                            best = Some((a, sign));
-                        }
+                    let a = (k as f64 * x - (sign * b) as f64 * root).round();
+                    if !(-12.0..=12.0).contains(&a) {
+                        continue;
+                    }
+                    let a = a as i64;
+                    let earlier = best.is_none_or(|(ba, bs)| (a, -sign) < (ba, -bs));
+                    if earlier && close(surd_value(a, sign * b, root, k)) {
+                        best = Some((a, sign));
                     }
                 }
                 if let Some((a, sign)) = best {

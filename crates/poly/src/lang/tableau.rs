@@ -145,6 +145,17 @@ impl Tableau {
             Some(c) => {
                 let mut rows = Vec::new();
                 for (i, ci) in c.iter().enumerate() {
+                    // Plain numbers compare without a program.
+                    if let (Some(ci), Some(row)) =
+                        (plain(ci), a[i].iter().map(plain).collect::<Option<Vec<_>>>())
+                    {
+                        if row.into_iter().fold(crate::Q::from_integer(0.into()), |s, x| s + x)
+                            != ci
+                        {
+                            rows.push(i + 1);
+                        }
+                        continue;
+                    }
                     let sum: Vec<String> = a[i].iter().map(|e| format!("({})", e.expr)).collect();
                     let diff = format!("({}) - ({})", ci.expr, sum.join(" + "));
                     if !probe(&diff, &constants).map_err(entry_error)? {
@@ -243,17 +254,10 @@ impl Tableau {
         let constants = !self.constants.is_empty();
         let fix = |p: Poly| if constants { field::reduce(&p) } else { p };
         let entry = |e: &Exact| -> Result<Poly, Error> {
-            if e.radicals.is_empty() {
-                let t = e.expr.trim();
-                let (negative, digits) = match t.strip_prefix('-') {
-                    Some(rest) => (true, rest.trim_start()),
-                    None => (false, t),
-                };
-                if let Ok(q) = crate::lang::syntax::parse_number(digits) {
-                    return Ok(Poly::constant(if negative { -q } else { q }));
-                }
+            match plain(e) {
+                Some(q) => Ok(Poly::constant(q)),
+                None => value(&e.expr, &self.constants).map_err(entry_error),
             }
-            value(&e.expr, &self.constants).map_err(entry_error)
         };
         let a = self
             .a
@@ -660,11 +664,30 @@ pub(crate) fn value(expr: &str, constants: &[(String, String)]) -> Result<Poly, 
     Ok(m.assigns().last().and_then(|a| a.terms.first()).map_or_else(Poly::zero, |(_, c)| c.clone()))
 }
 
+/// The value of an entry that is a plain number (no radicals), without
+/// a program: what `value` gives for it.
+fn plain(e: &Exact) -> Option<crate::Q> {
+    if !e.radicals.is_empty() {
+        return None;
+    }
+    let t = e.expr.trim();
+    let (negative, digits) = match t.strip_prefix('-') {
+        Some(rest) => (true, rest.trim_start()),
+        None => (false, t),
+    };
+    let q = crate::lang::syntax::parse_number(digits).ok()?;
+    Some(if negative { -q } else { q })
+}
+
 /// Σ of exact entries, exactly.
 pub(crate) fn sum_of<'a>(
-    entries: impl Iterator<Item = &'a Exact>,
+    entries: impl Iterator<Item = &'a Exact> + Clone,
     constants: &[(String, String)],
 ) -> Result<Poly, Error> {
+    if let Some(values) = entries.clone().map(plain).collect::<Option<Vec<_>>>() {
+        let sum = values.into_iter().fold(crate::Q::from_integer(0.into()), |s, x| s + x);
+        return Ok(Poly::constant(sum));
+    }
     let terms: Vec<String> = entries.map(|e| format!("({})", e.expr)).collect();
     value(&format!("0 + {}", terms.join(" + ")), constants).map_err(entry_error)
 }
@@ -675,6 +698,18 @@ mod tests {
 
     fn e(s: &str) -> Exact {
         Exact::parse(s).unwrap()
+    }
+
+    /// Plain numbers are summed without a program, to what the program
+    /// gives.
+    #[test]
+    fn plain_sums_match_the_program() {
+        for entries in [vec!["1/3", "-0.25", "1e-3", "0"], vec!["0.1", "-0.1"], vec!["-3/8"]] {
+            let es: Vec<Exact> = entries.iter().map(|t| e(t)).collect();
+            let terms: Vec<String> = es.iter().map(|x| format!("({})", x.expr)).collect();
+            let by_program = value(&format!("0 + {}", terms.join(" + ")), &[]).unwrap();
+            assert_eq!(sum_of(es.iter(), &[]).unwrap(), by_program, "{entries:?}");
+        }
     }
 
     /// Bad entries and shapes are refused with what was expected.
