@@ -44,6 +44,8 @@ pub struct Exact {
     pub(crate) expr: String,
     pub(crate) radicals: Vec<(String, String)>,
     pub(crate) zero: bool,
+    /// The value of a plain number, read once.
+    pub(crate) number: Option<crate::Q>,
 }
 
 impl Exact {
@@ -59,12 +61,12 @@ impl Exact {
         if let Ok(q) = crate::lang::syntax::parse_number(digits) {
             let q = if negative { -q } else { q };
             let zero = num_traits::Zero::is_zero(&q);
-            return Ok(Exact { expr: q.to_string(), radicals: Vec::new(), zero });
+            return Ok(Exact { expr: q.to_string(), radicals: Vec::new(), zero, number: Some(q) });
         }
         let mut radicals = Vec::new();
         let expr = replace_radicals(text, &mut radicals).map_err(entry_error)?;
         let zero = probe(&expr, &radicals).map_err(entry_error)?;
-        Ok(Exact { expr, radicals, zero })
+        Ok(Exact { expr, radicals, zero, number: None })
     }
 
     /// Whether the entry is exactly zero.
@@ -667,16 +669,7 @@ pub(crate) fn value(expr: &str, constants: &[(String, String)]) -> Result<Poly, 
 /// The value of an entry that is a plain number (no radicals), without
 /// a program: what `value` gives for it.
 fn plain(e: &Exact) -> Option<crate::Q> {
-    if !e.radicals.is_empty() {
-        return None;
-    }
-    let t = e.expr.trim();
-    let (negative, digits) = match t.strip_prefix('-') {
-        Some(rest) => (true, rest.trim_start()),
-        None => (false, t),
-    };
-    let q = crate::lang::syntax::parse_number(digits).ok()?;
-    Some(if negative { -q } else { q })
+    e.number.clone()
 }
 
 /// Σ of exact entries, exactly.
