@@ -12,12 +12,12 @@
 //! the transition matrix.
 
 pub use crate::analysis::{cost, equiv, invariant, plane, region, series, stability};
-#[doc(hidden)]
-pub use crate::derive::routes::charpoly_z_route_dense;
 pub use crate::derive::routes::{
     charpoly, charpoly_state_route, charpoly_z_route, transition_matrix, w, z_matrix,
     ReducedZMatrix,
 };
+#[doc(hidden)]
+pub use crate::derive::routes::{charpoly_z_route_dense, derive_both_routes};
 pub use crate::error::{show_invisible, Warning};
 pub use crate::lang::method::{
     Assign, Constant, EndValue, Equation, GaussSeidelRead, Operand, Target, Unknown,

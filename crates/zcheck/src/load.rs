@@ -70,16 +70,16 @@ impl LoadedMethod {
             return LoadedMethod::load(arg);
         }
         let (shown, stem, text) = crate::tableau::read_file(Path::new(arg))?;
-        let (src, what) = if crate::tableau::is_multistep(&text) {
+        let (method, what) = if crate::tableau::is_multistep(&text) {
             let m = Multistep::parse(&shown, &stem, &text)?;
             crate::warn::report(m.warnings().to_vec())?;
-            (m.to_scalar_zm(), "multistep coefficients")
+            (Method::parse(arg, &m.to_scalar_zm()), "multistep coefficients")
         } else {
             let t = Tableau::parse(&shown, &stem, &text)?;
             crate::warn::report(t.warnings().to_vec())?;
-            (t.to_scalar_zm(), "tableau")
+            (t.scalar_program(arg), "tableau")
         };
-        let method = Method::parse(arg, &src).map_err(|e| {
+        let method = method.map_err(|e| {
             Error::method(format!(
                 "{arg}: the program generated from the {what} does not parse: {}",
                 e.message()
@@ -232,24 +232,25 @@ fn resolve(arg: &str, oscillator: Oscillator) -> Result<(Method, Option<Method>)
     if arg.ends_with(".toml") {
         let (shown, stem, text) = crate::tableau::read_file(Path::new(arg))?;
         let damped = oscillator == Oscillator::Damped;
-        let (src, scalar, what) = if crate::tableau::is_multistep(&text) {
+        let (method, scalar, what) = if crate::tableau::is_multistep(&text) {
             let m = Multistep::parse(&shown, &stem, &text)?;
             crate::warn::report(m.warnings().to_vec())?;
-            (m.to_zm(damped), m.to_scalar_zm(), "multistep coefficients")
+            let (src, scalar) = (m.to_zm(damped), m.to_scalar_zm());
+            (Method::parse(arg, &src), Method::parse(arg, &scalar), "multistep coefficients")
         } else {
             let t = Tableau::parse(&shown, &stem, &text)?;
             crate::warn::report(t.warnings().to_vec())?;
-            (t.to_zm(damped), t.to_scalar_zm(), "tableau")
+            (t.program(arg, damped), t.scalar_program(arg), "tableau")
         };
-        let parse = |src: &str| {
-            Method::parse(arg, src).map_err(|e| {
+        let parsed = |m: Result<Method, poly::Error>| {
+            m.map_err(|e| {
                 Error::method(format!(
                     "{arg}: the program generated from the {what} does not parse: {}",
                     e.message()
                 ))
             })
         };
-        return Ok((parse(&src)?, Some(parse(&scalar)?)));
+        return Ok((parsed(method)?, Some(parsed(scalar)?)));
     }
     let method = check::load::load_method(arg)?;
     if check::load::is_path(arg) {

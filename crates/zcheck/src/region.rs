@@ -29,9 +29,11 @@ fn to_f64(a: &Algebraic) -> f64 {
 
 /// An exact number in the w-plane as JSON: its exact form and value.
 fn number(a: &Algebraic, var: &str) -> Value {
-    let (lo, hi) = a.refine(&fine()).interval();
+    // Refined once: the interval and the description read the same number.
+    let fine_a = a.refine(&fine());
+    let (lo, hi) = fine_a.interval();
     json!({
-        "exact": a.refine(&fine()).describe(var),
+        "exact": fine_a.describe(var),
         "value": to_f64(a),
         "defining_poly": a.defining_poly().to_string_in(var),
         "interval": [lo.to_string(), hi.to_string()],

@@ -312,8 +312,14 @@ impl Tableau {
         self.tableau.to_zm(&self.source, damped)
     }
 
-    /// The `.zm` program of the method on y' = λy (in `w`).
-    pub(crate) fn to_scalar_zm(&self) -> String {
-        self.tableau.to_scalar_zm(&self.source)
+    /// The method of [`Tableau::to_zm`], parsed as the file `file` (poly's
+    /// `Tableau::program`: it carries the stability function).
+    pub(crate) fn program(&self, file: &str, damped: bool) -> Result<poly::Method, poly::Error> {
+        self.tableau.program(file, &self.source, damped)
+    }
+
+    /// The method on y' = λy (a program in `w`), parsed as the file `file`.
+    pub(crate) fn scalar_program(&self, file: &str) -> Result<poly::Method, poly::Error> {
+        self.tableau.scalar_program(file, &self.source)
     }
 }

@@ -157,7 +157,46 @@ pub(crate) fn closed_form_hint(decimal: &str) -> Option<String> {
             return Some(if q == 1 { format!("{p}") } else { format!("{p}/{q}") });
         }
     }
-    const SQUAREFREE: [i64; 15] = [2, 3, 5, 6, 7, 10, 11, 13, 14, 15, 17, 19, 21, 22, 23];
+    // √N once (the same correctly rounded values the search computes).
+    let roots = SQUAREFREE.map(|n| (n as f64).sqrt());
+    let surd_value = |a: i64, sb: i64, root: f64, k: i64| (a as f64 + sb as f64 * root) / k as f64;
+    // Within the tolerance, neighbouring a (1/k ≥ 1/24 apart) cannot both
+    // be close: only the a nearest k·x − s·b·√n can be, so one is tried per
+    // sign instead of 25, and the first in the search order (a increasing,
+    // the sign + first) is kept. Beyond |x| = 10^9 the
+    // tolerance is wide, and the whole search runs.
+    if x.abs() > 1e9 {
+        return surd_search(&close);
+    }
+    for k in 1..=24i64 {
+        for b in 1..=4i64 {
+            for (n, root) in SQUAREFREE.into_iter().zip(roots) {
+                let mut best: Option<(i64, i64)> = None;
+                for sign in [1i64, -1] {
+                    let a = (k as f64 * x - (sign * b) as f64 * root).round();
+                    if !(-12.0..=12.0).contains(&a) {
+                        continue;
+                    }
+                    let a = a as i64;
+                    let earlier = best.is_none_or(|(ba, bs)| (a, -sign) < (ba, -bs));
+                    if earlier && close(surd_value(a, sign * b, root, k)) {
+                        best = Some((a, sign));
+                    }
+                }
+                if let Some((a, sign)) = best {
+                    return Some(surd(a, sign * b, n, k));
+                }
+            }
+        }
+    }
+    None
+}
+
+const SQUAREFREE: [i64; 15] = [2, 3, 5, 6, 7, 10, 11, 13, 14, 15, 17, 19, 21, 22, 23];
+
+/// The search for (a + b√N)/k near x, every candidate in order: the oracle
+/// of [`closed_form_hint`]'s shortcut, and its route for huge |x|.
+fn surd_search(close: &dyn Fn(f64) -> bool) -> Option<String> {
     for k in 1..=24i64 {
         for b in 1..=4i64 {
             for n in SQUAREFREE {
@@ -207,6 +246,41 @@ fn surd(a: i64, b: i64, n: i64, k: i64) -> String {
 #[cfg(test)]
 mod tests {
     use super::closed_form_hint;
+
+    /// The shortcut of the surd search finds what the whole search finds:
+    /// on surds themselves, near them, and on numbers that are none.
+    #[test]
+    fn surd_shortcut_matches_the_search() {
+        let mut xs = Vec::new();
+        for k in [1, 2, 3, 6, 7, 12, 24] {
+            for b in [-4, -1, 1, 3] {
+                for n in super::SQUAREFREE {
+                    for a in [-12, -5, 0, 1, 7, 12] {
+                        let y = (a as f64 + b as f64 * (n as f64).sqrt()) / k as f64;
+                        xs.extend([y, y * (1.0 + 3e-13), y + 1e-9]);
+                    }
+                }
+            }
+        }
+        xs.extend((1..2000).map(|i| (i as f64 * 0.7548776662466927).fract() * 20.0 - 10.0));
+        for x in xs.into_iter().filter(|x| *x != 0.0) {
+            let text = format!("{x}");
+            let close = |y: f64| (x - y).abs() <= 1e-12 * x.abs().max(1.0);
+            let slow = super::surd_search(&close);
+            let significant = text
+                .split(['e', 'E'])
+                .next()
+                .unwrap_or("")
+                .trim_start_matches(['-', '0', '.'])
+                .chars()
+                .filter(char::is_ascii_digit)
+                .count();
+            let fraction = (1..=1000i64).any(|q| close((x * q as f64).round() / q as f64));
+            if significant >= 10 && !fraction {
+                assert_eq!(closed_form_hint(&text), slow, "{text}");
+            }
+        }
+    }
 
     /// What each decimal was probably meant as, computed back exactly from
     /// the suggestion: the hint is within 1e-12 and is never the decimal

@@ -14,7 +14,7 @@ use std::sync::{Mutex, OnceLock};
 
 use num_bigint::BigInt;
 use num_integer::Integer;
-use num_traits::{One, ToPrimitive, Zero};
+use num_traits::{One, Signed, ToPrimitive, Zero};
 
 /// Arithmetic modulo an odd prime `p < 2^62`, on Montgomery residues
 /// `a·2^64 mod p`.
@@ -654,6 +654,137 @@ pub(crate) fn coprime_mod_p(a: &[BigInt], b: &[BigInt]) -> bool {
         return res_frac(reduce(a, p), reduce(b, p), mont).num != 0;
     }
     false
+}
+
+/// The monic gcd over F_p of two polynomials of plain residues (lowest
+/// first), as plain residues; empty when both are zero.
+fn gcd_mod(a: &[u64], b: &[u64], f: Zp) -> Vec<u64> {
+    let mut a: Vec<u64> = a.iter().map(|&x| f.form(x)).collect();
+    let mut b: Vec<u64> = b.iter().map(|&x| f.form(x)).collect();
+    trim(&mut a);
+    trim(&mut b);
+    while !b.is_empty() {
+        // a ← a mod b.
+        let n = b.len() - 1;
+        let inv = f.inv(b[n]);
+        while a.len() > n {
+            let k = a.len() - 1 - n;
+            let c = f.mul(a[a.len() - 1], inv);
+            if c != 0 {
+                for (j, &bj) in b.iter().enumerate() {
+                    a[k + j] = f.sub(a[k + j], f.mul(c, bj));
+                }
+            }
+            a.pop();
+            trim(&mut a);
+        }
+        std::mem::swap(&mut a, &mut b);
+    }
+    if let Some(&lead) = a.last() {
+        let inv = f.inv(lead);
+        for x in &mut a {
+            *x = f.to_u64(f.mul(*x, inv));
+        }
+    }
+    a
+}
+
+/// Whether `g` divides `a` in Z[x] (both lowest first, non-zero leading
+/// coefficients), by long division that fails at the first inexact
+/// quotient.
+fn divides_int(a: &[BigInt], g: &[BigInt]) -> bool {
+    let n = g.len() - 1;
+    let lg = &g[n];
+    let mut r = a.to_vec();
+    while r.len() > n {
+        let top = r.len() - 1;
+        let (c, rem) = r[top].div_rem(lg);
+        if !rem.is_zero() {
+            return false;
+        }
+        let k = top - n;
+        for (j, gj) in g.iter().enumerate() {
+            r[k + j] -= &c * gj;
+        }
+        debug_assert!(r[top].is_zero());
+        r.pop();
+        while r.last().is_some_and(Zero::is_zero) {
+            r.pop();
+        }
+    }
+    r.is_empty()
+}
+
+/// The gcd in Z[x] of two non-zero integer polynomials (lowest first,
+/// non-zero leading coefficients), primitive with a positive leading
+/// coefficient, by Brown's modular algorithm: the monic gcd modulo primes
+/// dividing neither leading coefficient, the smallest degree kept (a larger
+/// one is an unlucky prime), scaled by gcd(lc(a), lc(b)) and joined by CRT
+/// until two reconstructions agree; the primitive part is then proven by
+/// dividing both. `None` when 200 primes do not settle it (the caller runs
+/// its remainder sequence). The primitive remainder sequence of big
+/// coefficients costs a pass over numbers of thousands of bits per step;
+/// here each prime costs a Euclid over machine words.
+pub(crate) fn gcd_int(a: &[BigInt], b: &[BigInt]) -> Option<Vec<BigInt>> {
+    let (la, lb) = (a.last()?, b.last()?);
+    if la.is_zero() || lb.is_zero() {
+        return None;
+    }
+    let scale = crate::arith::intgcd::gcd(la, lb);
+    let mut deg = usize::MAX;
+    let mut used: Vec<u64> = Vec::new();
+    let mut residues: Vec<Vec<u64>> = Vec::new();
+    let mut previous: Option<Vec<BigInt>> = None;
+    // Primes in batches: most gcds settle within a few.
+    let batches = [8usize, 32, 200];
+    let mut tried = 0;
+    for p in batches.iter().flat_map(|&k| {
+        let batch = primes(k)[tried..].to_vec();
+        tried = k;
+        batch
+    }) {
+        let pb = BigInt::from(p);
+        if (la % &pb).is_zero() || (lb % &pb).is_zero() {
+            continue;
+        }
+        let f = Zp::new(p);
+        let h = gcd_mod(&reduce(a, p), &reduce(b, p), f);
+        let d = h.len() - 1;
+        if d == 0 {
+            return Some(vec![BigInt::one()]);
+        }
+        if d > deg {
+            continue;
+        }
+        if d < deg {
+            deg = d;
+            used.clear();
+            residues.clear();
+            previous = None;
+        }
+        let s = f.lift_big(&scale);
+        used.push(p);
+        residues.push(h.iter().map(|&x| f.to_u64(f.mul(f.form(x), s))).collect());
+        let crt = Crt::new(&used);
+        let candidate: Vec<BigInt> = (0..=d)
+            .map(|i| crt.reconstruct_plain(&residues.iter().map(|r| r[i]).collect::<Vec<_>>()))
+            .collect();
+        if previous.as_ref() == Some(&candidate) {
+            let content = candidate
+                .iter()
+                .filter(|x| !x.is_zero())
+                .fold(BigInt::zero(), |g, x| crate::arith::intgcd::gcd(&g, x));
+            let mut g: Vec<BigInt> = candidate.iter().map(|x| x / &content).collect();
+            if g[d].is_negative() {
+                g = g.into_iter().map(|x| -x).collect();
+            }
+            if divides_int(a, &g) && divides_int(b, &g) {
+                return Some(g);
+            }
+        }
+        previous = Some(candidate);
+    }
+    None
 }
 
 /// Six primes below 2^20 (decreasing): a product of two residues is below

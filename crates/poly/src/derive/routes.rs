@@ -545,7 +545,9 @@ pub fn derive_source(file: &str, src: &str) -> Result<Derivation, Error> {
     derive(&Method::parse(file, src)?)
 }
 
-/// Derives a method by both routes and checks that they agree exactly.
+/// Derives a method by both routes and checks that they agree exactly; a
+/// program generated from a Butcher tableau is derived from its stability
+/// function instead (the same fields, tested against both routes).
 ///
 /// ```
 /// let m = poly::builtin("false_euler")?;
@@ -554,6 +556,77 @@ pub fn derive_source(file: &str, src: &str) -> Result<Derivation, Error> {
 /// # Ok::<(), poly::Error>(())
 /// ```
 pub fn derive(method: &Method) -> Result<Derivation, Error> {
+    match &method.stability_function.0 {
+        Some(r) => Ok(derive_runge_kutta(method, &r.0, &r.1)),
+        None => derive_both_routes(method),
+    }
+}
+
+/// The derivation of a program generated from a Butcher tableau, read from
+/// its stability function R(w) = P(w)/Q(w) (`Method::stability_function`)
+/// instead of solving the stages' linear system, to the very same fields:
+/// the oracle [`derive_both_routes`] is held to it in the tests.
+///
+/// - On y' = λy (one state y): det A = Q (A = I − wA at w = 0 is I),
+///   d·P = P and χ = Q·z − P.
+/// - On the oscillator v' = −ωy, y' = ωv: u = y + iv obeys u' = −iωu, so a
+///   step multiplies u by R(−iΦ). With P(−iΦ) = P_r + iP_i and
+///   Q(−iΦ) = Q_r + iQ_i (real coefficients), det A = det(I + Φ²A²) =
+///   Q(iΦ)Q(−iΦ) = Q_r² + Q_i² = d, and d·R(−iΦ) = P(−iΦ)Q(iΦ) = α + iβ
+///   with α = P_rQ_r + P_iQ_i, β = P_iQ_r − P_rQ_i. Over (v, y):
+///   d·P = [[α, β], [−β, α]], a rotation-scaling, and
+///   χ = d·det(zI − P) = d·z² − 2α·z + P_r² + P_i² (= |P(iΦ)|²).
+fn derive_runge_kutta(method: &Method, p: &Poly, q: &Poly) -> Derivation {
+    let fix = |x: Poly| crate::lang::system::fix(method, x);
+    let z = Poly::sym(Sym::z());
+    let (transition_matrix, p_denominator, charpoly) = if method.is_scalar() {
+        let chi = fix(&(&z * q) - p);
+        (PolyMatrix::from_rows(vec![vec![p.clone()]]), q.clone(), chi)
+    } else {
+        let phi = Poly::sym(Sym::phi());
+        // (re, im) of c(−iΦ), (−i)^k cycling 1, −i, −1, i.
+        let split = |c: &Poly| {
+            let (mut re, mut im) = (Poly::zero(), Poly::zero());
+            let mut power = Poly::one();
+            for (k, ck) in c.coeffs_in(Sym::w()).iter().enumerate() {
+                if !ck.is_zero() {
+                    let t = ck * &power;
+                    match k % 4 {
+                        0 => re += &t,
+                        1 => im -= &t,
+                        2 => re -= &t,
+                        _ => im += &t,
+                    }
+                }
+                power = &power * &phi;
+            }
+            (re, im)
+        };
+        let ((pr, pi), (qr, qi)) = (split(p), split(q));
+        let d = fix(&(&qr * &qr) + &(&qi * &qi));
+        let alpha = fix(&(&pr * &qr) + &(&pi * &qi));
+        let beta = fix(&(&pi * &qr) - &(&pr * &qi));
+        let modulus = fix(&(&pr * &pr) + &(&pi * &pi));
+        let two_alpha = alpha.scale(&crate::Q::from_integer(2.into()));
+        let chi = fix(&(&(&d * &(&z * &z)) - &(&two_alpha * &z)) + &modulus);
+        let dp =
+            PolyMatrix::from_rows(vec![vec![alpha.clone(), beta.clone()], vec![-&beta, alpha]]);
+        (dp, d, chi)
+    };
+    Derivation {
+        method: method.clone(),
+        z_matrix: z_matrix(method),
+        transition_matrix,
+        p_denominator,
+        charpoly,
+    }
+}
+
+/// Derives a method by both routes and checks that they agree exactly:
+/// [`derive`] for every program not generated from a tableau, and the
+/// oracle of its Runge–Kutta route.
+#[doc(hidden)]
+pub fn derive_both_routes(method: &Method) -> Result<Derivation, Error> {
     let z_matrix = z_matrix(method);
     let a = charpoly_from_z_matrix(method, &z_matrix)?;
     let (transition_matrix, p_denominator, b) = if method.is_implicit() {

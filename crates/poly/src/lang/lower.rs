@@ -481,6 +481,7 @@ impl Program {
             constants,
             gauss_seidel,
             warnings,
+            stability_function: Default::default(),
         })
     }
 }

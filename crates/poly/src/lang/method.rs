@@ -134,7 +134,27 @@ pub struct Method {
     pub(crate) scalar: bool,
     /// What the program says that it probably does not mean.
     pub(crate) warnings: Vec<Warning>,
+    /// For a program generated from a Butcher tableau, its stability
+    /// function: `derive` reads χ and P from it.
+    pub(crate) stability_function: StabilityFunction,
 }
+
+/// A Runge–Kutta method's stability function R(w) = P(w)/Q(w) with
+/// P = det(I − wA + w·1bᵀ) and Q = det(I − wA), exact polynomials in `w`
+/// (and the program's constants), attached by `lang::tableau` to the
+/// programs it generates (on the oscillator and on y' = λy). It is a fact of
+/// the program, not part of it: two equal programs have the same R, so it
+/// takes no part in comparisons.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct StabilityFunction(pub(crate) Option<std::sync::Arc<(Poly, Poly)>>);
+
+impl PartialEq for StabilityFunction {
+    fn eq(&self, _: &StabilityFunction) -> bool {
+        true
+    }
+}
+
+impl Eq for StabilityFunction {}
 
 impl Method {
     /// The method's name.

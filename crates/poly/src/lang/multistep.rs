@@ -128,7 +128,11 @@ impl Multistep {
             .alpha
             .iter()
             .enumerate()
-            .map(|(j, a)| Exact { expr: format!("{j}*({})", a.expr), ..a.clone() })
+            .map(|(j, a)| Exact {
+                expr: format!("{j}*({})", a.expr),
+                number: a.number.as_ref().map(|q| q * crate::Q::from_integer(j.into())),
+                ..a.clone()
+            })
             .collect();
         Ok([sum_of(self.alpha.iter(), c)?, sum_of(scaled.iter(), c)?, sum_of(self.beta.iter(), c)?])
     }

@@ -26,10 +26,12 @@
 //! ```
 
 use std::fmt::Write as _;
+use std::sync::Arc;
 
 use crate::error::{Error, ErrorKind, Span};
-use crate::lang::method::Method;
-use crate::Poly;
+use crate::lang::method::{Method, StabilityFunction};
+use crate::multivariate::constants as field;
+use crate::{Poly, PolyMatrix, Sym};
 
 /// The most stages read: beyond any published method, and a bound on the
 /// size of the generated program.
@@ -42,6 +44,8 @@ pub struct Exact {
     pub(crate) expr: String,
     pub(crate) radicals: Vec<(String, String)>,
     pub(crate) zero: bool,
+    /// The value of a plain number, read once.
+    pub(crate) number: Option<crate::Q>,
 }
 
 impl Exact {
@@ -57,12 +61,12 @@ impl Exact {
         if let Ok(q) = crate::lang::syntax::parse_number(digits) {
             let q = if negative { -q } else { q };
             let zero = num_traits::Zero::is_zero(&q);
-            return Ok(Exact { expr: q.to_string(), radicals: Vec::new(), zero });
+            return Ok(Exact { expr: q.to_string(), radicals: Vec::new(), zero, number: Some(q) });
         }
         let mut radicals = Vec::new();
         let expr = replace_radicals(text, &mut radicals).map_err(entry_error)?;
         let zero = probe(&expr, &radicals).map_err(entry_error)?;
-        Ok(Exact { expr, radicals, zero })
+        Ok(Exact { expr, radicals, zero, number: None })
     }
 
     /// Whether the entry is exactly zero.
@@ -86,6 +90,8 @@ pub struct Tableau {
     c_mismatch: Option<Vec<usize>>,
     /// `(name, radical)`: `("sqrt_3", "sqrt(3)")`, in order of appearance.
     constants: Vec<(String, String)>,
+    /// R = P/Q, computed once for both programs.
+    stability_function: std::sync::OnceLock<StabilityFunction>,
 }
 
 impl Tableau {
@@ -141,6 +147,17 @@ impl Tableau {
             Some(c) => {
                 let mut rows = Vec::new();
                 for (i, ci) in c.iter().enumerate() {
+                    // Plain numbers compare without a program.
+                    if let (Some(ci), Some(row)) =
+                        (plain(ci), a[i].iter().map(plain).collect::<Option<Vec<_>>>())
+                    {
+                        if row.into_iter().fold(crate::Q::from_integer(0.into()), |s, x| s + x)
+                            != ci
+                        {
+                            rows.push(i + 1);
+                        }
+                        continue;
+                    }
                     let sum: Vec<String> = a[i].iter().map(|e| format!("({})", e.expr)).collect();
                     let diff = format!("({}) - ({})", ci.expr, sum.join(" + "));
                     if !probe(&diff, &constants).map_err(entry_error)? {
@@ -151,7 +168,14 @@ impl Tableau {
             }
             None => None,
         };
-        Ok(Tableau { name: id, a, b, c_mismatch, constants })
+        Ok(Tableau {
+            name: id,
+            a,
+            b,
+            c_mismatch,
+            constants,
+            stability_function: std::sync::OnceLock::new(),
+        })
     }
 
     /// The number of stages.
@@ -188,14 +212,126 @@ impl Tableau {
     /// The method on the oscillator, or on the damped oscillator (`param
     /// D`) when `damped`.
     pub fn method(&self, damped: bool) -> Result<Method, Error> {
-        Method::parse(&format!("<tableau>/{}.zm", self.name), &self.to_zm("the tableau", damped))
+        self.program(&format!("<tableau>/{}.zm", self.name), "the tableau", damped)
     }
 
     /// The method on the scalar test equation y' = λy (a program in `w`),
     /// for the w-plane: one state and one stage value per stage, so it
     /// derives faster than the oscillator's program, to the same χ(z, w).
     pub fn scalar_method(&self) -> Result<Method, Error> {
-        Method::parse(&format!("<tableau>/{}.zm", self.name), &self.to_scalar_zm("the tableau"))
+        self.scalar_program(&format!("<tableau>/{}.zm", self.name), "the tableau")
+    }
+
+    /// [`Tableau::method`] with the program's file name (in error messages)
+    /// and `source` (in its first comment) given. The method carries the
+    /// tableau's stability function (not on the damped oscillator), from
+    /// which `derive` reads χ and P without solving the stages' system.
+    pub fn program(&self, file: &str, source: &str, damped: bool) -> Result<Method, Error> {
+        let mut m = Method::parse(file, &self.to_zm(source, damped))?;
+        if !damped {
+            m.stability_function = self.stability_function()?;
+        }
+        Ok(m)
+    }
+
+    /// [`Tableau::scalar_method`] with the file name and `source` given,
+    /// carrying the stability function as [`Tableau::program`] does.
+    pub fn scalar_program(&self, file: &str, source: &str) -> Result<Method, Error> {
+        let mut m = Method::parse(file, &self.to_scalar_zm(source))?;
+        m.stability_function = self.stability_function()?;
+        Ok(m)
+    }
+
+    /// R(w) = P(w)/Q(w): Q = det(I − wA), P = det(I − wA + w·1bᵀ), exactly.
+    /// Explicit: Q = 1 and P = 1 + Σ_k w^(k+1)·bᵀA^k·1 (A is nilpotent).
+    fn stability_function(&self) -> Result<StabilityFunction, Error> {
+        if let Some(r) = self.stability_function.get() {
+            return Ok(r.clone());
+        }
+        let r = self.compute_stability_function()?;
+        Ok(self.stability_function.get_or_init(|| r).clone())
+    }
+
+    fn compute_stability_function(&self) -> Result<StabilityFunction, Error> {
+        let constants = !self.constants.is_empty();
+        let fix = |p: Poly| if constants { field::reduce(&p) } else { p };
+        let entry = |e: &Exact| -> Result<Poly, Error> {
+            match plain(e) {
+                Some(q) => Ok(Poly::constant(q)),
+                None => value(&e.expr, &self.constants).map_err(entry_error),
+            }
+        };
+        let a = self
+            .a
+            .iter()
+            .map(|row| {
+                row.iter().map(|e| if e.zero { Ok(Poly::zero()) } else { entry(e) }).collect()
+            })
+            .collect::<Result<Vec<Vec<Poly>>, Error>>()?;
+        let b = self
+            .b
+            .iter()
+            .map(|e| if e.zero { Ok(Poly::zero()) } else { entry(e) })
+            .collect::<Result<Vec<Poly>, Error>>()?;
+        let s = b.len();
+        let w = Poly::sym(Sym::w());
+        let rationals = |v: &[Poly]| v.iter().map(Poly::as_constant).collect::<Option<Vec<_>>>();
+        let (p, q) = if let (true, Some(b), Some(a)) = (
+            self.is_explicit(),
+            rationals(&b),
+            a.iter().map(|row| rationals(row)).collect::<Option<Vec<_>>>(),
+        ) {
+            (Poly::from_upoly(Sym::w(), &explicit_stability_polynomial(&a, &b)), Poly::one())
+        } else if self.is_explicit() {
+            let mut p = Poly::one();
+            let mut v = vec![Poly::one(); s];
+            let mut wk = w.clone();
+            for _ in 0..s {
+                let mut term = Poly::zero();
+                for (bi, vi) in b.iter().zip(&v) {
+                    if !bi.is_zero() && !vi.is_zero() {
+                        term += &(bi * vi);
+                    }
+                }
+                p += &(&fix(term) * &wk);
+                wk = &wk * &w;
+                v = a
+                    .iter()
+                    .map(|row| {
+                        let mut acc = Poly::zero();
+                        for (aij, vj) in row.iter().zip(&v) {
+                            if !aij.is_zero() && !vj.is_zero() {
+                                acc += &(aij * vj);
+                            }
+                        }
+                        fix(acc)
+                    })
+                    .collect();
+            }
+            (p, Poly::one())
+        } else {
+            let matrix = |with_b: bool| {
+                let rows = (0..s)
+                    .map(|i| {
+                        (0..s)
+                            .map(|j| {
+                                let mut x = -&(&a[i][j] * &w);
+                                if with_b {
+                                    x += &(&b[j] * &w);
+                                }
+                                if i == j {
+                                    x += &Poly::one();
+                                }
+                                x
+                            })
+                            .collect()
+                    })
+                    .collect();
+                fix(PolyMatrix::from_rows(rows).det())
+            };
+            (matrix(true), matrix(false))
+        };
+        Ok(StabilityFunction(Some(Arc::new((p, q)))))
     }
 
     /// The `.zm` program of the method on y' = λy: stages K_i = h·k_i =
@@ -389,6 +525,33 @@ impl Method {
     }
 }
 
+/// P(w) = 1 + Σ_k w^(k+1)·bᵀA^k·1 of an explicit tableau over Q, in
+/// integers: with A = Â/D and b = b̂/D_b, bᵀA^k·1 = b̂ᵀÂ^k·1 / (D_b·D^k),
+/// so one rational is reduced per coefficient (not one per product: the
+/// decimals of a float-derived tableau are 17-digit fractions).
+fn explicit_stability_polynomial(a: &[Vec<crate::Q>], b: &[crate::Q]) -> crate::UPoly {
+    use num_bigint::BigInt;
+    let lcm = |qs: &mut dyn Iterator<Item = &crate::Q>| {
+        qs.fold(BigInt::from(1), |l, q| num_integer::Integer::lcm(&l, q.denom()))
+    };
+    let d = lcm(&mut a.iter().flatten());
+    let db = lcm(&mut b.iter());
+    let scaled = |q: &crate::Q, d: &BigInt| q.numer() * (d / q.denom());
+    let ai: Vec<Vec<BigInt>> =
+        a.iter().map(|r| r.iter().map(|q| scaled(q, &d)).collect()).collect();
+    let bi: Vec<BigInt> = b.iter().map(|q| scaled(q, &db)).collect();
+    let mut v = vec![BigInt::from(1); b.len()];
+    let mut den = db;
+    let mut coeffs = vec![crate::Q::from_integer(1.into())];
+    for _ in 0..b.len() {
+        let num: BigInt = bi.iter().zip(&v).map(|(x, y)| x * y).sum();
+        coeffs.push(crate::Q::new(num, den.clone()));
+        v = ai.iter().map(|row| row.iter().zip(&v).map(|(x, y)| x * y).sum()).collect();
+        den *= &d;
+    }
+    crate::UPoly::new(coeffs)
+}
+
 /// A name fit for a `.zm` method: letters, digits and `_`, not starting
 /// with a digit.
 pub fn method_ident(s: &str) -> String {
@@ -503,11 +666,21 @@ pub(crate) fn value(expr: &str, constants: &[(String, String)]) -> Result<Poly, 
     Ok(m.assigns().last().and_then(|a| a.terms.first()).map_or_else(Poly::zero, |(_, c)| c.clone()))
 }
 
+/// The value of an entry that is a plain number (no radicals), without
+/// a program: what `value` gives for it.
+fn plain(e: &Exact) -> Option<crate::Q> {
+    e.number.clone()
+}
+
 /// Σ of exact entries, exactly.
 pub(crate) fn sum_of<'a>(
-    entries: impl Iterator<Item = &'a Exact>,
+    entries: impl Iterator<Item = &'a Exact> + Clone,
     constants: &[(String, String)],
 ) -> Result<Poly, Error> {
+    if let Some(values) = entries.clone().map(plain).collect::<Option<Vec<_>>>() {
+        let sum = values.into_iter().fold(crate::Q::from_integer(0.into()), |s, x| s + x);
+        return Ok(Poly::constant(sum));
+    }
     let terms: Vec<String> = entries.map(|e| format!("({})", e.expr)).collect();
     value(&format!("0 + {}", terms.join(" + ")), constants).map_err(entry_error)
 }
@@ -518,6 +691,18 @@ mod tests {
 
     fn e(s: &str) -> Exact {
         Exact::parse(s).unwrap()
+    }
+
+    /// Plain numbers are summed without a program, to what the program
+    /// gives.
+    #[test]
+    fn plain_sums_match_the_program() {
+        for entries in [vec!["1/3", "-0.25", "1e-3", "0"], vec!["0.1", "-0.1"], vec!["-3/8"]] {
+            let es: Vec<Exact> = entries.iter().map(|t| e(t)).collect();
+            let terms: Vec<String> = es.iter().map(|x| format!("({})", x.expr)).collect();
+            let by_program = value(&format!("0 + {}", terms.join(" + ")), &[]).unwrap();
+            assert_eq!(sum_of(es.iter(), &[]).unwrap(), by_program, "{entries:?}");
+        }
     }
 
     /// Bad entries and shapes are refused with what was expected.

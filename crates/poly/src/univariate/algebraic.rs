@@ -594,6 +594,24 @@ fn numbers_with(
     // The irrational part is made monic once; its integer form is shared by
     // every root that keeps it as defining polynomial.
     let irrational = without_roots(sf, all);
+    // What `reduce_irrational_with` finds for each root, found once: the
+    // factors x² − y that divide the irrational part (irreducible: a
+    // rational square y would give rational roots, divided out above) and
+    // the part freed of them. A root is a factor's when that factor changes
+    // sign across its interval (the first such, in order), and the rest's
+    // otherwise. The divisions cost as much as the rest together on
+    // polynomials of thousand-bit coefficients (SDIRK34's A(α)).
+    let mut rest = irrational.clone();
+    let mut dividing: Vec<(&UPoly, IntPoly)> = Vec::new();
+    for factor in even_factors {
+        let (quotient, rem) = rest.div_rem(factor);
+        if rem.is_zero() {
+            rest = quotient;
+            dividing.push((factor, IntPoly::new(factor)));
+        }
+    }
+    let kept = dividing.is_empty();
+    let rest = if kept { rest } else { rest.monic() };
     let mut shared: Option<Arc<IntPoly>> = None;
     intervals
         .into_iter()
@@ -601,8 +619,14 @@ fn numbers_with(
         .map(|((lo, hi), r)| match r {
             Some(r) => Algebraic::from_rational(r),
             None => {
-                let ip = shared.get_or_insert_with(|| Arc::new(IntPoly::new(&irrational)));
-                reduce_irrational_with(irrational.clone(), Some(ip), even_factors, lo, hi)
+                if let Some((factor, _)) =
+                    dividing.iter().find(|(_, ip)| ip.sign_at(&lo) != ip.sign_at(&hi))
+                {
+                    return root(factor.monic(), lo, hi);
+                }
+                let ip = shared.get_or_insert_with(|| Arc::new(IntPoly::new(&rest)));
+                debug_assert!(rest.leading().is_one());
+                Algebraic { repr: Repr::Root { poly: rest.clone(), ip: Arc::clone(ip), lo, hi } }
             }
         })
         .collect()

@@ -11,10 +11,10 @@
 //!
 //! The roots modulo p come from gcd(x^p − x, f) at primes near 2^20: no root
 //! there means no rational root; one root, or two when p ≡ 3 (mod 4), are
-//! read off that gcd. Otherwise (or when the coefficients are large, where
-//! a prime without roots is the cheaper answer than a lift) every residue
-//! modulo primes near 1000 is tried. Degrees 1 and 2 are solved in closed
-//! form.
+//! read off that gcd. Otherwise every residue modulo primes near 1000 is
+//! tried. When the coefficients are large, where a prime without roots is
+//! the cheaper answer than a lift, every prime near 2^20 is tried before
+//! anything is lifted. Degrees 1 and 2 are solved in closed form.
 //!
 //! This replaces, for the stability analysis, an upper bound on the number
 //! of rational roots (roots counted modulo primes) followed, whenever the
@@ -69,13 +69,19 @@ pub(crate) fn rational_roots(f: &[BigInt]) -> Option<Vec<Q>> {
     // Lifting is cheap for small coefficients (a few Newton steps): the
     // first prime with readable roots is lifted from at once. With large
     // ones each step inverts modulo a large power: every prime is tried for
-    // one without roots, then residues modulo primes near 1000 (below).
+    // one without roots, then the roots read off, or residues modulo primes
+    // near 1000 (below).
     let small = bound.bits() <= 160;
     let m = crate::arith::zp::mod_roots(f, small);
     if m.bound == Some(0) {
         return Some(Vec::new());
     }
-    if let Some((p, roots)) = m.readable.filter(|_| small) {
+    // With large coefficients every prime near 2^20 was tried for one
+    // without roots, and each had some: a lift is due, and one or two roots
+    // read off modulo such a prime are fewer to lift (and from twice the
+    // bits) than the residues modulo a prime near 1000 (SDIRK34's A(α)
+    // candidates: 1 root against 3).
+    if let Some((p, roots)) = m.readable {
         return Some(lift(f, BigInt::from(p), roots, &bound));
     }
     // Else roots modulo primes near 1000, found by trying every residue.
@@ -109,16 +115,27 @@ fn lift(f: &[BigInt], p: BigInt, roots: Vec<u64>, bound: &BigInt) -> Vec<Q> {
     let (lead, c0) = (f.last().expect("degree ≥ 1"), &f[0]);
     let ip = crate::univariate::sturm::IntPoly::from_ints(f.to_vec());
     let mut modulus = p;
-    let mut lifted: Vec<BigInt> = roots.into_iter().map(BigInt::from).collect();
+    // Each root with 1/f′(root) modulo the current modulus, carried along
+    // by Newton's iteration for the inverse (no inversion modulo a large
+    // power: on coefficients of thousands of bits that was most of a lift).
+    let mut lifted: Vec<(BigInt, BigInt)> = roots
+        .into_iter()
+        .map(|r| {
+            let r = BigInt::from(r);
+            let (_, d) = value_and_slope(f, &r, &modulus);
+            let inv = d.modinv(&modulus).expect("a simple root: f′(r) is a unit");
+            (r, inv)
+        })
+        .collect();
     while modulus <= *bound {
         modulus = &modulus * &modulus;
-        for r in &mut lifted {
-            *r = newton_step(f, r, &modulus);
+        for (r, inv) in &mut lifted {
+            (*r, *inv) = newton_step(f, r, inv, &modulus);
         }
     }
     let mut out: Vec<Q> = lifted
         .iter()
-        .filter_map(|r| reconstruct(r, &modulus, &c0.abs(), &lead.abs()))
+        .filter_map(|(r, _)| reconstruct(r, &modulus, &c0.abs(), &lead.abs()))
         .map(|(a, b)| Q::new(a, b))
         .filter(|x| ip.sign_at(x).is_eq())
         .collect();
@@ -127,16 +144,26 @@ fn lift(f: &[BigInt], p: BigInt, roots: Vec<u64>, bound: &BigInt) -> Vec<Q> {
     out
 }
 
-/// r − f(r)/f′(r) mod m, for r a simple root of f modulo √m (so f′(r) is
-/// invertible mod m and the result is the root modulo m).
-fn newton_step(f: &[BigInt], r: &BigInt, m: &BigInt) -> BigInt {
+/// f(r) and f′(r) modulo m, by Horner.
+fn value_and_slope(f: &[BigInt], r: &BigInt, m: &BigInt) -> (BigInt, BigInt) {
     let (mut v, mut d) = (BigInt::zero(), BigInt::zero());
     for c in f.iter().rev() {
         d = (d * r + &v).mod_floor(m);
         v = (v * r + c).mod_floor(m);
     }
-    let inv = d.modinv(m).expect("a simple root: f′(r) is a unit");
-    (r - v * inv).mod_floor(m)
+    (v, d)
+}
+
+/// One step of Newton's iteration modulo m, for r a simple root of f
+/// modulo √m and `inv` ≡ 1/f′(r) modulo √m: the root r − f(r)·inv modulo m
+/// (f(r) and the error of `inv` are both multiples of √m, so their product
+/// vanishes modulo m), and 1/f′ at it modulo m, by inv·(2 − f′·inv).
+fn newton_step(f: &[BigInt], r: &BigInt, inv: &BigInt, m: &BigInt) -> (BigInt, BigInt) {
+    let (v, _) = value_and_slope(f, r, m);
+    let r = (r - v * inv).mod_floor(m);
+    let (_, d) = value_and_slope(f, &r, m);
+    let inv = (inv * (BigInt::from(2) - (d * inv).mod_floor(m))).mod_floor(m);
+    (r, inv)
 }
 
 /// The a/b (b > 0, |a| ≤ n_max, b ≤ d_max) with a ≡ b·r (mod m), if any,

@@ -195,15 +195,15 @@ impl UPoly {
         if crate::arith::zp::coprime_mod_p(&a, &b) {
             return UPoly::constant(Q::one());
         }
+        // Modulo primes first; the remainder sequence (the oracle of the
+        // tests) only when they do not settle it.
+        if let Some(g) = crate::arith::zp::gcd_int(&a, &b) {
+            return UPoly::new(g.into_iter().map(Q::from_integer).collect()).monic();
+        }
         if a.len() < b.len() {
             std::mem::swap(&mut a, &mut b);
         }
-        while !b.is_empty() {
-            let (r, _) = prem(&a, &b);
-            a = b;
-            b = primitive(r);
-        }
-        UPoly::new(a.into_iter().map(Q::from_integer).collect()).monic()
+        gcd_prs(a, b)
     }
 
     /// F with p(x) = F(x²), for an even p of degree ≥ 2 (`None` otherwise).
@@ -452,6 +452,18 @@ pub(crate) fn divide_linear(c: &[BigInt], r: &Q) -> Vec<BigInt> {
     q
 }
 
+/// The monic gcd of two primitive integer polynomials (lowest first,
+/// `a` at least as long as `b`) by the primitive remainder sequence: the
+/// slow oracle of [`crate::arith::zp::gcd_int`], and its fallback.
+pub(crate) fn gcd_prs(mut a: Vec<BigInt>, mut b: Vec<BigInt>) -> UPoly {
+    while !b.is_empty() {
+        let (r, _) = prem(&a, &b);
+        a = b;
+        b = primitive(r);
+    }
+    UPoly::new(a.into_iter().map(Q::from_integer).collect()).monic()
+}
+
 pub(crate) fn int_primitive(p: &UPoly) -> Vec<BigInt> {
     let mut den = BigInt::one();
     for q in p.coeffs() {
@@ -606,6 +618,32 @@ mod tests {
             let scale = BigInt::from(b) / r.denom();
             let expected: Vec<BigInt> = q.iter().map(|&x| BigInt::from(x) * &scale).collect();
             prop_assert_eq!(divide_linear(&c, &r), expected);
+        }
+    }
+
+    proptest! {
+        /// The modular gcd agrees with the primitive remainder sequence, on
+        /// products with a common factor, with large coefficients (scaled
+        /// by a 200-bit number) and with leading coefficients that share
+        /// factors.
+        #[test]
+        fn modular_gcd_matches_the_remainder_sequence(
+            f in proptest::collection::vec(-40i64..40, 1..6),
+            g in proptest::collection::vec(-40i64..40, 1..6),
+            h in proptest::collection::vec(-40i64..40, 1..6),
+            big in 0u32..3,
+        ) {
+            let (f, g, h) = (UPoly::from_ints(&f), UPoly::from_ints(&g), UPoly::from_ints(&h));
+            prop_assume!(!f.is_zero() && !g.is_zero() && !h.is_zero());
+            let lift = Q::from_integer(BigInt::from(3).pow(40 * big) + 1);
+            let (a, b) = (&(&f * &h) * &h, &(&g * &h).scale(&lift) + &f.scale(&Q::from_integer(BigInt::from(big))));
+            prop_assume!(!a.is_zero() && !b.is_zero() && a.degree() > Some(0) && b.degree() > Some(0));
+            let (ia, ib) = (int_primitive(&a), int_primitive(&b));
+            let oracle = if ia.len() >= ib.len() { gcd_prs(ia.clone(), ib.clone()) } else { gcd_prs(ib.clone(), ia.clone()) };
+            match crate::arith::zp::gcd_int(&ia, &ib) {
+                Some(g) => prop_assert_eq!(UPoly::new(g.into_iter().map(Q::from_integer).collect()).monic(), oracle),
+                None => prop_assert!(false, "the modular gcd gave up"),
+            }
         }
     }
 

@@ -199,3 +199,45 @@ fn toml_floats_are_the_decimals_written() {
     assert_eq!(code, 0);
     assert!(out.contains("1/10"), "{out}");
 }
+
+/// A tableau's programs are derived from its stability function R = P/Q;
+/// on every tableau of NodePy's catalogue and of `tableaux/`, that gives
+/// exactly what solving the stages' system by both routes gives (the
+/// oracle): χ, d·P, d, M, and so the same stability and w-plane reports.
+#[test]
+fn stability_function_route_matches_both_routes_on_the_catalogues() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut files: Vec<PathBuf> = Vec::new();
+    for dir in [root.join("tests/data/nodepy/rk"), tableau_dir()] {
+        for e in std::fs::read_dir(dir).expect("catalogue") {
+            let p = e.expect("entry").path();
+            if p.extension().is_some_and(|x| x == "toml")
+                && !std::fs::read_to_string(&p).expect("text").contains("alpha")
+            {
+                files.push(p);
+            }
+        }
+    }
+    files.sort();
+    assert!(files.len() > 50, "{}", files.len());
+    let params = poly::Params::new();
+    for f in &files {
+        let arg = f.display().to_string();
+        let oscillator = zcheck::api::load(&arg).expect("loads");
+        let scalar = zcheck::load::LoadedMethod::load_for_plane(&arg).expect("loads");
+        for m in [oscillator.method(), scalar.method()] {
+            let fast = poly::derive(m).expect("derives");
+            let slow = poly::advanced::derive_both_routes(m).expect("derives");
+            assert_eq!(fast.charpoly, slow.charpoly, "{arg}");
+            assert_eq!(fast.transition_matrix, slow.transition_matrix, "{arg}");
+            assert_eq!(fast.p_denominator, slow.p_denominator, "{arg}");
+            assert_eq!(fast.z_matrix, slow.z_matrix, "{arg}");
+            if m.is_scalar() {
+                assert_eq!(fast.plane(&params).ok(), slow.plane(&params).ok(), "{arg}");
+            } else {
+                let report = |d: &poly::Derivation| format!("{:?}", d.stability(&params).ok());
+                assert_eq!(report(&fast), report(&slow), "{arg}");
+            }
+        }
+    }
+}

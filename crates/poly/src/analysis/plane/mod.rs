@@ -138,7 +138,15 @@ fn zero_stable(chi: &Poly) -> Result<bool, Error> {
     let z = Sym::z();
     let at0 = field::reduce(&chi.subs(Sym::w(), &Poly::zero()));
     let f = at0.coeffs_in(z);
-    let repeated = scalar::gcd(&f, &scalar::derivative(&f));
+    // Over Q the gcd of integer forms (modular, then primitive remainders):
+    // Euclid over the field swells the coefficients (sand_cc3's ρ, degree
+    // 9). Only the roots of the gcd are read, so any scalar multiple does.
+    let repeated = match at0.to_upoly(z) {
+        Some(u) if !u.is_zero() && !field::has_generators(&at0) => {
+            Poly::from_upoly(z, &u.gcd(&u.derivative())).coeffs_in(z)
+        }
+        _ => scalar::gcd(&f, &scalar::derivative(&f)),
+    };
     let in_z = |c: &[Poly]| -> Result<UPoly, Error> {
         let p = Poly::from_coeffs_in(z, c);
         let p = if field::has_generators(&p) { field::norm(&p) } else { p };
