@@ -47,7 +47,7 @@ pub(crate) struct Args {
     #[arg(long, conflicts_with = "no_simulate")]
     pub simulate_all: bool,
     /// The eigensolver for a scene of masses and springs: dense (every
-    /// mode) up to 1500 degrees of freedom and sparse (the certified highest
+    /// mode) up to 400 degrees of freedom and sparse (the certified highest
     /// mode, the lowest or in-band modes, samples between) beyond, or forced.
     #[arg(long, value_enum, default_value_t = modal::Route::Auto, requires = "scene")]
     pub spectrum: modal::Route,

@@ -205,7 +205,7 @@ pub(crate) struct RouteReport {
 
 /// Largest system (after untouched degrees of freedom are dropped) reduced
 /// densely, every mode; larger ones take the sparse route.
-pub(crate) const DENSE_MAX_DOF: usize = 1500;
+pub(crate) const DENSE_MAX_DOF: usize = 400;
 
 /// Samples spanning the unresolved part of a large scene's spectrum.
 const SAMPLES: usize = 48;
@@ -213,7 +213,7 @@ const SAMPLES: usize = 48;
 /// Which eigensolver reduces a scene of masses and springs.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
 pub enum Route {
-    /// Dense up to 1500 degrees of freedom (after those no spring touches
+    /// Dense up to 400 degrees of freedom (after those no spring touches
     /// are dropped), sparse beyond.
     #[default]
     Auto,
