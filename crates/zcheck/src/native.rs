@@ -315,10 +315,18 @@ pub fn prepare(steps: &[(&Method, &Params)]) -> Result<(), Error> {
     if todo.is_empty() {
         return Ok(());
     }
+    // After one failed build (no writable cache, a broken toolchain) every
+    // later step falls back at once instead of calling rustc again.
+    static FAILED: OnceLock<String> = OnceLock::new();
+    if let Some(why) = FAILED.get() {
+        return Err(Error::numeric(why.clone()));
+    }
     let units: Vec<Unit> =
         todo.iter().enumerate().map(|(i, t)| unit(t.1, t.2, i)).collect::<Result<_, _>>()?;
     let source: String = units.iter().map(|u| u.source.as_str()).collect();
-    let lib = build(&source)?;
+    let lib = build(&source).inspect_err(|e| {
+        let _ = FAILED.set(e.to_string());
+    })?;
     let mut map = loaded().lock().unwrap_or_else(std::sync::PoisonError::into_inner);
     for (i, (u, t)) in units.into_iter().zip(todo).enumerate() {
         // SAFETY: the symbols were generated with exactly these signatures.

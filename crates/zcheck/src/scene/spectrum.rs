@@ -312,7 +312,7 @@ pub(crate) fn lowest(
         let invariant = b <= 1e-14 / sigma;
         if steps == next_check || invariant || steps == max_steps {
             next_check = (steps + steps / 4).max(steps + 12).min(max_steps);
-            let (mu, y) = tridiagonal_eigen(&alpha, &beta);
+            let (mu, y) = tridiagonal_eigen(&alpha, &beta)?;
             let mu_max = mu.iter().copied().fold(0.0, f64::max);
             let converged = |i: usize| invariant || b * y[(steps - 1, i)].abs() <= 1e-10 * mu_max;
             // Largest μ first: λ increasing.
@@ -394,22 +394,26 @@ fn too_large(n: usize, steps: usize) -> Error {
 /// Every eigenpair of the symmetric tridiagonal matrix (diagonal `a`,
 /// off-diagonal `b`), by faer's dense solver: values, and vectors as
 /// columns.
-fn tridiagonal_eigen(a: &[f64], b: &[f64]) -> (Vec<f64>, Mat<f64>) {
+fn tridiagonal_eigen(a: &[f64], b: &[f64]) -> Result<(Vec<f64>, Mat<f64>), Error> {
     let k = a.len();
-    let t = Mat::<f64>::from_fn(k, k, |i, j| {
-        if i == j {
-            a[i]
-        } else if i + 1 == j {
-            b[i]
-        } else if j + 1 == i {
-            b[j]
-        } else {
-            0.0
-        }
-    });
-    match t.self_adjoint_eigen(Side::Lower) {
-        Ok(e) => ((0..k).map(|i| e.S()[i]).collect(), e.U().to_owned()),
-        Err(_) => (vec![0.0; k], Mat::zeros(k, k)),
+    let t = Mat::<f64>::from_fn(k, k, |i, j| tridiagonal_entry(a, b, i, j));
+    let e = t.self_adjoint_eigen(Side::Lower).map_err(|e| {
+        Error::numeric(format!("the Lanczos tridiagonal eigenproblem did not converge: {e:?}"))
+    })?;
+    Ok(((0..k).map(|i| e.S()[i]).collect(), e.U().to_owned()))
+}
+
+/// Entry (i, j) of the symmetric tridiagonal matrix with diagonal `a` and
+/// off-diagonal `b`.
+fn tridiagonal_entry(a: &[f64], b: &[f64], i: usize, j: usize) -> f64 {
+    if i == j {
+        a[i]
+    } else if i + 1 == j {
+        b[i]
+    } else if j + 1 == i {
+        b[j]
+    } else {
+        0.0
     }
 }
 
@@ -438,17 +442,7 @@ mod tests {
     fn sturm_count_and_bisection_agree_with_a_dense_solver() {
         let a = [2.0, -1.0, 0.5, 4.0, 3.0];
         let b = [1.0, 0.3, -2.0, 0.7];
-        let t = nalgebra::DMatrix::from_fn(5, 5, |i, j| {
-            if i == j {
-                a[i]
-            } else if i + 1 == j {
-                b[i]
-            } else if j + 1 == i {
-                b[j]
-            } else {
-                0.0
-            }
-        });
+        let t = nalgebra::DMatrix::from_fn(5, 5, |i, j| tridiagonal_entry(&a, &b, i, j));
         let mut e: Vec<f64> = t.symmetric_eigenvalues().iter().copied().collect();
         e.sort_by(f64::total_cmp);
         for (k, &x) in e.iter().enumerate() {
