@@ -66,6 +66,18 @@ pub(crate) fn add(a: &Q, b: &Q) -> Q {
     }
 }
 
+/// `num / den` in lowest terms for `den > 0`, reduced by Lehmer's gcd:
+/// the same as `Q::new(num, den)`.
+pub(crate) fn ratio(num: num_bigint::BigInt, den: num_bigint::BigInt) -> Q {
+    use num_traits::Zero;
+    debug_assert!(den > num_bigint::BigInt::zero());
+    if num.is_zero() {
+        return Q::zero();
+    }
+    let g = crate::arith::intgcd::gcd(&num, &den);
+    Q::new_raw(div_exact(&num, &g), div_exact(&den, &g))
+}
+
 fn div_exact(x: &num_bigint::BigInt, g: &num_bigint::BigInt) -> num_bigint::BigInt {
     use num_traits::One;
     if g.is_one() {
@@ -123,6 +135,10 @@ mod tests {
                 prop_assert_eq!(s.numer(), os.numer());
                 prop_assert_eq!(s.denom(), os.denom());
             }
+            let r = ratio(a.numer() * b.denom(), b.denom().clone());
+            let or = Q::new(a.numer() * b.denom(), b.denom().clone());
+            prop_assert_eq!(r.numer(), or.numer());
+            prop_assert_eq!(r.denom(), or.denom());
         }
     }
 }
