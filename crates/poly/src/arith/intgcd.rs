@@ -50,8 +50,8 @@ fn gcd_nat(a: &BigUint, b: &BigUint) -> BigUint {
         // 2^62 (Knuth), so sums fit an i64 and a product whose result fits
         // is exact in wrapping arithmetic.
         let shift = n - 62;
-        let mut x = (&a >> shift).to_i64().expect("62 bits");
-        let mut y = (&b >> shift).to_i64().expect("62 bits");
+        let mut x = top_bits(&a, shift);
+        let mut y = top_bits(&b, shift);
         let (mut ca, mut cb, mut cc, mut cd) = (1i64, 0i64, 0i64, 1i64);
         loop {
             if y + cc == 0 || y + cd == 0 {
@@ -84,6 +84,19 @@ fn gcd_nat(a: &BigUint, b: &BigUint) -> BigUint {
     let small = b.to_u64().expect("below 2^64");
     let r = (&a % &b).to_u64().expect("below 2^64");
     BigUint::from(gcd_u64(small, r))
+}
+
+/// `x >> shift` for an `x` below 2^(shift + 62), read from its limbs
+/// without building the shifted number (the same as `(x >> shift)`, which
+/// allocated on every Lehmer round).
+fn top_bits(x: &BigUint, shift: u64) -> i64 {
+    let (k, r) = ((shift / 64) as usize, shift % 64);
+    let mut limbs = x.iter_u64_digits().skip(k);
+    let lo = limbs.next().unwrap_or(0);
+    let hi = limbs.next().unwrap_or(0);
+    let v = if r == 0 { lo } else { (lo >> r) | (hi << (64 - r)) };
+    debug_assert!(v < 1 << 62);
+    v as i64
 }
 
 /// ca·a + cb·b for cofactors of opposite signs (or one zero) whose result
@@ -138,6 +151,12 @@ mod tests {
             let (a, b) = (big(&a, sa) * &f, big(&b, sb) * &f);
             prop_assert_eq!(gcd(&a, &b), a.gcd(&b));
             prop_assert_eq!(lcm(&a, &b), a.lcm(&b));
+            let m = a.magnitude();
+            for shift in [0, 1, 63, 64, 65, 127, 128] {
+                if m.bits() <= shift + 62 {
+                    prop_assert_eq!(top_bits(m, shift), (m >> shift).to_i64().unwrap());
+                }
+            }
         }
     }
 

@@ -10,3 +10,135 @@ pub fn q(num: i64, den: i64) -> Q {
     assert!(den != 0, "zero denominator");
     Q::new(num.into(), den.into())
 }
+
+/// `a * b`, reduced by Lehmer's gcd (`intgcd`) rather than num-rational's
+/// binary one: cross-cancel first (Knuth, TAOCP 2, §4.5.1), so the result
+/// is already in lowest terms. The same value and representation as
+/// `a * b` (the reduced form is unique); a property test checks it.
+pub(crate) fn mul(a: &Q, b: &Q) -> Q {
+    use crate::arith::intgcd::gcd;
+    use num_traits::{One, Zero};
+    if a.is_zero() || b.is_zero() {
+        return Q::zero();
+    }
+    if a.denom().is_one() && b.denom().is_one() {
+        return Q::from_integer(a.numer() * b.numer());
+    }
+    // gcd(a_n, a_d) = gcd(b_n, b_d) = 1, so dividing by g1 = gcd(a_n, b_d)
+    // and g2 = gcd(b_n, a_d) leaves numerator and denominator coprime; the
+    // denominators are positive, so is the result's.
+    let g1 = gcd(a.numer(), b.denom());
+    let g2 = gcd(b.numer(), a.denom());
+    let num = div_exact(a.numer(), &g1) * div_exact(b.numer(), &g2);
+    let den = div_exact(a.denom(), &g2) * div_exact(b.denom(), &g1);
+    Q::new_raw(num, den)
+}
+
+/// `a + b`, reduced as [`mul`] is: with g = gcd(a_d, b_d), the sum is
+/// t / (a_d/g · b_d) for t = a_n·(b_d/g) + b_n·(a_d/g), and only gcd(t, g)
+/// can remain (Knuth, TAOCP 2, §4.5.1).
+pub(crate) fn add(a: &Q, b: &Q) -> Q {
+    use crate::arith::intgcd::gcd;
+    use num_traits::{One, Zero};
+    if a.denom().is_one() && b.denom().is_one() {
+        return Q::from_integer(a.numer() + b.numer());
+    }
+    if a.is_zero() {
+        return b.clone();
+    }
+    if b.is_zero() {
+        return a.clone();
+    }
+    let g = gcd(a.denom(), b.denom());
+    if g.is_one() {
+        return Q::new_raw(a.numer() * b.denom() + b.numer() * a.denom(), a.denom() * b.denom());
+    }
+    let (ad, bd) = (div_exact(a.denom(), &g), div_exact(b.denom(), &g));
+    let t = a.numer() * &bd + b.numer() * &ad;
+    if t.is_zero() {
+        return Q::zero();
+    }
+    let g2 = gcd(&t, &g);
+    if g2.is_one() {
+        Q::new_raw(t, ad * b.denom())
+    } else {
+        Q::new_raw(div_exact(&t, &g2), ad * div_exact(b.denom(), &g2))
+    }
+}
+
+/// `num / den` in lowest terms for `den > 0`, reduced by Lehmer's gcd:
+/// the same as `Q::new(num, den)`.
+pub(crate) fn ratio(num: num_bigint::BigInt, den: num_bigint::BigInt) -> Q {
+    use num_traits::Zero;
+    debug_assert!(den > num_bigint::BigInt::zero());
+    if num.is_zero() {
+        return Q::zero();
+    }
+    let g = crate::arith::intgcd::gcd(&num, &den);
+    Q::new_raw(div_exact(&num, &g), div_exact(&den, &g))
+}
+
+fn div_exact(x: &num_bigint::BigInt, g: &num_bigint::BigInt) -> num_bigint::BigInt {
+    use num_traits::One;
+    if g.is_one() {
+        x.clone()
+    } else {
+        x / g
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use num_bigint::BigInt;
+    use proptest::prelude::*;
+
+    fn big(limbs: &[u64], negative: bool) -> BigInt {
+        let mut x = BigInt::from(0);
+        for &l in limbs {
+            x = (x << 64) + BigInt::from(l);
+        }
+        if negative {
+            -x
+        } else {
+            x
+        }
+    }
+
+    fn rational(n: &[u64], d: &[u64], f: &[u64], neg: bool) -> Q {
+        // A shared factor f on both sides, so the gcds are not always 1.
+        let f = big(f, false) + 1;
+        Q::new(big(n, neg) * &f, (big(d, false) + 1) * f)
+    }
+
+    proptest! {
+        /// The same value and representation as num-rational's own
+        /// product and sum (the slow oracle), on rationals of 0–4 limbs
+        /// with common factors, integers and zero included.
+        #[test]
+        fn fast_mul_and_add_match_num_rational(
+            an in proptest::collection::vec(any::<u64>(), 0..4),
+            ad in proptest::collection::vec(0..4u64, 0..3),
+            bn in proptest::collection::vec(any::<u64>(), 0..4),
+            bd in proptest::collection::vec(any::<u64>(), 0..4),
+            f in proptest::collection::vec(any::<u64>(), 0..2),
+            sa in any::<bool>(),
+            sb in any::<bool>(),
+        ) {
+            let a = rational(&an, &ad, &f, sa);
+            let b = rational(&bn, &bd, &f, sb);
+            for (x, y) in [(&a, &b), (&b, &a), (&a, &a), (&a, &-a.clone())] {
+                let (m, s) = (mul(x, y), add(x, y));
+                let (om, os) = (x * y, x + y);
+                prop_assert_eq!(m.numer(), om.numer());
+                prop_assert_eq!(m.denom(), om.denom());
+                prop_assert_eq!(s.numer(), os.numer());
+                prop_assert_eq!(s.denom(), os.denom());
+            }
+            let r = ratio(a.numer() * b.denom(), b.denom().clone());
+            let or = Q::new(a.numer() * b.denom(), b.denom().clone());
+            prop_assert_eq!(r.numer(), or.numer());
+            prop_assert_eq!(r.denom(), or.denom());
+        }
+    }
+}

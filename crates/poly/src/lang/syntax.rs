@@ -289,15 +289,14 @@ fn lex_number(chars: &[char]) -> Result<(Tok, usize), String> {
         ));
     }
     let mantissa: BigInt = format!("{digits}{frac}").parse().unwrap_or_else(|_| BigInt::zero());
-    let mut q = Q::from_integer(mantissa);
+    // mantissa · 10^scale, in integers and reduced once (by Lehmer's gcd).
     let scale = exp - frac.len() as i64;
-    let ten = Q::from_integer(BigInt::from(10));
-    let factor = num_traits::pow(ten, scale.unsigned_abs() as usize);
-    if scale >= 0 {
-        q *= factor;
+    let factor = num_traits::pow(BigInt::from(10), scale.unsigned_abs() as usize);
+    let q = if scale >= 0 {
+        Q::from_integer(mantissa * factor)
     } else {
-        q /= factor;
-    }
+        crate::arith::rational::ratio(mantissa, factor)
+    };
     if is_int {
         if let Ok(n) = digits.parse::<u32>() {
             return Ok((Tok::Int(n), i));

@@ -545,24 +545,22 @@ fn latex_name(name: &str) -> String {
     }
 }
 
-/// `a * b`. num-rational reduces every product by two gcds and four
-/// divisions; most coefficients here are integers, whose product needs none.
+/// `a * b`. num-rational reduces every product by two binary gcds (one
+/// shift of the whole number per bit); `arith::rational::mul` cross-cancels
+/// by Lehmer's gcd, and integers need none.
 #[inline]
 pub(crate) fn mul_q(a: &Q, b: &Q) -> Q {
-    if a.denom().is_one() && b.denom().is_one() {
-        Q::from_integer(a.numer() * b.numer())
-    } else {
-        a * b
-    }
+    crate::arith::rational::mul(a, b)
 }
 
-/// `*a += b`, skipping the gcd when both are integers.
+/// `*a += b`, skipping the gcd when both are integers, else by Lehmer's
+/// gcd (`arith::rational::add`).
 #[inline]
 pub(crate) fn add_assign_q(a: &mut Q, b: Q) {
     if a.denom().is_one() && b.denom().is_one() {
         *a = Q::from_integer(a.numer() + b.numer());
     } else {
-        *a += b;
+        *a = crate::arith::rational::add(a, &b);
     }
 }
 
