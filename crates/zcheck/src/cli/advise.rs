@@ -401,7 +401,9 @@ pub(crate) fn scene_text(name: &str, a: &advisor::SceneAdvice) -> String {
     };
     let stab = list(&|i| a.modes[i].limits_stability);
     let acc = list(&|i| a.modes[i].limits_accuracy);
-    let rest = a.modes.iter().filter(|m| !m.limits_stability && !m.limits_accuracy).count();
+    // Modes found, not the sparse route's samples.
+    let rest =
+        a.modes.iter().filter(|m| !m.sampled && !m.limits_stability && !m.limits_accuracy).count();
     out += &format!(
         "modes limiting stability: {}\n",
         if stab.is_empty() { "none".into() } else { stab.join(", ") }

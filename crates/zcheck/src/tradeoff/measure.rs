@@ -55,18 +55,10 @@ pub(crate) fn measure_ns_per_step_within(
     if let Ok(native) = crate::native::native_step(method, params) {
         let ones = vec![1.0; native.slots()];
         let mut slots = ones.clone();
-        return Ok(time_ns_per_step(
-            |n| {
-                let mut left = n;
-                while left > 0 {
-                    let k = left.min(CHUNK);
-                    native.advance(black_box(&mut slots), k);
-                    left -= k;
-                    renormalise(&mut slots, &ones);
-                }
-            },
-            budget,
-        ));
+        return Ok(time_chunked(budget, |k| {
+            native.advance(black_box(&mut slots), k);
+            renormalise(&mut slots, &ones);
+        }));
     }
     let step = Step::compile(method, params)?;
     // The cranelift step (feature `jit`), else the specialised interpreter:
@@ -80,18 +72,26 @@ pub(crate) fn measure_ns_per_step_within(
     let mut state = step.state(&ones);
     #[cfg(not(feature = "jit"))]
     let mut state = kernel.state(&ones);
-    Ok(time_ns_per_step(
+    Ok(time_chunked(budget, |k| {
+        kernel.advance(black_box(&mut state), k);
+        renormalise(state.slots_mut(), &ones);
+    }))
+}
+
+/// ns per step of `advance(k)` (k steps, then a renormalisation), run in
+/// chunks of at most [`CHUNK`] steps.
+fn time_chunked(budget: Duration, mut advance: impl FnMut(u64)) -> f64 {
+    time_ns_per_step(
         |n| {
             let mut left = n;
             while left > 0 {
                 let k = left.min(CHUNK);
-                kernel.advance(black_box(&mut state), k);
+                advance(k);
                 left -= k;
-                renormalise(state.slots_mut(), &ones);
             }
         },
         budget,
-    ))
+    )
 }
 
 /// Scales the state back to size 1 when it has grown or shrunk far, and
