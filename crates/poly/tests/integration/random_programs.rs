@@ -39,7 +39,14 @@ fn chi_at(chi: &Poly, phi: &Q) -> Vec<Q> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(40))]
+    // A fixed seed: a random one once drew a program whose exact check ran
+    // for over ten minutes (num-bigint's binary gcd in rational
+    // reductions on very large coefficients), past CI's budget.
+    #![proptest_config(ProptestConfig {
+        cases: 40,
+        rng_seed: proptest::test_runner::RngSeed::Fixed(1),
+        ..ProptestConfig::default()
+    })]
 
     #[test]
     fn random_programs_agree_with_jury_at_the_samples(src in program()) {
