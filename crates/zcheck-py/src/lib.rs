@@ -18,6 +18,11 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use zcheck::api::{self, LoadedMethod};
 
+/// The allocator of the `zcheck` binary (DESIGN.md, "Allocator"): the exact
+/// engine allocates and frees many small big integers.
+#[global_allocator]
+static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
 create_exception!(
     zcheck,
     Error,

@@ -14,6 +14,10 @@ use std::path::Path;
 use criterion::{criterion_group, criterion_main, Criterion};
 use zcheck::load::LoadedMethod;
 
+/// The `zcheck` binary's allocator, so the figures are the command's.
+#[global_allocator]
+static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
 fn files(kind: &str) -> Vec<String> {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/nodepy").join(kind);
     let mut v: Vec<String> = std::fs::read_dir(dir)

@@ -148,7 +148,7 @@ pub(crate) fn closed_form_hint(decimal: &str) -> Option<String> {
     let x: f64 = decimal.parse().ok().filter(|x: &f64| x.is_finite() && *x != 0.0)?;
     let close = |y: f64| (x - y).abs() <= 1e-12 * x.abs().max(1.0);
     for q in 1..=1000i64 {
-        let p = (x * q as f64).round();
+        let p = nearest(x * q as f64);
         if close(p / q as f64) {
             // Exactly p/q already (a decimal like 0.1234567890 is itself).
             if decimal_is(decimal, p as i64, q) {
@@ -173,7 +173,7 @@ pub(crate) fn closed_form_hint(decimal: &str) -> Option<String> {
             for (n, root) in SQUAREFREE.into_iter().zip(roots) {
                 let mut best: Option<(i64, i64)> = None;
                 for sign in [1i64, -1] {
-                    let a = (k as f64 * x - (sign * b) as f64 * root).round();
+                    let a = nearest(k as f64 * x - (sign * b) as f64 * root);
                     if !(-12.0..=12.0).contains(&a) {
                         continue;
                     }
@@ -190,6 +190,20 @@ pub(crate) fn closed_form_hint(decimal: &str) -> Option<String> {
         }
     }
     None
+}
+
+/// `v.round()` without the call into libm (the search's hot loop): below
+/// 2^38, adding and subtracting 1.5·2^52 rounds to the nearest integer.
+/// That rounds halves to even where `round` rounds them away from zero,
+/// but below 2^38 a half is never within the search's tolerance of a
+/// candidate (0.5/q > 1e-12·|x| there), so no answer changes.
+fn nearest(v: f64) -> f64 {
+    const MAGIC: f64 = 6_755_399_441_055_744.0;
+    if v.abs() < (1u64 << 38) as f64 {
+        (v + MAGIC) - MAGIC
+    } else {
+        v.round()
+    }
 }
 
 const SQUAREFREE: [i64; 15] = [2, 3, 5, 6, 7, 10, 11, 13, 14, 15, 17, 19, 21, 22, 23];
@@ -246,6 +260,22 @@ fn surd(a: i64, b: i64, n: i64, k: i64) -> String {
 #[cfg(test)]
 mod tests {
     use super::closed_form_hint;
+
+    /// The fast rounding is `round` wherever the value is not a half.
+    #[test]
+    fn nearest_is_round_off_the_halves() {
+        let mut v = 0.001f64;
+        while v < (1u64 << 40) as f64 {
+            for x in [v, -v, v + 0.5, v * 1.000_000_1, -(v * 0.999_999_3)] {
+                if x.fract().abs() != 0.5 {
+                    assert_eq!(super::nearest(x), x.round(), "{x}");
+                }
+            }
+            v *= 1.37;
+        }
+        assert_eq!(super::nearest(2.5), 2.0);
+        assert_eq!(super::nearest((1u64 << 39) as f64 + 0.5), ((1u64 << 39) as f64 + 0.5).round());
+    }
 
     /// The shortcut of the surd search finds what the whole search finds:
     /// on surds themselves, near them, and on numbers that are none.

@@ -20,7 +20,13 @@ use num_traits::{Signed, ToPrimitive, Zero};
 
 /// gcd(a, b) ≥ 0 (gcd(0, 0) = 0), as num-integer defines it.
 pub(crate) fn gcd(a: &BigInt, b: &BigInt) -> BigInt {
-    BigInt::from_biguint(Sign::Plus, gcd_nat(a.magnitude(), b.magnitude()))
+    let (ma, mb) = (a.magnitude(), b.magnitude());
+    // Most gcds of the analysis are of words (denominators such as 576 or
+    // 6561): no copy of either number.
+    if let (Some(x), Some(y)) = (ma.to_u64(), mb.to_u64()) {
+        return BigInt::from(gcd_u64(x, y));
+    }
+    BigInt::from_biguint(Sign::Plus, gcd_nat(ma, mb))
 }
 
 /// lcm(a, b) ≥ 0 (zero when either is zero).
@@ -33,7 +39,15 @@ pub(crate) fn lcm(a: &BigInt, b: &BigInt) -> BigInt {
 }
 
 fn gcd_nat(a: &BigUint, b: &BigUint) -> BigUint {
-    let (mut a, mut b) = if a >= b { (a.clone(), b.clone()) } else { (b.clone(), a.clone()) };
+    let (a, b) = if a >= b { (a, b) } else { (b, a) };
+    // A word against a big number: one remainder by the word, no copy.
+    if let Some(small) = b.to_u64() {
+        if small == 0 {
+            return a.clone();
+        }
+        return BigUint::from(gcd_u64(small, (a % small).to_u64().expect("below 2^64")));
+    }
+    let (mut a, mut b) = (a.clone(), b.clone());
     // a ≥ b throughout.
     while b.bits() > 64 {
         let n = a.bits();
@@ -110,11 +124,23 @@ fn combine(a: &BigUint, ca: i64, b: &BigUint, cb: i64) -> BigUint {
     }
 }
 
+/// Stein's binary gcd on words: shifts and subtractions, no division.
 fn gcd_u64(mut a: u64, mut b: u64) -> u64 {
-    while b != 0 {
-        (a, b) = (b, a % b);
+    if a == 0 || b == 0 {
+        return a | b;
     }
-    a
+    let shift = (a | b).trailing_zeros();
+    a >>= a.trailing_zeros();
+    loop {
+        b >>= b.trailing_zeros();
+        if a > b {
+            std::mem::swap(&mut a, &mut b);
+        }
+        b -= a;
+        if b == 0 {
+            return a << shift;
+        }
+    }
 }
 
 #[cfg(test)]
@@ -157,6 +183,24 @@ mod tests {
                     prop_assert_eq!(top_bits(m, shift), (m >> shift).to_i64().unwrap());
                 }
             }
+        }
+    }
+
+    proptest! {
+        /// Stein's word gcd is Euclid's, common powers of two included.
+        #[test]
+        fn word_gcd_matches_euclid(a in any::<u64>(), b in any::<u64>(), k in 0u32..40) {
+            let euclid = |mut x: u64, mut y: u64| {
+                while y != 0 {
+                    (x, y) = (y, x % y);
+                }
+                x
+            };
+            let (a, b) = (a >> k, b >> (k / 2));
+            prop_assert_eq!(gcd_u64(a, b), euclid(a, b));
+            prop_assert_eq!(gcd_u64(a << (k % 8), b << (k % 8)), euclid(a << (k % 8), b << (k % 8)));
+            prop_assert_eq!(gcd_u64(0, b), b);
+            prop_assert_eq!(gcd_u64(a, 0), a);
         }
     }
 

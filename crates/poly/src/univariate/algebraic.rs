@@ -915,21 +915,26 @@ fn quadratic_form(centre: &Q, radicand: &Q, plus: bool) -> String {
 /// trial division up to 10⁵ can tell); requires q ≥ 0.
 fn sqrt_parts(q: &Q) -> (Q, BigInt) {
     let n = q.numer() * q.denom();
-    let mut rest = n.abs();
+    let mut rest = n.magnitude().clone();
     let mut out = BigInt::one();
-    let mut p = BigInt::from(2);
     // Large radicands (a float-derived method's 60-digit coefficients) are
     // searched for square factors up to 10³ only: the form stays exact, if
     // less reduced, and printing it no longer costs milliseconds.
-    let bound = BigInt::from(if rest.bits() > 256 { 1_000 } else { 100_000 });
-    while &p * &p <= rest && p < bound {
-        let pp = &p * &p;
-        while (&rest % &pp).is_zero() {
-            rest /= &pp;
-            out *= &p;
+    let bound: u64 = if rest.bits() > 256 { 1_000 } else { 100_000 };
+    // Primes only: a composite's square never divides once its primes'
+    // squares are out ([`sqrt_parts_by_trial`] is the oracle), and each test
+    // is a remainder by a word.
+    for &p in small_primes().iter().take_while(|&&p| p < bound) {
+        let pp = p * p;
+        if num_traits::ToPrimitive::to_u64(&rest).is_some_and(|r| r < pp) {
+            break;
         }
-        p += BigInt::one();
+        while (&rest % pp).is_zero() {
+            rest /= pp;
+            out *= p;
+        }
     }
+    let mut rest = BigInt::from(rest);
     // A large remaining square (beyond trial division) still simplifies.
     let s = rest.sqrt();
     if &s * &s == rest {
@@ -937,6 +942,25 @@ fn sqrt_parts(q: &Q) -> (Q, BigInt) {
         rest = BigInt::one();
     }
     (Q::new(out, q.denom().clone()), rest)
+}
+
+/// The primes below 10⁵ (a sieve, once).
+fn small_primes() -> &'static [u64] {
+    static PRIMES: std::sync::OnceLock<Vec<u64>> = std::sync::OnceLock::new();
+    PRIMES.get_or_init(|| {
+        const N: usize = 100_000;
+        let mut composite = vec![false; N];
+        let mut primes = Vec::new();
+        for p in 2..N {
+            if !composite[p] {
+                primes.push(p as u64);
+                for m in (p * p..N).step_by(p) {
+                    composite[m] = true;
+                }
+            }
+        }
+        primes
+    })
 }
 
 /// `q` rounded to `digits` decimals, half away from zero.
@@ -1079,6 +1103,47 @@ impl From<Q> for Algebraic {
 mod tests {
     use super::*;
     use proptest::prelude::*;
+
+    /// The slow, obvious oracle of [`sqrt_parts`]: trial division by every
+    /// integer below the bound.
+    fn sqrt_parts_by_trial(q: &Q) -> (Q, BigInt) {
+        let n = q.numer() * q.denom();
+        let mut rest = n.abs();
+        let mut out = BigInt::one();
+        let mut p = BigInt::from(2);
+        let bound = BigInt::from(if rest.bits() > 256 { 1_000 } else { 100_000 });
+        while &p * &p <= rest && p < bound {
+            let pp = &p * &p;
+            while (&rest % &pp).is_zero() {
+                rest /= &pp;
+                out *= &p;
+            }
+            p += BigInt::one();
+        }
+        let s = rest.sqrt();
+        if &s * &s == rest {
+            out *= s;
+            rest = BigInt::one();
+        }
+        (Q::new(out, q.denom().clone()), rest)
+    }
+
+    proptest! {
+        /// Square factors found over the primes are those found over every
+        /// integer: radicands with square factors of small primes, of
+        /// composites, of a prime near the bound, and a large square.
+        #[test]
+        fn sqrt_parts_matches_trial_division(
+            a in 0u64..1_000_000,
+            b in 1u64..10_000,
+            f in prop::sample::select(vec![1u64, 4, 36, 49 * 49, 99_991 * 99_991, 1_000_003 * 1_000_003]),
+            big in 0u32..3,
+        ) {
+            let scale = BigInt::from(10).pow(big * 40);
+            let q = Q::new(BigInt::from(a) * BigInt::from(f) * &scale * &scale, BigInt::from(b));
+            prop_assert_eq!(sqrt_parts(&q), sqrt_parts_by_trial(&q));
+        }
+    }
 
     /// The obvious search: the least denominator d with a fraction in
     /// (l, r), and for it the least numerator.

@@ -154,12 +154,18 @@ impl UPoly {
         if r.len() <= dd {
             return (UPoly::zero(), self.clone());
         }
+        // Products and sums reduced by Lehmer's gcd (`arith::rational`),
+        // not num-rational's binary one.
+        use crate::arith::rational::{add, mul};
+        let minus: Vec<Q> = d.c.iter().map(|c| -c).collect();
         let mut q = vec![Q::zero(); r.len() - dd];
         for k in (0..q.len()).rev() {
-            let f = &r[k + dd] * &lead_inv;
+            let f = mul(&r[k + dd], &lead_inv);
             if !f.is_zero() {
-                for (j, dc) in d.c.iter().enumerate() {
-                    r[k + j] -= &f * dc;
+                for (j, dc) in minus.iter().enumerate() {
+                    if !dc.is_zero() {
+                        r[k + j] = add(&r[k + j], &mul(&f, dc));
+                    }
                 }
             }
             q[k] = f;

@@ -80,11 +80,13 @@ fn along(chi: &Poly, d: (&Q, &Q)) -> (Poly, Poly) {
 /// c(Φ·d) for c over Q in w, as A + iB in Φ.
 fn along_rational(c: &UPoly, d: (&Q, &Q)) -> (UPoly, UPoly) {
     let (mut re, mut im) = (Vec::new(), Vec::new());
+    // Products and sums reduced by Lehmer's gcd (`arith::rational`).
+    use crate::arith::rational::{add, mul};
     let (mut pr, mut pi) = (Q::one(), Q::zero());
     for ck in c.coeffs() {
-        re.push(ck * &pr);
-        im.push(ck * &pi);
-        let next = (&pr * d.0 - &pi * d.1, &pr * d.1 + &pi * d.0);
+        re.push(mul(ck, &pr));
+        im.push(mul(ck, &pi));
+        let next = (add(&mul(&pr, d.0), &-mul(&pi, d.1)), add(&mul(&pr, d.1), &mul(&pi, d.0)));
         (pr, pi) = next;
     }
     (UPoly::new(re), UPoly::new(im))
