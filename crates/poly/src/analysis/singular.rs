@@ -16,7 +16,7 @@ impl Derivation {
         if u.degree().unwrap_or(0) == 0 {
             return Vec::new();
         }
-        let roots = Algebraic::positive_roots(&u.squarefree());
+        let roots = Algebraic::positive_roots(&u);
         if !field::has_generators(den) {
             return roots;
         }

@@ -82,7 +82,7 @@ pub(crate) fn rational_roots(f: &[BigInt]) -> Option<Vec<Q>> {
     // bits) than the residues modulo a prime near 1000 (SDIRK34's A(α)
     // candidates: 1 root against 3).
     if let Some((p, roots)) = m.readable {
-        return Some(lift(f, BigInt::from(p), roots, &bound));
+        return Some(lift_early(f, BigInt::from(p), roots, &bound));
     }
     // Else roots modulo primes near 1000, found by trying every residue.
     'prime: for p in PRIMES {
@@ -108,6 +108,62 @@ pub(crate) fn rational_roots(f: &[BigInt]) -> Option<Vec<Q>> {
     None
 }
 
+/// [`lift`], watching for roots of small height on the way up: once a
+/// lifted root reconstructs, at the modulus reached, to some a/b that is a
+/// root of f, that residue's root is found (the lift of a simple root is
+/// unique), and the rest are the rational roots of f/(bx − a), asked anew
+/// (usually a prime without roots then proves there are none, where the
+/// other residues would have been lifted to the full bound). SDIRK34's
+/// A(α) candidates: y = −1 found at 2^80 instead of a lift to 2^5120.
+/// The answer is [`lift`]'s, the complete set of rational roots either way
+/// (a property test compares them).
+fn lift_early(f: &[BigInt], p: BigInt, roots: Vec<u64>, bound: &BigInt) -> Vec<Q> {
+    let (lead, c0) = (f.last().expect("degree ≥ 1"), &f[0]);
+    let ip = crate::univariate::sturm::IntPoly::from_ints(f.to_vec());
+    let mut modulus = p.clone();
+    let mut lifted = start(f, &roots, &modulus);
+    while modulus <= *bound {
+        modulus = &modulus * &modulus;
+        for (r, inv) in &mut lifted {
+            (*r, *inv) = newton_step(f, r, inv, &modulus);
+        }
+        // Heights up to √m/2 reconstruct uniquely at m; the rational root
+        // theorem (b | f_n, a | f_0) filters before the exact check.
+        let half = (&modulus >> 2u32).sqrt();
+        let small = lifted.iter().find_map(|(r, _)| {
+            let (a, b) = reconstruct(r, &modulus, &half, &half)?;
+            let divides = !a.is_zero() && (lead % &b).is_zero() && (c0 % &a).is_zero();
+            let x = Q::new(a, b);
+            (divides && ip.sign_at(&x).is_eq()).then_some(x)
+        });
+        if let Some(x) = small {
+            let rest = crate::univariate::upoly::divide_linear(f, &x);
+            let others = if rest.len() <= 1 { Some(Vec::new()) } else { rational_roots(&rest) };
+            if let Some(mut others) = others {
+                others.push(x);
+                others.sort();
+                others.dedup();
+                return others;
+            }
+            break;
+        }
+    }
+    lift(f, p, roots, bound)
+}
+
+/// Each root with 1/f′(root) modulo the prime.
+fn start(f: &[BigInt], roots: &[u64], modulus: &BigInt) -> Vec<(BigInt, BigInt)> {
+    roots
+        .iter()
+        .map(|&r| {
+            let r = BigInt::from(r);
+            let (_, d) = value_and_slope(f, &r, modulus);
+            let inv = d.modinv(modulus).expect("a simple root: f′(r) is a unit");
+            (r, inv)
+        })
+        .collect()
+}
+
 /// The rational roots of f among the lifts of `roots`, simple roots of f
 /// modulo the prime p: Newton's iteration to a modulus above `bound`
 /// (2·|f_0|·|f_n|), rational reconstruction, and an exact check of each.
@@ -118,15 +174,7 @@ fn lift(f: &[BigInt], p: BigInt, roots: Vec<u64>, bound: &BigInt) -> Vec<Q> {
     // Each root with 1/f′(root) modulo the current modulus, carried along
     // by Newton's iteration for the inverse (no inversion modulo a large
     // power: on coefficients of thousands of bits that was most of a lift).
-    let mut lifted: Vec<(BigInt, BigInt)> = roots
-        .into_iter()
-        .map(|r| {
-            let r = BigInt::from(r);
-            let (_, d) = value_and_slope(f, &r, &modulus);
-            let inv = d.modinv(&modulus).expect("a simple root: f′(r) is a unit");
-            (r, inv)
-        })
-        .collect();
+    let mut lifted = start(f, &roots, &modulus);
     while modulus <= *bound {
         modulus = &modulus * &modulus;
         for (r, inv) in &mut lifted {
@@ -243,6 +291,39 @@ mod tests {
                     let u = crate::UPoly::from_ints(&f);
                     prop_assert!(u.gcd(&u.derivative()).degree().unwrap_or(0) > 0);
                 }
+            }
+        }
+    }
+
+    proptest! {
+        /// Lifting with an early stop at a root of small height finds what
+        /// lifting every residue to the full bound finds: products of small
+        /// linear factors and a cofactor with coefficients of 100-400 bits
+        /// (no root modulo the prime is then rare, so both lift).
+        #[test]
+        fn early_lift_finds_what_the_full_lift_finds(
+            linear in proptest::collection::vec((-9i64..=9, 1i64..=6), 0..3),
+            cofactor in proptest::collection::vec(any::<i64>(), 2..6),
+            bits in 1u32..6,
+        ) {
+            let scale = BigInt::one() << (64 * bits);
+            let mut f: Vec<BigInt> =
+                cofactor.iter().map(|&c| BigInt::from(c) * &scale + BigInt::from(c % 97)).collect();
+            prop_assume!(!f[0].is_zero() && !f.last().unwrap().is_zero());
+            for (a, b) in &linear {
+                prop_assume!(*a != 0);
+                let mut g = vec![BigInt::zero(); f.len() + 1];
+                for (k, c) in f.iter().enumerate() {
+                    g[k] -= c * a;
+                    g[k + 1] += c * b;
+                }
+                f = g;
+            }
+            let m = crate::arith::zp::mod_roots(&f, false);
+            if let Some((p, roots)) = m.readable {
+                let bound: BigInt = (f[0].abs() * f.last().unwrap().abs()) << 1;
+                let early = lift_early(&f, BigInt::from(p), roots.clone(), &bound);
+                prop_assert_eq!(early, lift(&f, BigInt::from(p), roots, &bound));
             }
         }
     }

@@ -92,6 +92,25 @@ fn along_rational(c: &UPoly, d: (&Q, &Q)) -> (UPoly, UPoly) {
     (UPoly::new(re), UPoly::new(im))
 }
 
+/// The polynomials multiplied by the lcm of all their denominators, so
+/// that every coefficient is an integer.
+fn integer_multiples<const N: usize>(ps: [UPoly; N]) -> [UPoly; N] {
+    let mut lcm = num_bigint::BigInt::one();
+    for c in ps.iter().flat_map(|p| p.coeffs()) {
+        if !c.denom().is_one() {
+            lcm = crate::arith::intgcd::lcm(&lcm, c.denom());
+        }
+    }
+    if lcm.is_one() {
+        return ps;
+    }
+    ps.map(|p| {
+        UPoly::new(
+            p.coeffs().iter().map(|c| Q::from_integer(c.numer() * (&lcm / c.denom()))).collect(),
+        )
+    })
+}
+
 /// The polynomial in z and Φ whose roots over Φ > 0 are those of χ along
 /// the ray w = Φ·d and their conjugates (A itself on the real axis).
 pub(crate) fn ray_poly(chi: &Poly, d: (&Q, &Q)) -> Poly {
@@ -136,6 +155,10 @@ fn limit_one_step(chi: &Poly, d: (&Q, &Q)) -> Result<Option<Algebraic>, Error> {
         (Some(c0), Some(c1)) => {
             let (a0, b0) = along_rational(&c0, d);
             let (a1, b1) = along_rational(&c1, d);
+            // Scaled by one positive integer L to integer coefficients: E
+            // becomes L²·E (the same roots and signs), and the products and
+            // sums below need no reductions.
+            let [a0, b0, a1, b1] = integer_multiples([a0, b0, a1, b1]);
             let up = |u: UPoly| Poly::from_upoly(phi, &u);
             (up(a0), up(b0), up(a1), up(b1))
         }
@@ -169,7 +192,7 @@ fn limit_one_step(chi: &Poly, d: (&Q, &Q)) -> Result<Option<Algebraic>, Error> {
             )
         })?;
         if !u.is_zero() {
-            roots.extend(Algebraic::positive_roots(&u.squarefree()));
+            roots.extend(Algebraic::positive_roots(&u));
         }
     }
     roots.sort_by(|a, b| a.partial_cmp(b).unwrap_or(Ordering::Equal));
@@ -329,7 +352,7 @@ fn candidate_slopes(chi: &Poly) -> Result<Vec<Algebraic>, Error> {
         if u.degree().unwrap_or(0) == 0 {
             continue;
         }
-        out.extend(Algebraic::positive_roots(&u.squarefree()));
+        out.extend(Algebraic::positive_roots(&u));
     }
     out.sort_by(|a, b| a.partial_cmp(b).unwrap_or(Ordering::Equal));
     out.dedup();
