@@ -133,7 +133,8 @@ fn lift_early(f: &[BigInt], p: BigInt, roots: Vec<u64>, bound: &BigInt) -> Vec<Q
         let small = lifted.iter().find_map(|(r, _)| {
             let (a, b) = reconstruct(r, &modulus, &half, &half)?;
             let divides = !a.is_zero() && (lead % &b).is_zero() && (c0 % &a).is_zero();
-            let x = Q::new(a, b);
+            // In lowest terms with b > 0 already (`reconstruct`).
+            let x = Q::new_raw(a, b);
             (divides && ip.sign_at(&x).is_eq()).then_some(x)
         });
         if let Some(x) = small {
@@ -184,7 +185,8 @@ fn lift(f: &[BigInt], p: BigInt, roots: Vec<u64>, bound: &BigInt) -> Vec<Q> {
     let mut out: Vec<Q> = lifted
         .iter()
         .filter_map(|(r, _)| reconstruct(r, &modulus, &c0.abs(), &lead.abs()))
-        .map(|(a, b)| Q::new(a, b))
+        // In lowest terms with b > 0 already (`reconstruct`).
+        .map(|(a, b)| Q::new_raw(a, b))
         .filter(|x| ip.sign_at(x).is_eq())
         .collect();
     out.sort();
@@ -225,7 +227,7 @@ fn reconstruct(r: &BigInt, m: &BigInt, n_max: &BigInt, d_max: &BigInt) -> Option
         (t0, t1) = (t1.clone(), &t0 - &q * &t1);
     }
     let (a, b) = if t1.is_negative() { (-r1, -t1) } else { (r1, t1) };
-    (!b.is_zero() && b <= *d_max && a.gcd(&b).is_one()).then_some((a, b))
+    (!b.is_zero() && b <= *d_max && crate::arith::intgcd::gcd(&a, &b).is_one()).then_some((a, b))
 }
 
 #[cfg(test)]

@@ -346,10 +346,17 @@ pub fn root_bound(p: &UPoly) -> Q {
             largest = Some(x);
         }
     }
-    let bound = largest.map_or_else(Q::zero, |m| m.abs() / p.leading().abs()) + Q::one();
-    // The least 2^e > bound: 2^e is an integer, so 2^e > ⌊bound⌋ suffices,
-    // e = bits(⌊bound⌋) (bound ≥ 1).
-    Q::from_integer(BigInt::one() << bound.floor().to_integer().bits())
+    // bound = |m|/|lead| + 1, and the least 2^e > bound: 2^e is an integer,
+    // so 2^e > ⌊bound⌋ suffices, e = bits(⌊bound⌋) (bound ≥ 1). The floor
+    // by one integer division of positive numbers (no gcd).
+    let lead = p.leading();
+    let floor = match largest {
+        None => BigInt::one(),
+        Some(m) => {
+            (m.numer().abs() * lead.denom()) / (m.denom() * lead.numer().abs()) + BigInt::one()
+        }
+    };
+    Q::from_integer(BigInt::one() << floor.bits())
 }
 
 /// g(x) ↦ g(x + 1) in place (coefficients lowest first), by repeated

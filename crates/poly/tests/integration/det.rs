@@ -42,6 +42,22 @@ proptest! {
         prop_assert_eq!(charpoly_from_berkowitz(&a), a.char_matrix(&Poly::sym(Sym::z())).det_laplace());
     }
 
+    /// Triangular matrices (a diagonally implicit step's system) take the
+    /// product of the diagonal; Laplace expands them in full.
+    #[test]
+    fn triangular_matrices_match_laplace(a in sized_matrix(6), lower in any::<bool>()) {
+        let n = a.rows();
+        let rows = (0..n)
+            .map(|i| {
+                (0..n)
+                    .map(|j| if (lower && j > i) || (!lower && j < i) { Poly::zero() } else { a[(i, j)].clone() })
+                    .collect()
+            })
+            .collect();
+        let t = PolyMatrix::from_rows(rows);
+        prop_assert_eq!(t.det(), t.det_laplace());
+    }
+
     #[test]
     fn transposing_keeps_the_determinant(a in sized_matrix(5)) {
         prop_assert_eq!(transpose(&a).det(), a.det());
