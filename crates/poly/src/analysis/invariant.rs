@@ -67,7 +67,7 @@ pub fn conserved_forms(p: &[Vec<Q>]) -> Vec<Vec<Vec<Q>>> {
     for col in 0..m {
         let Some(k) = (r..rows.len()).find(|&k| !rows[k][col].is_zero()) else { continue };
         rows.swap(r, k);
-        let inv = Q::one() / &rows[r][col];
+        let inv = rows[r][col].recip();
         for x in rows[r].iter_mut() {
             *x *= &inv;
         }
@@ -113,7 +113,7 @@ pub fn conserved_form(p: &[Vec<Q>]) -> Result<Vec<Vec<Q>>, NoForm> {
             let n = q.len();
             let scale = (0..n).map(|i| q[i][i].clone()).find(|d| !d.is_zero());
             if let Some(s) = scale {
-                let inv = Q::one() / s;
+                let inv = s.recip();
                 q.iter_mut().flatten().for_each(|x| *x *= &inv);
             }
             Ok(q)

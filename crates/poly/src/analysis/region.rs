@@ -381,7 +381,7 @@ fn primitive(p: &Poly) -> Poly {
     if first.is_negative() {
         content = -content;
     }
-    p.scale(&(Q::one() / content))
+    p.scale(&content.recip())
 }
 
 /// A rational strictly between two distinct algebraic numbers `lo < hi`.

@@ -113,7 +113,7 @@ impl Series {
         if self.c[0].is_zero() {
             return None;
         }
-        let inv0 = Q::one() / &self.c[0];
+        let inv0 = self.c[0].recip();
         let mut r = vec![inv0.clone()];
         for k in 1..=self.order() {
             let mut s = Q::zero();
@@ -368,7 +368,7 @@ pub fn psi_series_scaled(charpoly: &Poly, order: usize) -> Result<(Q, Vec<Q>), S
     let g = q.sub(&p.mul(&p)).shift_down(v).expect("valuation v");
     // √g = √d · √(g/d·...): split g(0) = d·r² with d square-free, r rational.
     let (d, r) = split_square(&g.coeff(0));
-    let sqrt_g = g.scale(&(Q::one() / &d)).sqrt().expect("g(0)/d is a rational square");
+    let sqrt_g = g.scale(&d.recip()).sqrt().expect("g(0)/d is a rational square");
     debug_assert_eq!(sqrt_g.coeff(0), r);
     // tan Ψ = Φ^m √d √(g/d) / p. With t = Φ^m √(g/d) / p (rational), atan
     // of √d·t is √d · Σ (−d)^k t^{2k+1}/(2k+1): a rational series times √d.

@@ -942,7 +942,7 @@ impl Lowerer<'_> {
                                 "division by zero: expected a nonzero constant divisor",
                             ));
                         }
-                        Ok(a.scale(&Poly::constant(crate::Q::from_integer(1.into()) / c)))
+                        Ok(a.scale(&Poly::constant(c.recip())))
                     }
                 }
             }

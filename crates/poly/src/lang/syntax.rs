@@ -811,7 +811,7 @@ fn to_poly(e: &Expr) -> Result<crate::Poly, Error> {
                 BinOp::Sub => a - b,
                 BinOp::Mul => a * b,
                 BinOp::Div => match b.as_constant() {
-                    Some(c) if !c.is_zero() => a.scale(&(Q::from_integer(1.into()) / c)),
+                    Some(c) if !c.is_zero() => a.scale(&c.recip()),
                     _ => {
                         return Err(Error::new(
                             ErrorKind::BadDivision,

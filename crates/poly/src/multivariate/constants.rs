@@ -266,7 +266,7 @@ pub fn inverse(a: &Poly) -> Option<Poly> {
         return None;
     }
     if gens.is_empty() {
-        return Some(Poly::constant(Q::one() / a.as_constant()?));
+        return Some(Poly::constant(a.as_constant()?.recip()));
     }
     let mat = multiplication_matrix(a, &gens);
     let n = mat.rows();
@@ -282,7 +282,7 @@ pub fn inverse(a: &Poly) -> Option<Poly> {
     for col in 0..n {
         let piv = (col..n).find(|&r| !rows[r][col].is_zero())?;
         rows.swap(col, piv);
-        let inv = Q::one() / rows[col][col].clone();
+        let inv = rows[col][col].recip();
         for x in rows[col].iter_mut() {
             *x *= inv.clone();
         }

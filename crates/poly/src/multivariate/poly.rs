@@ -332,7 +332,7 @@ impl Poly {
     pub(crate) fn div_exact(&self, d: &Poly) -> Option<Poly> {
         let (dm, dc) = d.leading_term()?;
         if let Some(c) = d.constant_ref() {
-            return Some(self.times_constant(&(Q::one() / c)));
+            return Some(self.times_constant(&c.recip()));
         }
         let mut rest = self.clone();
         let mut quotient = Poly::zero();

@@ -63,7 +63,7 @@ impl Field {
         }
         // r0 is a non-zero constant.
         let c = r0.coeff(0);
-        self.reduce(&s0.scale(&(Q::one() / c)))
+        self.reduce(&s0.scale(&c.recip()))
     }
 
     pub fn trim(&self, mut f: FPoly) -> FPoly {

@@ -82,7 +82,9 @@ pub(crate) fn rational_roots(f: &[BigInt]) -> Option<Vec<Q>> {
     // bits) than the residues modulo a prime near 1000 (SDIRK34's A(α)
     // candidates: 1 root against 3).
     if let Some((p, roots)) = m.readable {
-        return Some(lift_early(f, BigInt::from(p), roots, &bound));
+        // Small bounds are reached in a few Newton steps: no early stops.
+        let p = BigInt::from(p);
+        return Some(if small { lift(f, p, roots, &bound) } else { lift_early(f, p, roots, &bound) });
     }
     // Else roots modulo primes near 1000, found by trying every residue.
     'prime: for p in PRIMES {

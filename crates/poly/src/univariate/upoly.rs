@@ -149,7 +149,7 @@ impl UPoly {
     pub fn div_rem(&self, d: &UPoly) -> (UPoly, UPoly) {
         assert!(!d.is_zero(), "UPoly::div_rem by the zero polynomial");
         let dd = d.c.len() - 1;
-        let lead_inv = Q::one() / d.leading();
+        let lead_inv = d.leading().recip();
         let mut r = self.c.clone();
         if r.len() <= dd {
             return (UPoly::zero(), self.clone());

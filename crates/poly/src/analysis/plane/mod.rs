@@ -250,14 +250,14 @@ pub fn rho_at_infinity(chi: &Poly, t: Sym) -> Result<Option<Algebraic>, Error> {
 /// and the image of an isolating interval that excludes 0.
 fn reciprocal(a: &Algebraic) -> Algebraic {
     if let Some(r) = a.as_rational() {
-        return Algebraic::from_rational(Q::one() / r);
+        return Algebraic::from_rational(r.recip());
     }
     let mut width = Q::new(1.into(), 16.into());
     loop {
         let (lo, hi) = a.refine(&width).interval();
         if lo > Q::zero() {
             let p = a.defining_poly().reversed();
-            if let Some(r) = Algebraic::from_isolating(&p, &(Q::one() / &hi), &(Q::one() / &lo)) {
+            if let Some(r) = Algebraic::from_isolating(&p, &hi.recip(), &lo.recip()) {
                 return r;
             }
         }

@@ -205,7 +205,7 @@ pub(crate) fn inverse_factorial(n: usize) -> Q {
     for k in 2..=n {
         f *= Q::from_integer((k as i64).into());
     }
-    Q::one() / f
+    f.recip()
 }
 
 #[cfg(test)]

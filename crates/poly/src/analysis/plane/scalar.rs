@@ -276,6 +276,6 @@ fn primitive_rational(chi: &Poly) -> Poly {
     let lead = parts.last().cloned().unwrap_or_else(crate::UPoly::zero);
     let low = lead.coeffs().iter().find(|c| !c.is_zero()).cloned().unwrap_or_else(Q::one);
     let parts: Vec<Poly> =
-        parts.iter().map(|c| Poly::from_upoly(w, &c.scale(&(Q::one() / &low)))).collect();
+        parts.iter().map(|c| Poly::from_upoly(w, &c.scale(&low.recip()))).collect();
     Poly::from_coeffs_in(z, &parts)
 }

@@ -173,7 +173,7 @@ pub(crate) fn discriminant(a: &[UPoly]) -> UPoly {
         a.iter().enumerate().skip(1).map(|(k, c)| c.scale(&Q::from_integer(k.into()))).collect();
     let res = modular::resultant(a, &d);
     if a[n].degree() == Some(0) {
-        return res.scale(&(Q::one() / a[n].coeff(0)));
+        return res.scale(&a[n].coeff(0).recip());
     }
     res.div_rem(&a[n]).0
 }
@@ -619,7 +619,7 @@ mod tests {
                 let term = &e[k - i] * &sums[i];
                 acc = if i % 2 == 1 { &acc + &term } else { &acc - &term };
             }
-            e.push(acc.scale(&(Q::one() / Q::from_integer(k.into()))));
+            e.push(acc.scale(&Q::from_integer(k.into()).recip()));
         }
         let mut coeffs = vec![UPoly::zero(); m + 1];
         let mut an_pow = UPoly::constant(Q::one());
