@@ -7,6 +7,7 @@
 
 use std::fmt;
 use std::ops::{Add, Mul, Neg, Sub};
+use std::sync::{Arc, OnceLock};
 
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
@@ -14,9 +15,28 @@ use num_traits::{One, Signed, Zero};
 use crate::Q;
 
 /// A univariate polynomial `Σ c[k] x^k` over Q.
-#[derive(Clone, PartialEq, Eq, Default, Hash)]
+#[derive(Clone, Default)]
 pub struct UPoly {
     c: Vec<Q>,
+    /// The primitive integer form ([`int_primitive`]), kept once computed
+    /// or once known (a monic polynomial made from integers): the analysis
+    /// asks for it on the same square-free part many times, and each time
+    /// was an lcm of the denominators and a content. Never part of `==`.
+    ints: OnceLock<Arc<[BigInt]>>,
+}
+
+impl PartialEq for UPoly {
+    fn eq(&self, other: &UPoly) -> bool {
+        self.c == other.c
+    }
+}
+
+impl Eq for UPoly {}
+
+impl std::hash::Hash for UPoly {
+    fn hash<H: std::hash::Hasher>(&self, state: &mut H) {
+        self.c.hash(state);
+    }
 }
 
 impl UPoly {
@@ -25,7 +45,7 @@ impl UPoly {
         while c.last().is_some_and(Zero::is_zero) {
             c.pop();
         }
-        UPoly { c }
+        UPoly { c, ints: OnceLock::new() }
     }
 
     /// From integer coefficients, lowest power first.
@@ -35,7 +55,7 @@ impl UPoly {
 
     /// The zero polynomial.
     pub fn zero() -> UPoly {
-        UPoly { c: Vec::new() }
+        UPoly::new(Vec::new())
     }
 
     /// A constant.
@@ -134,7 +154,15 @@ impl UPoly {
         }
         let (num, _) = self.common_denominator();
         let lead = num.last().expect("non-zero").clone();
-        UPoly::new(num.into_iter().map(|c| reduced(c, lead.clone())).collect())
+        let out = UPoly::new(num.iter().map(|c| reduced(c.clone(), lead.clone())).collect());
+        // The monic polynomial's primitive integer form is num's, with the
+        // sign that makes its leading coefficient positive.
+        let mut ints = primitive(num);
+        if lead.is_negative() {
+            ints.iter_mut().for_each(|x| *x = -&*x);
+        }
+        let _ = out.ints.set(ints.into());
+        out
     }
 
     /// The derivative.
@@ -216,7 +244,7 @@ impl UPoly {
     pub(crate) fn even_part(&self) -> Option<UPoly> {
         let even =
             self.c.len() >= 3 && self.c.iter().enumerate().all(|(k, c)| k % 2 == 0 || c.is_zero());
-        even.then(|| UPoly { c: self.c.iter().step_by(2).cloned().collect() })
+        even.then(|| UPoly::new(self.c.iter().step_by(2).cloned().collect()))
     }
 
     /// F(x²) for this F (the inverse of [`UPoly::even_part`]).
@@ -238,13 +266,14 @@ impl UPoly {
 
     /// `p / x^k`, for x^k dividing `p`.
     fn shifted_down(&self, k: usize) -> UPoly {
-        UPoly { c: self.c[k..].to_vec() }
+        UPoly::new(self.c[k..].to_vec())
     }
 
     /// `x^k·p`.
     fn shifted_up(mut self, k: usize) -> UPoly {
         if k > 0 && !self.c.is_empty() {
             self.c.splice(0..0, std::iter::repeat_n(Q::zero(), k));
+            self.ints = OnceLock::new();
         }
         self
     }
@@ -310,7 +339,7 @@ impl UPoly {
         }
         let mut c = vec![Q::zero(); k];
         c.extend(self.c.iter().cloned());
-        UPoly { c }
+        UPoly::new(c)
     }
 
     /// The polynomial written in the variable `var`, in the crate's plain
@@ -437,7 +466,7 @@ pub(crate) fn reduced(n: BigInt, d: BigInt) -> Q {
 impl Neg for &UPoly {
     type Output = UPoly;
     fn neg(self) -> UPoly {
-        UPoly { c: self.c.iter().map(|c| -c).collect() }
+        UPoly::new(self.c.iter().map(|c| -c).collect())
     }
 }
 
@@ -471,6 +500,11 @@ pub(crate) fn gcd_prs(mut a: Vec<BigInt>, mut b: Vec<BigInt>) -> UPoly {
 }
 
 pub(crate) fn int_primitive(p: &UPoly) -> Vec<BigInt> {
+    p.ints.get_or_init(|| int_primitive_of(p).into()).to_vec()
+}
+
+/// [`int_primitive`] computed afresh: the oracle of the kept form.
+pub(crate) fn int_primitive_of(p: &UPoly) -> Vec<BigInt> {
     let mut den = BigInt::one();
     for q in p.coeffs() {
         den = crate::arith::intgcd::lcm(&den, q.denom());
@@ -607,6 +641,26 @@ mod tests {
     /// The obvious coefficient-wise arithmetic over Q (num-rational).
     fn coeff(p: &UPoly, k: usize) -> Q {
         p.c.get(k).cloned().unwrap_or_else(Q::zero)
+    }
+
+    proptest! {
+        /// The integer form kept by `monic`, `squarefree` and `gcd` is the
+        /// one computed afresh, as is the one kept after `shifted_up`.
+        #[test]
+        fn kept_integer_form_is_the_fresh_one(
+            num in proptest::collection::vec(-60i64..60, 1..8),
+            den in proptest::collection::vec(1i64..30, 1..8),
+            k in 0usize..3,
+        ) {
+            let p = UPoly::new(num.iter().zip(den.iter().cycle()).map(|(&n, &d)| Q::new(n.into(), d.into())).collect());
+            prop_assume!(!p.is_zero());
+            let q = &p * &p;
+            for u in [p.monic(), p.squarefree(), q.squarefree(), q.gcd(&p), p.monic().shifted_up(k), p.clone()] {
+                let kept = int_primitive(&u);
+                prop_assert_eq!(&kept, &int_primitive_of(&u));
+                prop_assert_eq!(int_primitive(&u), kept);
+            }
+        }
     }
 
     proptest! {
