@@ -18,8 +18,9 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use zcheck::api::{self, LoadedMethod};
 
-/// The allocator of the `zcheck` binary (DESIGN.md, "Allocator"): the exact
-/// engine allocates and frees many small big integers.
+/// The allocator of the `zcheck` binary: the exact engine allocates and
+/// frees many small big integers (DESIGN.md, "Why mimalloc as the
+/// allocator?").
 #[global_allocator]
 static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 

@@ -4,7 +4,8 @@
 use std::process::ExitCode;
 
 /// The exact engine allocates and frees many small big integers; mimalloc
-/// serves them faster than glibc's allocator (DESIGN.md, "Allocator").
+/// serves them faster than glibc's allocator (DESIGN.md, "Why mimalloc as
+/// the allocator?").
 #[global_allocator]
 static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 

@@ -84,7 +84,11 @@ pub(crate) fn rational_roots(f: &[BigInt]) -> Option<Vec<Q>> {
     if let Some((p, roots)) = m.readable {
         // Small bounds are reached in a few Newton steps: no early stops.
         let p = BigInt::from(p);
-        return Some(if small { lift(f, p, roots, &bound) } else { lift_early(f, p, roots, &bound) });
+        return Some(if small {
+            lift(f, p, roots, &bound)
+        } else {
+            lift_early(f, p, roots, &bound)
+        });
     }
     // Else roots modulo primes near 1000, found by trying every residue.
     'prime: for p in PRIMES {
@@ -224,9 +228,10 @@ fn reconstruct(r: &BigInt, m: &BigInt, n_max: &BigInt, d_max: &BigInt) -> Option
     let (mut r0, mut r1) = (m.clone(), r.mod_floor(m));
     let (mut t0, mut t1) = (BigInt::zero(), BigInt::one());
     while r1 > *n_max {
-        let q = &r0 / &r1;
-        (r0, r1) = (r1.clone(), &r0 - &q * &r1);
-        (t0, t1) = (t1.clone(), &t0 - &q * &t1);
+        let (q, r) = r0.div_rem(&r1);
+        r0 = std::mem::replace(&mut r1, r);
+        let t = &t0 - &q * &t1;
+        t0 = std::mem::replace(&mut t1, t);
     }
     let (a, b) = if t1.is_negative() { (-r1, -t1) } else { (r1, t1) };
     (!b.is_zero() && b <= *d_max && crate::arith::intgcd::gcd(&a, &b).is_one()).then_some((a, b))
