@@ -71,7 +71,8 @@ impl Root {
                 if neg && !x.is_negative() {
                     return Ordering::Less;
                 }
-                (x * x, neg)
+                // A reduced fraction's square is reduced: no gcd.
+                (Q::new_raw(x.numer() * x.numer(), x.denom() * x.denom()), neg)
             }
             _ => (x.clone(), false),
         };

@@ -74,20 +74,9 @@ fn sign_on_small(c: &[i64], a: i128, b: i128, q: i128) -> Option<Option<Ordering
 }
 
 impl IntPoly {
+    /// The primitive integer form of `p` (the one `p` keeps, once known).
     pub(crate) fn new(p: &UPoly) -> IntPoly {
-        let mut den = BigInt::one();
-        for q in p.coeffs() {
-            den = crate::arith::intgcd::lcm(&den, q.denom());
-        }
-        let mut c: Vec<BigInt> =
-            p.coeffs().iter().map(|q| q.numer() * (&den / q.denom())).collect();
-        let g = crate::univariate::upoly::content(&c);
-        if !g.is_zero() && !g.is_one() {
-            for x in &mut c {
-                *x /= &g;
-            }
-        }
-        IntPoly::from_ints(c)
+        IntPoly::from_ints(crate::univariate::upoly::int_primitive(p))
     }
 
     /// From integer coefficients (lowest power first, trimmed), taken as
