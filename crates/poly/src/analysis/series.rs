@@ -20,7 +20,6 @@
 
 use std::fmt;
 
-use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
 
 use crate::{Poly, Sym, UPoly, Q};
@@ -395,22 +394,7 @@ impl Series {
 /// division up to 10⁵ tells) and r a positive rational.
 fn split_square(g0: &Q) -> (Q, Q) {
     let n = g0.numer() * g0.denom();
-    let mut rest = n.abs();
-    let mut root = BigInt::one();
-    let mut p = BigInt::from(2);
-    while &p * &p <= rest && p < BigInt::from(100_000) {
-        let pp = &p * &p;
-        while (&rest % &pp).is_zero() {
-            rest /= &pp;
-            root *= &p;
-        }
-        p += BigInt::one();
-    }
-    let s = rest.sqrt();
-    if &s * &s == rest {
-        root *= s;
-        rest = BigInt::one();
-    }
+    let (root, rest) = crate::univariate::algebraic::square_part(&n, 100_000);
     (Q::from_integer(rest), Q::new(root, g0.denom().clone()))
 }
 

@@ -915,15 +915,22 @@ fn quadratic_form(centre: &Q, radicand: &Q, plus: bool) -> String {
 /// trial division up to 10⁵ can tell); requires q ≥ 0.
 fn sqrt_parts(q: &Q) -> (Q, BigInt) {
     let n = q.numer() * q.denom();
-    let mut rest = n.magnitude().clone();
-    let mut out = BigInt::one();
     // Large radicands (a float-derived method's 60-digit coefficients) are
     // searched for square factors up to 10³ only: the form stays exact, if
     // less reduced, and printing it no longer costs milliseconds.
-    let bound: u64 = if rest.bits() > 256 { 1_000 } else { 100_000 };
-    // Primes only: a composite's square never divides once its primes'
-    // squares are out ([`sqrt_parts_by_trial`] is the oracle), and each test
-    // is a remainder by a word.
+    let bound: u64 = if n.bits() > 256 { 1_000 } else { 100_000 };
+    let (out, rest) = square_part(&n, bound);
+    (Q::new(out, q.denom().clone()), rest)
+}
+
+/// |n| = out²·rest, with the square of every prime below `bound` divided
+/// out of `rest`, and `rest` = 1 when what remains is itself a square.
+/// Primes only: a composite's square never divides once its primes'
+/// squares are out (the tests' trial division by every integer is the
+/// oracle), and each test is a remainder by a word.
+pub(crate) fn square_part(n: &BigInt, bound: u64) -> (BigInt, BigInt) {
+    let mut rest = n.magnitude().clone();
+    let mut out = BigInt::one();
     for &p in small_primes().iter().take_while(|&&p| p < bound) {
         let pp = p * p;
         if num_traits::ToPrimitive::to_u64(&rest).is_some_and(|r| r < pp) {
@@ -941,7 +948,7 @@ fn sqrt_parts(q: &Q) -> (Q, BigInt) {
         out *= s;
         rest = BigInt::one();
     }
-    (Q::new(out, q.denom().clone()), rest)
+    (out, rest)
 }
 
 /// The primes below 10⁵ (a sieve, once).
