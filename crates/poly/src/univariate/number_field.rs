@@ -7,10 +7,11 @@
 //! instead decided exactly as the sign of the polynomial at α
 //! ([`Algebraic::is_root_of`]), and an inverse first divides m by its gcd
 //! with the element (a factor without α as a root), after which the
-//! extended Euclidean algorithm gives the inverse (the D5 principle, with
-//! the branch chosen by α itself).
+//! inverse solves the linear system of multiplication by the element (the
+//! D5 principle, with the branch chosen by α itself).
 
-use num_traits::One;
+use num_bigint::BigInt;
+use num_traits::{One, Zero};
 
 use crate::{Algebraic, UPoly, Q};
 
@@ -52,18 +53,7 @@ impl Field {
             self.m = self.m.div_rem(&h).0;
         }
         let x = self.reduce(&x);
-        // Extended Euclid: s·x + t·m = 1.
-        let (mut r0, mut r1) = (self.m.clone(), x);
-        let (mut s0, mut s1) = (UPoly::zero(), UPoly::constant(Q::one()));
-        while !r1.is_zero() {
-            let (q, r) = r0.div_rem(&r1);
-            let s = &s0 - &(&q * &s1);
-            r0 = std::mem::replace(&mut r1, r);
-            s0 = std::mem::replace(&mut s1, s);
-        }
-        // r0 is a non-zero constant.
-        let c = r0.coeff(0);
-        self.reduce(&s0.scale(&c.recip()))
+        inverse_mod(&x, &self.m)
     }
 
     pub fn trim(&self, mut f: FPoly) -> FPoly {
@@ -197,5 +187,130 @@ impl Field {
             }
         }
         acc
+    }
+}
+
+/// s with s·x ≡ 1 (mod m) and deg s < deg m, for x coprime to m (and of
+/// lower degree): the system of multiplication by x on Q[t]/(m), column j
+/// the integer form of x·t^j mod m with its scale kept aside, solved by
+/// Bareiss' fraction-free elimination. The extended Euclidean algorithm
+/// over Q (the tests' oracle) let its cofactors' coefficients swell: close
+/// to a minute on the critical points of some random 3-state programs.
+pub(crate) fn inverse_mod(x: &UPoly, m: &UPoly) -> UPoly {
+    use crate::univariate::upoly::{content, int_primitive};
+    let n = m.degree().unwrap_or(0);
+    if n == 0 || x.is_zero() {
+        return UPoly::zero();
+    }
+    let mi = int_primitive(m);
+    let lead = mi[n].clone();
+    // Column j is scale[j] · cols[j] (integers, lowest power first).
+    let mut col = int_primitive(x);
+    col.resize(n, BigInt::zero());
+    let k = x.coeffs().iter().position(|c| !c.is_zero()).expect("non-zero");
+    let mut scale = &x.coeffs()[k] / Q::from_integer(col[k].clone());
+    let mut cols = Vec::with_capacity(n);
+    let mut scales = Vec::with_capacity(n);
+    for j in 0..n {
+        if j > 0 {
+            // t·c mod m = (L·t·c − top·M)/L, made primitive.
+            let top = col[n - 1].clone();
+            let mut next: Vec<BigInt> = std::iter::once(BigInt::zero())
+                .chain(col[..n - 1].iter().cloned())
+                .map(|c| c * &lead)
+                .collect();
+            for (c, mc) in next.iter_mut().zip(&mi) {
+                *c -= &top * mc;
+            }
+            let g = content(&next);
+            if !g.is_zero() && !g.is_one() {
+                next.iter_mut().for_each(|c| *c /= &g);
+            }
+            scale = scale * Q::new(g, lead.clone());
+            col = next;
+        }
+        cols.push(col.clone());
+        scales.push(scale.clone());
+    }
+    // Rows of [C | e₀]: row i holds coefficient i of every column.
+    let rows: Vec<Vec<BigInt>> = (0..n)
+        .map(|i| {
+            let mut r: Vec<BigInt> = cols.iter().map(|c| c[i].clone()).collect();
+            r.push(if i == 0 { BigInt::one() } else { BigInt::zero() });
+            r
+        })
+        .collect();
+    let (num, det) = bareiss_solve(rows);
+    // s_j = u_j / scale_j with u = num / det.
+    UPoly::new(num.into_iter().zip(&scales).map(|(v, sc)| Q::new(v, det.clone()) / sc).collect())
+}
+
+/// The solution of a non-singular integer system [A | b] (n rows of n + 1)
+/// as integers over one denominator: (det·u, det), by Bareiss' fraction-
+/// free elimination (every division exact) and fraction-free back
+/// substitution (det·u is integral by Cramer's rule).
+fn bareiss_solve(mut a: Vec<Vec<BigInt>>) -> (Vec<BigInt>, BigInt) {
+    let n = a.len();
+    let mut prev = BigInt::one();
+    for k in 0..n {
+        let p = (k..n).find(|&r| !a[r][k].is_zero()).expect("a non-singular system");
+        a.swap(k, p);
+        let pivot = a[k].clone();
+        for row in a.iter_mut().skip(k + 1) {
+            for j in k + 1..=n {
+                row[j] = (&pivot[k] * &row[j] - &row[k] * &pivot[j]) / &prev;
+            }
+            row[k] = BigInt::zero();
+        }
+        prev = pivot[k].clone();
+    }
+    let det = a[n - 1][n - 1].clone();
+    let mut num = vec![BigInt::zero(); n];
+    for k in (0..n).rev() {
+        let mut acc = &det * &a[k][n];
+        for j in k + 1..n {
+            acc -= &a[k][j] * &num[j];
+        }
+        num[k] = acc / &a[k][k];
+    }
+    (num, det)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// The extended Euclidean algorithm over Q: the slow, obvious oracle.
+    fn inverse_by_euclid(x: &UPoly, m: &UPoly) -> UPoly {
+        let (mut r0, mut r1) = (m.clone(), x.clone());
+        let (mut s0, mut s1) = (UPoly::zero(), UPoly::constant(Q::one()));
+        while !r1.is_zero() {
+            let (q, r) = r0.div_rem(&r1);
+            let s = &s0 - &(&q * &s1);
+            r0 = std::mem::replace(&mut r1, r);
+            s0 = std::mem::replace(&mut s1, s);
+        }
+        let c = r0.coeff(0);
+        s0.scale(&c.recip()).div_rem(m).1
+    }
+
+    proptest! {
+        /// Bareiss' inverse is Euclid's, and x·s ≡ 1 (mod m), on random
+        /// coprime pairs with rational coefficients.
+        #[test]
+        fn inverse_matches_extended_euclid(
+            m in proptest::collection::vec((-40i64..40, 1i64..9), 2..9),
+            x in proptest::collection::vec((-40i64..40, 1i64..9), 1..8),
+        ) {
+            let q = |v: &[(i64, i64)]| UPoly::new(v.iter().map(|&(a, b)| Q::new(a.into(), b.into())).collect());
+            let (m, x) = (q(&m), q(&x));
+            prop_assume!(m.degree().unwrap_or(0) >= 1 && !x.is_zero());
+            let x = x.div_rem(&m).1;
+            prop_assume!(!x.is_zero() && m.gcd(&x).degree() == Some(0));
+            let s = inverse_mod(&x, &m);
+            prop_assert_eq!(&s, &inverse_by_euclid(&x, &m));
+            prop_assert_eq!((&s * &x).div_rem(&m).1, UPoly::constant(Q::one()));
+        }
     }
 }
