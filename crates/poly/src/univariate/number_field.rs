@@ -226,7 +226,7 @@ pub(crate) fn inverse_mod(x: &UPoly, m: &UPoly) -> UPoly {
             if !g.is_zero() && !g.is_one() {
                 next.iter_mut().for_each(|c| *c /= &g);
             }
-            scale = scale * Q::new(g, lead.clone());
+            scale *= Q::new(g, lead.clone());
             col = next;
         }
         cols.push(col.clone());
