@@ -15,19 +15,10 @@ use check::jit::JitStep;
 use check::kernel::Kernel;
 use check::numeric::{Batch, Params, ParamsF64, Step};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
-use zcheck::tradeoff::kernels::{run_hand_kernel, run_hand_kernel_batch, TIMING_PHI};
+use zcheck::tradeoff::kernels::TIMING_PHI;
 
-const SINGLE_STEPS: u64 = 1000;
-const LANES: usize = 4096;
-const BATCH_STEPS: u64 = 8;
-
-/// Built-ins with Φ as their only parameter (the hand kernels' set, and the
-/// implicit ones, which have no hand kernel).
-fn names() -> Vec<&'static str> {
-    poly::advanced::builtins::builtin_names()
-        .filter(|n| poly::builtin(n).unwrap().params().len() == 1)
-        .collect()
-}
+mod common;
+use common::{hand_batch, hand_single, names, BATCH_STEPS, LANES, SINGLE_STEPS};
 
 fn step_of(name: &str) -> Step {
     Step::compile(&poly::builtin(name).unwrap(), &Params::phi(TIMING_PHI)).unwrap()
@@ -55,14 +46,7 @@ fn single(c: &mut Criterion) {
     let mut g = c.benchmark_group("jit_single");
     g.throughput(Throughput::Elements(SINGLE_STEPS));
     for name in names() {
-        let (mut a, mut b) = (0.0, 1.0);
-        if run_hand_kernel(name, &mut a, &mut b, TIMING_PHI, 0.0, 1) {
-            g.bench_function(BenchmarkId::new("hand", name), |bench| {
-                bench.iter(|| {
-                    run_hand_kernel(name, &mut a, &mut b, black_box(TIMING_PHI), 0.0, SINGLE_STEPS)
-                })
-            });
-        }
+        hand_single(&mut g, name);
         let step = step_of(name);
         let kernel = Kernel::<f64>::new(&step);
         let mut kstate = kernel.state(&vec![1.0; step.order()]);
@@ -82,26 +66,11 @@ fn batch(c: &mut Criterion) {
     let mut g = c.benchmark_group("jit_batch4096");
     g.throughput(Throughput::Elements(BATCH_STEPS * LANES as u64));
     for name in names() {
-        let mut a: Vec<f64> = (0..LANES).map(|i| (i as f64 * 0.1).sin()).collect();
-        let mut b: Vec<f64> = (0..LANES).map(|i| (i as f64 * 0.1).cos()).collect();
         let step = step_of(name);
         let start = |lane: usize| -> Vec<f64> {
             (0..step.order()).map(|s| ((lane * 3 + s) as f64 * 0.1).sin()).collect()
         };
-        if run_hand_kernel_batch(name, &mut a[..1], &mut b[..1], TIMING_PHI, 0.0, 1) {
-            g.bench_function(BenchmarkId::new("hand", name), |bench| {
-                bench.iter(|| {
-                    run_hand_kernel_batch(
-                        name,
-                        &mut a,
-                        &mut b,
-                        black_box(TIMING_PHI),
-                        0.0,
-                        BATCH_STEPS,
-                    )
-                })
-            });
-        }
+        hand_batch(&mut g, name);
         let kernel = Kernel::<f64>::new(&step);
         let mut data = vec![0.0; LANES * step.order()];
         for l in 0..LANES {

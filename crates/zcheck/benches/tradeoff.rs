@@ -17,28 +17,16 @@ use std::time::Duration;
 use check::kernel::Kernel;
 use check::numeric::{Batch, Params, Step};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
-use zcheck::tradeoff::kernels::{run_hand_kernel, run_hand_kernel_batch, TIMING_PHI};
+use zcheck::tradeoff::kernels::TIMING_PHI;
 
-const SINGLE_STEPS: u64 = 1000;
-const LANES: usize = 4096;
-const BATCH_STEPS: u64 = 8;
-
-fn names() -> Vec<&'static str> {
-    poly::advanced::builtins::builtin_names()
-        .filter(|n| poly::builtin(n).unwrap().params().len() == 1)
-        .collect()
-}
+mod common;
+use common::{hand_batch, hand_single, lanes, names, BATCH_STEPS, LANES, SINGLE_STEPS};
 
 fn single(c: &mut Criterion) {
     let mut g = c.benchmark_group("tradeoff_single");
     g.throughput(Throughput::Elements(SINGLE_STEPS));
     for name in names() {
-        let (mut a, mut b) = (0.0, 1.0);
-        g.bench_function(BenchmarkId::new("hand", name), |bench| {
-            bench.iter(|| {
-                run_hand_kernel(name, &mut a, &mut b, black_box(TIMING_PHI), 0.0, SINGLE_STEPS)
-            })
-        });
+        hand_single(&mut g, name);
         let step = Step::compile(&poly::builtin(name).unwrap(), &Params::phi(TIMING_PHI)).unwrap();
         let mut state = step.state(&vec![1.0; step.order()]);
         g.bench_function(BenchmarkId::new("compiled", name), |bench| {
@@ -57,13 +45,8 @@ fn batch(c: &mut Criterion) {
     let mut g = c.benchmark_group("tradeoff_batch4096");
     g.throughput(Throughput::Elements(BATCH_STEPS * LANES as u64));
     for name in names() {
-        let mut a: Vec<f64> = (0..LANES).map(|i| (i as f64 * 0.1).sin()).collect();
-        let mut b: Vec<f64> = (0..LANES).map(|i| (i as f64 * 0.1).cos()).collect();
-        g.bench_function(BenchmarkId::new("hand", name), |bench| {
-            bench.iter(|| {
-                run_hand_kernel_batch(name, &mut a, &mut b, black_box(TIMING_PHI), 0.0, BATCH_STEPS)
-            })
-        });
+        hand_batch(&mut g, name);
+        let (a, b) = lanes();
         let step = Step::compile(&poly::builtin(name).unwrap(), &Params::phi(TIMING_PHI)).unwrap();
         let mut states = Batch::zeros(&step, LANES);
         for lane in 0..LANES {
