@@ -120,7 +120,8 @@ pub(crate) fn rational_roots(f: &[BigInt]) -> Option<Vec<Q>> {
 /// unique), and the rest are the rational roots of f/(bx − a), asked anew
 /// (usually a prime without roots then proves there are none, where the
 /// other residues would have been lifted to the full bound). SDIRK34's
-/// A(α) candidates: y = −1 found at 2^80 instead of a lift to 2^5120.
+/// A(α) candidates: y = −1 found at the first step (modulus near 2^40),
+/// not lifted to 2^5120.
 /// The answer is [`lift`]'s, the complete set of rational roots either way
 /// (a property test compares them).
 fn lift_early(f: &[BigInt], p: BigInt, roots: Vec<u64>, bound: &BigInt) -> Vec<Q> {
