@@ -18,7 +18,7 @@
 //! the determinant of the pencil zA' − B' with A' = diag(0, I) and
 //! B' = [[−A, E], [H_u, H_s]] (Schur complement). Its leading coefficient in
 //! z is det A, which may depend on Φ; its zeros are the Φ at which the step's
-//! system is singular. The z route (`derive.rs`) reaches the same polynomial
+//! system is singular. The z route (`routes.rs`) reaches the same polynomial
 //! from the equations as written, with no solving.
 
 use crate::lang::method::Method;

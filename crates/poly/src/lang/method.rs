@@ -10,7 +10,7 @@
 //! earlier assignment of this step (`Stmt`), or an unknown of the step's
 //! implicit system. Coefficients are polynomials in the parameters. This
 //! one form is what every interpreter reads: the two exact derivations in
-//! `derive.rs`, and the numeric ones in the `check` crate.
+//! `derive/routes.rs`, and the numeric ones in the `check` crate.
 
 use std::fmt;
 

@@ -1,8 +1,12 @@
 //! `zcheck stability`: the exact stability limit, the boundary kind and
 //! every class change of a method over Φ > 0.
 //!
-//! The analysis is `poly::advanced::stability::analyze`, exact throughout; this file
-//! only substitutes `--param` values and prints. Numbers are shown two ways:
+//! The analysis is `poly::Derivation::stability`, exact throughout, which
+//! has the transition matrix and so decides boundedness at a repeated root
+//! on the circle; this file binds the `--param` values, adds the facts of an
+//! implicit or constant-bearing step (det A, singular points, Φ → ∞) and the
+//! limits as Φ → ∞ and Φ → 0 (ρ∞, phase and modulus errors), and prints.
+//! Numbers are shown two ways:
 //! the exact form (closed form, or defining polynomial and an isolating
 //! interval narrowed to 1e-15) and an f64 taken from the exact decimal
 //! expansion, which is the only place a float appears.

@@ -1,9 +1,9 @@
 //! Stability of a characteristic polynomial whose coefficients hold exact
-//! constants (elements of the field F of `field.rs`), and the behaviour of
-//! any χ as Φ → ∞.
+//! constants (elements of the field F of `multivariate/constants.rs`, here
+//! `field`), and the behaviour of any χ as Φ → ∞.
 //!
 //! This is the thin layer between a constant-bearing χ and the rational
-//! engine in `stability.rs`: the conditions under which a root of χ can meet
+//! engine (`rational.rs`): the conditions under which a root of χ can meet
 //! the unit circle or change class (leading and constant coefficients, χ(±1),
 //! the discriminant, |z|² = 1) are polynomials in Φ over F. Their norms over
 //! Q (products of all conjugates, `field::norm`) are polynomials over Q whose
