@@ -101,7 +101,7 @@ fn classes_over_phi() {
     check(1.42, "monotonic unstable");
     check(3.0, "monotonic unstable");
     // At Φ = √2 exactly, χ(1) = Φ²(1 − Φ²/2) = 0.
-    let chi = derive("false_heun").charpoly;
+    let chi = derive("false_heun").charpoly().clone();
     let at_one = chi.subs(poly::Sym::z(), &poly::Poly::int(1));
     assert_eq!(at_one, parse("Phi^2*(1 - Phi^2/2)"));
     assert!(claim("sec10.either_or").evidence.contains("monotonic stable"));

@@ -58,7 +58,7 @@ fn lit(x: f64) -> String {
 fn phi_max_text(method: &Method, values: &[(Sym, Q)]) -> String {
     let map = values.iter().filter(|(s, _)| s.name() != "Phi").cloned().collect();
     let Ok(derivation) = poly::derive(method) else { return "not derived".to_owned() };
-    let chi = derivation.charpoly.eval_partial(&map);
+    let chi = derivation.charpoly().eval_partial(&map);
     if chi.symbols().iter().any(|&s| {
         s.name() != "Phi" && s.name() != "z" && poly::advanced::field::generator_of(s).is_none()
     }) {

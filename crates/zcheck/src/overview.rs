@@ -94,13 +94,13 @@ pub(crate) fn summary_at(
     params: &poly::Params,
     order: usize,
 ) -> Result<MethodSummary, Error> {
-    let method = &d.method;
+    let method = &d.method();
     // From the derivation: a repeated root on the circle is decided from P
     // (Gauss–Legendre's P is −I at Φ = 2√3: bounded through it).
     let report = d.stability(params)?;
     let values: std::collections::HashMap<poly::Sym, Q> =
         params.iter().map(|(k, v)| (poly::Sym::new(k), v.clone())).collect();
-    let bound = d.charpoly.eval_partial(&values);
+    let bound = d.charpoly().eval_partial(&values);
     let chi = &bound;
     let p_q = d.p_q().map(|(p, q)| (p.eval_partial(&values), q.eval_partial(&values)));
     let shown: Vec<String> = params.iter().map(|(k, v)| format!("{k} = {v}")).collect();

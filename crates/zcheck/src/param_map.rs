@@ -274,7 +274,7 @@ fn sign_at(p: &Poly, at: &HashMap<Sym, Q>) -> Option<Ordering> {
 /// Computes the two-parameter map of a method from its one derivation.
 pub(crate) fn param_map(loaded: &LoadedMethod, w: &ParamWindow) -> Result<ParamMap, Error> {
     let derivation = loaded.derivation()?;
-    let method = &derivation.method;
+    let method = &derivation.method();
     let syms = [Sym::new(&w.names[0]), Sym::new(&w.names[1])];
     let n = w.grid.max(2);
     let witnesses = Witnesses::from_derivation(derivation);
@@ -309,7 +309,7 @@ pub(crate) fn param_map(loaded: &LoadedMethod, w: &ParamWindow) -> Result<ParamM
         .collect();
     let fixed_values: HashMap<Sym, Q> =
         w.fixed.iter().map(|(k, v)| (Sym::new(k), v.clone())).collect();
-    let chi = derivation.charpoly.eval_partial(&fixed_values);
+    let chi = derivation.charpoly().eval_partial(&fixed_values);
     let (l, conditions) = limit_conditions(&chi);
     // Neighbouring pairs whose Φ_max = ∞ differs, and the curves that
     // separate each (an exact sign change, or a zero at either end).
@@ -601,7 +601,7 @@ mod tests {
     fn newmark_limit_curves() {
         let src = include_str!("../methods/newmark.zm");
         let d = poly::derive_source("newmark.zm", src).unwrap();
-        let (l, curves) = limit_conditions(&d.charpoly);
+        let (l, curves) = limit_conditions(&d.charpoly());
         let (b, g, z) = (Poly::var("beta"), Poly::var("gamma"), Poly::sym(Sym::z()));
         let half = Poly::constant(poly::q(1, 2));
         let want = &(&(&b * &z.pow(2)) + &(&(&(&half + &g) - &b.scale(&poly::q(2, 1))) * &z))

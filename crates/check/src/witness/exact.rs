@@ -123,9 +123,9 @@ impl ExactCharpoly {
     /// Prepares χ from a derivation.
     pub fn from_derivation(d: &poly::Derivation) -> ExactCharpoly {
         ExactCharpoly {
-            method: d.method.name().to_owned(),
-            params: d.method.params().to_vec(),
-            charpoly: d.charpoly.clone(),
+            method: d.method().name().to_owned(),
+            params: d.method().params().to_vec(),
+            charpoly: d.charpoly().clone(),
             coeffs: d.coeffs().iter().map(with_constants_approximated).collect(),
             // The exact p, q path needs rational coefficients; a χ with
             // exact constants (Forest–Ruth's cbrt(2)) takes the general path.

@@ -145,7 +145,7 @@ impl Witnesses {
     /// The witnesses of an existing derivation, without deriving again.
     pub fn from_derivation(derivation: &poly::Derivation) -> Witnesses {
         Witnesses {
-            method: derivation.method.clone(),
+            method: derivation.method().clone(),
             charpoly: ExactCharpoly::from_derivation(derivation),
         }
     }

@@ -148,7 +148,7 @@ impl Derivation {
 }
 
 fn region(derivation: &Derivation, param: Sym) -> Result<Region, StabilityError> {
-    let chi = &derivation.charpoly;
+    let chi = derivation.charpoly();
     // The one-variable engine validates the symbols: any symbol other than
     // z, Φ and `param` is reported by it.
     stability::class_at(&substitute(chi, param, &Q::one()), &Q::one())?;

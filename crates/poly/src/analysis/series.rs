@@ -502,7 +502,7 @@ impl crate::Derivation {
     /// ```
     pub fn psi_series(&self, params: &crate::Params, order: usize) -> Result<Vec<Q>, crate::Error> {
         let values = self.bind(params)?;
-        Ok(psi_series(&self.charpoly.eval_partial(&values), order)?)
+        Ok(psi_series(&self.charpoly().eval_partial(&values), order)?)
     }
 
     /// |z|² of the complex pair as an exact series in Φ (coefficients of
@@ -513,6 +513,6 @@ impl crate::Derivation {
         order: usize,
     ) -> Result<Vec<Q>, crate::Error> {
         let values = self.bind(params)?;
-        Ok(modulus_sq_series(&self.charpoly.eval_partial(&values), order)?)
+        Ok(modulus_sq_series(&self.charpoly().eval_partial(&values), order)?)
     }
 }

@@ -31,24 +31,29 @@ use crate::multivariate::matrix::SparsePolyMatrix;
 use crate::{Poly, PolyMatrix, Sym};
 
 /// Everything derived from one method.
+///
+/// Sealed: only [`derive`] builds one, after the z-domain route and the
+/// state route agree, so χ and P never disagree. Read it through the
+/// getters ([`Derivation::charpoly`], [`Derivation::transition_matrix`],
+/// ...).
 #[derive(Clone, Debug)]
 pub struct Derivation {
     /// The method derived.
-    pub method: Method,
+    method: Method,
     /// M as a polynomial matrix in w = z⁻¹ (see [`w`]); one row and column per
     /// assignment, plus one per state variable the step never assigns.
     /// Stored by rows: it is mostly zero.
-    pub z_matrix: SparsePolyMatrix,
+    z_matrix: SparsePolyMatrix,
     /// The transition matrix P over the augmented state
     /// ([`Method::slots`] order); for an implicit step, P times
     /// [`Derivation::p_denominator`].
-    pub transition_matrix: PolyMatrix,
+    transition_matrix: PolyMatrix,
     /// The common denominator d of P's entries: det A of the step's linear
     /// system for an implicit method, 1 for an explicit one.
-    pub p_denominator: Poly,
+    p_denominator: Poly,
     /// χ(z) = det(zI − P), a polynomial in z and the parameters; for an
     /// implicit method d·det(zI − P), whose leading coefficient in z is d.
-    pub charpoly: Poly,
+    charpoly: Poly,
 }
 
 /// The symbol standing for z⁻¹ inside [`Derivation::z_matrix`]. Its name
@@ -535,7 +540,7 @@ pub fn charpoly_state_route(p: &PolyMatrix) -> Poly {
 /// ```
 /// let src = "method mine\nstate v y\nv = v - Phi*y\ny = y + Phi*v\n";
 /// let d = poly::derive_source("mine.zm", src)?;
-/// assert_eq!(d.charpoly.to_string(), "z^2 - 2*z + Phi^2*z + 1");
+/// assert_eq!(d.charpoly().to_string(), "z^2 - 2*z + Phi^2*z + 1");
 /// let bad = poly::derive_source("bad.zm", "method m\nstate v\nv = v*v\n").unwrap_err();
 /// assert_eq!(bad.kind(), poly::ErrorKind::Nonlinear);
 /// assert!(bad.to_string().starts_with("bad.zm:3:5:"));
@@ -552,7 +557,7 @@ pub fn derive_source(file: &str, src: &str) -> Result<Derivation, Error> {
 /// ```
 /// let m = poly::builtin("false_euler")?;
 /// let d = poly::derive(&m)?;
-/// assert_eq!(d.charpoly.to_string(), "z^2 - 2*z + Phi^2*z + 1");
+/// assert_eq!(d.charpoly().to_string(), "z^2 - 2*z + Phi^2*z + 1");
 /// # Ok::<(), poly::Error>(())
 /// ```
 pub fn derive(method: &Method) -> Result<Derivation, Error> {

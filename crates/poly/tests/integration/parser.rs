@@ -73,7 +73,7 @@ fn history_zero_is_the_start_value() {
     assert_eq!(m.order(), 1);
     // y_next = 2y + y = 3y.
     let d = poly::derive(&m).expect("derives");
-    assert_eq!(d.charpoly, Poly::parse("z - 3").expect("parses"));
+    assert_eq!(*d.charpoly(), Poly::parse("z - 3").expect("parses"));
 }
 
 /// A temporary that depends on the parameters only is folded into the

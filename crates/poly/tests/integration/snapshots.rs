@@ -20,26 +20,26 @@ fn record(name: &str) -> String {
         s += &format!("  {line}\n");
     }
     s += "\nM(z) (one row per assignment, columns in the same order):\n";
-    for i in 0..d.z_matrix.rows() {
-        let row: Vec<String> = d.z_matrix.row(i).iter().map(Derivation::z_entry_string).collect();
+    for i in 0..d.z_matrix().rows() {
+        let row: Vec<String> = d.z_matrix().row(i).iter().map(Derivation::z_entry_string).collect();
         s += &format!("  [{}]\n", row.join(", "));
     }
     let slots: Vec<String> =
         m.slots().iter().map(|&(var, lag)| m.operand_name(Operand::Start { var, lag })).collect();
-    if d.p_denominator.is_one() {
+    if d.p_denominator().is_one() {
         s += &format!("\nP on ({}):\n", slots.join(", "));
     } else {
         s += &format!(
             "\nP on ({}), times its denominator d = det A = {}:\n",
             slots.join(", "),
-            d.p_denominator
+            d.p_denominator()
         );
     }
-    for i in 0..d.transition_matrix.rows() {
-        let row: Vec<String> = d.transition_matrix.row(i).iter().map(ToString::to_string).collect();
+    for i in 0..d.transition_matrix().rows() {
+        let row: Vec<String> = d.transition_matrix().row(i).iter().map(ToString::to_string).collect();
         s += &format!("  [{}]\n", row.join(", "));
     }
-    s += &format!("\nchi(z) = {}\n", d.charpoly);
+    s += &format!("\nchi(z) = {}\n", d.charpoly());
     if let Some((p, q)) = d.p_q() {
         s += &format!("p = {p}\nq = {q}\n");
     }

@@ -34,12 +34,12 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     let method = LoadedMethod::load(&args.method)?;
     let d = method.derivation()?;
     let full = args.full_z_matrix;
-    if full && d.z_matrix.rows() > FULL_Z_MATRIX_ROWS {
+    if full && d.z_matrix().rows() > FULL_Z_MATRIX_ROWS {
         return Err(Error::usage(format!(
             "--full-z-matrix: M(z) of {} has {} rows, and prints at most {FULL_Z_MATRIX_ROWS} ({} entries); expected a shorter program, or no --full-z-matrix for M(z) over the state ({} rows)",
-            d.method.name(),
-            d.z_matrix.rows(),
-            d.z_matrix.rows() * d.z_matrix.rows(),
+            d.method().name(),
+            d.z_matrix().rows(),
+            d.z_matrix().rows() * d.z_matrix().rows(),
             d.z_matrix_reduced().labels.len(),
         )));
     }
@@ -61,7 +61,7 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
 /// The JSON document of a derivation (`routes_agree` is true: [`poly::derive`]
 /// refuses to return a derivation whose routes disagree).
 pub(crate) fn to_json(d: &Derivation) -> serde_json::Value {
-    let m = &d.method;
+    let m = &d.method();
     let rows = |mat: &poly::PolyMatrix, f: &dyn Fn(&Poly) -> String| -> Vec<Vec<String>> {
         (0..mat.rows()).map(|i| mat.row(i).iter().map(f).collect()).collect()
     };
@@ -75,8 +75,8 @@ pub(crate) fn to_json(d: &Derivation) -> serde_json::Value {
         "program": m.to_string(),
         "z_matrix": rows(&reduced.matrix, &Derivation::z_entry_string),
         "z_matrix_labels": reduced.labels,
-        "transition_matrix": rows(&d.transition_matrix, &|p| p.to_string()),
-        "charpoly": d.charpoly.to_string(),
+        "transition_matrix": rows(&d.transition_matrix(), &|p| p.to_string()),
+        "charpoly": d.charpoly().to_string(),
         "charpoly_coeffs": d.coeffs().iter().map(ToString::to_string).collect::<Vec<_>>(),
         "routes_agree": true,
         "gauss_seidel_reads": m.gauss_seidel_reads().iter().map(|r| json!({
@@ -85,7 +85,7 @@ pub(crate) fn to_json(d: &Derivation) -> serde_json::Value {
     });
     if m.is_implicit() {
         v["unknowns"] = json!(m.unknowns().iter().map(|u| u.name.clone()).collect::<Vec<_>>());
-        v["p_denominator"] = json!(d.p_denominator.to_string());
+        v["p_denominator"] = json!(d.p_denominator().to_string());
     }
     if let Some((p, q)) = d.p_q() {
         v["p"] = json!(p.to_string());
@@ -97,7 +97,7 @@ pub(crate) fn to_json(d: &Derivation) -> serde_json::Value {
 /// The human-readable derivation.
 pub(crate) fn text(d: &Derivation, full: bool) -> String {
     use std::fmt::Write;
-    let m = &d.method;
+    let m = &d.method();
     let mut s = String::new();
     let _ =
         writeln!(s, "method {}   state ({})   order {}", m.name(), m.state().join(", "), m.order());
@@ -127,26 +127,26 @@ pub(crate) fn text(d: &Derivation, full: bool) -> String {
         .iter()
         .map(|&(v, l)| m.operand_name(poly::advanced::Operand::Start { var: v, lag: l }))
         .collect();
-    if d.p_denominator.is_one() {
+    if d.p_denominator().is_one() {
         let _ = writeln!(s, "\nP, on ({}):", slots.join(", "));
     } else {
         let _ = writeln!(
             s,
             "\nP, on ({}), as d*P with d = det A = {} (the step solves A u = E s):",
             slots.join(", "),
-            d.p_denominator
+            d.p_denominator()
         );
     }
-    for i in 0..d.transition_matrix.rows() {
-        let row: Vec<String> = d.transition_matrix.row(i).iter().map(ToString::to_string).collect();
+    for i in 0..d.transition_matrix().rows() {
+        let row: Vec<String> = d.transition_matrix().row(i).iter().map(ToString::to_string).collect();
         let _ = writeln!(s, "  [{}]", row.join(", "));
     }
-    let _ = writeln!(s, "\nchi(z) = {}", d.charpoly);
+    let _ = writeln!(s, "\nchi(z) = {}", d.charpoly());
     if let Some((p, q)) = d.p_q() {
         let _ = writeln!(s, "       = z^2 - 2*p*z + q   with p = {p},  q = {q}");
     }
-    if d.method.is_implicit() {
-        let _ = writeln!(s, "leading coefficient in z: det A = {}", d.p_denominator);
+    if d.method().is_implicit() {
+        let _ = writeln!(s, "leading coefficient in z: det A = {}", d.p_denominator());
         let _ = writeln!(s, "routes agree: z^N det M(1/z) = det A * det(zI - P)");
     } else {
         let _ = writeln!(s, "routes agree: z^N det M(1/z) = det(zI - P)");
@@ -178,7 +178,7 @@ pub(crate) fn gauss_seidel_text(m: &poly::Method) -> String {
 
 /// M(z) with one row per assignment, as strings.
 fn full_rows(d: &Derivation, f: &dyn Fn(&Poly) -> String) -> Vec<Vec<String>> {
-    (0..d.z_matrix.rows()).map(|i| d.z_matrix.row(i).iter().map(f).collect()).collect()
+    (0..d.z_matrix().rows()).map(|i| d.z_matrix().row(i).iter().map(f).collect()).collect()
 }
 
 /// LaTeX source of the derivation.
@@ -190,16 +190,16 @@ pub(crate) fn latex(d: &Derivation, full: bool) -> String {
         format!("\\begin{{pmatrix}} {} \\end{{pmatrix}}", rows.join(" \\\\ "))
     };
     let mut s = String::new();
-    let _ = writeln!(s, "% {}", d.method.name());
+    let _ = writeln!(s, "% {}", d.method().name());
     let reduced = d.z_matrix_reduced();
     let _ = writeln!(s, "% M(z) on ({})", reduced.labels.join(", "));
     let _ = writeln!(s, "M(z) = {}", mat(&reduced.matrix, &Derivation::z_entry_latex));
     if full {
         let _ = writeln!(s, "% M(z), one equation per assignment");
-        let _ = writeln!(s, "M(z) = {}", mat(&d.z_matrix.to_dense(), &Derivation::z_entry_latex));
+        let _ = writeln!(s, "M(z) = {}", mat(&d.z_matrix().to_dense(), &Derivation::z_entry_latex));
     }
-    let _ = writeln!(s, "\\mathbf{{P}} = {}", mat(&d.transition_matrix, &|p| p.latex()));
-    let _ = writeln!(s, "\\det(zI - \\mathbf{{P}}) = {} = 0", d.charpoly.latex());
+    let _ = writeln!(s, "\\mathbf{{P}} = {}", mat(&d.transition_matrix(), &|p| p.latex()));
+    let _ = writeln!(s, "\\det(zI - \\mathbf{{P}}) = {} = 0", d.charpoly().latex());
     if let Some((p, q)) = d.p_q() {
         let _ = writeln!(s, "p = {}, \\quad q = {}", p.latex(), q.latex());
     }

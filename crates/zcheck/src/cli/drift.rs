@@ -130,8 +130,8 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     let mut reports = Vec::new();
     for name in &args.methods {
         let r = match args.precision {
-            Precision::F64 => study::<f64>(name, &phi, &extra, &args, threads, &stop)?,
-            Precision::F32 => study::<f32>(name, &phi, &extra, &args, threads, &stop)?,
+            Precision::F64 => study::<f64>(name, &phi, &extra, &args, threads, stop)?,
+            Precision::F32 => study::<f32>(name, &phi, &extra, &args, threads, stop)?,
         };
         let interrupted = r.run.interrupted;
         reports.push(r);
@@ -255,11 +255,11 @@ fn study<T: Real>(
 /// (d = det A of an implicit step, 1 otherwise); `None` where the step's
 /// system is singular.
 fn transition_matrix_at(d: &Derivation, values: &HashMap<Sym, Q>) -> Option<Vec<Vec<Q>>> {
-    let den = d.p_denominator.eval(values)?;
+    let den = d.p_denominator().eval(values)?;
     if den.is_zero() {
         return None;
     }
-    let p = &d.transition_matrix;
+    let p = &d.transition_matrix();
     (0..p.rows())
         .map(|i| p.row(i).iter().map(|e| e.eval(values).map(|x| x / &den)).collect())
         .collect()

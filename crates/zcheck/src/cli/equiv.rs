@@ -180,7 +180,7 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     let a = LoadedMethod::load(&args.a)?;
     let b = LoadedMethod::load(&args.b)?;
     let (da, db) = (a.derivation()?, b.derivation()?);
-    let (ma, mb) = (&da.method, &db.method);
+    let (ma, mb) = (&da.method(), &db.method());
     let relation = equiv::relate(da, db);
     let reordered = equiv::reordered_updates(ma, mb);
     let words = describe(&relation, ma, mb);
@@ -225,8 +225,8 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
                 "description": words,
                 "shares_charpoly": relation.shares_charpoly(),
                 "reordered_updates": reordered,
-                "charpoly_a": da.charpoly.to_string(),
-                "charpoly_b": db.charpoly.to_string(),
+                "charpoly_a": da.charpoly().to_string(),
+                "charpoly_b": db.charpoly().to_string(),
                 "change": change_doc,
             });
             serde_json::to_string_pretty(&doc)? + "\n"
@@ -260,8 +260,8 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
                     )),
                 }
             }
-            out.push_str(&format!("chi({}) = {}\n", ma.name(), da.charpoly));
-            out.push_str(&format!("chi({}) = {}\n", mb.name(), db.charpoly));
+            out.push_str(&format!("chi({}) = {}\n", ma.name(), da.charpoly()));
+            out.push_str(&format!("chi({}) = {}\n", mb.name(), db.charpoly()));
             out
         }
     };

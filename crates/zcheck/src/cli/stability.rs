@@ -68,7 +68,7 @@ impl Analysis {
         derivation: &poly::Derivation,
         params: &[ParamArg],
     ) -> Result<Analysis, Error> {
-        let method = &derivation.method;
+        let method = &derivation.method();
         values::check_declared(params, &[method])?;
         let mut values = HashMap::new();
         let mut bound = poly::Params::new();
@@ -78,7 +78,7 @@ impl Analysis {
             bound.insert(&p.name, p.value.value.clone());
             shown.push((p.name.clone(), p.value.value.clone()));
         }
-        let chi = derivation.charpoly.eval_partial(&values);
+        let chi = derivation.charpoly().eval_partial(&values);
         // With the transition matrix, boundedness at a repeated root on the
         // circle is decided from P's Jordan structure (Merson at 2√3: P = I).
         let report = derivation
@@ -122,7 +122,7 @@ impl ImplicitFacts {
     /// The facts of `derivation`, with χ at the given parameters; `None`
     /// for an explicit method without constants.
     fn of(derivation: &poly::Derivation, chi: &poly::Poly) -> Result<Option<ImplicitFacts>, Error> {
-        let method = &derivation.method;
+        let method = &derivation.method();
         if !method.is_implicit() && method.constants().is_empty() {
             return Ok(None);
         }

@@ -276,7 +276,7 @@ impl Analysed {
                 spec.display()
             )));
         }
-        let chi = &spec.derivation()?.charpoly;
+        let chi = &spec.derivation()?.charpoly();
         let region = spec
             .derivation()?
             .region(d)

@@ -269,7 +269,7 @@ mod tests {
                 .into_iter()
                 .collect();
                 let exact = |i: usize, j: usize| {
-                    check::numeric::q_to_f64(&d.transition_matrix[(i, j)].eval(&values).unwrap())
+                    check::numeric::q_to_f64(&d.transition_matrix()[(i, j)].eval(&values).unwrap())
                 };
                 // Slots: (v, y) for the two-variable methods, (y, y@1) for Verlet.
                 let ours = if kernel.keeps_previous() {

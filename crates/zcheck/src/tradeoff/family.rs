@@ -138,7 +138,7 @@ impl Candidate {
         let name = method.name().to_owned();
         let derivation = loaded.derivation().map_err(|e| e.context(format!("method `{name}`")))?;
         let values: HashMap<Sym, Q> = params.iter().cloned().collect();
-        let charpoly = derivation.charpoly.eval_partial(&values);
+        let charpoly = derivation.charpoly().eval_partial(&values);
         // From the derivation, so a repeated root on the circle is decided
         // from P (Gauss–Legendre stays bounded through Φ = 2√3).
         let bound = params

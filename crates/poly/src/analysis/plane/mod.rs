@@ -441,7 +441,7 @@ impl Derivation {
             .intervals
             .first()
             .is_some_and(|i| i.lo.sign().is_eq() && i.class == crate::RootClass::Harmonic);
-        let chi = self.charpoly.eval_partial(&self.bind(params)?);
+        let chi = self.charpoly().eval_partial(&self.bind(params)?);
         phase_errors(&chi, on_circle)
     }
 
@@ -455,19 +455,19 @@ impl Derivation {
     /// ```
     pub fn rho_inf(&self, params: &Params) -> Result<Option<Algebraic>, Error> {
         self.refuse_scalar()?;
-        let chi = self.charpoly.eval_partial(&self.bind(params)?);
+        let chi = self.charpoly().eval_partial(&self.bind(params)?);
         rho_at_infinity(&chi, Sym::phi())
     }
 
     /// Refuses a scalar program in an oscillator analysis.
     pub(crate) fn refuse_scalar(&self) -> Result<(), Error> {
-        if self.method.is_scalar() {
+        if self.method().is_scalar() {
             return Err(Error::analysis(
                 ErrorKind::TestEquation,
                 format!(
                     "`{}` is written for y' = λy (it reads `w`): the oscillator analyses need a \
                      program in `Phi`; its analysis is in the w-plane (`region`)",
-                    self.method.name()
+                    self.method().name()
                 ),
             ));
         }

@@ -40,11 +40,11 @@ impl Derivation {
     /// ```
     pub fn scalar_charpoly(&self, params: &Params) -> Result<Poly, Error> {
         let values = self.bind(params)?;
-        let chi = if self.method.is_scalar() {
-            self.charpoly.eval_partial(&values)
+        let chi = if self.method().is_scalar() {
+            self.charpoly().eval_partial(&values)
         } else {
-            let p = self.transition_matrix.map(|e| e.eval_partial(&values));
-            let d = self.p_denominator.eval_partial(&values);
+            let p = self.transition_matrix().map(|e| e.eval_partial(&values));
+            let d = self.p_denominator().eval_partial(&values);
             self.scalar_from_oscillator(&p, &d)?
         };
         let (z, w) = (Sym::z(), Sym::w());
@@ -68,7 +68,7 @@ impl Derivation {
     }
 
     fn scalar_from_oscillator(&self, p: &PolyMatrix, d: &Poly) -> Result<Poly, Error> {
-        let m = &self.method;
+        let m = &self.method();
         let name = m.name();
         let var = |n: &str| m.state().iter().position(|s| s == n);
         let (Some(y), Some(v)) = (var("y"), var("v")) else {

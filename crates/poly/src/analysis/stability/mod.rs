@@ -98,12 +98,12 @@ impl Derivation {
     pub fn stability(&self, params: &Params) -> Result<StabilityReport, Error> {
         self.refuse_scalar()?;
         let values = self.bind(params)?;
-        let charpoly = self.charpoly.eval_partial(&values);
+        let charpoly = self.charpoly().eval_partial(&values);
         let phi = Sym::phi();
         if has_generators(&charpoly) {
-            let numerator: Vec<Vec<Poly>> = (0..self.transition_matrix.rows())
+            let numerator: Vec<Vec<Poly>> = (0..self.transition_matrix().rows())
                 .map(|i| {
-                    self.transition_matrix.row(i).iter().map(|e| e.eval_partial(&values)).collect()
+                    self.transition_matrix().row(i).iter().map(|e| e.eval_partial(&values)).collect()
                 })
                 .collect();
             return constants::analyze(&charpoly, Some(&numerator));
@@ -117,11 +117,11 @@ impl Derivation {
                 )
             })
         };
-        let p = &self.transition_matrix;
+        let p = &self.transition_matrix();
         let rows: Vec<Vec<UPoly>> = (0..p.rows())
             .map(|i| p.row(i).iter().map(|e| in_phi(e, "transition matrix entry")).collect())
             .collect::<Result<_, _>>()?;
-        let denominator = in_phi(&self.p_denominator, "the step's determinant det A,")?;
+        let denominator = in_phi(&self.p_denominator(), "the step's determinant det A,")?;
         rational::analyze(
             &charpoly,
             Some(rational::StepMatrix { numerator: &rows, denominator: &denominator }),
@@ -135,21 +135,21 @@ impl Derivation {
         let mut at = values.clone();
         at.insert(Sym::phi(), phi.clone());
         if self
-            .p_denominator
+            .p_denominator()
             .eval_partial(&at)
             .as_constant()
             .is_some_and(|d| num_traits::Zero::is_zero(&d))
         {
             return Ok(RootClass::Singular);
         }
-        class_at(&self.charpoly.eval_partial(&values), phi)
+        class_at(&self.charpoly().eval_partial(&values), phi)
     }
 
     /// The values of every parameter of the method but Φ, refusing names
     /// the method does not declare and Φ itself (the analysis covers every
     /// Φ > 0).
     pub(crate) fn bind(&self, params: &Params) -> Result<std::collections::HashMap<Sym, Q>, Error> {
-        let method = &self.method;
+        let method = &self.method();
         if let Some(name) = params.undeclared(method).next() {
             return Err(Error::analysis(
                 ErrorKind::ExtraSymbol,
@@ -173,7 +173,7 @@ impl Derivation {
                 .iter()
                 .map(|(n, v)| (Sym::new(n), v.clone()))
                 .collect::<std::collections::HashMap<_, _>>();
-            let chi = self.charpoly.eval_partial(&given);
+            let chi = self.charpoly().eval_partial(&given);
             Error::analysis(
                 ErrorKind::ExtraSymbol,
                 format!(

@@ -203,8 +203,8 @@ pub(crate) struct ZRow {
 /// matrix P (state order v, y): row i of the z-domain equations is
 /// `x_i = Σ_j P_ij x_j z⁻¹`.
 pub(crate) fn compare_z_rows(d: &Derivation, rows: &[ZRow]) -> (Finding, String, String) {
-    let p = &d.transition_matrix;
-    let names = d.method.state();
+    let p = &d.transition_matrix();
+    let names = d.method().state();
     let mut derived = Vec::new();
     let mut printed = Vec::new();
     let mut diffs = Vec::new();
@@ -230,7 +230,7 @@ pub(crate) fn compare_z_rows(d: &Derivation, rows: &[ZRow]) -> (Finding, String,
 pub(crate) fn chi_text(d: &Derivation) -> String {
     match d.p_q() {
         Some((p, q)) => format!("z^2 - 2*({p})*z + ({q})"),
-        None => d.charpoly.to_string(),
+        None => d.charpoly().to_string(),
     }
 }
 
@@ -360,7 +360,7 @@ pub(crate) fn scheme_defect(d: &Derivation, a: &PolyMatrix, scheme: Scheme) -> P
             }
         }
     }
-    let p = &d.transition_matrix;
+    let p = &d.transition_matrix();
     let mut out = PolyMatrix::zeros(p.rows(), p.cols());
     for i in 0..p.rows() {
         for j in 0..p.cols() {
@@ -398,7 +398,7 @@ pub(crate) fn ode_claim(
     };
     let derived = format!(
         "{method}: P = {}; the printed ODE has A = {} (units of ω0, state v, y)",
-        matrix_text(&d.transition_matrix),
+        matrix_text(&d.transition_matrix()),
         matrix_text(&printed_a)
     );
     let evidence = if ok {
@@ -483,8 +483,8 @@ pub(crate) fn always_unstable_claim(s: &mut Section, method: &str) {
 pub(crate) fn charpoly_claim(s: &mut Section, key: &str, method: &str, printed: &str, parse: &str) {
     let d = builtin_derivation(method);
     let got = paper(parse);
-    let ok = got == d.charpoly;
-    let finding = Finding::same(&got, &d.charpoly);
+    let ok = got == *d.charpoly();
+    let finding = Finding::same(&got, d.charpoly());
     let evidence = if ok {
         format!(
             "poly::derive({method}) gives χ by the z-domain determinant and by det(zI − P), \
@@ -493,8 +493,8 @@ pub(crate) fn charpoly_claim(s: &mut Section, key: &str, method: &str, printed: 
     } else {
         format!(
             "poly::derive({method}) gives {}; the printed equation differs by {}",
-            d.charpoly,
-            &got - &d.charpoly
+            d.charpoly(),
+            &got - d.charpoly()
         )
     };
     s.push(key, printed, format!("χ(z) = {}", chi_text(&d)), finding, evidence);
@@ -509,7 +509,7 @@ pub(crate) fn stages_claim(
     printed: &str,
     lines: &[(&str, Printed)],
 ) {
-    let m = builtin_derivation(method).method;
+    let m = builtin_derivation(method).method().clone();
     let (finding, derived, diffs) = compare_stages(&m, lines);
     let evidence = if diffs.is_empty() {
         format!("symbolic execution of the {method} program (Appendix B) gives every printed value exactly")

@@ -16,7 +16,7 @@ pub(crate) fn paper(text: &str) -> Poly {
 /// The paper's second-order form: `chi = z^2 - 2 p z + q`.
 #[track_caller]
 pub(crate) fn p_q(d: &Derivation) -> (Poly, Poly) {
-    d.p_q().unwrap_or_else(|| panic!("{} is not second order", d.method.name()))
+    d.p_q().unwrap_or_else(|| panic!("{} is not second order", d.method().name()))
 }
 
 /// `p` evaluated at Φ = `phi` (all other parameters must be absent).

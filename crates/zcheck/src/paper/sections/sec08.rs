@@ -48,7 +48,7 @@ fn recursion(s: &mut Section) {
 }
 
 fn oscillator(s: &mut Section) {
-    let m = builtin_derivation("verlet").method;
+    let m = builtin_derivation("verlet").method().clone();
     let step = stage_value(&m, "y");
     let printed = paper("2*(1 - Phi^2/2)*y - y_lag1");
     s.push(
@@ -67,9 +67,9 @@ fn same_as_false_euler(s: &mut Section) {
     s.push(
         "same_as_false_euler",
         "This is the characteristic equation of False Euler − Verlet is the same.",
-        format!("χ(false_euler) = {}, χ(verlet) = {}", fe.charpoly, ve.charpoly),
+        format!("χ(false_euler) = {}, χ(verlet) = {}", fe.charpoly(), ve.charpoly()),
         Finding::all([
-            ("χ(false_euler) = χ(verlet)", fe.charpoly == ve.charpoly),
+            ("χ(false_euler) = χ(verlet)", fe.charpoly() == ve.charpoly()),
             ("the y samples coincide from y_(−1) = y_0 − Φ·v_0", samples),
         ]),
         "equal polynomials exactly; and beyond χ, the y samples coincide exactly (rationals, 24 steps at \
@@ -90,15 +90,15 @@ fn secant_change_of_variables(s: &mut Section) {
     };
     // The printed secant v_(i−1) = (y_(i−1) − y_(i−2))/T, with v in units of
     // ω0 (ẏ = ω0 v): v = (y − y@1)/Φ, as a row over Verlet's slots (y, y@1).
-    let v_slot = fe.method.state().iter().position(|n| n == "v");
+    let v_slot = fe.method().state().iter().position(|n| n == "v");
     let secant = (vec![Poly::one(), -Poly::one()], Poly::var("Phi"));
     let row_is_secant = change.zip(v_slot).is_some_and(|(c, k)| c.t_row(k) == secant);
     let defined_everywhere =
         change.is_some_and(|c| super::ranges::positive_roots(&c.undefined_at()).is_empty());
     let (forward, back) = change.map_or((Vec::new(), Vec::new()), |c| {
         (
-            crate::cli::equiv::equations(|i| c.t_row(i), &ve.method, &fe.method),
-            crate::cli::equiv::equations(|i| c.inverse_row(i), &fe.method, &ve.method),
+            crate::cli::equiv::equations(|i| c.t_row(i), &ve.method(), &fe.method()),
+            crate::cli::equiv::equations(|i| c.inverse_row(i), &fe.method(), &ve.method()),
         )
     });
     s.push(
@@ -143,7 +143,7 @@ pub(crate) fn same_samples(phis: &[Q], n: usize) -> bool {
         (poly::q(5, 7), poly::q(0, 1)),
     ];
     phis.iter().all(|phi| {
-        let p = matrix_at(&fe.transition_matrix, phi);
+        let p = matrix_at(&fe.transition_matrix(), phi);
         starts.iter().all(|(v0, y0)| {
             let euler = iterate_exact(&p, &[v0.clone(), y0.clone()], n);
             let verlet = verlet_samples(phi, y0, &(y0 - phi * v0), n);
@@ -178,7 +178,7 @@ const MUCH_BETTER: &str = "the paragraph before argues \"much better\" from v's 
 fn initial_velocity(s: &mut Section) {
     let ok = same_samples(&[poly::q(1, 2), poly::q(3, 2)], 16);
     let damped = damped_spring();
-    let verlet_state: Vec<String> = builtin_derivation("verlet").method.state().to_vec();
+    let verlet_state: Vec<String> = builtin_derivation("verlet").method().state().to_vec();
     s.push(
         "initial_velocity",
         "Verlet Integration doesn't use the state variable v explicitly. This causes big problems for the \
@@ -267,7 +267,7 @@ pub(crate) fn damped_spring() -> DampedComparison {
     let d = 0.1f64;
     let derivation_of = |name: &str| builtin_derivation(name);
     let measure = |derivation: &poly::Derivation| {
-        let chi = derivation.charpoly.subs(Sym::new("D"), &Poly::constant(damping.clone()));
+        let chi = derivation.charpoly().subs(Sym::new("D"), &Poly::constant(damping.clone()));
         let limit = derivation
             .stability(&poly::Params::new().bind("D", damping.clone()))
             .ok()
@@ -290,7 +290,7 @@ pub(crate) fn damped_spring() -> DampedComparison {
     let (fe, ve) = (derivation_of("false_euler_damped"), derivation_of("verlet_damped"));
     let (fe_limit, fe_error) = measure(&fe);
     let (ve_limit, ve_error) = measure(&ve);
-    let (fe_chi, ve_chi) = (fe.charpoly, ve.charpoly);
+    let (fe_chi, ve_chi) = (fe.charpoly(), ve.charpoly());
     let show = |l: &Option<poly::Algebraic>| {
         l.as_ref().map(super::ranges::show).unwrap_or_else(|| "none".to_owned())
     };

@@ -131,7 +131,7 @@ fn z_rows(s: &mut Section) {
     s.append_evidence(&format!(
         "; the printed rows would give χ = {from_rows}, not the printed (and derived) χ = {}, so the \
          section's χ was derived from the correct rows",
-        d.charpoly
+        d.charpoly()
     ));
 }
 
