@@ -57,6 +57,20 @@ pub enum ErrorKind {
     /// A series of Ψ or |z| that does not exist for this χ (not second
     /// order, no complex pair near Φ = 0, or Ψ not a series over Q).
     NoSeries,
+    /// The frequency series (Ψ, |z|²) of a characteristic polynomial that
+    /// is not second order in z.
+    NotSecondOrder,
+    /// The frequency series of a χ with no complex pair for small Φ > 0
+    /// (or one near Ψ = π).
+    NotOscillatory,
+    /// Ψ or |z| is not a series over Q (its value at Φ = 0 is not a
+    /// rational square); `advanced::series::psi_series_scaled` gives the
+    /// scaled form.
+    IrrationalSeries,
+    /// Boundedness that χ alone does not decide: a repeated root on the
+    /// unit circle, bounded exactly when the transition matrix P is
+    /// semisimple there (ask the `Derivation`, which has P).
+    Undecided,
     /// The analysis needs the other test equation: a scalar program (it
     /// reads `w`) given to an oscillator analysis, or an oscillator program
     /// with no scalar form (a partitioned method) given to the w-plane.

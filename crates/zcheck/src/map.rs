@@ -156,13 +156,24 @@ pub(crate) fn map(loaded: &LoadedMethod, w: &MapWindow) -> Result<StabilityMap, 
             let (phi, d) = (q_to_f64(&phi_q), q_to_f64(&d_q));
             // Classify the exact value of the float that the witnesses use.
             let (pe, de) = (f64_to_q(phi).unwrap_or(phi_q), f64_to_q(d).unwrap_or(d_q));
-            let class = r.class_at(&pe, &de).unwrap_or(RootClass::Deadbeat);
+            // A point the exact analysis cannot classify is an error, never
+            // drawn as some class.
+            let class = r
+                .class_at(&pe, &de)
+                .map_err(|e| {
+                    Error::from(e).context(format!(
+                        "method {} at Phi = {pe}, {} = {de}",
+                        method.name(),
+                        w.param
+                    ))
+                })?
+                .class;
             let agree = witnesses
                 .at(&Params::phi(phi).with(&w.param, d), 0)
                 .is_ok_and(|rep| rep.agree() && rep.exact.class == class);
-            GridPoint { phi, value: d, class, witnesses_agree: agree }
+            Ok(GridPoint { phi, value: d, class, witnesses_agree: agree })
         })
-        .collect();
+        .collect::<Result<_, Error>>()?;
     let disagreements = grid.iter().filter(|g| !g.witnesses_agree).count();
     let curves = r
         .boundary_curves()

@@ -440,9 +440,9 @@ fn grid_point(
         let class = derivation.class_at(params, &phi_q).ok()?;
         let rep = witnesses.at(&params.clone().bind("Phi", phi_q.clone()), 0).ok()?;
         Some(
-            class.is_bounded() == bounded_at(report, &phi_q)
+            class.bounded == bounded_at(report, &phi_q)
                 && rep.agree()
-                && rep.exact.class == class,
+                && rep.exact.class == class.class,
         )
     };
     let mut phis = phis;

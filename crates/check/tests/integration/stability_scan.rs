@@ -52,7 +52,7 @@ proptest! {
                 .find(|i| i.lo.cmp_rational(&q).is_lt() && i.hi.as_ref().is_none_or(|h| h.cmp_rational(&q).is_gt()))
                 .expect("Phi is not a critical point");
             prop_assert_eq!(rho > 1.0, interval.counts.outside > 0, "Phi = {}, rho = {}\n{}", phi, rho, src);
-            prop_assert_eq!(rho < 1.0, interval.class.is_bounded(), "Phi = {}, rho = {}\n{}", phi, rho, src);
+            prop_assert_eq!(rho < 1.0, interval.class.bounded() == Some(true), "Phi = {}, rho = {}\n{}", phi, rho, src);
             let stable_below_max = match &r.stability {
                 Stability::BoundedForAllPhi => true,
                 Stability::UnboundedForAllPhi | Stability::UnstableNearZero => false,

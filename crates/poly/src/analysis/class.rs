@@ -34,7 +34,9 @@ pub enum RootClass {
     /// Dominant real root z < −1: sign flips every step, growing.
     AlternatingUnstable,
     /// A repeated root on the unit circle (z₁ = z₂ = ±1, or a repeated pair):
-    /// polynomial growth when the root is defective, as section 4 notes.
+    /// polynomial growth when the root is defective in P, as section 4
+    /// notes, bounded when P is semisimple there (P = −I). χ alone does
+    /// not tell which ([`RootClass::bounded`] is `None`).
     DoubleRootOnCircle,
     /// The step is undefined: its implicit system is singular (det A = 0).
     Singular,
@@ -80,19 +82,29 @@ impl RootClass {
         RootClass::ALL.into_iter().find(|c| c.name() == name)
     }
 
-    /// Whether the sequence stays bounded: ρ < 1, or ρ = 1 with simple
-    /// dominant roots. A repeated root on the circle counts as unstable.
-    pub fn is_bounded(self) -> bool {
-        matches!(
-            self,
+    /// Whether the sequence stays bounded, as far as the roots of χ tell:
+    /// `Some(true)` when ρ < 1, or ρ = 1 with simple dominant roots;
+    /// `Some(false)` when ρ > 1 or the step is singular; `None` for
+    /// [`RootClass::DoubleRootOnCircle`], which χ alone cannot decide: a
+    /// repeated root on the circle is bounded exactly when the transition
+    /// matrix P is semisimple there (False Euler at Φ = 2 grows, P = −I
+    /// does not). [`Derivation::class_at`](crate::Derivation::class_at)
+    /// decides it from P.
+    pub fn bounded(self) -> Option<bool> {
+        match self {
             RootClass::Deadbeat
-                | RootClass::DampedOscillation
-                | RootClass::Harmonic
-                | RootClass::MonotonicStable
-                | RootClass::Constant
-                | RootClass::AlternatingStable
-                | RootClass::Alternating
-        )
+            | RootClass::DampedOscillation
+            | RootClass::Harmonic
+            | RootClass::MonotonicStable
+            | RootClass::Constant
+            | RootClass::AlternatingStable
+            | RootClass::Alternating => Some(true),
+            RootClass::UnstableOscillation
+            | RootClass::MonotonicUnstable
+            | RootClass::AlternatingUnstable
+            | RootClass::Singular => Some(false),
+            RootClass::DoubleRootOnCircle => None,
+        }
     }
 }
 

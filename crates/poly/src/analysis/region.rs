@@ -18,8 +18,9 @@
 //! (they only say that Φ = 0 or D = 0 is critical). Between the curves the
 //! stable/unstable split is constant.
 //!
-//! **Membership** of a rational (Φ, D) is the exact class of χ there
-//! ([`crate::analysis::stability::class_at`] with D substituted). **Φ_max(D)** at a
+//! **Membership** of a rational (Φ, D) is the exact class of χ there, with
+//! boundedness at a repeated root on the unit circle decided from P
+//! ([`Derivation::class_at`] with D bound). **Φ_max(D)** at a
 //! rational D is the one-variable analysis of χ(z; Φ, D) in Φ.
 //!
 //! **Unconditional stability** (every Φ > 0 and D ≥ 0 bounded, the analogue
@@ -41,10 +42,10 @@ use std::fmt;
 
 use num_traits::{One, Signed, Zero};
 
-use crate::analysis::stability::{self, Stability};
+use crate::analysis::stability::{self, ClassAt, Stability};
 use crate::multivariate::resultant::resultant;
 use crate::Error as StabilityError;
-use crate::{Algebraic, Poly, RootClass, Sym, UPoly, Q};
+use crate::{Algebraic, Poly, Sym, UPoly, Q};
 use crate::{Derivation, Params};
 
 /// Which condition a critical curve expresses.
@@ -212,14 +213,17 @@ impl Region {
         substitute(&self.chi, self.param, d)
     }
 
-    /// The exact root class at a rational (Φ, D).
-    pub fn class_at(&self, phi: &Q, d: &Q) -> Result<RootClass, StabilityError> {
-        stability::class_at(&self.at_param(d), phi)
+    /// The exact root class at a rational (Φ, D), and whether the sequence
+    /// stays bounded there, from the derivation (so with P: a repeated root
+    /// on the unit circle is bounded exactly when P is semisimple there).
+    pub fn class_at(&self, phi: &Q, d: &Q) -> Result<ClassAt, StabilityError> {
+        self.derivation.class_at(&Params::new().bind(self.param.name(), d.clone()), phi)
     }
 
-    /// Whether the rational (Φ, D) is in the stable region (bounded class).
+    /// Whether the rational (Φ, D) is in the stable region: the sequence
+    /// stays bounded there, decided with P ([`Region::class_at`]).
     pub fn contains(&self, phi: &Q, d: &Q) -> Result<bool, StabilityError> {
-        Ok(self.class_at(phi, d)?.is_bounded())
+        Ok(self.class_at(phi, d)?.bounded)
     }
 
     /// The whole stability analysis over Φ at a rational value of the

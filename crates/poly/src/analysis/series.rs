@@ -22,6 +22,7 @@ use std::fmt;
 
 use num_traits::{One, Signed, Zero};
 
+use crate::error::{Error, ErrorKind};
 use crate::{Poly, Sym, UPoly, Q};
 
 /// A power series Σ c_k x^k over Q, known up to and including x^order.
@@ -260,53 +261,12 @@ fn rational_sqrt(q: &Q) -> Option<Q> {
     (&n * &n == *q.numer() && &d * &d == *q.denom()).then(|| Q::new(n, d))
 }
 
-/// Why a series could not be formed.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct SeriesError {
-    kind: SeriesErrorKind,
-    message: String,
-}
-
-/// What kind of input a [`SeriesError`] rejects.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-#[non_exhaustive]
-pub enum SeriesErrorKind {
-    /// A symbol other than `z` and `Phi` remains.
-    ExtraSymbol,
-    /// The frequency series is implemented for second-order χ only.
-    NotSecondOrder,
-    /// χ has no complex pair for small Φ > 0 (or it sits near Ψ = π).
-    NotOscillatory,
-    /// Ψ is not a series over Q (g(0) is not a rational square); use
-    /// [`psi_series_scaled`].
-    Irrational,
-}
-
-impl SeriesError {
-    fn new(kind: SeriesErrorKind, message: impl Into<String>) -> SeriesError {
-        SeriesError { kind, message: message.into() }
-    }
-
-    /// What went wrong.
-    pub fn kind(&self) -> SeriesErrorKind {
-        self.kind
-    }
-}
-
-impl fmt::Display for SeriesError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&self.message)
-    }
-}
-
-impl std::error::Error for SeriesError {}
-
 /// The z-coefficients (c, b, a) of a second-order χ as polynomials in Φ.
-fn quadratic(charpoly: &Poly) -> Result<[UPoly; 3], SeriesError> {
+fn quadratic(charpoly: &Poly) -> Result<[UPoly; 3], Error> {
     let (z, phi) = (Sym::z(), Sym::phi());
     if let Some(s) = charpoly.symbols().into_iter().find(|&s| s != z && s != phi) {
-        return Err(SeriesError::new(
-            SeriesErrorKind::ExtraSymbol,
+        return Err(Error::analysis(
+            ErrorKind::ExtraSymbol,
             format!(
                 "characteristic polynomial {charpoly} still contains the parameter {s}; \
                  expected a polynomial in z and Phi only"
@@ -315,8 +275,8 @@ fn quadratic(charpoly: &Poly) -> Result<[UPoly; 3], SeriesError> {
     }
     let cs = charpoly.coeffs_in(z);
     if cs.len() != 3 {
-        return Err(SeriesError::new(
-            SeriesErrorKind::NotSecondOrder,
+        return Err(Error::analysis(
+            ErrorKind::NotSecondOrder,
             format!(
                 "the frequency series needs a second-order characteristic polynomial, \
                  got degree {} in z",
@@ -327,8 +287,8 @@ fn quadratic(charpoly: &Poly) -> Result<[UPoly; 3], SeriesError> {
     let u = |p: &Poly| p.to_upoly(phi).expect("only Phi remains");
     let a = u(&cs[2]);
     if a.coeff(0).is_zero() {
-        return Err(SeriesError::new(
-            SeriesErrorKind::NotOscillatory,
+        return Err(Error::analysis(
+            ErrorKind::NotOscillatory,
             "the leading coefficient of the characteristic polynomial vanishes at Phi = 0",
         ));
     }
@@ -346,11 +306,11 @@ fn p_q_series(chi: &[UPoly; 3], order: usize) -> (Series, Series) {
 
 /// Ψ(Φ) = √d · Σ c_k Φ^k, exact: the square-free factor d (1 when Ψ is a
 /// series over Q) and the coefficients of Φ^0..=Φ^order.
-pub fn psi_series_scaled(charpoly: &Poly, order: usize) -> Result<(Q, Vec<Q>), SeriesError> {
+pub fn psi_series_scaled(charpoly: &Poly, order: usize) -> Result<(Q, Vec<Q>), Error> {
     let chi = quadratic(charpoly)?;
     let not_osc = || {
-        SeriesError::new(
-            SeriesErrorKind::NotOscillatory,
+        Error::analysis(
+            ErrorKind::NotOscillatory,
             "the roots are not a complex pair with Psi near 0 for small Phi > 0",
         )
     };
@@ -406,11 +366,11 @@ fn split_square(g0: &Q) -> (Q, Q) {
 /// assert_eq!(psi, vec![poly::q(0, 1), poly::q(1, 1), poly::q(0, 1), poly::q(1, 24)]);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
-pub fn psi_series(charpoly: &Poly, order: usize) -> Result<Vec<Q>, SeriesError> {
+pub fn psi_series(charpoly: &Poly, order: usize) -> Result<Vec<Q>, Error> {
     let (d, c) = psi_series_scaled(charpoly, order)?;
     if !d.is_one() {
-        return Err(SeriesError::new(
-            SeriesErrorKind::Irrational,
+        return Err(Error::analysis(
+            ErrorKind::IrrationalSeries,
             format!("Psi is sqrt({d}) times a series over Q, not a series over Q"),
         ));
     }
@@ -419,17 +379,17 @@ pub fn psi_series(charpoly: &Poly, order: usize) -> Result<Vec<Q>, SeriesError> 
 
 /// The Taylor coefficients of |z|² = q(Φ) of the complex pair,
 /// Φ^0..=Φ^order.
-pub fn modulus_sq_series(charpoly: &Poly, order: usize) -> Result<Vec<Q>, SeriesError> {
+pub fn modulus_sq_series(charpoly: &Poly, order: usize) -> Result<Vec<Q>, Error> {
     let chi = quadratic(charpoly)?;
     Ok(p_q_series(&chi, order).1.c)
 }
 
 /// The Taylor coefficients of |z| = √q(Φ), Φ^0..=Φ^order.
-pub fn modulus_series(charpoly: &Poly, order: usize) -> Result<Vec<Q>, SeriesError> {
+pub fn modulus_series(charpoly: &Poly, order: usize) -> Result<Vec<Q>, Error> {
     let chi = quadratic(charpoly)?;
     let q = p_q_series(&chi, order).1;
     q.sqrt().map(|s| s.c).ok_or_else(|| {
-        SeriesError::new(SeriesErrorKind::Irrational, "|z|^2 at Phi = 0 is not a rational square")
+        Error::analysis(ErrorKind::IrrationalSeries, "|z|^2 at Phi = 0 is not a rational square")
     })
 }
 
@@ -448,8 +408,8 @@ pub const DISPERSION_SEARCH_ORDER: usize = 64;
 /// The leading term of Ψ − Φ; `None` when every coefficient up to
 /// [`DISPERSION_SEARCH_ORDER`] vanishes. When Ψ = √d·(series over Q) with
 /// d ≠ 1 the error has order 1 and `coeff` is reported for the rational
-/// part only, so this returns an [`SeriesErrorKind::Irrational`] error.
-pub fn dispersion_order(charpoly: &Poly) -> Result<Option<LeadingTerm>, SeriesError> {
+/// part only, so this returns an [`ErrorKind::IrrationalSeries`] error.
+pub fn dispersion_order(charpoly: &Poly) -> Result<Option<LeadingTerm>, Error> {
     let mut order = 8;
     loop {
         let psi = psi_series(charpoly, order)?;
@@ -469,7 +429,7 @@ pub fn dispersion_order(charpoly: &Poly) -> Result<Option<LeadingTerm>, SeriesEr
 /// The leading term of |z|² − 1, exact; `None` when |z|² = 1 identically
 /// (no dissipation, e.g. False Euler). |z| − 1 has the same order and half
 /// the coefficient.
-pub fn dissipation_order(charpoly: &Poly) -> Result<Option<LeadingTerm>, SeriesError> {
+pub fn dissipation_order(charpoly: &Poly) -> Result<Option<LeadingTerm>, Error> {
     let [c, _, a] = quadratic(charpoly)?;
     // |z|² − 1 = (c − a)/a, and a(0) ≠ 0: the valuation is that of c − a.
     let diff = &c - &a;
@@ -477,16 +437,6 @@ pub fn dissipation_order(charpoly: &Poly) -> Result<Option<LeadingTerm>, SeriesE
         return Ok(None);
     };
     Ok(Some(LeadingTerm { order: k, coeff: diff.coeff(k) / a.coeff(0) }))
-}
-
-impl From<SeriesError> for crate::Error {
-    fn from(e: SeriesError) -> crate::Error {
-        let kind = match e.kind {
-            SeriesErrorKind::ExtraSymbol => crate::ErrorKind::ExtraSymbol,
-            _ => crate::ErrorKind::NoSeries,
-        };
-        crate::Error::new(kind, crate::Span::default(), e.message)
-    }
 }
 
 impl crate::Derivation {
@@ -502,7 +452,7 @@ impl crate::Derivation {
     /// ```
     pub fn psi_series(&self, params: &crate::Params, order: usize) -> Result<Vec<Q>, crate::Error> {
         let values = self.bind(params)?;
-        Ok(psi_series(&self.charpoly().eval_partial(&values), order)?)
+        psi_series(&self.charpoly().eval_partial(&values), order)
     }
 
     /// |z|² of the complex pair as an exact series in Φ (coefficients of
@@ -513,6 +463,6 @@ impl crate::Derivation {
         order: usize,
     ) -> Result<Vec<Q>, crate::Error> {
         let values = self.bind(params)?;
-        Ok(modulus_sq_series(&self.charpoly().eval_partial(&values), order)?)
+        modulus_sq_series(&self.charpoly().eval_partial(&values), order)
     }
 }

@@ -24,6 +24,7 @@ mod cost;
 mod det;
 mod errors;
 mod front_door;
+mod double_root;
 mod fuzz_corpus;
 mod implicit;
 mod invariant;

@@ -61,33 +61,33 @@ proptest! {
                 "Phi = {} in {}\n{}", i.sample, chi, src
             );
             if strict {
-                prop_assert!(i.class.is_bounded(), "{}", src);
+                prop_assert!(i.class.bounded() == Some(true), "{}", src);
             }
             if i.counts.outside > 0 {
-                prop_assert!(!i.class.is_bounded(), "{}", src);
+                prop_assert!(i.class.bounded() != Some(true), "{}", src);
             }
         }
         match &r.stability {
             Stability::BoundedForAllPhi => {
-                prop_assert!(r.intervals.iter().all(|i| i.class.is_bounded()), "{}", src);
+                prop_assert!(r.intervals.iter().all(|i| i.class.bounded() == Some(true)), "{}", src);
             }
             // Unbounded for every Φ: no bounded interval anywhere.
             Stability::UnboundedForAllPhi => {
-                prop_assert!(!r.intervals[0].class.is_bounded(), "{}", src);
-                prop_assert!(r.intervals.iter().all(|i| !i.class.is_bounded()), "{}", src);
+                prop_assert!(r.intervals[0].class.bounded() != Some(true), "{}", src);
+                prop_assert!(r.intervals.iter().all(|i| i.class.bounded() != Some(true)), "{}", src);
                 prop_assert!(r.stable_intervals.is_empty(), "{}", src);
             }
             // Unstable near zero, bounded further out.
             Stability::UnstableNearZero => {
-                prop_assert!(!r.intervals[0].class.is_bounded(), "{}", src);
-                prop_assert!(r.intervals.iter().any(|i| i.class.is_bounded()), "{}", src);
+                prop_assert!(r.intervals[0].class.bounded() != Some(true), "{}", src);
+                prop_assert!(r.intervals.iter().any(|i| i.class.bounded() == Some(true)), "{}", src);
             }
             // χ alone: bounded below the undecided point, which has a
             // repeated root on the circle.
             Stability::UndecidedAt { at, .. } => {
                 for i in &r.intervals {
                     if i.hi.as_ref().is_some_and(|hi| hi <= at) {
-                        prop_assert!(i.class.is_bounded(), "{}", src);
+                        prop_assert!(i.class.bounded() == Some(true), "{}", src);
                     }
                 }
                 let point = r.critical_points.iter().find(|p| &p.at == at);
@@ -96,11 +96,11 @@ proptest! {
             Stability::Limited { phi_max, bounded_at_phi_max, .. } => {
                 for i in &r.intervals {
                     match &i.hi {
-                        Some(hi) if hi <= phi_max => prop_assert!(i.class.is_bounded(), "{}", src),
+                        Some(hi) if hi <= phi_max => prop_assert!(i.class.bounded() == Some(true), "{}", src),
                         // Just above the limit: unbounded, unless the limit is
                         // an isolated unbounded point.
                         _ if &i.lo == phi_max => prop_assert!(
-                            !i.class.is_bounded() || !bounded_at_phi_max, "{}", src
+                            i.class.bounded() != Some(true) || !bounded_at_phi_max, "{}", src
                         ),
                         _ => {}
                     }

@@ -5,9 +5,9 @@
 use num_bigint::BigInt;
 use poly::advanced::series::{
     dispersion_order, dissipation_order, modulus_sq_series, psi_series, psi_series_scaled,
-    LeadingTerm, Series, SeriesErrorKind,
+    LeadingTerm, Series,
 };
-use poly::{q, Poly, Sym, Q};
+use poly::{q, ErrorKind, Poly, Sym, Q};
 
 fn chi_of(name: &str) -> Poly {
     poly::advanced::charpoly(&poly::builtin(name).unwrap()).unwrap()
@@ -143,7 +143,7 @@ fn fixed_damping_gives_a_scaled_series() {
         chi_of("damped_euler_d").eval_partial(&[(Sym::new("D"), q(1, 2))].into_iter().collect());
     let (d, c) = psi_series_scaled(&chi, 3).unwrap();
     assert_eq!((d, c[1].clone()), (q(3, 1), q(1, 2)));
-    assert_eq!(psi_series(&chi, 3).unwrap_err().kind(), SeriesErrorKind::Irrational);
+    assert_eq!(psi_series(&chi, 3).unwrap_err().kind(), ErrorKind::IrrationalSeries);
     // D = 3/5: √(1 − D²) = 4/5 is rational.
     let chi =
         chi_of("damped_euler_d").eval_partial(&[(Sym::new("D"), q(3, 5))].into_iter().collect());
@@ -154,12 +154,12 @@ fn fixed_damping_gives_a_scaled_series() {
 #[test]
 fn errors() {
     let e = psi_series(&chi_of("damped_euler_d"), 3).unwrap_err();
-    assert_eq!(e.kind(), SeriesErrorKind::ExtraSymbol);
+    assert_eq!(e.kind(), ErrorKind::ExtraSymbol);
     let cubic = Poly::parse("z^3 - Phi").unwrap();
-    assert_eq!(psi_series(&cubic, 3).unwrap_err().kind(), SeriesErrorKind::NotSecondOrder);
+    assert_eq!(psi_series(&cubic, 3).unwrap_err().kind(), ErrorKind::NotSecondOrder);
     // Real roots near Φ = 0: (z − 1)(z − 1 + Phi).
     let real = Poly::parse("(z - 1)*(z - 1 + Phi)").unwrap();
-    assert_eq!(psi_series(&real, 3).unwrap_err().kind(), SeriesErrorKind::NotOscillatory);
+    assert_eq!(psi_series(&real, 3).unwrap_err().kind(), ErrorKind::NotOscillatory);
 }
 
 /// Series arithmetic identities: exp(log(1 + x)) = 1 + x, exp(x)·exp(−x) = 1,

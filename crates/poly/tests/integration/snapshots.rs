@@ -36,7 +36,8 @@ fn record(name: &str) -> String {
         );
     }
     for i in 0..d.transition_matrix().rows() {
-        let row: Vec<String> = d.transition_matrix().row(i).iter().map(ToString::to_string).collect();
+        let row: Vec<String> =
+            d.transition_matrix().row(i).iter().map(ToString::to_string).collect();
         s += &format!("  [{}]\n", row.join(", "));
     }
     s += &format!("\nchi(z) = {}\n", d.charpoly());

@@ -343,7 +343,7 @@ impl Analysed {
     fn inside_exact(&self, phi: f64, d: f64) -> bool {
         let (Some(p), Some(dq)) = (f64_to_q(phi), f64_to_decimal_q(d)) else { return false };
         let mut cache = self.at_param.borrow_mut();
-        let (chi, intervals) = cache.entry(d.to_bits()).or_insert_with(|| {
+        let (_, intervals) = cache.entry(d.to_bits()).or_insert_with(|| {
             let chi = self.region.at_param(&dq);
             let intervals = self.region.stability_at(&dq).ok().map(|r| r.stable_intervals);
             (chi, intervals)
@@ -365,7 +365,7 @@ impl Analysed {
                 };
                 above_lo && below_hi
             }),
-            None => poly::advanced::stability::class_at(chi, &p).is_ok_and(|c| c.is_bounded()),
+            None => self.region.contains(&p, &dq).unwrap_or(false),
         }
     }
 

@@ -52,7 +52,7 @@ fn verify_bounded(margs: &[String], phis: &[f64]) -> Vec<bool> {
     points
         .iter()
         .map(|p| {
-            RootClass::from_name(p["class"].as_str().unwrap()).expect("known class").is_bounded()
+            RootClass::from_name(p["class"].as_str().unwrap()).expect("known class").bounded() == Some(true)
         })
         .collect()
 }

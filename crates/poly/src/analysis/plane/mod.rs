@@ -230,9 +230,13 @@ pub fn rho_at_infinity(chi: &Poly, t: Sym) -> Result<Option<Algebraic>, Error> {
             .map(|(k, c)| c * &Poly::sym(phi).pow((n - k) as u32))
             .collect::<Vec<_>>(),
     );
+    // Every root Φ·z_i moves out along its ray at the same rate, so the
+    // first Φ where a root reaches the circle is 1/ρ whatever happens
+    // there: a limit, or a repeated root on the circle that χ alone leaves
+    // undecided. Either way it is a modulus, not a verdict on boundedness.
     let limit = match verdict(&scaled)? {
         Stability::Limited { phi_max, .. } => phi_max,
-        Stability::UndecidedAt { at, .. } => at,
+        Stability::UndecidedAt { at, .. } if at.sign().is_gt() => at,
         other => {
             return Err(Error::analysis(
                 ErrorKind::NoSeries,

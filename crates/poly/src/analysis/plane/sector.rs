@@ -131,8 +131,16 @@ pub(crate) fn ray_poly(chi: &Poly, d: (&Q, &Q)) -> Poly {
 /// E(Φ) = |c₁(Φd)|² − |c₀(Φd)|² ≥ 0, without the conjugate roots (whose
 /// meeting at z = ±1 on the circle, as Gauss–Legendre's root does at
 /// w = ±2√3 i, is no repeated root of χ). Otherwise the exact engine
-/// decides A² + B² over Φ > 0 (root condition: a repeated root on the
+/// decides A² + B² over Φ > 0 (root condition: a repeated root of χ on the
 /// circle is not stable).
+///
+/// Where that engine stops at a repeated root of A² + B² on the circle
+/// ([`Stability::UndecidedAt`]), the limit is that point only when the
+/// repeated root is χ's own: on the real axis A² + B² is χ itself; off it,
+/// when χ's discriminant in z vanishes there. Otherwise a root of χ may
+/// merely meet its conjugate's (at ±1), which the root condition allows,
+/// and the answer is an error of kind [`ErrorKind::Undecided`], never a
+/// limit that may be too small.
 pub(crate) fn limit_along(chi: &Poly, d: (&Q, &Q)) -> Result<Option<Algebraic>, Error> {
     if chi.degree_in(Sym::z()) == 1 {
         return limit_one_step(chi, d);
@@ -140,9 +148,36 @@ pub(crate) fn limit_along(chi: &Poly, d: (&Q, &Q)) -> Result<Option<Algebraic>, 
     Ok(match verdict(&ray_poly(chi, d))? {
         Stability::BoundedForAllPhi => None,
         Stability::Limited { phi_max, .. } => Some(phi_max),
-        Stability::UndecidedAt { at, .. } => Some(at),
+        Stability::UndecidedAt { at, .. } if d.1.is_zero() || repeated_root_of_chi(chi, d, &at) => {
+            Some(at)
+        }
+        Stability::UndecidedAt { at, .. } => {
+            return Err(Error::analysis(
+                ErrorKind::Undecided,
+                format!(
+                    "along w = Phi*({} + {}i) two roots meet on the unit circle at Phi = {at}, \
+                     but chi's own roots stay simple there: whether the ray is stable beyond \
+                     it is not decided",
+                    d.0, d.1
+                ),
+            ))
+        }
         _ => Some(Algebraic::zero()),
     })
+}
+
+/// Whether χ(z, Φ·d) itself has a repeated root at Φ = `at`: its
+/// discriminant in z, A + iB along the ray, vanishes there (both parts).
+/// With exact constants, not decided here (`false`).
+fn repeated_root_of_chi(chi: &Poly, d: (&Q, &Q), at: &Algebraic) -> bool {
+    let z = Sym::z();
+    let c = chi.coeffs_in(z);
+    let dc = chi.derivative(z).coeffs_in(z);
+    let (a, b) = along(&resultant(&c, &dc), d);
+    match (a.to_upoly(Sym::phi()), b.to_upoly(Sym::phi())) {
+        (Some(a), Some(b)) => at.is_root_of(&a) && at.is_root_of(&b),
+        _ => false,
+    }
 }
 
 /// [`limit_along`] for χ of degree one in z: the first Φ > 0 after which

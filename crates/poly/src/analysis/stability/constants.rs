@@ -146,7 +146,7 @@ pub(crate) fn analyze(
     let mut class_changes = Vec::new();
     let mut phi_max = None;
     let mut boundary = None;
-    let mut bounded_for_all = classes[0].is_bounded();
+    let mut bounded_for_all = classes[0].bounded() == Some(true);
     for (k, point) in points.iter().enumerate() {
         let (from, to) = (classes[k], classes[k + 1]);
         if from == to {
@@ -162,7 +162,7 @@ pub(crate) fn analyze(
             sample: samples[k + 1].clone(),
             counts: counts[k + 1],
         });
-        if bounded_for_all && !to.is_bounded() {
+        if bounded_for_all && to.bounded() != Some(true) {
             bounded_for_all = false;
             phi_max = Some(point.at.clone());
             boundary = Some(boundary_between(from, to));
@@ -201,7 +201,7 @@ pub(crate) fn analyze(
         // ends are not decided here, so they are left open).
         _ => {
             let mut runs: Vec<StableInterval> = Vec::new();
-            for iv in intervals.iter().filter(|iv| iv.class.is_bounded()) {
+            for iv in intervals.iter().filter(|iv| iv.class.bounded() == Some(true)) {
                 match runs.last_mut() {
                     Some(run) if run.hi.as_ref() == Some(&iv.lo) => run.hi = iv.hi.clone(),
                     _ => runs.push(StableInterval {
@@ -298,6 +298,18 @@ fn not_scalar_at(n: &[Vec<Poly>], alpha: &Algebraic) -> bool {
             None => false,
         }
     })
+}
+
+/// Whether P = N/d (2×2 over F) is semisimple at a rational Φ where χ has
+/// a double root on the unit circle (d ≠ 0 there): a 2×2 matrix with a
+/// double eigenvalue is semisimple exactly when it is scalar, that is when
+/// N − (tr N/2)·I vanishes there.
+pub(crate) fn scalar_at(n: &[Vec<Poly>], phi: &Q) -> bool {
+    if n.len() != 2 || n.iter().any(|row| row.len() != 2) {
+        return false;
+    }
+    let at = |p: &Poly| field::reduce(&p.subs(Sym::phi(), &Poly::constant(phi.clone())));
+    [n[0][1].clone(), n[1][0].clone(), &n[0][0] - &n[1][1]].iter().all(|g| at(g).is_zero())
 }
 
 /// The counts of roots of c + b z + a z² (over F, Φ = `phi`) inside, on and

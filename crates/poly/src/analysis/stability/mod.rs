@@ -51,7 +51,7 @@ pub use point::classify_roots_by_products;
 pub use point::Counts;
 pub use point::{classify, classify_pq, PqSigns};
 pub use report::{
-    Boundary, ClassChange, ClassInterval, Condition, CriticalPoint, Marginal, Stability,
+    Boundary, ClassAt, ClassChange, ClassInterval, Condition, CriticalPoint, Marginal, Stability,
     StabilityReport, StableInterval,
 };
 
@@ -99,29 +99,10 @@ impl Derivation {
         self.refuse_scalar()?;
         let values = self.bind(params)?;
         let charpoly = self.charpoly().eval_partial(&values);
-        let phi = Sym::phi();
         if has_generators(&charpoly) {
-            let numerator: Vec<Vec<Poly>> = (0..self.transition_matrix().rows())
-                .map(|i| {
-                    self.transition_matrix().row(i).iter().map(|e| e.eval_partial(&values)).collect()
-                })
-                .collect();
-            return constants::analyze(&charpoly, Some(&numerator));
+            return constants::analyze(&charpoly, Some(&self.numerator_at(&values)));
         }
-        let in_phi = |e: &Poly, what: &str| {
-            let e = e.eval_partial(&values);
-            e.to_upoly(phi).ok_or_else(|| {
-                Error::analysis(
-                    ErrorKind::ExtraSymbol,
-                    format!("{what} {e} still contains a parameter; expected a polynomial in Phi only (give it a value)"),
-                )
-            })
-        };
-        let p = &self.transition_matrix();
-        let rows: Vec<Vec<UPoly>> = (0..p.rows())
-            .map(|i| p.row(i).iter().map(|e| in_phi(e, "transition matrix entry")).collect())
-            .collect::<Result<_, _>>()?;
-        let denominator = in_phi(&self.p_denominator(), "the step's determinant det A,")?;
+        let (rows, denominator) = self.step_matrix_in_phi(&values)?;
         rational::analyze(
             &charpoly,
             Some(rational::StepMatrix { numerator: &rows, denominator: &denominator }),
@@ -129,8 +110,22 @@ impl Derivation {
     }
 
     /// The root class exactly at a rational Φ, with the method's other
-    /// parameters bound in `params`.
-    pub fn class_at(&self, params: &Params, phi: &Q) -> Result<RootClass, Error> {
+    /// parameters bound in `params`, and whether the sequence stays bounded
+    /// there: where χ has a repeated root on the unit circle
+    /// ([`RootClass::DoubleRootOnCircle`], which χ alone leaves undecided),
+    /// boundedness is decided from the transition matrix P, as
+    /// [`Derivation::stability`] does (bounded exactly when P is semisimple
+    /// there).
+    ///
+    /// ```
+    /// let d = poly::derive(&poly::builtin("false_euler")?)?;
+    /// // At Φ = 2 both roots meet at −1 and P is a Jordan block: it grows.
+    /// let at = d.class_at(&poly::Params::new(), &poly::q(2, 1))?;
+    /// assert_eq!(at.class, poly::RootClass::DoubleRootOnCircle);
+    /// assert!(!at.bounded);
+    /// # Ok::<(), poly::Error>(())
+    /// ```
+    pub fn class_at(&self, params: &Params, phi: &Q) -> Result<ClassAt, Error> {
         let values = self.bind(params)?;
         let mut at = values.clone();
         at.insert(Sym::phi(), phi.clone());
@@ -140,16 +135,62 @@ impl Derivation {
             .as_constant()
             .is_some_and(|d| num_traits::Zero::is_zero(&d))
         {
-            return Ok(RootClass::Singular);
+            return Ok(ClassAt { class: RootClass::Singular, bounded: false });
         }
-        class_at(&self.charpoly().eval_partial(&values), phi)
+        let charpoly = self.charpoly().eval_partial(&values);
+        let class = class_at(&charpoly, phi)?;
+        let bounded = match class.bounded() {
+            Some(bounded) => bounded,
+            None if has_generators(&charpoly) => {
+                constants::scalar_at(&self.numerator_at(&values), phi)
+            }
+            None => {
+                let (rows, denominator) = self.step_matrix_in_phi(&values)?;
+                rational::bounded_on_circle_at(
+                    &conditions::Charpoly::new(&charpoly)?,
+                    phi,
+                    rational::StepMatrix { numerator: &rows, denominator: &denominator },
+                )
+            }
+        };
+        Ok(ClassAt { class, bounded })
+    }
+
+    /// The numerator of P (P times det A) with the parameters but Φ bound.
+    fn numerator_at(&self, values: &std::collections::HashMap<Sym, Q>) -> Vec<Vec<Poly>> {
+        let p = self.transition_matrix();
+        (0..p.rows()).map(|i| p.row(i).iter().map(|e| e.eval_partial(values)).collect()).collect()
+    }
+
+    /// The numerator of P and its denominator det A as polynomials in Φ,
+    /// the other parameters bound.
+    fn step_matrix_in_phi(
+        &self,
+        values: &std::collections::HashMap<Sym, Q>,
+    ) -> Result<(Vec<Vec<UPoly>>, UPoly), Error> {
+        let phi = Sym::phi();
+        let in_phi = |e: &Poly, what: &str| {
+            let e = e.eval_partial(values);
+            e.to_upoly(phi).ok_or_else(|| {
+                Error::analysis(
+                    ErrorKind::ExtraSymbol,
+                    format!("{what} {e} still contains a parameter; expected a polynomial in Phi only (give it a value)"),
+                )
+            })
+        };
+        let p = self.transition_matrix();
+        let rows: Vec<Vec<UPoly>> = (0..p.rows())
+            .map(|i| p.row(i).iter().map(|e| in_phi(e, "transition matrix entry")).collect())
+            .collect::<Result<_, _>>()?;
+        let denominator = in_phi(self.p_denominator(), "the step's determinant det A,")?;
+        Ok((rows, denominator))
     }
 
     /// The values of every parameter of the method but Φ, refusing names
     /// the method does not declare and Φ itself (the analysis covers every
     /// Φ > 0).
     pub(crate) fn bind(&self, params: &Params) -> Result<std::collections::HashMap<Sym, Q>, Error> {
-        let method = &self.method();
+        let method = self.method();
         if let Some(name) = params.undeclared(method).next() {
             return Err(Error::analysis(
                 ErrorKind::ExtraSymbol,
@@ -204,7 +245,22 @@ pub(crate) fn verdict(charpoly: &Poly) -> Result<Stability, Error> {
     rational::verdict(charpoly)
 }
 
-/// The root class of χ at a rational Φ, exactly.
+/// The root class of χ at a rational Φ, exactly, from χ alone.
+///
+/// χ does not carry the transition matrix P, so this answer needs P to be a
+/// verdict on boundedness: a repeated root on the unit circle comes back as
+/// [`RootClass::DoubleRootOnCircle`], whose [`RootClass::bounded`] is
+/// `None` (undecided without P), never as unbounded. With a derivation at
+/// hand, ask [`Derivation::class_at`], which decides it from P.
+///
+/// ```
+/// // Three substeps of False Euler at Φ = 3: χ = (z + 1)², and P = −I.
+/// let chi = poly::Poly::parse("z^2 + 2*z + 1")?;
+/// let class = poly::advanced::stability::class_at(&chi, &poly::q(3, 1))?;
+/// assert_eq!(class, poly::RootClass::DoubleRootOnCircle);
+/// assert_eq!(class.bounded(), None);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn class_at(charpoly: &Poly, phi: &Q) -> Result<RootClass, Error> {
     // Exact constants (sqrt(3), cbrt(2)): the norm-based layer.
     if has_generators(charpoly) {

@@ -71,7 +71,7 @@ fn disc_of(conditions: &[(Condition, UPoly)]) -> UPoly {
 
 /// Whether every root of a class lies in the closed unit disc.
 fn in_closed_disc(class: RootClass) -> bool {
-    class.is_bounded() || class == RootClass::DoubleRootOnCircle
+    class.bounded() == Some(true) || class == RootClass::DoubleRootOnCircle
 }
 
 /// The class exactly at an irrational critical point α of a χ of any
@@ -216,6 +216,16 @@ fn run_with(
     let at_samples: Vec<(RootClass, Counts)> =
         samples.iter().map(|s| class_at_rational(chi, s)).collect();
     let classes: Vec<RootClass> = at_samples.iter().map(|c| c.0).collect();
+    // Boundedness on each open interval: the class's, except where a root
+    // on the circle stays repeated over the whole interval (the class is
+    // DoubleRootOnCircle there), which P decides at the sample and χ alone
+    // leaves undecided (`None`).
+    let bounded_on: Vec<Option<bool>> = classes
+        .iter()
+        .zip(&samples)
+        .map(|(c, s)| c.bounded().or_else(|| p.map(|step| bounded_on_circle_at(chi, s, step))))
+        .collect();
+    let is_bounded = |k: usize| bounded_on[k] == Some(true);
     // Where the step's system is singular (det A = 0) the step is
     // undefined: its own class, never bounded.
     let at_classes: Vec<Option<RootClass>> = points
@@ -243,7 +253,7 @@ fn run_with(
         })
     };
     for (k, point) in points.iter_mut().enumerate() {
-        if classes[k].is_bounded() || classes[k + 1].is_bounded() {
+        if is_bounded(k) || is_bounded(k + 1) {
             // A root on the circle is ±1 (χ(±1) = 0) or has its conjugate
             // 1/z beside it (z_i z_j = 1): with none of those conditions
             // vanishing here, every root is strictly inside (next to a
@@ -292,7 +302,10 @@ fn run_with(
     }
 
     // The stability limit: walk up from Φ = 0 while everything is bounded.
-    let stability = if !classes[0].is_bounded() {
+    let stability = if bounded_on[0].is_none() {
+        // χ alone, a root on the circle repeated for every small Φ.
+        Stability::UndecidedAt { at: zero.clone(), boundary: Boundary::Other }
+    } else if !is_bounded(0) {
         Stability::UnboundedForAllPhi
     } else {
         let mut verdict = Stability::BoundedForAllPhi;
@@ -305,8 +318,16 @@ fn run_with(
                 };
                 break;
             };
-            if at_bounded && classes[k + 1].is_bounded() {
+            if at_bounded && is_bounded(k + 1) {
                 continue;
+            }
+            if at_bounded && bounded_on[k + 1].is_none() {
+                // χ alone: a root on the circle repeated past this point.
+                verdict = Stability::UndecidedAt {
+                    at: point.at.clone(),
+                    boundary: boundary_at(chi, point),
+                };
+                break;
             }
             verdict = Stability::Limited {
                 phi_max: point.at.clone(),
@@ -326,7 +347,7 @@ fn run_with(
     let mut stable_intervals: Vec<StableInterval> = Vec::new();
     let mut open: Option<StableInterval> = None;
     for k in 0..=points.len() {
-        if classes[k].is_bounded() {
+        if is_bounded(k) {
             if open.is_none() {
                 let (lo, lo_closed) = if k == 0 {
                     (zero.clone(), false)
@@ -336,7 +357,7 @@ fn run_with(
                 open = Some(StableInterval { lo, lo_closed, hi: None, hi_closed: false });
             }
             if let Some(pt) = points.get(k) {
-                if pt.bounded == Some(true) && classes.get(k + 1).is_some_and(|c| c.is_bounded()) {
+                if pt.bounded == Some(true) && k + 1 < bounded_on.len() && is_bounded(k + 1) {
                     continue;
                 }
                 let mut s = open.take().expect("open");
@@ -382,10 +403,9 @@ fn bounded_at(
     disc: &UPoly,
     p: Option<StepMatrix<'_>>,
 ) -> Option<bool> {
-    match at_class {
-        Some(c) if c.is_bounded() => return Some(true),
-        Some(RootClass::DoubleRootOnCircle) => {}
-        Some(_) => return Some(false),
+    match at_class.map(RootClass::bounded) {
+        Some(Some(bounded)) => return Some(bounded),
+        Some(None) => {}
         None => {
             if !disc.is_zero() && !alpha.is_root_of(disc) {
                 // Simple roots, none outside: bounded.
@@ -430,6 +450,16 @@ fn bounded_at(
     let qp = field.poly_at_matrix(&q, &pm);
     let qp2 = field.mat_mul(&qp, &qp);
     Some(field.rank(qp) == field.rank(qp2))
+}
+
+/// Whether the sequence is bounded at a rational Φ where χ has a repeated
+/// root on the unit circle and none outside (the class is
+/// [`RootClass::DoubleRootOnCircle`]), decided from P: bounded exactly when
+/// P is semisimple there.
+pub(crate) fn bounded_on_circle_at(chi: &Charpoly, phi: &Q, p: StepMatrix<'_>) -> bool {
+    let alpha = Algebraic::from_rational(phi.clone());
+    bounded_at(chi, &alpha, Some(RootClass::DoubleRootOnCircle), &UPoly::zero(), Some(p))
+        .expect("P is at hand")
 }
 
 /// What happens at the stability limit, from which conditions vanish there

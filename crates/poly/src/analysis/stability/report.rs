@@ -154,6 +154,19 @@ impl Stability {
     }
 }
 
+/// The answer at one rational Φ of an analysis that has the transition
+/// matrix P ([`Derivation::class_at`](crate::Derivation::class_at)): the
+/// root class of χ, and whether the sequence stays bounded there, decided
+/// from P where χ alone cannot (a repeated root on the unit circle is
+/// bounded exactly when P is semisimple there).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct ClassAt {
+    /// The root class of χ.
+    pub class: RootClass,
+    /// Whether the sequence stays bounded.
+    pub bounded: bool,
+}
+
 /// A Φ where the root class changes.
 #[derive(Clone, Debug)]
 pub struct ClassChange {

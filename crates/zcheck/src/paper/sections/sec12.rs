@@ -8,7 +8,6 @@
 use std::cell::Cell;
 use std::f64::consts::PI;
 
-use poly::RootClass;
 
 use super::common::*;
 use super::exact::p_q;
@@ -31,7 +30,7 @@ pub(crate) fn claims() -> Vec<Claim> {
 fn false_euler(s: &mut Section) {
     // "Guaranteed stability" within the limit section 7 states (Φ² = 4).
     let (finding, map, failing) =
-        ranges::always("false_euler", RootClass::is_bounded, Some("Phi^2 - 4"));
+        ranges::always("false_euler", |c| c.bounded() == Some(true), Some("Phi^2 - 4"));
     let fe = advice::criteria("false_euler");
     let sh = advice::criteria("standard_heun");
     let Finding::Cases { mut cases } = finding else { unreachable!("always() gives cases") };
