@@ -75,6 +75,12 @@ pub enum ErrorKind {
     /// reads `w`) given to an oscillator analysis, or an oscillator program
     /// with no scalar form (a partitioned method) given to the w-plane.
     TestEquation,
+    /// Order conditions: a tree order (or a modified equation's power)
+    /// beyond the supported maximum.
+    TreeOrder,
+    /// Order analysis: a question not decided for this input (the SSP
+    /// coefficient of an implicit method with irrational entries).
+    Unsupported,
 }
 
 /// A position in a source file, 1-based.

@@ -9,6 +9,7 @@ pub(crate) mod class;
 pub mod cost;
 pub mod equiv;
 pub mod invariant;
+pub mod order;
 pub mod plane;
 pub mod region;
 pub mod series;

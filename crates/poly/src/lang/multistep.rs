@@ -97,6 +97,11 @@ impl Multistep {
         &self.name
     }
 
+    /// The coefficients as read: α_0..α_k and β_0..β_k.
+    pub fn coefficients(&self) -> (&[Exact], &[Exact]) {
+        (&self.alpha, &self.beta)
+    }
+
     /// Whether β_k = 0 (an explicit method).
     pub fn is_explicit(&self) -> bool {
         self.beta[self.steps()].zero

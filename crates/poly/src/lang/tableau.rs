@@ -85,6 +85,8 @@ pub struct Tableau {
     name: String,
     a: Vec<Vec<Exact>>,
     b: Vec<Exact>,
+    /// `c` as given, when it was.
+    c: Option<Vec<Exact>>,
     /// `Some(rows)` when `c` was given: the rows where it differs from A's
     /// row sums.
     c_mismatch: Option<Vec<usize>>,
@@ -172,6 +174,7 @@ impl Tableau {
             name: id,
             a,
             b,
+            c,
             c_mismatch,
             constants,
             stability_function: std::sync::OnceLock::new(),
@@ -191,6 +194,12 @@ impl Tableau {
     /// The method's name.
     pub fn name(&self) -> &str {
         &self.name
+    }
+
+    /// The entries as read: `A` (row by row), `b`, and `c` when it was
+    /// given.
+    pub fn entries(&self) -> (&[Vec<Exact>], &[Exact], Option<&[Exact]>) {
+        (&self.a, &self.b, self.c.as_deref())
     }
 
     /// Σ b_i, exactly: 1 for a consistent method (order at least 1).

@@ -16,21 +16,24 @@
 //! - `cost`: operation counts; `series`: exact Ψ and |z|² series;
 //! - `stability`: the exact stability analysis; `sturm`: Sturm sequences and
 //!   real algebraic numbers against brute-force oracles;
-//! - `tableau`: Butcher tableaux derive their built-ins' χ.
+//! - `tableau`: Butcher tableaux derive their built-ins' χ;
+//! - `order`: order conditions by trees, SSP, PSD, partitioned methods,
+//!   splittings and modified equations against their oracles (issue 35).
 
 mod algebra;
 mod common;
 mod cost;
 mod det;
+mod double_root;
 mod errors;
 mod front_door;
-mod double_root;
 mod fuzz_corpus;
 mod implicit;
 mod invariant;
 mod language;
 mod large;
 mod multistep;
+mod order;
 mod parser;
 mod plane;
 mod random_programs;

@@ -1,0 +1,369 @@
+//! The SSP coefficient: Kraaijevanger's radius of absolute monotonicity,
+//! exact.
+//!
+//! With K = [[A, 0], [bᵀ, 0]], the method is absolutely monotonic at r ≥ 0
+//! when I + rK is invertible, K(I + rK)⁻¹ ≥ 0 and (I + rK)⁻¹e ≥ 0
+//! entrywise; the radius R is the supremum of the r for which this holds on
+//! all of [0, r] (0 when it holds at no r > 0, unbounded when at every r).
+//!
+//! (I + rK)⁻¹ = [[X, 0], [−r bᵀX, 1]] with X = (I + rA)⁻¹ = adj/D,
+//! D = det(I + rA), D(0) = 1. On [0, ρ_D), ρ_D the least positive root of
+//! D, D > 0, so the conditions are that the polynomials A·adj, bᵀadj,
+//! adj·e and D − r bᵀadj·e are ≥ 0, and R = min(ρ_D, each polynomial's
+//! first point where it turns negative). A polynomial's sign is constant
+//! between its consecutive positive roots (isolated exactly, as algebraic
+//! numbers) and is read at one rational point of each gap; over a field
+//! with radicals, the candidate roots are those of its norm, a polynomial
+//! over Q whose roots include every conjugate's.
+//!
+//! Explicit methods have X = Σ_k (−rA)^k and D = 1. Implicit methods with
+//! rational entries get adj·(·) and D by exact evaluation at s + 1 rational
+//! points and interpolation; implicit methods with radicals are decided
+//! only when some entry of K is negative (R = 0), else the answer is
+//! [`ErrorKind::Unsupported`]. The oracle, [`absolutely_monotone_at`],
+//! inverts I + rK at one rational r.
+
+use std::cmp::Ordering;
+
+use num_traits::{One, Zero};
+
+use super::rk::{dot, mat_vec};
+use super::value::{read_matrix, Matrix, Value};
+use super::Ssp;
+use crate::error::{Error, ErrorKind};
+use crate::lang::tableau::Tableau;
+use crate::multivariate::constants as field;
+use crate::{Algebraic, Poly, Sym, UPoly, Q};
+
+/// A polynomial in r with exact coefficients, lowest degree first.
+type RPoly = Vec<Value>;
+
+fn radius_of(tableau: &Tableau) -> Result<(Matrix, Vec<Value>), Error> {
+    let (a_e, b_e, _) = tableau.entries();
+    let (a, rest) = read_matrix(a_e, &[("b", b_e)])?;
+    Ok((a, rest[0].clone()))
+}
+
+/// The SSP coefficient of a tableau (Kraaijevanger's radius of absolute
+/// monotonicity), exact.
+///
+/// ```
+/// use poly::advanced::tableau::{Exact, Tableau};
+/// use poly::order::{ssp_coefficient, Ssp};
+/// let e = |s: &str| Exact::parse(s).unwrap();
+/// let a = vec![vec![e("0"), e("0"), e("0")], vec![e("1"), e("0"), e("0")], vec![e("1/4"), e("1/4"), e("0")]];
+/// let t = Tableau::new("ssprk33", a, vec![e("1/6"), e("1/6"), e("2/3")], None)?;
+/// assert_eq!(ssp_coefficient(&t)?, Ssp::Radius(poly::Algebraic::from_rational(poly::q(1, 1))));
+/// # Ok::<(), poly::Error>(())
+/// ```
+pub fn ssp_coefficient(tableau: &Tableau) -> Result<Ssp, Error> {
+    let (a, b) = radius_of(tableau)?;
+    coefficient(&a, &b)
+}
+
+/// Whether the tableau is absolutely monotonic at the one point r ≥ 0:
+/// I + rK invertible, K(I + rK)⁻¹ ≥ 0 and (I + rK)⁻¹e ≥ 0, by exact
+/// Gauss–Jordan inversion. The slow, obvious oracle of
+/// [`ssp_coefficient`] (which asks it of all of [0, r]).
+pub fn absolutely_monotone_at(tableau: &Tableau, r: &Q) -> Result<bool, Error> {
+    let (a, b) = radius_of(tableau)?;
+    let s = b.len();
+    let n = s + 1;
+    let k = |i: usize, j: usize| -> Value {
+        match (i < s, j < s) {
+            (true, true) => a[i][j].clone(),
+            (false, true) => b[j].clone(),
+            _ => Value::zero(),
+        }
+    };
+    let rv = Value::from(r.clone());
+    let mut m: Matrix = (0..n)
+        .map(|i| {
+            (0..2 * n)
+                .map(|j| match j < n {
+                    true => {
+                        let x = rv.mul(&k(i, j));
+                        if i == j {
+                            x.add(&Value::one())
+                        } else {
+                            x
+                        }
+                    }
+                    false if j - n == i => Value::one(),
+                    false => Value::zero(),
+                })
+                .collect()
+        })
+        .collect();
+    for col in 0..n {
+        let Some(p) = (col..n).find(|&i| !m[i][col].is_zero()) else {
+            return Ok(false);
+        };
+        m.swap(col, p);
+        let inv = m[col][col].inverse().expect("nonzero pivot");
+        m[col] = m[col].iter().map(|x| x.mul(&inv)).collect();
+        for i in 0..n {
+            if i != col && !m[i][col].is_zero() {
+                let f = m[i][col].clone();
+                let pivot = m[col].clone();
+                m[i] = m[i].iter().zip(&pivot).map(|(x, y)| x.sub(&f.mul(y))).collect();
+            }
+        }
+    }
+    let inv: Matrix = m.into_iter().map(|row| row[n..].to_vec()).collect();
+    let nonneg = |v: &Value| v.sign() != Ordering::Less;
+    for (i, row) in inv.iter().enumerate() {
+        if !nonneg(&Value::sum(row)) {
+            return Ok(false);
+        }
+        for j in 0..n {
+            let kij = inv
+                .iter()
+                .enumerate()
+                .fold(Value::zero(), |acc, (l, r)| acc.add(&k(i, l).mul(&r[j])));
+            if !nonneg(&kij) {
+                return Ok(false);
+            }
+        }
+    }
+    Ok(true)
+}
+
+/// The radius for A and b.
+pub(crate) fn coefficient(a: &Matrix, b: &[Value]) -> Result<Ssp, Error> {
+    let s = b.len();
+    let explicit = (0..s).all(|i| (i..s).all(|j| a[i][j].is_zero()));
+    let rational = super::value::all_rational(a.iter().flatten().chain(b));
+    // Entries of K below zero: R = 0, whatever the rest.
+    if a.iter().flatten().chain(b).any(|x| x.sign() == Ordering::Less) {
+        return Ok(Ssp::Radius(Algebraic::zero()));
+    }
+    let (polys, d) = if explicit {
+        (explicit_conditions(a, b), None)
+    } else if rational {
+        let (polys, d) = implicit_conditions(a, b);
+        (polys, Some(d))
+    } else {
+        return Err(Error::analysis(
+            ErrorKind::Unsupported,
+            "the SSP coefficient of an implicit tableau with irrational entries and K ≥ 0 is not \
+             decided (only rational or explicit tableaux are)",
+        ));
+    };
+    let mut best: Option<Algebraic> =
+        d.and_then(|d| Algebraic::positive_roots(&d).into_iter().next());
+    for p in &polys {
+        if let Some(r) = first_negative(p) {
+            if best.as_ref().is_none_or(|b| r < *b) {
+                best = Some(r);
+            }
+            if best.as_ref().is_some_and(|b| b.sign() == Ordering::Equal) {
+                break;
+            }
+        }
+    }
+    Ok(best.map_or(Ssp::Unbounded, Ssp::Radius))
+}
+
+/// Explicit: X = Σ_k (−r)^k A^k; the polynomials A·X, bᵀX, X·e and
+/// 1 − r bᵀX e, as coefficient lists in r.
+fn explicit_conditions(a: &Matrix, b: &[Value]) -> Vec<RPoly> {
+    let s = b.len();
+    // powers[k] = (−A)^k.
+    let mut powers: Vec<Matrix> = vec![(0..s)
+        .map(|i| (0..s).map(|j| if i == j { Value::one() } else { Value::zero() }).collect())
+        .collect()];
+    for _ in 1..s {
+        let last = powers.last().expect("one");
+        let next: Matrix = (0..s)
+            .map(|i| {
+                (0..s)
+                    .map(|j| {
+                        (0..s).fold(Value::zero(), |acc, l| {
+                            if a[i][l].is_zero() || last[l][j].is_zero() {
+                                acc
+                            } else {
+                                acc.sub(&a[i][l].mul(&last[l][j]))
+                            }
+                        })
+                    })
+                    .collect()
+            })
+            .collect();
+        if next.iter().flatten().all(Value::is_zero) {
+            break;
+        }
+        powers.push(next);
+    }
+    let col = |m: &Matrix, j: usize| -> Vec<Value> { m.iter().map(|r| r[j].clone()).collect() };
+    let mut out = Vec::new();
+    for row in a {
+        for j in 0..s {
+            // (A X)_ij = Σ_k r^k (A (−A)^k)_ij
+            out.push(powers.iter().map(|p| dot(row, &col(p, j))).collect());
+        }
+    }
+    for j in 0..s {
+        out.push(powers.iter().map(|p| dot(b, &col(p, j))).collect());
+    }
+    let e = vec![Value::one(); s];
+    let xe: Vec<Vec<Value>> = powers.iter().map(|p| mat_vec(p, &e)).collect();
+    for i in 0..s {
+        out.push(xe.iter().map(|v| v[i].clone()).collect());
+    }
+    let mut last = vec![Value::one()];
+    for v in &xe {
+        last.push(dot(b, v).neg());
+    }
+    out.push(last);
+    out
+}
+
+/// Implicit over Q: the same polynomials times D = det(I + rA), and D,
+/// interpolated from exact values at s + 1 rational points where I + rA is
+/// invertible.
+fn implicit_conditions(a: &Matrix, b: &[Value]) -> (Vec<RPoly>, UPoly) {
+    let s = b.len();
+    let aq: Vec<Vec<Q>> = a
+        .iter()
+        .map(|r| r.iter().map(|x| x.as_rational().expect("rational").clone()).collect())
+        .collect();
+    let bq: Vec<Q> = b.iter().map(|x| x.as_rational().expect("rational").clone()).collect();
+    let mut xs = Vec::new();
+    let mut values: Vec<Vec<Q>> = Vec::new();
+    let mut point = 0i64;
+    while xs.len() < s + 1 {
+        let r = Q::from_integer(point.into());
+        point += 1;
+        let m: Vec<Vec<Q>> = (0..s)
+            .map(|i| {
+                (0..s).map(|j| &r * &aq[i][j] + if i == j { Q::one() } else { Q::zero() }).collect()
+            })
+            .collect();
+        let Some((d, inv)) = det_inverse(m) else { continue };
+        let adj: Vec<Vec<Q>> = inv.iter().map(|row| row.iter().map(|x| x * &d).collect()).collect();
+        let mut v = Vec::new();
+        let column = |j: usize| adj.iter().map(move |row| &row[j]);
+        for row in &aq {
+            for j in 0..s {
+                v.push(row.iter().zip(column(j)).map(|(x, y)| x * y).sum());
+            }
+        }
+        for j in 0..s {
+            v.push(bq.iter().zip(column(j)).map(|(x, y)| x * y).sum());
+        }
+        let adj_e: Vec<Q> = adj.iter().map(|row| row.iter().sum()).collect();
+        v.extend(adj_e.iter().cloned());
+        let bxe: Q = bq.iter().zip(&adj_e).map(|(x, y)| x * y).sum();
+        v.push(&d - &r * bxe);
+        v.push(d);
+        xs.push(r);
+        values.push(v);
+    }
+    let count = values[0].len();
+    let mut polys: Vec<RPoly> = (0..count)
+        .map(|k| {
+            let ys: Vec<Q> = values.iter().map(|v| v[k].clone()).collect();
+            interpolate(&xs, &ys).coeffs().iter().cloned().map(Value::from).collect()
+        })
+        .collect();
+    let d = polys.pop().expect("D");
+    let d = UPoly::new(d.iter().map(|x| x.as_rational().expect("rational").clone()).collect());
+    (polys, d)
+}
+
+/// det(m) and m⁻¹ by Gauss–Jordan over Q; `None` when m is singular.
+fn det_inverse(mut m: Vec<Vec<Q>>) -> Option<(Q, Vec<Vec<Q>>)> {
+    let n = m.len();
+    for (i, row) in m.iter_mut().enumerate() {
+        row.extend((0..n).map(|j| if i == j { Q::one() } else { Q::zero() }));
+    }
+    let mut det = Q::one();
+    for col in 0..n {
+        let p = (col..n).find(|&i| !m[i][col].is_zero())?;
+        if p != col {
+            m.swap(col, p);
+            det = -det;
+        }
+        let piv = m[col][col].clone();
+        det *= &piv;
+        let inv = piv.recip();
+        for x in m[col].iter_mut() {
+            *x *= &inv;
+        }
+        for i in 0..n {
+            if i != col && !m[i][col].is_zero() {
+                let f = m[i][col].clone();
+                let pivot = m[col].clone();
+                for (x, y) in m[i].iter_mut().zip(&pivot) {
+                    *x -= &f * y;
+                }
+            }
+        }
+    }
+    Some((det, m.into_iter().map(|row| row[n..].to_vec()).collect()))
+}
+
+/// The polynomial of degree < n through the n points, by Newton's divided
+/// differences.
+fn interpolate(xs: &[Q], ys: &[Q]) -> UPoly {
+    let n = xs.len();
+    let mut c = ys.to_vec();
+    for k in 1..n {
+        for i in (k..n).rev() {
+            c[i] = (&c[i] - &c[i - 1]) / (&xs[i] - &xs[i - k]);
+        }
+    }
+    let mut p = UPoly::constant(c[n - 1].clone());
+    for i in (0..n - 1).rev() {
+        // p = p·(x − xs[i]) + c[i]
+        let shifted = &p * &UPoly::new(vec![-xs[i].clone(), Q::one()]);
+        p = &shifted + &UPoly::constant(c[i].clone());
+    }
+    p
+}
+
+/// P(x) at a rational x.
+fn eval(p: &RPoly, x: &Q) -> Value {
+    let xv = Value::from(x.clone());
+    p.iter().rev().fold(Value::zero(), |acc, c| acc.mul(&xv).add(c))
+}
+
+/// The supremum of the r with P ≥ 0 on [0, r]; `None` when P ≥ 0 on all of
+/// [0, ∞).
+fn first_negative(p: &RPoly) -> Option<Algebraic> {
+    if p.iter().all(Value::is_zero) {
+        return None;
+    }
+    let candidates = if super::value::all_rational(p) {
+        Algebraic::positive_roots(&UPoly::new(
+            p.iter().map(|x| x.as_rational().expect("rational").clone()).collect(),
+        ))
+    } else {
+        let r = Sym::new("r");
+        let mut poly = Poly::zero();
+        for (k, c) in p.iter().enumerate() {
+            poly += &(&c.to_poly() * &Poly::sym(r).pow(k as u32));
+        }
+        let norm = field::norm(&poly).to_upoly(r).expect("a polynomial in r");
+        Algebraic::positive_roots(&norm)
+    };
+    let negative_at = |x: &Q| eval(p, x).sign() == Ordering::Less;
+    let first = match candidates.first() {
+        Some(c) => Algebraic::rational_between(&Algebraic::zero(), c),
+        None => Q::one(),
+    };
+    if negative_at(&first) {
+        return Some(Algebraic::zero());
+    }
+    for (k, c) in candidates.iter().enumerate() {
+        let x = match candidates.get(k + 1) {
+            Some(next) => Algebraic::rational_between(c, next),
+            None => c.interval().1 + Q::one(),
+        };
+        if negative_at(&x) {
+            return Some(c.clone());
+        }
+    }
+    None
+}
