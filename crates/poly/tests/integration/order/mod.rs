@@ -14,6 +14,8 @@ use poly::order::{self, Options, Order, Ssp, Value};
 use poly::{q, Algebraic, Poly, Sym, Q};
 use proptest::prelude::*;
 
+mod partitioned;
+
 fn e(s: &str) -> Exact {
     Exact::parse(s).unwrap_or_else(|err| panic!("{s}: {err}"))
 }
@@ -432,42 +434,9 @@ fn trees_against_taylor_expansion() {
 
 /// F(t)(y₀) of a tree in notation, for a system in its symbols.
 fn differential(sys: &System, notation: &str, y0: &[Q]) -> Vec<Q> {
-    fn parse(s: &[u8], at: &mut usize) -> Vec<Vec<u8>> {
-        // s[*at] = '['; returns the children's notations.
-        *at += 1;
-        let mut kids = Vec::new();
-        while s[*at] == b'[' {
-            let start = *at;
-            parse(s, at);
-            kids.push(s[start..*at].to_vec());
-        }
-        *at += 1;
-        kids
-    }
-    fn field(sys: &System, notation: &[u8]) -> Vec<Poly> {
-        let mut at = 0;
-        let kids = parse(notation, &mut at);
-        let args: Vec<Vec<Poly>> = kids.iter().map(|k| field(sys, k)).collect();
-        sys.f
-            .iter()
-            .map(|fi| {
-                // Σ over index tuples of ∂^m f_i / ∂y_j1..∂y_jm · ∏ F(t_l)_jl.
-                let mut terms = vec![(fi.clone(), Poly::one())];
-                for arg in &args {
-                    terms = terms
-                        .iter()
-                        .flat_map(|(d, w)| {
-                            sys.vars.iter().zip(arg).map(move |(v, a)| (d.derivative(*v), w * a))
-                        })
-                        .collect();
-                }
-                terms.iter().fold(Poly::zero(), |acc, (d, w)| &acc + &(d * w))
-            })
-            .collect()
-    }
     let env: std::collections::HashMap<Sym, Q> =
         sys.vars.iter().copied().zip(y0.iter().cloned()).collect();
-    field(sys, notation.as_bytes()).iter().map(|p| p.eval(&env).unwrap()).collect()
+    symbolic_differential(sys, notation).iter().map(|p| p.eval(&env).unwrap()).collect()
 }
 
 // ---------------------------------------------------------------------
@@ -518,8 +487,8 @@ fn modified_equation_against_its_flow() {
     }
 }
 
+/// F(t) of a tree in notation, as polynomials in the system's symbols.
 fn symbolic_differential(sys: &System, notation: &str) -> Vec<Poly> {
-    // Reuse `differential`'s recursion symbolically: evaluate at symbols.
     fn parse(s: &[u8], at: &mut usize) -> Vec<Vec<u8>> {
         *at += 1;
         let mut kids = Vec::new();
@@ -531,6 +500,7 @@ fn symbolic_differential(sys: &System, notation: &str) -> Vec<Poly> {
         *at += 1;
         kids
     }
+    // Σ over index tuples of ∂^m f_i / ∂y_j1..∂y_jm · ∏ F(t_l)_jl.
     fn field(sys: &System, notation: &[u8]) -> Vec<Poly> {
         let mut at = 0;
         let kids = parse(notation, &mut at);
