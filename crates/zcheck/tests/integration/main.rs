@@ -3,6 +3,7 @@
 
 mod advise_cli;
 mod cli_derive;
+mod double_root_cli;
 mod drift;
 mod emit;
 mod equiv_cli;
