@@ -237,6 +237,6 @@ impl crate::Derivation {
     /// Operations per step under the stated constant-folding model (see
     /// the module docs).
     pub fn cost(&self) -> StepCost {
-        step_cost(&self.method())
+        step_cost(self.method())
     }
 }

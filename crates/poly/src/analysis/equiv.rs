@@ -228,8 +228,11 @@ pub fn relate(a: &Derivation, b: &Derivation) -> Relation {
         return Relation::Equal;
     }
     // Every similarity keeps χ: compared first, it settles most pairs.
-    let same_charpoly =
-        if same_den { a.charpoly() == b.charpoly() } else { a.charpoly() * db == b.charpoly() * da };
+    let same_charpoly = if same_den {
+        a.charpoly() == b.charpoly()
+    } else {
+        a.charpoly() * db == b.charpoly() * da
+    };
     if !same_charpoly {
         return Relation::Different;
     }
@@ -273,7 +276,7 @@ pub fn relate(a: &Derivation, b: &Derivation) -> Relation {
         let var = m.state().iter().position(|v| v == OBSERVED)?;
         m.slots().iter().position(|&(v, lag)| v == var && lag == 0)
     };
-    let through_samples = match (observed(&a.method()), observed(&b.method())) {
+    let through_samples = match (observed(a.method()), observed(b.method())) {
         (Some(ya), Some(yb)) => through_observed(pa, pb, ya, yb),
         _ => None,
     };
@@ -649,7 +652,7 @@ mod tests {
         let Relation::PermutationAndScaling { perm, scale } = relate(&fe, &damped) else {
             panic!("expected a signed permutation")
         };
-        let pa = &fe.transition_matrix();
+        let pa = fe.transition_matrix();
         for i in 0..2 {
             for j in 0..2 {
                 let rebuilt = pa[(perm[i], perm[j])].scale(&(&scale[i] / &scale[j]));

@@ -215,7 +215,7 @@ impl crate::Derivation {
     /// The conserved quadratic form Q (PᵀQP = Q) at the parameter values
     /// `params` (Φ among them), when the step has exactly one.
     pub fn conserved_form(&self, params: &crate::Params) -> Result<Vec<Vec<Q>>, NoForm> {
-        match transition_matrix_at(&self.method(), params) {
+        match transition_matrix_at(self.method(), params) {
             Some(p) => conserved_form(&p),
             None => Err(NoForm::Undefined),
         }

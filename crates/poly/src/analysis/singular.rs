@@ -10,7 +10,7 @@ impl Derivation {
     /// constants, the zeros of its norm over Q at which d itself changes sign.
     /// Empty for an explicit method or when d holds other parameters.
     pub fn singular_points(&self) -> Vec<Algebraic> {
-        let den = &self.p_denominator();
+        let den = self.p_denominator();
         let n = field::norm(den);
         let Some(u) = n.to_upoly(Sym::phi()) else { return Vec::new() };
         if u.degree().unwrap_or(0) == 0 {

@@ -52,7 +52,8 @@ fn verify_bounded(margs: &[String], phis: &[f64]) -> Vec<bool> {
     points
         .iter()
         .map(|p| {
-            RootClass::from_name(p["class"].as_str().unwrap()).expect("known class").bounded() == Some(true)
+            RootClass::from_name(p["class"].as_str().unwrap()).expect("known class").bounded()
+                == Some(true)
         })
         .collect()
 }

@@ -57,7 +57,9 @@ fn verify_agrees_numerically_at_three() {
     assert_eq!(p["phi"], 3.0);
     assert_eq!(p["class"], "double_root_on_circle");
     for z in p["eigenvalues"].as_array().unwrap() {
-        assert!((z[0].as_f64().unwrap() + 1.0).abs() < 1e-12 && z[1].as_f64().unwrap().abs() < 1e-12);
+        assert!(
+            (z[0].as_f64().unwrap() + 1.0).abs() < 1e-12 && z[1].as_f64().unwrap().abs() < 1e-12
+        );
     }
     // P = −I: the state's norm does not grow.
     assert!(p["sim"]["norm_growth_per_step"].as_f64().unwrap().abs() < 1e-12);

@@ -92,8 +92,10 @@ fn every_class_change_has_its_class_and_the_float_roots_agree_at_the_limits() {
                     change.at, change.from, change.to
                 )
             });
-            let bounded_side = change.from.bounded() == Some(true) || change.to.bounded() == Some(true);
-            let limit = bounded_side && !(change.from.bounded() == Some(true) && change.to.bounded() == Some(true));
+            let bounded_side =
+                change.from.bounded() == Some(true) || change.to.bounded() == Some(true);
+            let limit = bounded_side
+                && !(change.from.bounded() == Some(true) && change.to.bounded() == Some(true));
             if !limit || change.at.as_rational().is_some() || d.charpoly().symbols().len() > 2 {
                 continue;
             }

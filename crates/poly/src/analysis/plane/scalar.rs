@@ -68,7 +68,7 @@ impl Derivation {
     }
 
     fn scalar_from_oscillator(&self, p: &PolyMatrix, d: &Poly) -> Result<Poly, Error> {
-        let m = &self.method();
+        let m = self.method();
         let name = m.name();
         let var = |n: &str| m.state().iter().position(|s| s == n);
         let (Some(y), Some(v)) = (var("y"), var("v")) else {
