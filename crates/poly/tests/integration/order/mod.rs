@@ -714,3 +714,76 @@ fn psd_with_radicals() {
     let m = vec![vec![v[0].clone(), v[1].clone()], vec![v[1].clone(), v[3].clone()]];
     assert_eq!(order::positive_semidefinite(&m), Some(false));
 }
+
+/// By hand, beside NodePy: `ORDER_CATALOGUE=nodepy.json cargo test --release
+/// -p poly --test integration order::catalogue -- --ignored --nocapture`,
+/// the file a list of `{"name", "A", "b", "bhat"}` with exact entries.
+#[test]
+#[ignore]
+fn catalogue_report() {
+    let Ok(path) = std::env::var("ORDER_CATALOGUE") else { return };
+    let text = std::fs::read_to_string(path).unwrap();
+    // A minimal reader of that one shape: strings in nested lists.
+    for item in text.split("{\"name\": ").skip(1) {
+        let name = item.split('"').nth(1).unwrap();
+        let field = |key: &str| -> Option<String> {
+            let at = item.find(&format!("\"{key}\": "))? + key.len() + 4;
+            let rest = &item[at..];
+            if rest.starts_with("null") {
+                return None;
+            }
+            let mut depth = 0;
+            let end = rest
+                .char_indices()
+                .find(|&(_, c)| {
+                    depth += match c {
+                        '[' => 1,
+                        ']' => -1,
+                        _ => 0,
+                    };
+                    depth == 0
+                })
+                .unwrap()
+                .0;
+            Some(rest[..=end].to_owned())
+        };
+        let strings = |s: &str| -> Vec<String> {
+            s.split('"').skip(1).step_by(2).map(str::to_owned).collect()
+        };
+        let a_text = field("A").unwrap();
+        let rows: Vec<Vec<String>> =
+            a_text[1..a_text.len() - 1].split("], [").map(strings).collect();
+        let b = strings(&field("b").unwrap());
+        let bhat = field("bhat").map(|s| strings(&s));
+        let read = |v: &[String]| v.iter().map(|x| Exact::parse(x)).collect::<Result<Vec<_>, _>>();
+        let (Ok(a), Ok(b)) =
+            (rows.iter().map(|r| read(r)).collect::<Result<Vec<_>, _>>(), read(&b))
+        else {
+            println!("{name}: entries not read");
+            continue;
+        };
+        let t = Tableau::new("m", a, b, None).unwrap();
+        let bhat: Option<Vec<Exact>> = bhat.map(|v| read(&v).unwrap());
+        let opts = Options { tolerance: Some(q(1, 1_000_000_000_000)), ..Options::default() };
+        let start = std::time::Instant::now();
+        let r = order::runge_kutta(&t, bhat.as_deref(), &opts).unwrap();
+        let ssp = match &r.ssp_coefficient {
+            Some(Ssp::Radius(x)) => x.to_decimal(6),
+            Some(Ssp::Unbounded) => "inf".to_owned(),
+            None => "undecided".to_owned(),
+        };
+        println!(
+            "{name} order={:?} tol={:?} linear={:?} stage={:?} alg={:?} sympl={:?} sym={:?} ssp={ssp} emb={:?} elin={:?} {:.2}ms",
+            r.order,
+            r.order_within_tolerance.map(|x| x.order),
+            r.linear_order,
+            r.stage_order,
+            r.algebraically_stable,
+            r.symplectic,
+            r.symmetric,
+            r.embedded_order,
+            r.embedded_linear_order,
+            start.elapsed().as_secs_f64() * 1000.0
+        );
+    }
+}
