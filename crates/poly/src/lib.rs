@@ -85,7 +85,6 @@ mod univariate;
 pub use crate::analysis::class::RootClass;
 pub use crate::analysis::cost::{OpCount, StepCost};
 pub use crate::analysis::equiv::Relation;
-pub use crate::analysis::order;
 pub use crate::analysis::plane::{PlaneReport, Sector};
 pub use crate::analysis::stability::{
     Boundary, ClassChange, ClassInterval, Condition, CriticalPoint, Stability, StabilityReport,

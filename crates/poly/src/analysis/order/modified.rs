@@ -19,9 +19,9 @@
 use std::collections::HashMap;
 
 use super::conditions::Weights;
+use super::report::ModifiedTerm;
 use super::trees::{forest, Kind, MAX_TREE_ORDER};
 use super::value::{inverse_int, Value};
-use super::ModifiedTerm;
 use crate::error::{Error, ErrorKind};
 
 /// The terms h^k·β(t)·F(t), k = 1..=n, of the modified equation of the

@@ -16,10 +16,10 @@
 //! for; the tests hold both against Taylor expansions of the steps.
 
 use super::conditions::Weights;
+use super::report::{bounded, shape, within, Kind, Options, Order, OrderReport};
 use super::rk::{self, equal_up_to_permutation, Rk};
 use super::trees::{forest, Kind as Forest};
 use super::value::{read, read_matrix, Matrix, Value};
-use super::{bounded, shape, within, Kind, Options, Order, OrderReport};
 use crate::error::Error;
 use crate::lang::tableau::{Exact, Tableau};
 use crate::Q;
@@ -149,7 +149,7 @@ fn normal_flows(drift: &[Value], kick: &[Value]) -> Vec<Flow> {
 ///
 /// ```
 /// use poly::advanced::tableau::Exact;
-/// use poly::order::{splitting, Options, Order};
+/// use poly::advanced::order::{splitting, Options, Order};
 /// let e = |s: &str| Exact::parse(s).unwrap();
 /// let verlet = splitting(&[e("1/2"), e("1/2")], &[e("1"), e("0")], &Options::default())?;
 /// assert_eq!(verlet.order, Order::Exact(2));

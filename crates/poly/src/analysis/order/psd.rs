@@ -17,7 +17,7 @@ use super::value::Value;
 /// read; `None` when `m` is not square.
 ///
 /// ```
-/// use poly::order::{positive_semidefinite, Value};
+/// use poly::advanced::order::{positive_semidefinite, Value};
 /// let m = |rows: &[[i64; 2]; 2]| -> Vec<Vec<Value>> {
 ///     rows.iter().map(|r| r.iter().map(|&x| Value::from(poly::q(x, 1))).collect()).collect()
 /// };

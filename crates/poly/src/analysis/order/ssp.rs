@@ -27,9 +27,9 @@ use std::cmp::Ordering;
 
 use num_traits::{One, Zero};
 
+use super::report::Ssp;
 use super::rk::{dot, mat_vec};
 use super::value::{read_matrix, Matrix, Value};
-use super::Ssp;
 use crate::error::{Error, ErrorKind};
 use crate::lang::tableau::Tableau;
 use crate::multivariate::constants as field;
@@ -49,7 +49,7 @@ fn radius_of(tableau: &Tableau) -> Result<(Matrix, Vec<Value>), Error> {
 ///
 /// ```
 /// use poly::advanced::tableau::{Exact, Tableau};
-/// use poly::order::{ssp_coefficient, Ssp};
+/// use poly::advanced::order::{ssp_coefficient, Ssp};
 /// let e = |s: &str| Exact::parse(s).unwrap();
 /// let a = vec![vec![e("0"), e("0"), e("0")], vec![e("1"), e("0"), e("0")], vec![e("1/4"), e("1/4"), e("0")]];
 /// let t = Tableau::new("ssprk33", a, vec![e("1/6"), e("1/6"), e("2/3")], None)?;

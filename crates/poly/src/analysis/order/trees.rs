@@ -250,7 +250,7 @@ pub(crate) fn forest(kind: Kind) -> &'static Forest {
 /// ([`ErrorKind::TreeOrder`]) past [`MAX_TREE_ORDER`].
 ///
 /// ```
-/// let t = poly::order::trees(3)?;
+/// let t = poly::advanced::order::trees(3)?;
 /// let names: Vec<&str> = t.iter().map(|t| t.notation()).collect();
 /// assert_eq!(names, ["[[[]]]", "[[][]]"]);
 /// assert_eq!(t[1].differential(), "f''(f,f)");

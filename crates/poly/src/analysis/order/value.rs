@@ -21,7 +21,7 @@ use crate::{Poly, Q};
 /// An exact real number: a rational, or an element of Q(√n, ∛n, …).
 ///
 /// ```
-/// use poly::order::Value;
+/// use poly::advanced::order::Value;
 /// let v = Value::from(poly::q(7, 144));
 /// assert_eq!(v.to_string(), "7/144");
 /// assert_eq!(v.as_rational(), Some(&poly::q(7, 144)));
@@ -63,7 +63,7 @@ impl Value {
     /// ```
     /// use poly::advanced::tableau::Exact;
     /// let e = [Exact::parse("sqrt(2)")?, Exact::parse("root(4, 4)")?];
-    /// let v = poly::order::Value::read(&e)?;
+    /// let v = poly::advanced::order::Value::read(&e)?;
     /// assert_eq!(v[0], v[1]);
     /// # Ok::<(), poly::Error>(())
     /// ```

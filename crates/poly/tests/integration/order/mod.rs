@@ -9,8 +9,8 @@ use std::cmp::Ordering;
 
 use poly::advanced::field;
 use poly::advanced::multistep::Multistep;
+use poly::advanced::order::{self, Options, Order, Ssp, Value};
 use poly::advanced::tableau::{Exact, Tableau};
-use poly::order::{self, Options, Order, Ssp, Value};
 use poly::{q, Algebraic, Poly, Sym, Q};
 use proptest::prelude::*;
 

@@ -5,8 +5,8 @@
 //! splitting), symplectic Euler, Strang splitting, Yoshida/Forest–Ruth.
 
 use super::{agree, e, h, tableau, trunc, System};
+use poly::advanced::order::{self, Options, Order, Value};
 use poly::advanced::tableau::{Exact, Tableau};
-use poly::order::{self, Options, Order, Value};
 use poly::{q, Poly, Sym, Q};
 
 const N: u32 = 5;
