@@ -29,6 +29,8 @@ pub enum ErrorKind {
     OutOfRange,
     /// The native compiler (feature `jit`) could not compile a step.
     Jit,
+    /// The caller stopped a long run (a Ctrl-C) before it ended.
+    Interrupted,
 }
 
 /// Why numeric work on a method, or loading it, failed.
@@ -79,6 +81,13 @@ impl Error {
 
     pub(crate) fn not_finite(what: &str) -> Error {
         Error::new(ErrorKind::NotFinite, format!("{what} is not finite: expected a finite number"))
+    }
+
+    pub(crate) fn interrupted(done: u64, asked: u64) -> Error {
+        Error::new(
+            ErrorKind::Interrupted,
+            format!("interrupted after {done} of {asked} simulated steps"),
+        )
     }
 
     pub(crate) fn out_of_range(what: &str) -> Error {

@@ -53,6 +53,7 @@ fn bench(c: &mut Criterion) {
                         simulate_all: false,
                         gauss_seidel: false,
                         route: Default::default(),
+                        rank: Default::default(),
                     },
                 )
                 .unwrap()
@@ -93,6 +94,7 @@ fn bench(c: &mut Criterion) {
                         simulate_all: false,
                         gauss_seidel: false,
                         route: Default::default(),
+                        rank: Default::default(),
                     },
                 )
                 .unwrap()
@@ -120,6 +122,7 @@ fn bench(c: &mut Criterion) {
                 simulate_all: false,
                 gauss_seidel: false,
                 route: Default::default(),
+                rank: Default::default(),
             };
             advise(&scene, &modal, specs, options).unwrap()
         })

@@ -109,6 +109,7 @@ fn advise(scene: &SceneFile) -> Result<Value, Error> {
         simulate_all: false,
         gauss_seidel: false,
         route: Default::default(),
+        rank: Default::default(),
     };
     Ok(serde_json::to_value(crate::cli::advise::scene_advice(scene, &[], options)?)?)
 }

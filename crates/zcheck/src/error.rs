@@ -34,6 +34,8 @@ pub enum ErrorKind {
     Io,
     /// A figure could not be drawn.
     Figure,
+    /// The user stopped a long run (Ctrl-C): exit code 130.
+    Interrupted,
 }
 
 /// Where in an input file a mistake is: 1-based line and column (in
@@ -108,6 +110,11 @@ impl Error {
     /// Numeric work that failed.
     pub(crate) fn numeric(message: impl Into<String>) -> Error {
         Error::new(ErrorKind::Numeric, message)
+    }
+
+    /// A long run the user stopped (Ctrl-C); `message` says how far it got.
+    pub(crate) fn interrupted(message: impl Into<String>) -> Error {
+        Error::new(ErrorKind::Interrupted, message)
     }
 
     /// A figure that could not be drawn.
@@ -198,6 +205,7 @@ impl From<check::Error> for Error {
             check::ErrorKind::Poly => ErrorKind::Method,
             check::ErrorKind::Io => ErrorKind::File,
             check::ErrorKind::MissingParam => ErrorKind::Usage,
+            check::ErrorKind::Interrupted => ErrorKind::Interrupted,
             _ => ErrorKind::Numeric,
         };
         let location = e.poly_error().map(poly::Error::span).filter(|s| s.line > 0);

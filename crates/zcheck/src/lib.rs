@@ -31,6 +31,7 @@ pub mod cli;
 mod drift_figure;
 pub mod emit;
 mod error;
+mod interrupt;
 pub mod load;
 mod map;
 mod multistep;

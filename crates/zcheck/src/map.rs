@@ -148,9 +148,13 @@ pub(crate) fn map(loaded: &LoadedMethod, w: &MapWindow) -> Result<StabilityMap, 
     let witnesses = Witnesses::from_derivation(derivation);
     let n = w.grid.max(2);
     let cells: Vec<(usize, usize)> = (0..n).flat_map(|j| (0..n).map(move |i| (i, j))).collect();
-    let grid: Vec<GridPoint> = cells
+    // Ctrl-C stops the grid between points (`None`: the run was stopped).
+    let grid: Option<Vec<GridPoint>> = cells
         .par_iter()
         .map(|&(i, j)| {
+            if crate::interrupt::requested() {
+                return None;
+            }
             let (phi_q, d_q) =
                 (centre(&w.phi.0, &w.phi.1, i, n), centre(&w.range.0, &w.range.1, j, n));
             let (phi, d) = (q_to_f64(&phi_q), q_to_f64(&d_q));
@@ -158,22 +162,26 @@ pub(crate) fn map(loaded: &LoadedMethod, w: &MapWindow) -> Result<StabilityMap, 
             let (pe, de) = (f64_to_q(phi).unwrap_or(phi_q), f64_to_q(d).unwrap_or(d_q));
             // A point the exact analysis cannot classify is an error, never
             // drawn as some class.
-            let class = r
-                .class_at(&pe, &de)
-                .map_err(|e| {
-                    Error::from(e).context(format!(
+            let class = match r.class_at(&pe, &de) {
+                Ok(at) => at.class,
+                Err(e) => {
+                    return Some(Err(Error::from(e).context(format!(
                         "method {} at Phi = {pe}, {} = {de}",
                         method.name(),
                         w.param
-                    ))
-                })?
-                .class;
+                    ))))
+                }
+            };
             let agree = witnesses
                 .at(&Params::phi(phi).with(&w.param, d), 0)
                 .is_ok_and(|rep| rep.agree() && rep.exact.class == class);
-            Ok(GridPoint { phi, value: d, class, witnesses_agree: agree })
+            Some(Ok(GridPoint { phi, value: d, class, witnesses_agree: agree }))
         })
-        .collect::<Result<_, Error>>()?;
+        .collect::<Option<Vec<Result<GridPoint, Error>>>>()
+        .map(|g| g.into_iter().collect::<Result<Vec<_>, _>>())
+        .transpose()?;
+    let grid = grid
+        .ok_or_else(|| Error::interrupted(format!("the map's {n} x {n} grid was not complete")))?;
     let disagreements = grid.iter().filter(|g| !g.witnesses_agree).count();
     let curves = r
         .boundary_curves()

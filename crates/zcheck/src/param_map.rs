@@ -286,9 +286,13 @@ pub(crate) fn param_map(loaded: &LoadedMethod, w: &ParamWindow) -> Result<ParamM
         (x, f64_to_q(x).unwrap_or(q))
     };
     let cells: Vec<(usize, usize)> = (0..n).flat_map(|j| (0..n).map(move |i| (i, j))).collect();
-    let grid: Vec<(ParamPoint, HashMap<Sym, Q>)> = cells
+    // Ctrl-C stops the grid between points (`None`: the run was stopped).
+    let grid: Option<Vec<(ParamPoint, HashMap<Sym, Q>)>> = cells
         .par_iter()
         .map(|&(i, j)| {
+            if crate::interrupt::requested() {
+                return None;
+            }
             let ((x, xq), (y, yq)) = (exact_value(0, i), exact_value(1, j));
             let params = base.clone().bind(&w.names[0], xq.clone()).bind(&w.names[1], yq.clone());
             let at: HashMap<Sym, Q> = [(syms[0], xq), (syms[1], yq)].into_iter().collect();
@@ -304,9 +308,11 @@ pub(crate) fn param_map(loaded: &LoadedMethod, w: &ParamWindow) -> Result<ParamM
                     witnesses_agree: false,
                 },
             };
-            (point, at)
+            Some((point, at))
         })
         .collect();
+    let grid = grid
+        .ok_or_else(|| Error::interrupted(format!("the map's {n} x {n} grid was not complete")))?;
     let fixed_values: HashMap<Sym, Q> =
         w.fixed.iter().map(|(k, v)| (Sym::new(k), v.clone())).collect();
     let chi = derivation.charpoly().eval_partial(&fixed_values);

@@ -163,15 +163,17 @@ impl Witnesses {
     /// All four witnesses at `params`, with a simulation of `steps` steps
     /// (none when 0).
     pub fn at(&self, params: &Params, steps: u64) -> Result<PointReport, Error> {
-        self.at_with_progress(params, steps, &mut |_| {})
+        self.at_with_progress(params, steps, &mut |_| true)
     }
 
-    /// [`Witnesses::at`], reporting simulation progress.
+    /// [`Witnesses::at`], reporting simulation progress. `progress` returns
+    /// `false` to stop the simulation (a Ctrl-C): the answer is then an
+    /// error of kind [`ErrorKind::Interrupted`](crate::ErrorKind::Interrupted).
     pub fn at_with_progress(
         &self,
         params: &Params,
         steps: u64,
-        progress: &mut dyn FnMut(u64),
+        progress: &mut dyn FnMut(u64) -> bool,
     ) -> Result<PointReport, Error> {
         let step = Step::compile(&self.method, params)?;
         let p = step.transition_matrix();
@@ -213,6 +215,9 @@ impl Witnesses {
             let dom = exact.roots[0];
             let (_, left) = eigen_condition(&p, dom);
             let sim = simulate(&step, dom, &left, steps, progress);
+            if sim.stopped {
+                return Err(Error::interrupted(sim.steps, steps));
+            }
             let n = exact.roots.len();
             let rho = exact.spectral_radius;
             let mut tol = tolerance[0];

@@ -18,17 +18,21 @@ pub struct Simulation {
     pub norm_growth_per_step: f64,
     /// The root whose mode was measured.
     pub mode: C64,
+    /// The caller's `progress` stopped the run before `n_steps`.
+    pub stopped: bool,
 }
 
 /// Runs `step` for `n_steps` steps from a start with a large component in
 /// the mode of `mode`, measuring with the left eigenvector `left` (see the
-/// module docs). `progress` receives the number of steps done, now and then.
+/// module docs). `progress` receives the number of steps done, now and then,
+/// and returns `false` to stop the run there (a Ctrl-C): the simulation then
+/// covers the steps done and says it was stopped.
 pub fn simulate(
     step: &Step,
     mode: C64,
     left: &[C64],
     n_steps: u64,
-    progress: &mut dyn FnMut(u64),
+    progress: &mut dyn FnMut(u64) -> bool,
 ) -> Simulation {
     let n = step.order();
     let project = |x: &[f64]| -> C64 { left.iter().zip(x).map(|(w, &xi)| w.conj() * xi).sum() };
@@ -52,6 +56,7 @@ pub fn simulate(
     let (mut phase_sum, mut phase_comp) = (0.0f64, 0.0f64);
     let mut vanished = false;
     let mut done = 0;
+    let mut stopped = false;
     for k in 1..=n_steps {
         step.advance(&mut state, 1);
         let x = state.slots_mut();
@@ -78,11 +83,14 @@ pub fn simulate(
         }
         c_prev = c;
         done = k;
-        if k % 65536 == 0 {
-            progress(k);
+        if k % 65536 == 0 && !progress(k) {
+            stopped = true;
+            break;
         }
     }
-    progress(done);
+    if !stopped {
+        progress(done);
+    }
     let steps = done.max(1) as f64;
     let log_scale = exponent as f64 * LN_2;
     let growth = if vanished {
@@ -101,5 +109,6 @@ pub fn simulate(
         psi_per_step: (phase_sum + phase_comp) / steps,
         norm_growth_per_step: norm_growth,
         mode,
+        stopped,
     }
 }

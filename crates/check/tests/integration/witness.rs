@@ -161,7 +161,7 @@ fn tolerance_catches_a_small_error() {
             assert!(worst > 1.0, "{name}: an error of 1e-9 passed (ratio {worst})");
         }
         let (_, left) = eigen_condition(&p, wrong.roots[0]);
-        let sim = simulate(&step, wrong.roots[0], &left, STEPS, &mut |_| {});
+        let sim = simulate(&step, wrong.roots[0], &left, STEPS, &mut |_| true);
         let err = (sim.growth_per_step.exp() - wrong.spectral_radius)
             .abs()
             .max(wrong.spectral_radius * (sim.psi_per_step - wrong.psi).abs());

@@ -12,7 +12,7 @@ use crate::scene::advisor::{self, Options};
 use crate::scene::file::SceneFile;
 use crate::scene::modal::{self, Modal, Shapes};
 use crate::tradeoff::spring_advisor::{advise_spring, SpringAdvice, SpringScene};
-use crate::tradeoff::{family, kernels};
+use crate::tradeoff::{family, kernels, Rank};
 
 use super::values::Exact;
 
@@ -64,6 +64,11 @@ pub(crate) struct Args {
     /// 1/10); without it the spring is undamped.
     #[arg(long, allow_negative_numbers = true)]
     pub damping: Option<Exact>,
+    /// What the recommendation is ranked by: `exact` operations per tick
+    /// (the same answer on every machine; ties by name) or the ns
+    /// `measured` on this machine.
+    #[arg(long, value_parser = ["exact", "measured"], default_value = "exact")]
+    pub rank: String,
     #[arg(long, value_parser = Format::parser(TEXT_JSON), default_value = "text")]
     pub format: Format,
 }
@@ -119,7 +124,9 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     let ns: Vec<f64> =
         cands.iter().map(|c| super::tradeoff::measure(c, budget)).collect::<Result<_, Error>>()?;
     let mut k = 0;
-    let mut advice = advise_spring(&scene, &cands, |_| {
+    crate::interrupt::install();
+    let by = rank_of(&args.rank);
+    let mut advice = advise_spring(&scene, &cands, by, |_| {
         k += 1;
         ns[k - 1]
     })?;
@@ -139,6 +146,7 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
         simulate_all: args.simulate_all,
         gauss_seidel: false,
         route: modal::Route::Auto,
+        rank: by,
     };
     let as_scene = advisor::advise(&one_mode, &modal, damped, options)?;
     match args.format {
@@ -171,6 +179,11 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     Ok(ExitCode::SUCCESS)
 }
 
+/// `--rank`: clap has checked the word.
+pub(crate) fn rank_of(word: &str) -> Rank {
+    Rank::parse(word).unwrap_or_default()
+}
+
 /// `zcheck advise --freq --tick` as JSON: the one-spring advice, plus the
 /// whole-scene advisor's keys for the same spring as a one-mode scene.
 #[derive(serde::Serialize)]
@@ -191,8 +204,8 @@ fn modal_of(scene: &SceneFile, simulate: bool, route: modal::Route) -> Result<Mo
 
 /// Rows under a header, each column as wide as its widest cell (phi_max
 /// can be a nested root): the first column left-aligned, the rest right.
-fn table(header: &[String; 7], rows: &[[String; 7]]) -> String {
-    let widths: Vec<usize> = (0..7)
+fn table<const N: usize>(header: &[String; N], rows: &[[String; N]]) -> String {
+    let widths: Vec<usize> = (0..N)
         .map(|c| {
             std::iter::once(header).chain(rows).map(|r| r[c].chars().count()).max().unwrap_or(0)
         })
@@ -280,10 +293,12 @@ pub(crate) fn text(a: &SpringAdvice) -> String {
     );
     out += &match a.cheapest.as_ref().and_then(|c| a.methods.iter().find(|m| &m.method == c)) {
         Some(m) => format!(
-            "cheapest meeting the tolerance: {} with {} substeps per tick ({:.1} ns per tick measured here)\n",
+            "cheapest meeting the tolerance: {} with {} substeps per tick ({} operations, {:.1} ns per tick measured here; {})\n",
             m.method,
             m.substeps_tol.unwrap_or(0),
-            m.ns_per_tick.unwrap_or(f64::NAN)
+            m.ops_per_tick.map_or(0, |o| o.mul + o.add),
+            m.ns_per_tick.unwrap_or(f64::NAN),
+            a.rank.describe()
         ),
         None => "no method meets the tolerance at a stable step\n".to_owned(),
     };
@@ -317,7 +332,9 @@ fn run_scene(path: &std::path::Path, args: &Args) -> Result<ExitCode, Error> {
         simulate_all: args.simulate_all,
         gauss_seidel: args.sweep.is_some(),
         route: args.spectrum,
+        rank: rank_of(&args.rank),
     };
+    crate::interrupt::install();
     let advice = scene_advice(&scene, &args.methods, options)?;
     match args.format {
         Format::Json => super::output::emitln(&serde_json::to_string_pretty(&advice)?)?,
@@ -437,13 +454,14 @@ pub(crate) fn scene_text(name: &str, a: &advisor::SceneAdvice) -> String {
         "method",
         "substeps stable",
         "substeps accurate",
+        "ops/tick",
         "ns/tick",
         "predicted phase/amp",
         "simulated phase/amp",
         "agree",
     ]
     .map(str::to_owned);
-    let rows: Vec<[String; 7]> = a
+    let rows: Vec<[String; 8]> = a
         .candidates
         .iter()
         .map(|c| {
@@ -451,6 +469,7 @@ pub(crate) fn scene_text(name: &str, a: &advisor::SceneAdvice) -> String {
                 c.method.clone(),
                 c.substeps_stable.map_or("never".into(), |n| n.to_string()),
                 c.substeps_accurate.map_or("never".into(), |n| n.to_string()),
+                c.ops_per_tick.map_or("-".into(), |n| n.to_string()),
                 c.ns_per_tick.map_or("-".into(), |ns| format!("{ns:.1}")),
                 c.predicted
                     .map_or("-".into(), |p| format!("{:.3e}/{:.3e}", p.phase_rad, p.amplitude)),
@@ -478,7 +497,7 @@ pub(crate) fn scene_text(name: &str, a: &advisor::SceneAdvice) -> String {
             })
             .collect();
         out += &format!(
-            "not simulated (more than {}x the recommended's cost per tick): {}\n",
+            "not simulated (more than {}x the recommended's cost per tick, as ranked): {}\n",
             advisor::SIM_COST_FACTOR,
             names.join(", ")
         );
@@ -491,7 +510,12 @@ pub(crate) fn scene_text(name: &str, a: &advisor::SceneAdvice) -> String {
         }
     }
     out += &match &a.recommended {
-        Some(r) => format!("recommended: {} with {} substeps per tick\n", r.method, r.substeps),
+        Some(r) => format!(
+            "recommended: {} with {} substeps per tick ({})\n",
+            r.method,
+            r.substeps,
+            a.rank.describe()
+        ),
         None => "recommended: none meets the target\n".to_owned(),
     };
     if let Some(sweep) = &a.sweep {

@@ -138,7 +138,8 @@ pub(crate) fn text(d: &Derivation, full: bool) -> String {
         );
     }
     for i in 0..d.transition_matrix().rows() {
-        let row: Vec<String> = d.transition_matrix().row(i).iter().map(ToString::to_string).collect();
+        let row: Vec<String> =
+            d.transition_matrix().row(i).iter().map(ToString::to_string).collect();
         let _ = writeln!(s, "  [{}]", row.join(", "));
     }
     let _ = writeln!(s, "\nchi(z) = {}", d.charpoly());

@@ -5,7 +5,6 @@ use std::collections::HashMap;
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::Arc;
 
 use check::drift::{Run, Study};
 use check::kernel::{Kernel, Real};
@@ -120,13 +119,8 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
         .threads
         .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
         .max(1);
-    let stop = Arc::new(AtomicBool::new(false));
-    {
-        let stop = Arc::clone(&stop);
-        // A second handler (a test harness, an embedding) is not an error:
-        // the run then simply cannot be interrupted early.
-        let _ = ctrlc::set_handler(move || stop.store(true, Ordering::SeqCst));
-    }
+    crate::interrupt::install();
+    let stop = crate::interrupt::flag();
     let mut reports = Vec::new();
     for name in &args.methods {
         let r = match args.precision {
@@ -147,6 +141,11 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
             &json!({ "runs": reports.iter().map(to_json).collect::<Vec<_>>() }),
         )?)?,
         _ => output::emit(&reports.iter().map(text).collect::<Vec<_>>().join("\n"))?,
+    }
+    // Ctrl-C: the partial result is printed above; the exit code says so.
+    if reports.iter().any(|r| r.run.interrupted) {
+        output::print_error("interrupted: partial result printed");
+        return Ok(ExitCode::from(crate::interrupt::EXIT_CODE));
     }
     Ok(ExitCode::SUCCESS)
 }

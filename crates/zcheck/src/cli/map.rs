@@ -198,6 +198,7 @@ pub(crate) fn compute(
 
 pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     let method = LoadedMethod::load(&args.method)?;
+    crate::interrupt::install();
     let map = compute(&method, args.phi.as_deref(), &args.params, args.grid, args.samples)?;
     let m = match map {
         Map::PhiParam(m) => m,

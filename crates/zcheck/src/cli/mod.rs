@@ -43,6 +43,11 @@ pub fn main() -> ExitCode {
         Ok(code) => code,
         // The reader closed stdout early: nothing is wrong.
         Err(e) if output::is_broken_pipe(&e) => ExitCode::SUCCESS,
+        // Ctrl-C: a clean message (how far the run got), exit 130.
+        Err(e) if e.kind() == crate::ErrorKind::Interrupted => {
+            output::print_error(&format!("interrupted: {}", output::with_sources(&e)));
+            ExitCode::from(crate::interrupt::EXIT_CODE)
+        }
         Err(e) => {
             output::print_error(&format!("error: {}", output::with_sources(&e)));
             ExitCode::from(2)

@@ -48,6 +48,10 @@ pub(crate) struct Args {
     /// Also draw the work-precision figure (SVG) of the seven direct methods here.
     #[arg(long)]
     pub svg: Option<PathBuf>,
+    /// What the ranking orders by: `exact` operations per period (the same
+    /// order on every machine; ties by name) or the ns `measured` here.
+    #[arg(long, value_parser = ["exact", "measured"], default_value = "exact")]
+    pub rank: String,
 }
 
 pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
@@ -80,16 +84,21 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     let _ = crate::native::prepare(
         &candidates.iter().zip(&timing).map(|(c, p)| (&c.method, p)).collect::<Vec<_>>(),
     );
+    crate::interrupt::install();
     let mut ns = Vec::with_capacity(candidates.len());
     let mut hand = Vec::with_capacity(candidates.len());
-    for c in &candidates {
+    for (k, c) in candidates.iter().enumerate() {
+        crate::interrupt::check(|| {
+            format!("{k} of {} methods timed; no ranking without them all", candidates.len())
+        })?;
         ns.push(measure(c, budget)?);
         // A built-in's hand kernel; a user's method (built-ins named by
         // --method too) has none.
         hand.push(c.hand_kernel.and_then(|name| kernels::time_hand_kernel(name, 0.0, budget)));
     }
     let mut k = 0;
-    let mut rows = trade(&candidates, Spring::UNDAMPED, &target, |_| {
+    let by = super::advise::rank_of(&args.rank);
+    let mut rows = trade(&candidates, Spring::UNDAMPED, &target, by, |_| {
         k += 1;
         ns[k - 1]
     });
@@ -111,9 +120,9 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
         Format::Json => {
             super::output::emitln(&serde_json::to_string_pretty(&serde_json::json!({ "target": {
                 "phase_tol": target.phase_tol, "amp_tol": target.amp_tol, "periods": target.periods },
-                "methods": rows }))?)?
+                "rank": by, "methods": rows }))?)?
         }
-        _ => super::output::emit(&text(&rows, &target))?,
+        _ => super::output::emit(&format!("{}{}\n", text(&rows, &target), by.describe()))?,
     }
     Ok(ExitCode::SUCCESS)
 }

@@ -96,6 +96,7 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
             total
         )));
     }
+    crate::interrupt::install();
     let bar = if std::io::stderr().is_terminal() && total >= 10_000_000 {
         let b = ProgressBar::new(total);
         if let Ok(style) = ProgressStyle::with_template(
@@ -122,7 +123,10 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
                 None => base.clone().with("Phi", phi),
             };
             let r = w
-                .at_with_progress(&params, steps, &mut |k| bar.set_position(done_before + k))
+                .at_with_progress(&params, steps, &mut |k| {
+                    bar.set_position(done_before + k);
+                    !crate::interrupt::requested()
+                })
                 .map_err(|e| {
                     Error::from(e).context(format!(
                         "{name} at Phi = {} (other parameters: --param NAME=VALUE)",

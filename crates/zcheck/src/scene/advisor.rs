@@ -58,6 +58,7 @@ use crate::error::Error;
 use crate::load::LoadedMethod;
 use crate::tradeoff::accuracy::{Accuracy, Spring, Target};
 use crate::tradeoff::kernels;
+use crate::tradeoff::Rank;
 
 /// Agreement of predicted and simulated drifts: within this fraction of the
 /// target (phase in radians, amplitude relative), plus 1e-9 absolute.
@@ -110,6 +111,12 @@ pub(crate) struct CandidateAdvice {
     pub(crate) substeps_stable_certified: Option<u64>,
     /// Fewest substeps meeting the target (`None`: none found).
     pub(crate) substeps_accurate: Option<u64>,
+    /// Exact arithmetic operations (multiplications plus additions) per
+    /// step of one degree of freedom: the method's program.
+    pub(crate) ops_per_step: u64,
+    /// Exact operations per tick at `substeps_accurate`: operations per
+    /// step × substeps × degrees of freedom. The default ranking's cost.
+    pub(crate) ops_per_tick: Option<u64>,
     /// Measured ns per step of one degree of freedom.
     pub(crate) ns_per_step: f64,
     /// ns per tick at `substeps_accurate`: ns per step × substeps × DOF.
@@ -202,8 +209,11 @@ pub struct SceneAdvice {
     pub(crate) modes: Vec<ModeReport>,
     /// Every candidate.
     pub(crate) candidates: Vec<CandidateAdvice>,
-    /// The cheapest candidate meeting the target.
+    /// The cheapest candidate meeting the target, by `rank`.
     pub(crate) recommended: Option<Recommended>,
+    /// What `recommended` is ranked by: exact operations per tick (the
+    /// default, the same on every machine) or the ns measured here.
+    pub(crate) rank: Rank,
     /// The highest mode's frequency, Hz, as the eigensolver gives it.
     pub(crate) highest_hz: Option<f64>,
     /// A certified upper bound on the highest undamped frequency, Hz
@@ -493,6 +503,8 @@ pub struct Options {
     pub gauss_seidel: bool,
     /// The eigensolver that reduces the scene.
     pub route: super::modal::Route,
+    /// What the recommendation is ranked by.
+    pub rank: Rank,
 }
 
 /// Advises on a scene.
@@ -528,29 +540,39 @@ pub fn advise(
         candidates.push(adv);
         analysed_all.push(a);
     }
+    // The cheapest meeting the target, by exact operations per tick (ties
+    // by name) or by the ns measured (ties by operations, then name).
+    let by = options.rank;
     let recommended = candidates
         .iter()
-        .filter_map(|c| Some((c.ns_per_tick?, c.substeps_accurate?, c)))
-        .filter(|(ns, _, _)| ns.is_finite())
-        .min_by(|a, b| a.0.total_cmp(&b.0))
+        .filter_map(|c| {
+            let ns = c.ns_per_tick.filter(|ns| ns.is_finite() || by == Rank::Exact)?;
+            Some(((c.ops_per_tick?, ns, c.method.as_str()), c.substeps_accurate?, c))
+        })
+        .min_by(|a, b| by.cmp(a.0, b.0))
         .map(|(_, n, c)| Recommended { method: c.method.clone(), substeps: n });
     // The checking simulation: the recommended method and those within
-    // SIM_COST_FACTOR of its cost, in parallel; the others are named.
-    let rec_ns = recommended
+    // SIM_COST_FACTOR of its cost (in the ranking's measure), in parallel;
+    // the others are named.
+    let cost = |c: &CandidateAdvice| match by {
+        Rank::Exact => c.ops_per_tick.map(|o| o as f64),
+        Rank::Measured => c.ns_per_tick,
+    };
+    let rec_cost = recommended
         .as_ref()
-        .and_then(|r| candidates.iter().find(|c| c.method == r.method).and_then(|c| c.ns_per_tick));
+        .and_then(|r| candidates.iter().find(|c| c.method == r.method).and_then(cost));
     let mut simulation_left_out = Vec::new();
     if options.simulate {
-        let close_in_cost = |c: &CandidateAdvice| match (c.ns_per_tick, rec_ns) {
+        let close_in_cost = |c: &CandidateAdvice| match (cost(c), rec_cost) {
             _ if options.simulate_all => true,
-            (Some(ns), Some(rec)) => ns <= SIM_COST_FACTOR * rec,
+            (Some(x), Some(rec)) => x <= SIM_COST_FACTOR * rec,
             _ => false,
         };
         for c in candidates.iter().filter(|c| c.substeps_accurate.is_some() && !close_in_cost(c)) {
             simulation_left_out.push(LeftOut {
                 method: c.method.clone(),
-                cost_ratio: match (c.ns_per_tick, rec_ns) {
-                    (Some(ns), Some(rec)) if rec > 0.0 => Some(ns / rec),
+                cost_ratio: match (cost(c), rec_cost) {
+                    (Some(x), Some(rec)) if rec > 0.0 => Some(x / rec),
                     _ => None,
                 },
             });
@@ -564,6 +586,9 @@ pub fn advise(
                 let n = c.substeps_accurate.expect("filtered");
                 c.simulated = simulate_candidate(a, scene, modal, &system, &shapes, &target, n);
             });
+        crate::interrupt::check(|| {
+            "the checking simulation was stopped before it ended (--no-simulate skips it)".into()
+        })?;
     }
     let reference = recommended
         .as_ref()
@@ -616,6 +641,7 @@ pub fn advise(
         modes,
         candidates,
         recommended,
+        rank: options.rank,
         highest_hz: modal.route.highest_ritz_hz.or_else(|| {
             modal
                 .modes
@@ -743,6 +769,7 @@ fn advise_one(
     }
     let d_timing = modes.iter().map(|m| m.ratio).fold(0.0, f64::max).min(1.0);
     let ns = ns_per_step(&a.spec, d_timing);
+    let ops = u64::from(a.spec.derivation()?.cost().program.arithmetic());
     let dof = scene.dof() as f64;
     let full = full_kernel(a, modal, full_sys);
     let predicted = if let Some(kernel) = full {
@@ -764,6 +791,9 @@ fn advise_one(
         substeps_stable,
         substeps_stable_certified,
         substeps_accurate,
+        ops_per_step: ops,
+        ops_per_tick: substeps_accurate
+            .map(|n| ops.saturating_mul(n).saturating_mul(scene.dof() as u64)),
         ns_per_step: ns,
         ns_per_tick: substeps_accurate.map(|n| ns * n as f64 * dof),
         predicted,
@@ -967,6 +997,9 @@ fn simulate_check(
             let w = if kernel.keeps_previous() { y.clone() } else { vec![0.0; dim] };
             let mut state = VState { y, w };
             for k in 0..=steps {
+                if k % 4096 == 0 && crate::interrupt::requested() {
+                    return None;
+                }
                 if k > 0 {
                     vector::step(kernel, Sweep::Vector, system, t, &mut state);
                 }
@@ -1000,6 +1033,9 @@ fn simulate_check(
                 let mut st = step.state(&start);
                 seqs[j].push(st.slots()[y_slot]);
                 while seqs[j].len() < FIT_SAMPLES && (seqs[j].len() as u64) * stride[j] <= steps {
+                    if crate::interrupt::requested() {
+                        return None;
+                    }
                     step.advance(&mut st, stride[j]);
                     seqs[j].push(st.slots()[y_slot]);
                 }
@@ -1165,6 +1201,9 @@ fn simulate_full(
         .min((SIM_WORK / dim as f64) as u64);
     let mut seqs: Vec<Vec<C64>> = vec![Vec::with_capacity(FIT_SAMPLES); lambdas.len()];
     for k in 0..=steps {
+        if k % 4096 == 0 && crate::interrupt::requested() {
+            return None;
+        }
         if k > 0 {
             vector::step(kernel, Sweep::Vector, sys, t, &mut state);
         }

@@ -31,5 +31,5 @@ pub(crate) mod spring_advisor;
 
 pub use accuracy::{SecondOrder, Spring, Target};
 pub use measure::measure_ns_per_step;
-pub use rank::{trade, TradeRow};
+pub use rank::{trade, Rank, TradeRow};
 pub use spring_advisor::{advise_spring, SpringScene};

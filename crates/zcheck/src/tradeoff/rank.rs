@@ -12,8 +12,10 @@
 //! 3. `cost_per_period`: `steps_per_period ×` the exact operations per step,
 //!    and `× ns_per_step` measured on this machine.
 //!
-//! The ranking orders the admissible methods by ns per period; methods with
-//! no admissible Φ come last, unranked.
+//! The ranking orders the admissible methods by their exact operations per
+//! period, ties broken by name ([`Rank::Exact`], the default: the same order
+//! on every run and every machine), or by the ns per period measured here
+//! ([`Rank::Measured`]); methods with no admissible Φ come last, unranked.
 
 use std::f64::consts::PI;
 
@@ -21,6 +23,50 @@ use serde::Serialize;
 
 use super::accuracy::{Spring, Target};
 use super::family::Candidate;
+
+/// What a ranking orders by.
+///
+/// Measured times vary 15–30 % between runs on a loaded machine, so two
+/// methods of similar cost would swap places from run to run: the default
+/// ranks by exact counts, and the measured ns are shown beside them.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Rank {
+    /// Exact arithmetic operations (multiplications plus additions) of the
+    /// method's program × steps (× degrees of freedom for a scene), ties
+    /// broken by name: deterministic.
+    #[default]
+    Exact,
+    /// The ns measured on this machine (ties by operations, then name).
+    Measured,
+}
+
+impl Rank {
+    /// `exact` or `measured`.
+    pub fn parse(text: &str) -> Option<Rank> {
+        match text {
+            "exact" => Some(Rank::Exact),
+            "measured" => Some(Rank::Measured),
+            _ => None,
+        }
+    }
+
+    /// How a ranking of this kind is described to the user.
+    pub fn describe(self) -> &'static str {
+        match self {
+            Rank::Exact => "ranked by exact operations (ties by name); --rank measured ranks by the ns measured here",
+            Rank::Measured => "ranked by the ns measured on this machine (--rank measured)",
+        }
+    }
+
+    /// Orders two costs: (exact operations, measured ns, name).
+    pub(crate) fn cmp(self, a: (u64, f64, &str), b: (u64, f64, &str)) -> std::cmp::Ordering {
+        match self {
+            Rank::Exact => a.0.cmp(&b.0).then_with(|| a.2.cmp(b.2)),
+            Rank::Measured => a.1.total_cmp(&b.1).then(a.0.cmp(&b.0)).then_with(|| a.2.cmp(b.2)),
+        }
+    }
+}
 
 /// Operations, for JSON.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
@@ -135,28 +181,27 @@ pub(crate) fn trade_row(
     }
 }
 
-/// The trade for every candidate, ranked: admissible methods by ns per
-/// period (ties by operations per period, then name), then the rest in the
-/// given order. `ns_per_step` gives each candidate's measured time.
+/// The trade for every candidate, ranked `by` (admissible methods by exact
+/// operations per period or by the ns measured), then the rest in the given
+/// order. `ns_per_step` gives each candidate's measured time.
 pub fn trade(
     candidates: &[Candidate],
     spring: Spring,
     target: &Target,
+    by: Rank,
     mut ns_per_step: impl FnMut(&Candidate) -> f64,
 ) -> Vec<TradeRow> {
     let mut rows: Vec<TradeRow> =
         candidates.iter().map(|c| trade_row(c, spring, target, ns_per_step(c))).collect();
-    rank(&mut rows);
+    rank(&mut rows, by);
     rows
 }
 
 /// Sorts rows by cost per simulated period and numbers the admissible ones.
-pub(crate) fn rank(rows: &mut [TradeRow]) {
+pub(crate) fn rank(rows: &mut [TradeRow], by: Rank) {
     rows.sort_by(|a, b| match (&a.cost_per_period, &b.cost_per_period) {
         (Some(x), Some(y)) => {
-            x.ns.total_cmp(&y.ns)
-                .then(x.arithmetic.cmp(&y.arithmetic))
-                .then(a.method.cmp(&b.method))
+            by.cmp((x.arithmetic, x.ns, &a.method), (y.arithmetic, y.ns, &b.method))
         }
         (Some(_), None) => std::cmp::Ordering::Less,
         (None, Some(_)) => std::cmp::Ordering::Greater,

@@ -27,7 +27,7 @@ use serde::Serialize;
 
 use super::accuracy::{Spring, Target};
 use super::family::{Candidate, MAX_SUBSTEPS};
-use super::rank::{limit_text, Ops};
+use super::rank::{limit_text, Ops, Rank};
 use crate::error::Error;
 
 /// A spring in a game: its frequency, the tick rate, and the target.
@@ -142,15 +142,19 @@ pub struct SpringAdvice {
     pub periods: f64,
     /// One entry per method.
     pub methods: Vec<MethodAdvice>,
-    /// The cheapest method (ns per tick) meeting the tolerance.
+    /// The cheapest method meeting the tolerance, by `rank`.
     pub cheapest: Option<String>,
+    /// What `cheapest` is ranked by.
+    pub rank: Rank,
 }
 
 /// Advises on `scene` among `candidates`, with each candidate's measured
-/// ns per step from `ns_per_step`.
+/// ns per step from `ns_per_step`; the cheapest is chosen `by` exact
+/// operations per tick or by the ns measured.
 pub fn advise_spring(
     scene: &SpringScene,
     candidates: &[Candidate],
+    by: Rank,
     mut ns_per_step: impl FnMut(&Candidate) -> f64,
 ) -> Result<SpringAdvice, Error> {
     scene.validate()?;
@@ -202,9 +206,10 @@ pub fn advise_spring(
     let cheapest = methods
         .iter()
         .filter_map(|m| {
-            m.ns_per_tick.map(|ns| (ns, m.ops_per_tick.map_or(0, |o| o.mul + o.add), m))
+            let ns = m.ns_per_tick?;
+            Some(((m.ops_per_tick.map_or(0, |o| o.mul + o.add), ns, m.method.as_str()), m))
         })
-        .min_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)))
-        .map(|(_, _, m)| m.method.clone());
-    Ok(SpringAdvice { scene: *scene, phi, periods: scene.periods(), methods, cheapest })
+        .min_by(|a, b| by.cmp(a.0, b.0))
+        .map(|(_, m)| m.method.clone());
+    Ok(SpringAdvice { scene: *scene, phi, periods: scene.periods(), methods, cheapest, rank: by })
 }

@@ -94,7 +94,10 @@ fn verlet_and_false_euler_through_t_of_phi() {
     };
     let (t, inverse) = (matrix(&change["t"]), matrix(&change["inverse"]));
     let derive = |n: &str| poly::derive(&poly::builtin(n).expect("built-in")).expect("derives");
-    let (pa, pb) = (derive("verlet").transition_matrix().clone(), derive("false_euler").transition_matrix().clone());
+    let (pa, pb) = (
+        derive("verlet").transition_matrix().clone(),
+        derive("false_euler").transition_matrix().clone(),
+    );
     assert_eq!(&t * &pa, &pb * &t, "T P_a = P_b T");
     let phi = poly::Poly::var("Phi");
     assert_eq!(&t * &inverse, PolyMatrix::identity(2).map(|e| e * &phi), "T T^-1 = I");
@@ -188,8 +191,10 @@ fn every_pair_of_builtins_against_the_oracle() {
             let same_chi = da.charpoly() * denb == db.charpoly() * dena;
             assert_eq!(r.shares_charpoly(), same_chi, "{a} {b}");
             assert_eq!(r.name(), equiv::relate(&db, &da).name(), "{a} {b}: not symmetric");
-            let (pa, pb) =
-                (&da.transition_matrix().map(|e| e * denb), &db.transition_matrix().map(|e| e * dena));
+            let (pa, pb) = (
+                &da.transition_matrix().map(|e| e * denb),
+                &db.transition_matrix().map(|e| e * dena),
+            );
             let n = pa.rows();
             let one = poly::q(1, 1);
             let (perm, scale): (Vec<usize>, Vec<poly::Q>) = match &r {

@@ -11,6 +11,7 @@ mod extremes;
 mod front_door;
 mod fuzz_corpus;
 mod hostile;
+mod interrupt;
 mod limit_class;
 mod measured_cost;
 mod mesh_cli;

@@ -602,3 +602,66 @@ fn the_certified_bound_covers_the_highest_mode_and_its_substeps() {
     // rope2d is undamped: its five stable candidates.
     assert!(certified >= 5, "{certified}");
 }
+
+/// The recommendation is the cheapest candidate meeting the target by an
+/// exact cost, operations per step × substeps × degrees of freedom, ties
+/// broken by name: recomputed here from the candidates' own exact fields,
+/// on every example scene, and the same on a second run. `--rank measured`
+/// picks the least measured ns per tick instead, whatever it is.
+#[test]
+fn the_recommendation_is_the_least_exact_cost_ties_by_name() {
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes");
+    for name in ["chain10", "cloth_strip", "building3", "quarter_car", "rope2d", "spring_120hz"] {
+        let path = format!("{dir}/{name}.toml");
+        let v = json(&["advise", "--scene", &path, "--no-simulate", "--format", "json"]);
+        assert_eq!(v["rank"], "exact", "{name}");
+        let dof = v["dof"].as_u64().unwrap();
+        let mut best: Option<(u64, String, u64)> = None;
+        for c in v["candidates"].as_array().unwrap() {
+            let (Some(n), Some(per_step)) =
+                (c["substeps_accurate"].as_u64(), c["ops_per_step"].as_u64())
+            else {
+                assert!(c["ops_per_tick"].is_null(), "{name}: {c}");
+                continue;
+            };
+            let cost = per_step * n * dof;
+            assert_eq!(c["ops_per_tick"].as_u64(), Some(cost), "{name}: {c}");
+            let m = c["method"].as_str().unwrap().to_owned();
+            if best.as_ref().is_none_or(|(b, bm, _)| (cost, &m) < (*b, bm)) {
+                best = Some((cost, m, n));
+            }
+        }
+        let rec = &v["recommended"];
+        match best {
+            Some((_, m, n)) => {
+                assert_eq!(rec["method"], m.as_str(), "{name}");
+                assert_eq!(rec["substeps"].as_u64(), Some(n), "{name}");
+            }
+            None => assert!(rec.is_null(), "{name}: {rec}"),
+        }
+        let again = json(&["advise", "--scene", &path, "--no-simulate", "--format", "json"]);
+        assert_eq!(again["recommended"], v["recommended"], "{name}");
+        let measured = json(&[
+            "advise",
+            "--scene",
+            &path,
+            "--no-simulate",
+            "--rank",
+            "measured",
+            "--format",
+            "json",
+        ]);
+        assert_eq!(measured["rank"], "measured", "{name}");
+        let fastest = measured["candidates"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .filter(|c| c["ns_per_tick"].is_f64())
+            .map(|c| c["ns_per_tick"].as_f64().unwrap())
+            .fold(f64::INFINITY, f64::min);
+        let chosen = measured["recommended"]["method"].as_str().map(|m| candidate(&measured, m));
+        if let Some(c) = chosen {
+            assert_eq!(c["ns_per_tick"].as_f64(), Some(fastest), "{name}");
+        }
+    }
+}

@@ -14,7 +14,7 @@ use poly::{Sym, Q};
 use zcheck::load::LoadedMethod;
 use zcheck::tradeoff::family::Candidate;
 use zcheck::tradeoff::{
-    self, advise_spring, family, kernels, SecondOrder, Spring, SpringScene, Target, TradeRow,
+    self, advise_spring, family, kernels, Rank, SecondOrder, Spring, SpringScene, Target, TradeRow,
 };
 
 const EPS: f64 = f64::EPSILON;
@@ -266,7 +266,33 @@ fn admissible_phi_is_a_sharp_bound_below_phi_max() {
 fn rows(target: &Target) -> Vec<TradeRow> {
     let cands = undamped();
     // Invented but distinct timings: the ranking must follow whatever is measured.
-    tradeoff::trade(&cands, Spring::UNDAMPED, target, |c| 1.0 + c.cost.program.arithmetic() as f64)
+    tradeoff::trade(&cands, Spring::UNDAMPED, target, Rank::Measured, |c| {
+        1.0 + c.cost.program.arithmetic() as f64
+    })
+}
+
+/// The default ranking is by exact operations per period, ties by name,
+/// whatever the timings: invented timings that run against the counts
+/// (the cheapest in operations measured slowest) do not move it.
+#[test]
+fn exact_ranking_ignores_the_timings() {
+    let target = Target::DEFAULT;
+    let rows = tradeoff::trade(&undamped(), Spring::UNDAMPED, &target, Rank::Exact, |c| {
+        1e6 - c.cost.program.arithmetic() as f64
+    });
+    let ranked: Vec<&TradeRow> = rows.iter().filter(|r| r.rank.is_some()).collect();
+    assert!(ranked.len() >= 3, "{} ranked", ranked.len());
+    for pair in ranked.windows(2) {
+        let (a, b) = (pair[0], pair[1]);
+        let (ca, cb) = (a.cost_per_period.unwrap(), b.cost_per_period.unwrap());
+        assert!(
+            (ca.arithmetic, &a.method) < (cb.arithmetic, &b.method),
+            "{} before {}",
+            a.method,
+            b.method
+        );
+        assert_eq!(ca.arithmetic, ca.ops.mul + ca.ops.add);
+    }
 }
 
 /// The ranking follows ns_per_step × steps_per_period, ascending; methods
@@ -365,7 +391,7 @@ fn advisor_agrees_with_stability_and_classification() {
     ];
     for s in scenes {
         let cands = candidates_for(&s);
-        let advice = advise_spring(&s, &cands, |_| 1.0).unwrap();
+        let advice = advise_spring(&s, &cands, Rank::Exact, |_| 1.0).unwrap();
         for (c, m) in cands.iter().zip(&advice.methods) {
             let report = poly::advanced::stability::analyze(&c.charpoly).unwrap();
             // χ alone: bounded below Φ_max, or below the point P would decide.
@@ -417,9 +443,10 @@ fn numeric_class(c: &Candidate, phi: f64) -> poly::RootClass {
 #[test]
 fn advisor_120_hz_on_60_hz_tick() {
     let s = scene(120.0, 60.0, None);
-    let advice =
-        advise_spring(&s, &direct_undamped(), |c| 1.0 + c.cost.program.arithmetic() as f64)
-            .unwrap();
+    let advice = advise_spring(&s, &direct_undamped(), Rank::Measured, |c| {
+        1.0 + c.cost.program.arithmetic() as f64
+    })
+    .unwrap();
     assert!((advice.phi - 4.0 * PI).abs() <= 4.0 * EPS * advice.phi);
     let by: HashMap<&str, _> = advice.methods.iter().map(|m| (m.method.as_str(), m)).collect();
     for (m, k) in [
@@ -466,7 +493,7 @@ fn damped_scene_is_judged_against_the_damped_oscillator() {
 fn scene_validation() {
     #[track_caller]
     fn check(s: SpringScene, expected: &str) {
-        let err = advise_spring(&s, &[], |_| 1.0).unwrap_err().to_string();
+        let err = advise_spring(&s, &[], Rank::Exact, |_| 1.0).unwrap_err().to_string();
         assert!(err.contains(expected), "{err}");
     }
     check(scene(0.0, 60.0, None), "--freq 0: expected a finite number > 0");

@@ -21,8 +21,8 @@ pub(crate) fn claims() -> Vec<Claim> {
         "Phi^2*(1 - Phi^2/4)",
         "1 - Phi^2/2",
     );
-    let same =
-        builtin_derivation("damped_euler").charpoly() == builtin_derivation("false_euler").charpoly();
+    let same = builtin_derivation("damped_euler").charpoly()
+        == builtin_derivation("false_euler").charpoly();
     s.append_evidence(&format!(
         "; Damped Euler (D = Φ/2) and False Euler have {} χ",
         if same { "the same" } else { "different" }

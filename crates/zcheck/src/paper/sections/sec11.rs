@@ -81,7 +81,8 @@ pub(crate) fn claims() -> Vec<Claim> {
 
 fn always_stable(s: &mut Section) {
     // The section states no limit: "always" is the assertion.
-    let (finding, map, failing) = ranges::always("semi_false_heun", |c| c.bounded() == Some(true), None);
+    let (finding, map, failing) =
+        ranges::always("semi_false_heun", |c| c.bounded() == Some(true), None);
     let r = ranges::report("semi_false_heun");
     let limit = ranges::limit_text("semi_false_heun");
     let boundary =

@@ -8,7 +8,6 @@
 use std::cell::Cell;
 use std::f64::consts::PI;
 
-
 use super::common::*;
 use super::exact::p_q;
 use super::{advice, ranges};
