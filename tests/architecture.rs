@@ -675,3 +675,111 @@ fn architecture_names_only_paths_that_exist() {
     assert!(checked >= 40, "ARCHITECTURE.md names {checked} paths; expected a code map");
     assert!(missing.is_empty(), "ARCHITECTURE.md names paths that do not exist: {missing:?}");
 }
+
+/// The application's layers: `cli/` parses arguments and prints; every
+/// answer lives below it (`answers/`, `scene/`, `tradeoff/`, `paper/`, ...),
+/// and the Python module (`api.rs`), the proof report and the warnings call
+/// those, never `cli/`. Only the binary's `main` enters `cli`.
+#[test]
+fn nothing_below_cli_imports_it() {
+    let src = root().join("crates/zcheck/src");
+    let krate = Crate::read(&src);
+    let in_cli = |p: &Path| p.strip_prefix(&src).is_ok_and(|r| r.starts_with("cli"));
+    let upward: Vec<String> = krate
+        .edges()
+        .iter()
+        .filter(|((a, b), _)| in_cli(b) && !in_cli(a))
+        .map(|((a, b), via)| format!("{} -> {} ({via})", short(a), short(b)))
+        .collect();
+    assert!(upward.is_empty(), "files below cli/ that import it:\n{}", upward.join("\n"));
+    // The oracle beside the resolver: no `cli::` path written anywhere
+    // outside cli/ but in main.rs and lib.rs (which declares the module).
+    let mut written = Vec::new();
+    for file in krate.files.values().filter(|f| !in_cli(f)) {
+        let name = file.file_name().and_then(|n| n.to_str()).unwrap_or("");
+        if name == "lib.rs" {
+            continue;
+        }
+        let toks = tokens(&std::fs::read_to_string(file).expect("source"));
+        if toks.windows(2).any(|w| w[0] == Tok::Ident("cli".into()) && w[1] == Tok::Colons) {
+            written.push(short(file));
+        }
+    }
+    assert!(written.is_empty(), "files below cli/ that name it: {written:?}");
+}
+
+/// zcheck's library is public for its tests, benches, fuzz targets and the
+/// Python module, and shows them only what they use: at most 150 exported
+/// items, counted as the issue counts them (lines opening with `pub fn`,
+/// `pub struct`, ...).
+#[test]
+fn zcheck_exports_at_most_150_items() {
+    let mut count = 0;
+    let mut files = Vec::new();
+    collect_rs(&root().join("crates/zcheck/src"), &mut files);
+    let kinds = ["fn", "struct", "enum", "mod", "use", "const", "type", "trait", "static"];
+    for file in &files {
+        for line in std::fs::read_to_string(file).expect("source").lines() {
+            let t = line.trim_start();
+            if let Some(rest) = t.strip_prefix("pub ") {
+                if kinds.iter().any(|k| rest.starts_with(&format!("{k} "))) {
+                    count += 1;
+                }
+            }
+        }
+    }
+    assert!(count <= 150, "{count} exported items in crates/zcheck/src");
+}
+
+/// Every `.rs` file under `dir`, recursively.
+fn collect_rs(dir: &Path, out: &mut Vec<PathBuf>) {
+    for entry in std::fs::read_dir(dir).expect("a source folder") {
+        let path = entry.expect("an entry").path();
+        if path.is_dir() {
+            collect_rs(&path, out);
+        } else if path.extension().is_some_and(|e| e == "rs") {
+            out.push(path);
+        }
+    }
+}
+
+/// No source file is over 800 lines unless DESIGN.md gives the reason, in
+/// its section on long files, by the file's path.
+#[test]
+fn long_files_have_a_reason_in_design() {
+    let design = std::fs::read_to_string(root().join("DESIGN.md")).expect("DESIGN.md");
+    let mut files = Vec::new();
+    for dir in CRATES {
+        collect_rs(&root().join(dir), &mut files);
+    }
+    let mut unexplained = Vec::new();
+    for file in &files {
+        let lines = std::fs::read_to_string(file).expect("source").lines().count();
+        let rel = file.strip_prefix(root()).expect("in the repository").to_string_lossy();
+        if lines > 800 && !design.contains(rel.as_ref()) {
+            unexplained.push(format!("{rel} ({lines} lines)"));
+        }
+    }
+    assert!(unexplained.is_empty(), "over 800 lines, no reason in DESIGN.md: {unexplained:?}");
+}
+
+/// One error type per library crate: exactly one `impl std::error::Error`
+/// in each of poly, check and zcheck (its kinds say what went wrong).
+#[test]
+fn one_error_type_per_crate() {
+    for dir in ["crates/poly/src", "crates/check/src", "crates/zcheck/src"] {
+        let mut files = Vec::new();
+        collect_rs(&root().join(dir), &mut files);
+        let impls: Vec<String> = files
+            .iter()
+            .filter(|f| {
+                std::fs::read_to_string(f)
+                    .expect("source")
+                    .lines()
+                    .any(|l| l.trim_start().starts_with("impl std::error::Error for"))
+            })
+            .map(|f| short(f))
+            .collect();
+        assert_eq!(impls.len(), 1, "{dir}: error types in {impls:?}");
+    }
+}

@@ -13,11 +13,11 @@ use std::path::Path;
 
 use serde_json::Value;
 
-use crate::cli::values::ParamArg;
 use crate::error::Error;
 pub use crate::load::LoadedMethod;
 use crate::scene::advisor::Options;
 use crate::scene::file::SceneFile;
+use crate::values::ParamArg;
 
 /// A method argument as a command reads it: a built-in's name, a `.zm`
 /// file, or a `.toml` file (a Butcher tableau, or `alpha` and `beta` of a
@@ -35,23 +35,23 @@ pub fn loaded(method: poly::Method) -> LoadedMethod {
 /// `zcheck derive --format json`: M(z), P, χ(z) and, for an implicit
 /// method, P's denominator.
 pub fn derive(method: &LoadedMethod) -> Result<Value, Error> {
-    Ok(crate::cli::derive::to_json(method.derivation()?))
+    Ok(crate::answers::derive::to_json(method.derivation()?))
 }
 
 /// `zcheck stability --format json` with `params` (`NAME=VALUE`) bound.
 pub fn stability(method: &LoadedMethod, params: &[String]) -> Result<Value, Error> {
     let params = read_params(params)?;
-    Ok(crate::cli::stability::Analysis::of(method.derivation()?, &params)?.to_json())
+    Ok(crate::answers::stability::Analysis::of(method.derivation()?, &params)?.to_json())
 }
 
 /// `zcheck region --format json` of one method with `params`
 /// (`NAME=VALUE`) bound; a parameter the method lacks is an error.
 pub fn region(method: &LoadedMethod, params: &[String]) -> Result<Value, Error> {
     let params = read_params(params)?;
-    crate::cli::values::check_declared(&params, &[method.method()])?;
+    crate::values::check_declared(&params, &[method.method()])?;
     let name = method.method().name();
-    let (shown, report) = crate::cli::region::plane(name, method, &params)?;
-    Ok(crate::region::to_json(name, &shown, &report))
+    let (shown, report) = crate::answers::plane::plane(name, method, &params)?;
+    Ok(crate::answers::plane::to_json(name, &shown, &report))
 }
 
 /// One point of `zcheck verify --format json` (`check::verify`): the
@@ -63,11 +63,11 @@ pub fn verify(
     params: &[String],
     steps: u64,
 ) -> Result<Value, Error> {
-    let phi: crate::cli::values::Exact =
+    let phi: crate::values::Exact =
         phi.parse().map_err(|e: String| Error::usage(format!("phi {phi}: {e}")))?;
     phi.to_f64("phi")?;
     let params = read_params(params)?;
-    crate::cli::values::check_declared(&params, &[method.method()])?;
+    crate::values::check_declared(&params, &[method.method()])?;
     let mut bound = check::Params::default();
     for p in &params {
         p.value.to_f64(&format!("parameter {}", p.name))?;
@@ -75,7 +75,7 @@ pub fn verify(
     }
     let bound = bound.bind("Phi", phi.value);
     let point = check::verify(method.derivation()?, &bound, steps)?;
-    Ok(crate::cli::verify::point_json(&point))
+    Ok(crate::answers::verify::point_json(&point))
 }
 
 /// `zcheck map --format json`: over (Φ, NAME) with `phi` (`LO..HI`) and
@@ -88,7 +88,7 @@ pub fn map(
     grid: usize,
     samples: usize,
 ) -> Result<Value, Error> {
-    crate::cli::map::compute(method, phi, params, grid, samples)?.to_json()
+    crate::answers::region::compute(method, phi, params, grid, samples)?.to_json()
 }
 
 /// `zcheck advise --scene FILE --format json`, the prediction checked by
@@ -111,18 +111,18 @@ fn advise(scene: &SceneFile) -> Result<Value, Error> {
         route: Default::default(),
         rank: Default::default(),
     };
-    Ok(serde_json::to_value(crate::cli::advise::scene_advice(scene, &[], options)?)?)
+    Ok(serde_json::to_value(crate::answers::advice::scene_advice(scene, &[], options)?)?)
 }
 
 /// `zcheck paper --format json`: the claims, the summary and the overview.
 pub fn paper() -> Result<Value, Error> {
-    crate::cli::paper::json_document()
+    crate::paper::json_document()
 }
 
 /// The error as the command line prints it after `error: `: its message,
 /// then each of its sources after `: `.
 pub fn message(e: &Error) -> String {
-    crate::cli::output::with_sources(e)
+    crate::error::with_sources(e)
 }
 
 /// `NAME=VALUE` arguments read as `--param` reads them.

@@ -281,3 +281,14 @@ mod tests {
         assert_eq!(Error::file("a.toml", 0, 0, "cannot read").location(), None);
     }
 }
+
+/// The error's message, then each of its sources after `: `.
+pub(crate) fn with_sources(e: &Error) -> String {
+    let mut text = e.to_string();
+    let mut next = std::error::Error::source(e);
+    while let Some(source) = next {
+        text.push_str(&format!(": {source}"));
+        next = source.source();
+    }
+    text
+}

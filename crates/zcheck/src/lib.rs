@@ -26,6 +26,7 @@
 //! The exact algebra lives in `poly`, the numeric witnesses in `check`; this
 //! crate depends on both and neither depends on it.
 
+mod answers;
 pub mod api;
 pub mod cli;
 mod drift_figure;
@@ -33,18 +34,16 @@ pub mod emit;
 mod error;
 mod interrupt;
 pub mod load;
-mod map;
 mod multistep;
 pub mod native;
 pub mod overview;
 pub mod paper;
-mod param_map;
 pub mod plot;
-mod region;
 pub mod scene;
 mod spectral;
 pub mod tableau;
 pub mod tradeoff;
+pub(crate) mod values;
 mod warn;
 
 pub use error::{Error, ErrorKind, Location};

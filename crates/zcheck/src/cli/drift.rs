@@ -101,7 +101,7 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     }
     let phi = args
         .phi
-        .parse::<super::values::Exact>()
+        .parse::<crate::values::Exact>()
         .map_err(|e| Error::usage(format!("--phi {}: {e}", args.phi)))?
         .value;
     if phi <= Q::from_integer(0.into()) {
@@ -109,7 +109,7 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     }
     let mut extra = Vec::new();
     for p in &args.params {
-        let (name, value) = super::values::parse_param(p)?;
+        let (name, value) = crate::values::parse_param(p)?;
         if name == "Phi" {
             return Err(Error::usage(format!("--param {p}: give the step with --phi")));
         }

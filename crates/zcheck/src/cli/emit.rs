@@ -25,7 +25,7 @@ pub(crate) struct Args {
     /// Fold the constants at this Phi (exact: integer, fraction or decimal);
     /// without it Phi, and every other parameter, is an argument.
     #[arg(long, allow_hyphen_values = true)]
-    pub phi: Option<super::values::Exact>,
+    pub phi: Option<crate::values::Exact>,
     /// With --phi: a value for another parameter, `NAME=VALUE`; repeatable.
     #[arg(long = "param", value_name = "NAME=VALUE")]
     pub params: Vec<String>,
@@ -50,7 +50,7 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
         Some(phi) => {
             let mut given: Vec<(String, Q)> = vec![("Phi".to_owned(), phi.value.clone())];
             for p in &args.params {
-                given.push(super::values::parse_param(p)?);
+                given.push(crate::values::parse_param(p)?);
             }
             let mut values: Vec<(Sym, Q)> = Vec::new();
             for sym in method.params() {

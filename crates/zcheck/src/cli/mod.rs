@@ -25,7 +25,6 @@ pub(crate) mod region;
 pub(crate) mod scene;
 pub(crate) mod stability;
 pub(crate) mod tradeoff;
-pub(crate) mod values;
 pub(crate) mod verify;
 
 /// Runs the command line: parses the arguments, runs the command, and exits

@@ -10,10 +10,6 @@ use std::process::ExitCode;
 
 use crate::error::Error;
 
-/// The most bytes of an error message printed: enough for any real error,
-/// and a bound on what a hostile input can put on the terminal.
-const MAX_ERROR_BYTES: usize = 4000;
-
 /// Writes `text` to stdout. A closed pipe is not an error: the rest of the
 /// text is dropped. Any other write failure (a full disk) is.
 pub(crate) fn emit(text: &str) -> std::io::Result<()> {
@@ -50,35 +46,5 @@ pub(crate) fn is_broken_pipe(e: &Error) -> bool {
     e.io_error().is_some_and(|io| io.kind() == std::io::ErrorKind::BrokenPipe)
 }
 
-/// The error's message, then each of its sources after `: `.
-pub(crate) fn with_sources(e: &Error) -> String {
-    let mut text = e.to_string();
-    let mut next = std::error::Error::source(e);
-    while let Some(source) = next {
-        text.push_str(&format!(": {source}"));
-        next = source.source();
-    }
-    text
-}
-
-/// Prints an error on stderr: control and invisible characters (other than
-/// line feeds) as `U+XXXX`, and at most [`MAX_ERROR_BYTES`]. A failure to
-/// write stderr is ignored: there is nowhere left to report it.
-pub(crate) fn print_error(text: &str) {
-    let lines: Vec<String> = text
-        .trim_end()
-        .split('\n')
-        .map(|l| poly::advanced::show_invisible(l).into_owned())
-        .collect();
-    let mut shown = lines.join("\n");
-    if shown.len() > MAX_ERROR_BYTES {
-        let mut cut = MAX_ERROR_BYTES;
-        while !shown.is_char_boundary(cut) {
-            cut -= 1;
-        }
-        let more = shown.len() - cut;
-        shown.truncate(cut);
-        shown.push_str(&format!("… ({more} more bytes)"));
-    }
-    let _ = writeln!(std::io::stderr().lock(), "{shown}");
-}
+pub(crate) use crate::error::with_sources;
+pub(crate) use crate::warn::print_error;

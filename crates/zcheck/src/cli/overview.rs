@@ -4,9 +4,9 @@
 use std::process::ExitCode;
 
 use super::format::{Format, MARKDOWN_JSON};
-use super::values::{self, ParamArg};
 use crate::error::Error;
 use crate::load::{try_builtin_derivation, LoadedMethod};
+use crate::values::{self, ParamArg};
 
 /// Arguments of `zcheck overview`.
 #[derive(clap::Args)]

@@ -8,9 +8,6 @@ use super::format::{Format, MARKDOWN_JSON};
 use crate::error::Error;
 use crate::paper::{all_claims, report};
 
-/// The highest power of Φ shown in the overview's series.
-const OVERVIEW_ORDER: usize = 5;
-
 /// Arguments of `zcheck paper`.
 #[derive(clap::Args)]
 pub(crate) struct Args {
@@ -20,23 +17,17 @@ pub(crate) struct Args {
 
 pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     let out = match args.format {
-        Format::Json => serde_json::to_string_pretty(&json_document()?)? + "\n",
+        Format::Json => serde_json::to_string_pretty(&crate::paper::json_document()?)? + "\n",
         _ => format!(
             "{}\n## Beyond the paper: every method side by side\n\n\
              Appendix A derives Ψ(Φ) for two methods; here it is for all seven, exact, with the \
              exact stability limit and the operations per step (`zcheck overview`).\n\n{}",
             report::to_markdown(&all_claims()),
-            crate::overview::to_markdown(&crate::overview::paper_overview(OVERVIEW_ORDER)?)
+            crate::overview::to_markdown(&crate::overview::paper_overview(
+                crate::paper::OVERVIEW_ORDER
+            )?)
         ),
     };
     super::output::emit(&out)?;
     Ok(ExitCode::SUCCESS)
-}
-
-/// The document of `zcheck paper --format json`: the claims, the summary
-/// and the overview.
-pub(crate) fn json_document() -> Result<serde_json::Value, Error> {
-    let mut doc = report::to_json(&all_claims());
-    doc["overview"] = serde_json::to_value(crate::overview::paper_overview(OVERVIEW_ORDER)?)?;
-    Ok(doc)
 }

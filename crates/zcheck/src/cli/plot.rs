@@ -8,11 +8,11 @@ use check::numeric::ParamsF64;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use super::values::{self, ParamArg};
 use crate::error::Error;
 use crate::load::LoadedMethod;
 use crate::plot::{yt_figure, yt_grid, zplane_figure};
 use crate::spectral;
+use crate::values::{self, ParamArg};
 use check::numeric::Params;
 use check::witness::ExactCharpoly;
 

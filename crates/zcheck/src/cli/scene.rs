@@ -17,7 +17,7 @@ use crate::scene::{figure, Scene};
 use indicatif::{ProgressBar, ProgressStyle};
 use serde_json::json;
 
-use super::values::{Exact, DEFAULT_BUDGET};
+use crate::values::{Exact, DEFAULT_BUDGET};
 
 /// Force law of the three-body scenes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]

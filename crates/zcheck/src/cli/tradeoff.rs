@@ -97,7 +97,7 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
         hand.push(c.hand_kernel.and_then(|name| kernels::time_hand_kernel(name, 0.0, budget)));
     }
     let mut k = 0;
-    let by = super::advise::rank_of(&args.rank);
+    let by = crate::tradeoff::Rank::parse(&args.rank).unwrap_or_default();
     let mut rows = trade(&candidates, Spring::UNDAMPED, &target, by, |_| {
         k += 1;
         ns[k - 1]
@@ -151,7 +151,7 @@ fn user_candidates(
     family: &[Candidate],
 ) -> Result<Vec<Candidate>, Error> {
     let parsed: Vec<(String, poly::Q)> =
-        params.iter().map(|p| super::values::parse_param(p)).collect::<Result<_, _>>()?;
+        params.iter().map(|p| crate::values::parse_param(p)).collect::<Result<_, _>>()?;
     if let Some((name, _)) = parsed.iter().find(|(n, _)| n == "Phi") {
         return Err(Error::usage(format!(
             "--param {name}=...: Phi is the step size the trade chooses; it cannot be fixed"

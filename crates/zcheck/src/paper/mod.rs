@@ -30,3 +30,14 @@ pub fn all_claims() -> Vec<Claim> {
         v
     })
 }
+
+/// The highest power of Φ shown in the overview's series.
+pub(crate) const OVERVIEW_ORDER: usize = 5;
+
+/// The document of `zcheck paper --format json`: the claims, the summary
+/// and the overview.
+pub(crate) fn json_document() -> Result<serde_json::Value, crate::Error> {
+    let mut doc = report::to_json(&all_claims());
+    doc["overview"] = serde_json::to_value(crate::overview::paper_overview(OVERVIEW_ORDER)?)?;
+    Ok(doc)
+}

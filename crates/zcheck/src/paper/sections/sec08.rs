@@ -97,8 +97,8 @@ fn secant_change_of_variables(s: &mut Section) {
         change.is_some_and(|c| super::ranges::positive_roots(&c.undefined_at()).is_empty());
     let (forward, back) = change.map_or((Vec::new(), Vec::new()), |c| {
         (
-            crate::cli::equiv::equations(|i| c.t_row(i), &ve.method(), &fe.method()),
-            crate::cli::equiv::equations(|i| c.inverse_row(i), &fe.method(), &ve.method()),
+            crate::answers::equiv::equations(|i| c.t_row(i), &ve.method(), &fe.method()),
+            crate::answers::equiv::equations(|i| c.inverse_row(i), &fe.method(), &ve.method()),
         )
     });
     s.push(

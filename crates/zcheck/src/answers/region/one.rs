@@ -11,8 +11,8 @@
 //! only the final conversion to plot coordinates is a float. Grid points
 //! and curve samples are computed in parallel (rayon).
 
-use std::path::Path;
-
+use crate::error::Error;
+use crate::load::LoadedMethod;
 use check::numeric::{f64_to_q, q_to_f64, Params, ParamsF64};
 use check::witness::Witnesses;
 use plotters::prelude::*;
@@ -20,9 +20,7 @@ use poly::advanced::region::{CurveKind, PhiLimit, Unconditional};
 use poly::{RootClass, Sym, Q};
 use rayon::prelude::*;
 use serde::Serialize;
-
-use crate::error::Error;
-use crate::load::LoadedMethod;
+use std::path::Path;
 
 /// One grid point.
 #[derive(Clone, Debug, PartialEq, Serialize)]

@@ -7,16 +7,16 @@
 //! the shaded region, the boundary locus (the w where a root lies on the
 //! unit circle), and the exact axis intervals as thick segments.
 
-use std::fmt::Write as _;
-use std::path::Path;
-
+use crate::error::Error;
+use crate::load::LoadedMethod;
+use crate::values::ParamArg;
 use check::witness::{complex_polynomial_roots, C64};
 use num_traits::ToPrimitive;
 use plotters::prelude::*;
 use poly::{Algebraic, PlaneReport, Poly, Sector, Sym, Q};
 use serde_json::{json, Value};
-
-use crate::error::Error;
+use std::fmt::Write as _;
+use std::path::Path;
 
 /// Width to which exact numbers are narrowed before they become floats.
 fn fine() -> Q {
@@ -293,4 +293,28 @@ pub(crate) fn figure(reports: &[(String, PlaneReport)], path: &Path) -> Result<(
     result.map_err(|e| err(e.as_ref()))?;
     root.present().map_err(|e| err(&e))?;
     Ok(())
+}
+
+/// The w-plane report of one method (shown as `arg` in an error), with the
+/// parameters it declares bound from `params` and the others left out
+/// (`zcheck region` takes one list for all its methods): the values bound,
+/// and the report.
+pub(crate) fn plane(
+    arg: &str,
+    m: &LoadedMethod,
+    params: &[ParamArg],
+) -> Result<(Vec<(String, Q)>, poly::PlaneReport), Error> {
+    let mut bound = poly::Params::new();
+    let mut shown: Vec<(String, Q)> = Vec::new();
+    for p in params {
+        if m.method().params().iter().any(|s| s.name() == p.name) {
+            bound.insert(&p.name, p.value.value.clone());
+            shown.push((p.name.clone(), p.value.value.clone()));
+        }
+    }
+    let report = m
+        .plane_derivation()?
+        .plane(&bound)
+        .map_err(|e| Error::from(e).context(format!("method {arg}")))?;
+    Ok((shown, report))
 }

@@ -37,9 +37,9 @@ use poly::{Algebraic, Poly, PolyMatrix, Stability, StabilityReport, Sym, Q};
 use rayon::prelude::*;
 use serde::Serialize;
 
+use super::one::{approx, centre, lin};
 use crate::error::Error;
 use crate::load::LoadedMethod;
-use crate::map::{approx, centre, lin};
 
 /// The window of a two-parameter map.
 #[derive(Clone, Debug)]
@@ -605,7 +605,7 @@ mod tests {
     /// 4β − 2γ, the unit circle a₂ − a₀ = γ − 1/2, the leading β.
     #[test]
     fn newmark_limit_curves() {
-        let src = include_str!("../methods/newmark.zm");
+        let src = include_str!("../../../methods/newmark.zm");
         let d = poly::derive_source("newmark.zm", src).unwrap();
         let (l, curves) = limit_conditions(&d.charpoly());
         let (b, g, z) = (Poly::var("beta"), Poly::var("gamma"), Poly::sym(Sym::z()));
