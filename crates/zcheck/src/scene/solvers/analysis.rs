@@ -1,0 +1,444 @@
+//! One configuration (solver, S substeps, N iterations) analysed: the
+//! substep map P (f64, by applying the solver to basis vectors), the rigid
+//! modes deflated before any eigenvalue is taken, the non-rigid eigenvalues
+//! μ paired with the true modes, and the answers of the issue: spectral
+//! radius of the tick map P^S (exact where the scene is small), stability on
+//! the non-rigid modes, each mode's effective frequency and damping ratio,
+//! the phase and amplitude errors over the duration, and the cost.
+//!
+//! Rigid modes: every motion in null(J) (J the constraint Jacobian, computed
+//! exactly over Q in `exact`) is rigid, and span{(u, 0), (0, u)} for u in
+//! null(J) is invariant under every solver's map (C = 0, Ċ = 0, no impulse).
+//! The non-rigid map is D = Q_⊥ᵀ P Q_⊥ with Q_⊥ = blockdiag(R_⊥, R_⊥, I),
+//! R_⊥ an orthonormal basis of null(J)^⊥: no eigenvalue of the rigid
+//! Jordan block at 1 is ever computed, so it cannot read as 1 + 10⁻⁸. The
+//! true modes are the eigenvalues λ of the continuous system
+//! ẋ = v, v̇ = −M⁻¹(Kx + Cv) deflated the same way.
+//!
+//! Pairing (the rule stated in the output): the non-rigid eigenvalues λ
+//! with Im λ ≥ 0 are assigned to distinct eigenvalues μ of D minimising the
+//! total distance in log space, Σ |ln μ − λh| (principal logarithm,
+//! h = 1/(tick·S)), by the Hungarian algorithm: exact for a normal map,
+//! and for the Gauss–Seidel map, whose eigenvectors are not the modes, the
+//! nearest consistent matching to the exponential of the true spectrum.
+//!
+//! At scale a Gauss–Seidel map is far from normal, so a numeric ρ ≤ 1 is
+//! not a proof: the radius is `certified` only when an exact verdict or a
+//! norm bound ‖T^k‖_∞^{1/k} < 1 of the deflated tick map T proves it.
+
+use std::cmp::Ordering;
+
+use faer::Mat;
+use num_complex::Complex64 as C64;
+use serde::Serialize;
+
+use super::super::file::SceneFile;
+use super::dense;
+use super::exact;
+use super::kernel::{self, Substep};
+use super::model::{Config, Model, Solver};
+use crate::error::Error;
+
+/// Largest state (of the substep map) decided exactly over Q.
+pub(crate) const EXACT_MAX_STATE: usize = 12;
+
+/// Largest state analysed with dense eigenvalues.
+pub(crate) const DENSE_MAX_STATE: usize = 2400;
+
+/// Numeric tolerance on the non-rigid radius when no exact verdict is at
+/// hand (a few hundred ulps for these well-scaled maps).
+pub(crate) const RHO_TOL: f64 = 1e-12;
+
+/// The pairing rule, as the output states it.
+pub const PAIRING: &str = "each true mode (continuous eigenvalue lambda, Im >= 0, rigid modes deflated) is \
+     paired with a distinct eigenvalue mu of the substep map minimising the total |ln mu - lambda*h| \
+     (Hungarian assignment, h = 1/(tick*S))";
+
+/// A scene prepared for its configurations: the constraints, the exact
+/// rigid subspace and the true modes.
+pub(crate) struct Prepared {
+    /// The constraints.
+    pub model: Model,
+    /// Tick rate, Hz.
+    pub tick_hz: f64,
+    /// Duration, s.
+    pub duration_s: f64,
+    /// Phase target, rad.
+    pub phase_rad: f64,
+    /// Amplitude target.
+    pub amplitude: f64,
+    /// Targets apply at or below this frequency.
+    pub max_hz: Option<f64>,
+    /// r = dim null(J): rigid modes.
+    pub rigid: usize,
+    /// R_⊥ (`None` when r = 0).
+    pub rperp: Option<Mat<f64>>,
+    /// The true non-rigid eigenvalues λ, Im λ ≥ 0, increasing |λ|.
+    pub lambdas: Vec<C64>,
+}
+
+impl Prepared {
+    /// Prepares a scene.
+    pub(crate) fn new(scene: &SceneFile) -> Result<Prepared, Error> {
+        let model = Model::of_scene(scene);
+        if model.m() == 0 {
+            return Err(Error::unsupported(
+                "no spring of the scene moves a free mass: nothing for a solver to project",
+            ));
+        }
+        if model.state_len(Solver::SoftStep) > DENSE_MAX_STATE {
+            return Err(Error::unsupported(format!(
+                "the scene has {} free degrees of freedom and {} constraints: the solver analysis takes \
+                 states of at most {DENSE_MAX_STATE} (2 x DOF, plus one impulse per joint)",
+                model.n(),
+                model.m()
+            )));
+        }
+        let n = model.n();
+        let basis = exact::null_basis(&model);
+        let rigid = basis.len();
+        let rperp = (rigid > 0).then(|| {
+            let f: Vec<Vec<f64>> =
+                basis.iter().map(|v| v.iter().map(check::numeric::q_to_f64).collect()).collect();
+            dense::complement(&f, n)
+        });
+        // The continuous system, deflated.
+        let (k, c) = model.stiffness_damping();
+        let a = Mat::<f64>::from_fn(2 * n, 2 * n, |i, j| match (i < n, j < n) {
+            (true, true) => 0.0,
+            (true, false) => f64::from(u8::from(j - n == i)),
+            (false, true) => -k[(i - n) * n + j] * model.w[i - n],
+            (false, false) => -c[(i - n) * n + (j - n)] * model.w[i - n],
+        });
+        let a = match &rperp {
+            Some(r) => dense::project(&a, &dense::block_complement(r, 0)),
+            None => a,
+        };
+        let all = dense::eigenvalues(&a)?;
+        let scale = all.iter().map(|z| z.norm()).fold(0.0, f64::max);
+        let tol = 1e-10 * scale.max(f64::MIN_POSITIVE);
+        let mut lambdas: Vec<C64> = all
+            .into_iter()
+            .filter(|z| z.im > -tol)
+            .map(|z| if z.im.abs() <= tol { C64::new(z.re, 0.0) } else { z })
+            .collect();
+        lambdas.sort_by(|x, y| x.norm().total_cmp(&y.norm()));
+        Ok(Prepared {
+            model,
+            tick_hz: scene.tick_hz,
+            duration_s: scene.duration_s,
+            phase_rad: scene.phase_rad,
+            amplitude: scene.amplitude,
+            max_hz: scene.max_hz,
+            rigid,
+            rperp,
+            lambdas,
+        })
+    }
+
+    /// Ticks in the duration.
+    pub(crate) fn ticks(&self) -> f64 {
+        (self.duration_s * self.tick_hz).round().max(1.0)
+    }
+
+    /// Whether a true eigenvalue is held to the targets.
+    fn in_band(&self, l: C64) -> bool {
+        self.max_hz.is_none_or(|f| l.norm() / (2.0 * std::f64::consts::PI) <= f)
+    }
+}
+
+/// The spectral radius of the tick map.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Radius {
+    /// ρ of the tick map over every free degree of freedom (1 at least when
+    /// there are rigid modes).
+    pub value: f64,
+    /// ρ against 1, decided exactly: "< 1", "= 1" or "> 1" (absent when the
+    /// scene is too large for the exact route).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub exact: Option<String>,
+    /// ρ of the non-rigid modes alone.
+    pub non_rigid: f64,
+    /// Whether ρ ≤ 1 of the non-rigid modes is proved (exactly, or by a
+    /// norm bound); a numeric eigenvalue of a non-normal map is no proof.
+    pub certified: bool,
+    /// The norm bound ‖T^k‖_∞^{1/k} that proves it, when one does.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub norm_bound: Option<f64>,
+}
+
+/// One true mode as the solver realises it.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct ModeAdvice {
+    /// The true undamped frequency |λ|/2π, Hz.
+    pub hz: f64,
+    /// The true damping ratio −Re λ/|λ|.
+    pub ratio: f64,
+    /// θ/(2π)·tick_hz with θ = S·|arg μ|, Hz.
+    pub effective_hz: f64,
+    /// −ln r/√(ln² r + θ²), r = |μ|^S.
+    pub effective_ratio: f64,
+    /// Whether the targets apply to it (at or below `max_hz`).
+    pub in_band: bool,
+}
+
+/// The check by simulation: the tick map's powers against the solver
+/// stepped in f64.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct SimulationCheck {
+    /// Ticks compared.
+    pub ticks: u64,
+    /// Largest ‖T^k s − step^k s‖ / ‖step^k s‖.
+    pub max_relative_difference: f64,
+}
+
+/// One configuration's answer (`zcheck advise --solver S --substeps S
+/// --iterations N`).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct ConfigAdvice {
+    /// The solver.
+    pub solver: Solver,
+    /// Substeps per tick.
+    pub substeps: u64,
+    /// Iterations per substep.
+    pub iterations: u64,
+    /// Jacobi's relaxation factor (`xpbd_jacobi` only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub relaxation: Option<f64>,
+    /// Spectral radius of the tick map.
+    pub spectral_radius: Radius,
+    /// ρ ≤ 1 and no growing Jordan block, on the non-rigid modes.
+    pub stable: bool,
+    /// How `stable` was decided: "exact" or "numeric".
+    pub stable_from: &'static str,
+    /// Whether the modes in the band meet the phase and amplitude targets.
+    pub meets_accuracy: bool,
+    /// Largest phase error over the duration, rad (modes in the band).
+    pub phase_error_rad: f64,
+    /// Largest relative amplitude error over the duration.
+    pub amplitude_error: f64,
+    /// Constraint projections per tick, S·N·(constraints).
+    pub cost: u64,
+    /// Rigid modes deflated (dim null J).
+    pub rigid_modes: usize,
+    /// Every non-rigid mode, increasing frequency.
+    pub modes: Vec<ModeAdvice>,
+    /// How eigenvalues were paired with modes.
+    pub pairing: &'static str,
+    /// The check by simulation (a full analysis only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub simulation: Option<SimulationCheck>,
+}
+
+/// How much of a configuration to analyse.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Depth {
+    /// Stability and accuracy only (the search's screen).
+    Screen,
+    /// Everything: the norm certificate and the simulation check too.
+    Full,
+}
+
+/// Analyses one configuration.
+pub(crate) fn analyse(
+    prep: &Prepared,
+    config: &Config,
+    depth: Depth,
+) -> Result<ConfigAdvice, Error> {
+    let model = &prep.model;
+    let s = config.substeps;
+    let sub = kernel::substep_f64(model, config, prep.tick_hz);
+    let p = dense::mat(&sub.matrix());
+    let extra = sub.state_len() - 2 * model.n();
+    let q = prep.rperp.as_ref().map(|r| dense::block_complement(r, extra));
+    let d = match &q {
+        Some(q) => dense::project(&p, q),
+        None => p.clone(),
+    };
+    let mu = dense::eigenvalues(&d)?;
+    let rho_sub = mu.iter().map(|z| z.norm()).fold(0.0, f64::max);
+    let rho_nr = rho_sub.powf(s as f64);
+    // The exact verdict, when the state is small.
+    let verdict = if sub.state_len() <= EXACT_MAX_STATE {
+        let pq = exact::substep_q(model, config, prep.tick_hz).matrix();
+        Some(exact::verdict(&pq, 2 * prep.rigid).ok_or_else(|| {
+            Error::numeric(
+                "disagreement: (z - 1)^(2r) does not divide the exact characteristic polynomial of the \
+                 substep map, r the rigid modes of the exact null space",
+            )
+        })?)
+    } else {
+        None
+    };
+    let (stable, stable_from) = match verdict.as_ref().and_then(|v| v.bounded) {
+        Some(b) => (b, "exact"),
+        None => (rho_nr <= 1.0 + RHO_TOL, "numeric"),
+    };
+    let exact_str = verdict.as_ref().map(|v| {
+        let whole = if prep.rigid > 0 { v.rho.max(Ordering::Equal) } else { v.rho };
+        match whole {
+            Ordering::Less => "< 1",
+            Ordering::Equal => "= 1",
+            Ordering::Greater => "> 1",
+        }
+        .to_owned()
+    });
+    // Pairing.
+    let h = 1.0 / (prep.tick_hz * s as f64);
+    let log = |z: C64| if z.norm() > 0.0 { z.ln() } else { C64::new(-1e3, 0.0) };
+    let cost: Vec<Vec<f64>> = prep
+        .lambdas
+        .iter()
+        .map(|l| mu.iter().map(|&m| (log(m) - l * h).norm().min(1e12)).collect())
+        .collect();
+    let pairs = if prep.lambdas.len() <= mu.len() {
+        dense::assignment(&cost)
+    } else {
+        return Err(Error::numeric("more true modes than eigenvalues of the solver's map"));
+    };
+    let ticks = prep.ticks();
+    let tick = prep.tick_hz;
+    let (mut phase, mut amp) = (0.0f64, 0.0f64);
+    let mut modes = Vec::with_capacity(prep.lambdas.len());
+    for (l, &j) in prep.lambdas.iter().zip(&pairs) {
+        let m = mu[j];
+        let theta = s as f64 * m.arg().abs();
+        let ln_r = s as f64 * m.norm().ln();
+        let in_band = prep.in_band(*l);
+        if in_band {
+            if l.im > 0.0 {
+                phase = phase.max(ticks * (theta - l.im / tick).abs());
+            }
+            amp = amp.max((ticks * (ln_r - l.re / tick)).exp_m1().abs());
+        }
+        let eff_ratio = if theta == 0.0 && ln_r == 0.0 {
+            0.0
+        } else {
+            -ln_r / (ln_r * ln_r + theta * theta).sqrt()
+        };
+        modes.push(ModeAdvice {
+            hz: l.norm() / (2.0 * std::f64::consts::PI),
+            ratio: if l.norm() > 0.0 { -l.re / l.norm() } else { 0.0 },
+            effective_hz: theta / (2.0 * std::f64::consts::PI) * tick,
+            effective_ratio: eff_ratio,
+            in_band,
+        });
+    }
+    let meets_accuracy =
+        stable && phase.is_finite() && phase <= prep.phase_rad && amp <= prep.amplitude;
+    let mut certified = verdict.as_ref().is_some_and(|v| v.bounded.is_some());
+    let mut norm_bound = None;
+    let mut simulation = None;
+    if depth == Depth::Full {
+        if !certified && rho_nr < 1.0 {
+            norm_bound = certify(&d, s);
+            certified = norm_bound.is_some();
+        }
+        simulation = Some(simulation_check(&sub, &p, s, prep.ticks().min(120.0) as u64));
+    }
+    Ok(ConfigAdvice {
+        solver: config.solver,
+        substeps: s,
+        iterations: config.iterations,
+        relaxation: (config.solver == Solver::XpbdJacobi).then_some(config.relaxation),
+        spectral_radius: Radius {
+            value: if prep.rigid > 0 { rho_nr.max(1.0) } else { rho_nr },
+            exact: exact_str,
+            non_rigid: rho_nr,
+            certified,
+            norm_bound,
+        },
+        stable,
+        stable_from,
+        meets_accuracy,
+        phase_error_rad: phase,
+        amplitude_error: amp,
+        cost: model.cost(config),
+        rigid_modes: prep.rigid,
+        modes,
+        pairing: PAIRING,
+        simulation,
+    })
+}
+
+/// A norm bound on the deflated tick map T = D^S: the smallest
+/// ‖T^{2^j}‖_∞^{1/2^j} over j ≤ 8 when it is below 1 − 10⁻⁹ (far above the
+/// rounding of the products), else `None`.
+fn certify(d: &Mat<f64>, s: u64) -> Option<f64> {
+    let mut t = dense::power(d, s);
+    let mut best: Option<f64> = None;
+    for j in 0..=8 {
+        let b = dense::norm_inf(&t).powf(1.0 / f64::from(1u32 << j));
+        if b < 1.0 - 1e-9 {
+            best = Some(best.map_or(b, |x: f64| x.min(b)));
+            break;
+        }
+        t = &t * &t;
+    }
+    best
+}
+
+/// The tick map's powers against stepping the solver: T = P^S (by squaring
+/// when the state is small, else S products with P per tick) applied to a
+/// fixed pseudo-random state, `ticks` times.
+fn simulation_check(sub: &Substep<f64>, p: &Mat<f64>, s: u64, ticks: u64) -> SimulationCheck {
+    let len = sub.state_len();
+    let mut seed = 0x9e3779b97f4a7c15u64;
+    let mut state: Vec<f64> = (0..len)
+        .map(|_| {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 11) as f64 / (1u64 << 53) as f64 - 0.5
+        })
+        .collect();
+    let t = (len <= 600).then(|| dense::power(p, s));
+    let mut via_map = state.clone();
+    let mut worst = 0.0f64;
+    for _ in 0..ticks {
+        kernel::simulate(sub, s, 1, &mut state);
+        via_map = match &t {
+            Some(t) => dense::mat_vec(t, &via_map),
+            None => (0..s).fold(via_map, |x, _| dense::mat_vec(p, &x)),
+        };
+        let norm = state.iter().map(|x| x * x).sum::<f64>().sqrt();
+        let diff = state.iter().zip(&via_map).map(|(a, b)| (a - b) * (a - b)).sum::<f64>().sqrt();
+        if norm > 0.0 {
+            worst = worst.max(diff / norm);
+        }
+    }
+    SimulationCheck { ticks, max_relative_difference: worst }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn scene(text: &str) -> SceneFile {
+        SceneFile::parse("s.toml", text).unwrap()
+    }
+
+    /// A free pair (no ground) has one rigid mode; it is deflated, the
+    /// configuration is stable, and the radius over every DOF is exactly 1.
+    #[test]
+    fn a_free_pair_deflates_its_translation() {
+        let s = scene("tick_hz = 60\n[[mass]]\nname = \"a\"\nkg = 1\n[[mass]]\nname = \"b\"\nkg = 3\n[[spring]]\nbetween = [\"a\", \"b\"]\nstiffness = 100\n");
+        let prep = Prepared::new(&s).unwrap();
+        assert_eq!(prep.rigid, 1);
+        assert_eq!(prep.lambdas.len(), 1);
+        for solver in Solver::ALL {
+            let a = analyse(&prep, &Config::new(solver, 2, 1).unwrap(), Depth::Full).unwrap();
+            assert!(a.stable, "{solver:?}");
+            assert_eq!(a.stable_from, "exact");
+            assert_eq!(a.spectral_radius.exact.as_deref(), Some("= 1"));
+            assert_eq!(a.spectral_radius.value, 1.0);
+            assert!(a.spectral_radius.non_rigid < 1.0);
+            let sim = a.simulation.unwrap();
+            assert!(
+                sim.max_relative_difference < 1e-12,
+                "{solver:?}: {}",
+                sim.max_relative_difference
+            );
+        }
+    }
+}
