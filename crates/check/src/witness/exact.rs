@@ -341,6 +341,10 @@ fn second_order_form(pq: &PqPolys, map: &HashMap<Sym, Q>, coeffs: Vec<f64>) -> E
     }
     let mut roots = roots;
     sort_roots(&mut roots);
+    // Two real roots of one modulus (p = 0: ±√−q) are both dominant, and
+    // q/big may round above |big|: Ψ is that of the root sorted first, the
+    // one the simulation witness follows.
+    let psi = if disc > 0.0 { psi_of(roots[0]) } else { psi };
     ExactForm { coeffs, roots, spectral_radius: radius, growth_per_step: growth, psi, class }
 }
 

@@ -70,6 +70,19 @@ fn builtins_agree_at_every_class_boundary() {
     }
 }
 
+/// Two real roots of one modulus (χ = z² − r², p = 0): Semi-False Heun on
+/// the damped spring at D = 0.3 has them at Φ ≈ 1.8207 and 2.4235, where the
+/// simulation follows the root sorted first, and Ψ must be that root's.
+#[test]
+fn equal_modulus_real_roots_agree() {
+    for phi in [1.820667225920887, 2.4235394805662716, 2.423539480566272] {
+        let m = poly::builtin("semi_false_heun_damped").unwrap();
+        let w = Witnesses::new(&m).unwrap();
+        let r = w.at(&params().with("Phi", phi), STEPS).unwrap();
+        assert!(r.agree(), "at phi = {phi}: {:?}", r.checks);
+    }
+}
+
 /// One full-length (10^6 steps) run of an unstable method, and runs whose
 /// state grows by 10^(10^6) without overflowing.
 #[test]
