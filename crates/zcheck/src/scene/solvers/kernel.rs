@@ -336,3 +336,252 @@ pub(crate) fn simulate(sub: &Substep<f64>, substeps: u64, ticks: u64, state: &mu
         sub.apply(state);
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::file::SceneFile;
+    use poly::Poly;
+
+    /// A rational function of Φ, unreduced: enough for a few operations.
+    #[derive(Clone, Debug)]
+    struct R {
+        n: Poly,
+        d: Poly,
+    }
+
+    impl R {
+        fn c(x: f64) -> R {
+            R { n: Poly::constant(Q::from_float(x).unwrap()), d: Poly::one() }
+        }
+    }
+
+    impl Field for R {
+        fn zero() -> R {
+            R { n: Poly::zero(), d: Poly::one() }
+        }
+        fn int(k: u64) -> R {
+            R { n: Poly::int(k as i64), d: Poly::one() }
+        }
+        fn add(&self, o: &R) -> R {
+            R { n: &(&self.n * &o.d) + &(&o.n * &self.d), d: &self.d * &o.d }
+        }
+        fn sub(&self, o: &R) -> R {
+            R { n: &(&self.n * &o.d) - &(&o.n * &self.d), d: &self.d * &o.d }
+        }
+        fn mul(&self, o: &R) -> R {
+            R { n: &self.n * &o.n, d: &self.d * &o.d }
+        }
+        fn div(&self, o: &R) -> R {
+            R { n: &self.n * &o.d, d: &self.d * &o.n }
+        }
+        fn is_zero(&self) -> bool {
+            self.n.is_zero()
+        }
+    }
+
+    fn one_spring(solver: Solver) -> (Model, Config) {
+        // The stiffness 7 stands for Φ² below (m = 1, h = 1).
+        let s = SceneFile::parse(
+            "s.toml",
+            "tick_hz = 1\n[[mass]]\nname = \"a\"\nkg = 1\n[[spring]]\nbetween = [\"a\", \"ground\"]\nstiffness = 7\n",
+        )
+        .unwrap();
+        (Model::of_scene(&s), Config::new(solver, 1, 1).unwrap())
+    }
+
+    /// A single spring with N = 1: xpbd is backward Euler on the
+    /// oscillator, χ(z) = z² − 2z/(1 + Φ²) + 1/(1 + Φ²), i.e.
+    /// (1 + Φ²)z² − 2z + 1, exactly in the symbol Φ; its roots are
+    /// 1/(1 ± iΦ). Jacobi with one constraint is the same map.
+    #[test]
+    fn one_spring_xpbd_is_backward_euler_exactly() {
+        let phi = Poly::parse("Phi").unwrap();
+        let phi2 = &phi * &phi;
+        let physical =
+            |x: f64| if x == 7.0 { R { n: phi2.clone(), d: Poly::one() } } else { R::c(x) };
+        let geometric = |x: f64| R::c(x);
+        let one_plus = &Poly::one() + &phi2;
+        for solver in [Solver::Xpbd, Solver::XpbdJacobi] {
+            let (model, config) = one_spring(solver);
+            let sub = Substep::new(
+                &model,
+                &config,
+                1.0,
+                &Convert { physical: &physical, geometric: &geometric },
+            );
+            let p = sub.matrix();
+            let tr = p[0][0].add(&p[1][1]);
+            let det = p[0][0].mul(&p[1][1]).sub(&p[0][1].mul(&p[1][0]));
+            // tr·(1 + Φ²) = 2 and det·(1 + Φ²) = 1, as rational functions.
+            assert_eq!(&tr.n * &one_plus, &tr.d * &Poly::int(2), "{solver:?} trace");
+            assert_eq!(&det.n * &one_plus, det.d.clone(), "{solver:?} determinant");
+        }
+    }
+
+    /// b2MakeSoft, transcribed from Box2D v3 (`src/solver.h`).
+    fn make_soft(hertz: f64, zeta: f64, h: f64) -> (f64, f64, f64) {
+        if hertz == 0.0 {
+            return (0.0, 0.0, 0.0);
+        }
+        let omega = 2.0 * std::f64::consts::PI * hertz;
+        let a1 = 2.0 * zeta + h * omega;
+        let a2 = h * omega * a1;
+        let a3 = 1.0 / (1.0 + a2);
+        (omega / a1, a2 * a3, a3)
+    }
+
+    /// A distance joint with a spring, as Box2D v3 holds it (points at the
+    /// body centres: no rotation terms).
+    struct Joint {
+        a: Option<usize>,
+        b: Option<usize>,
+        rest: [f64; 2],
+        length: f64,
+        axial_mass: f64,
+        soft: (f64, f64, f64),
+        impulse: f64,
+    }
+
+    /// One Box2D step of `substeps` on 2D bodies (positions are the
+    /// deltaPositions from the rest shape): b2PrepareDistanceJoint, then per
+    /// substep integrate velocities (no force), b2WarmStartDistanceJoint,
+    /// b2SolveDistanceJoint(useBias = true), integrate positions,
+    /// b2SolveDistanceJoint(useBias = false). `linear` takes the rest axis
+    /// and C = axis·ds, the linearisation; otherwise the axis and length of
+    /// the current separation, as Box2D does.
+    fn box2d_step(
+        joints: &mut [Joint],
+        inv_mass: &[f64],
+        x: &mut [[f64; 2]],
+        v: &mut [[f64; 2]],
+        dt: f64,
+        substeps: u64,
+        linear: bool,
+    ) {
+        let h = dt / substeps as f64;
+        let at = |p: &[[f64; 2]], i: Option<usize>| i.map_or([0.0, 0.0], |i| p[i]);
+        let geometry = |j: &Joint, x: &[[f64; 2]]| {
+            let (da, db) = (at(x, j.a), at(x, j.b));
+            let ds = [db[0] - da[0], db[1] - da[1]];
+            if linear {
+                let len = (j.rest[0] * j.rest[0] + j.rest[1] * j.rest[1]).sqrt();
+                let axis = [j.rest[0] / len, j.rest[1] / len];
+                (axis, axis[0] * ds[0] + axis[1] * ds[1])
+            } else {
+                let sep = [j.rest[0] + ds[0], j.rest[1] + ds[1]];
+                let len = (sep[0] * sep[0] + sep[1] * sep[1]).sqrt();
+                ([sep[0] / len, sep[1] / len], len - j.length)
+            }
+        };
+        for _ in 0..substeps {
+            for j in joints.iter() {
+                let (axis, _) = geometry(j, x);
+                let p = [j.impulse * axis[0], j.impulse * axis[1]];
+                if let Some(a) = j.a {
+                    v[a] = [v[a][0] - inv_mass[a] * p[0], v[a][1] - inv_mass[a] * p[1]];
+                }
+                if let Some(b) = j.b {
+                    v[b] = [v[b][0] + inv_mass[b] * p[0], v[b][1] + inv_mass[b] * p[1]];
+                }
+            }
+            for pass in 0..2 {
+                if pass == 1 {
+                    for (xi, vi) in x.iter_mut().zip(v.iter()) {
+                        *xi = [xi[0] + h * vi[0], xi[1] + h * vi[1]];
+                    }
+                }
+                for j in joints.iter_mut() {
+                    let (axis, c) = geometry(j, x);
+                    let (va, vb) = (at(v, j.a), at(v, j.b));
+                    let cdot = axis[0] * (vb[0] - va[0]) + axis[1] * (vb[1] - va[1]);
+                    let (bias_rate, mass_scale, impulse_scale) = j.soft;
+                    let m = mass_scale * j.axial_mass;
+                    let impulse = -m * (cdot + bias_rate * c) - impulse_scale * j.impulse;
+                    j.impulse += impulse;
+                    let p = [impulse * axis[0], impulse * axis[1]];
+                    if let Some(a) = j.a {
+                        v[a] = [v[a][0] - inv_mass[a] * p[0], v[a][1] - inv_mass[a] * p[1]];
+                    }
+                    if let Some(b) = j.b {
+                        v[b] = [v[b][0] + inv_mass[b] * p[0], v[b][1] + inv_mass[b] * p[1]];
+                    }
+                }
+            }
+        }
+    }
+
+    /// soft_step against the transcription of Box2D's functions, stepped in
+    /// f64: equal to 1e-12 (relative) over 200 ticks of 4 substeps, on a
+    /// 2D triangle with one static corner and dampers; and the nonlinear
+    /// transcription at an amplitude of 10⁻⁶ within 10⁻⁵ of it (the
+    /// linearisation).
+    #[test]
+    fn soft_step_is_box2d() {
+        let text = "tick_hz = 60\n[[mass]]\nname = \"a\"\nkg = 1\npos = [0, 0]\nfixed = true\n[[mass]]\nname = \"b\"\nkg = 1.5\npos = [1, 0]\n[[mass]]\nname = \"c\"\nkg = 2\npos = [0.5, 0.8]\n[[spring]]\nbetween = [\"a\", \"b\"]\nstiffness = 100\ndamping = 0.3\n[[spring]]\nbetween = [\"b\", \"c\"]\nstiffness = 50\n[[spring]]\nbetween = [\"c\", \"a\"]\nstiffness = 80\ndamping = 0.1\n";
+        let scene = SceneFile::parse("s.toml", text).unwrap();
+        let model = Model::of_scene(&scene);
+        let config = Config::new(Solver::SoftStep, 4, 1).unwrap();
+        let sub = substep_f64(&model, &config, 60.0);
+        // Bodies b, c are free (indices 0, 1); a is static.
+        let pos: [[f64; 2]; 3] = [[0.0, 0.0], [1.0, 0.0], [0.5, 0.8]];
+        let body = [None, Some(0), Some(1)];
+        let inv_mass = [1.0 / 1.5, 0.5];
+        let h = 1.0 / (60.0 * 4.0);
+        let springs: [(usize, usize, f64, f64); 3] =
+            [(0, 1, 100.0, 0.3), (1, 2, 50.0, 0.0), (2, 0, 80.0, 0.1)];
+        let make = || -> Vec<Joint> {
+            springs
+                .iter()
+                .map(|&(a, b, k, c)| {
+                    let (ba, bb) = (body[a], body[b]);
+                    let wsum = ba.map_or(0.0, |i| inv_mass[i]) + bb.map_or(0.0, |i| inv_mass[i]);
+                    let rest: [f64; 2] = [pos[b][0] - pos[a][0], pos[b][1] - pos[a][1]];
+                    let hertz = (k * wsum).sqrt() / (2.0 * std::f64::consts::PI);
+                    let zeta = c / (2.0 * (k / wsum).sqrt());
+                    Joint {
+                        a: ba,
+                        b: bb,
+                        rest,
+                        length: (rest[0] * rest[0] + rest[1] * rest[1]).sqrt(),
+                        axial_mass: 1.0 / wsum,
+                        soft: make_soft(hertz, zeta, h),
+                        impulse: 0.0,
+                    }
+                })
+                .collect()
+        };
+        for (amplitude, linear, tol) in [(0.01, true, 1e-12), (1e-6, false, 1e-5)] {
+            let x0 = [[0.3 * amplitude, -0.2 * amplitude], [0.1 * amplitude, 0.4 * amplitude]];
+            let v0 = [[-0.5 * amplitude, 0.0], [0.2 * amplitude, 0.7 * amplitude]];
+            let mut joints = make();
+            let (mut x, mut v) = (x0, v0);
+            let mut state = vec![0.0; sub.state_len()];
+            for i in 0..2 {
+                for p in 0..2 {
+                    state[2 * i + p] = x0[i][p];
+                    state[4 + 2 * i + p] = v0[i][p];
+                }
+            }
+            for tick in 0..200 {
+                box2d_step(&mut joints, &inv_mass, &mut x, &mut v, 1.0 / 60.0, 4, linear);
+                simulate(&sub, 4, 1, &mut state);
+                let ours: Vec<f64> = state[..8].to_vec();
+                let theirs: Vec<f64> =
+                    x.iter().chain(v.iter()).flat_map(|p| p.iter().copied()).collect();
+                let norm = theirs.iter().map(|a| a * a).sum::<f64>().sqrt();
+                let diff =
+                    ours.iter().zip(&theirs).map(|(a, b)| (a - b) * (a - b)).sum::<f64>().sqrt();
+                assert!(diff <= tol * norm, "tick {tick} (linear {linear}): {diff} vs {norm}");
+                // The accumulated impulses: Box2D's axis runs a → b, ours
+                // C = d·(x_a − x_b): opposite signs.
+                if linear {
+                    for (j, joint) in joints.iter().enumerate() {
+                        let ours = -state[8 + j];
+                        assert!((ours - joint.impulse).abs() <= 1e-9 * amplitude, "impulse {j}");
+                    }
+                }
+            }
+        }
+    }
+}
