@@ -284,3 +284,31 @@ fn pairing_is_order_free() {
     let shuffled = [r[2], r[0], r[3], r[1]];
     assert_eq!(pair_up(&r, &shuffled), r.to_vec());
 }
+
+/// Three substeps of False Euler (Φ/3 each), through `check::verify`: at
+/// Φ = 3 the substep is exactly 1, P = −I and χ = (z + 1)², a double root on
+/// the circle that is bounded (the state's norm never grows); at Φ = 6 χ is
+/// (z + 1)² again, but P is a Jordan block and the norm grows like n. Every
+/// witness agrees with the exact χ at both.
+#[test]
+fn a_double_root_on_the_circle_is_bounded_where_p_is_semisimple() {
+    let d = poly::derive_source(
+        "false_euler_3.zm",
+        "method false_euler_3\nstate v y\n\
+         v = v - Phi/3*y\ny = y + Phi/3*v\n\
+         v = v - Phi/3*y\ny = y + Phi/3*v\n\
+         v = v - Phi/3*y\ny = y + Phi/3*v\n",
+    )
+    .unwrap();
+    let at3 = check::verify(&d, &Params::phi(3.0), 10_000).unwrap();
+    assert!(at3.agree(), "{:?}", at3.checks);
+    assert_eq!(at3.exact.class, poly::RootClass::DoubleRootOnCircle);
+    let p = &at3.transition_matrix;
+    assert!(p.iter().zip([-1.0, 0.0, 0.0, -1.0]).all(|(a, b)| *a == b), "P = {p}");
+    let grow3 = at3.sim.as_ref().unwrap().norm_growth_per_step;
+    assert!(grow3.abs() < 1e-12, "bounded at 3, norm growth {grow3}");
+    let at6 = check::verify(&d, &Params::phi(6.0), 10_000).unwrap();
+    assert!(at6.agree(), "{:?}", at6.checks);
+    let grow6 = at6.sim.as_ref().unwrap().norm_growth_per_step;
+    assert!(grow6 > 1e-4, "a Jordan block at 6 grows like n: norm growth {grow6}");
+}
