@@ -198,7 +198,7 @@ pub fn step_cost(method: &Method) -> StepCost {
     let mut program = per_assign.iter().copied().fold(OpCount::default(), Add::add);
     program.copy += shifts;
     let matrix_form = matrix_cost(&crate::derive::routes::transition_matrix(method));
-    let (n_u, n_s) = (method.unknowns().len() as u32, method.order() as u32);
+    let (n_u, n_s) = (method.unknowns().len() as u32, method.state_size() as u32);
     let solve = OpCount { mul: n_u * n_s, add: n_u * n_s.saturating_sub(1), copy: 0 };
     program += solve;
     StepCost { program, per_assign, shifts, matrix_form, solve }

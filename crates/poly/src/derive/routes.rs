@@ -435,7 +435,7 @@ fn charpoly_from_z_matrix(m: &Method, mat: &SparsePolyMatrix) -> Result<Poly, Er
 
 fn charpoly_from_det(m: &Method, det: &Poly) -> Result<Poly, Error> {
     let mut coeffs = det.coeffs_in(w());
-    let n = m.order();
+    let n = m.state_size();
     if coeffs.len() > n + 1 {
         return Err(Error::new(
             ErrorKind::RoutesDisagree,

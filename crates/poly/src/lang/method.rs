@@ -198,9 +198,10 @@ impl Method {
         &self.history
     }
 
-    /// The order `N = Σ (1 + history)`: the size of the transition matrix and
-    /// the degree of the characteristic polynomial.
-    pub fn order(&self) -> usize {
+    /// The state size `N = Σ (1 + history)`: the size of the transition
+    /// matrix and the degree of the characteristic polynomial (not an order
+    /// of accuracy: that is `poly::advanced::order`).
+    pub fn state_size(&self) -> usize {
         self.history.iter().map(|&h| 1 + h as usize).sum()
     }
 

@@ -70,7 +70,7 @@ fn history_zero_is_the_start_value() {
     assert!(ops.contains(&Operand::Stmt(0)), "bare y reads the new value: {m}");
     assert!(ops.contains(&Operand::Start { var: 0, lag: 0 }), "y@0 reads the start value: {m}");
     assert_eq!(m.history(), &[0]);
-    assert_eq!(m.order(), 1);
+    assert_eq!(m.state_size(), 1);
     // y_next = 2y + y = 3y.
     let d = poly::derive(&m).expect("derives");
     assert_eq!(*d.charpoly(), Poly::parse("z - 3").expect("parses"));

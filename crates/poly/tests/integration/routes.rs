@@ -376,7 +376,7 @@ fn check_program(prog: &Program, phi: Q, k: Q) {
     assert_eq!(method.history(), prog.history(), "{src}");
     assert_eq!(method.slots(), prog.slots(), "{src}");
     let n = prog.slots().len();
-    assert_eq!(method.order(), n, "{src}");
+    assert_eq!(method.state_size(), n, "{src}");
 
     let p = poly::advanced::transition_matrix(&method);
     let a = poly::advanced::charpoly_z_route(&method).unwrap_or_else(|e| panic!("{e}\n{src}"));
@@ -511,7 +511,7 @@ fn reduced_z_matrix_keeps_the_determinant() {
             reduced.labels
         );
         assert!(reduced.labels.starts_with(method.state()), "{name}: {:?}", reduced.labels);
-        let chi = chi_of_det(&reduced.matrix, method.order());
+        let chi = chi_of_det(&reduced.matrix, method.state_size());
         assert_eq!(&chi, d.charpoly(), "{name}: reduced M on {:?}", reduced.labels);
     }
 }

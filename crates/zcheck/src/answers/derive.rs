@@ -15,7 +15,7 @@ pub(crate) fn to_json(d: &Derivation) -> serde_json::Value {
         "method": m.name(),
         "state": m.state(),
         "params": m.params().iter().map(|p| p.name()).collect::<Vec<_>>(),
-        "order": m.order(),
+        "state_size": m.state_size(),
         "slots": m.slots().iter().map(|&(v, l)| m.operand_name(poly::advanced::Operand::Start { var: v, lag: l })).collect::<Vec<_>>(),
         "program": m.to_string(),
         "z_matrix": rows(&reduced.matrix, &Derivation::z_entry_string),
@@ -44,8 +44,13 @@ pub(crate) fn text(d: &Derivation, full: bool) -> String {
     use std::fmt::Write;
     let m = &d.method();
     let mut s = String::new();
-    let _ =
-        writeln!(s, "method {}   state ({})   order {}", m.name(), m.state().join(", "), m.order());
+    let _ = writeln!(
+        s,
+        "method {}   state ({})   state size {}",
+        m.name(),
+        m.state().join(", "),
+        m.state_size()
+    );
     let _ = writeln!(s, "\nlowered step (%k = value of assignment k; bare names = start of step):");
     for line in m.to_string().lines().skip(3) {
         let _ = writeln!(s, "  {line}");

@@ -37,7 +37,7 @@ pub(crate) fn equations(
     from: &poly::Method,
     to: &poly::Method,
 ) -> Vec<String> {
-    (0..to.order())
+    (0..to.state_size())
         .map(|i| {
             let (entries, den) = row(i);
             let sum = combination(&entries, from);

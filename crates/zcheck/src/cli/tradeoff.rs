@@ -72,7 +72,7 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
         for name in poly::advanced::builtins::IMPLICIT_METHODS {
             // BDF2 is a two-step method (χ of degree 4): no principal pair
             // model, so it is left to `zcheck overview` and `stability`.
-            let second_order = poly::builtin(name)?.order() == 2;
+            let second_order = poly::builtin(name)?.state_size() == 2;
             if second_order && !wanted.iter().any(|w| w == name) {
                 wanted.push(name.to_owned());
             }

@@ -157,7 +157,7 @@ fn methods_lists_every_builtin() {
     assert!(out.status.success(), "{}", stderr(&out));
     let text = stdout(&out);
     for name in poly::advanced::builtins::builtin_names() {
-        let order = poly::builtin(name).expect("built-in").order();
+        let order = poly::builtin(name).expect("built-in").state_size();
         let line = text
             .lines()
             .find(|l| l.split_whitespace().next() == Some(name))

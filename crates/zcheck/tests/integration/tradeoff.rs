@@ -162,7 +162,7 @@ fn accuracy_matches_numeric_eigenvalues() {
 fn accuracy_of_implicit_methods_matches_eigenvalues_and_closed_forms() {
     for name in poly::advanced::builtins::IMPLICIT_METHODS {
         let m = LoadedMethod::builtin(name).unwrap();
-        if m.method().order() != 2 {
+        if m.method().state_size() != 2 {
             continue;
         }
         let c = Candidate::new(&m, Vec::new()).expect("second order");
