@@ -32,6 +32,54 @@ pub fn loaded(method: poly::Method) -> LoadedMethod {
     LoadedMethod::of(method)
 }
 
+/// A built-in by name, as a command loads it (with its nonlinear reading,
+/// where it has one).
+pub fn builtin(name: &str) -> Result<LoadedMethod, Error> {
+    LoadedMethod::builtin(name)
+}
+
+/// A Runge–Kutta method from its Butcher tableau's exact entries (text),
+/// with `bhat` for an embedded pair: the program, and the tableau kept for
+/// [`order`].
+pub fn tableau(
+    name: &str,
+    a: &[Vec<&str>],
+    b: &[&str],
+    c: Option<&[&str]>,
+    bhat: Option<&[&str]>,
+) -> Result<LoadedMethod, Error> {
+    let method = poly::Method::from_tableau(name, a, b, c)?;
+    let reading = crate::readings::Reading::of_entries(name, a, b, c, bhat)?;
+    Ok(LoadedMethod::with_reading(method, reading))
+}
+
+/// A linear multistep method from α and β (exact text, lowest j first),
+/// the coefficients kept for [`order`].
+pub fn multistep(name: &str, alpha: &[&str], beta: &[&str]) -> Result<LoadedMethod, Error> {
+    let method = poly::Method::from_multistep(name, alpha, beta)?;
+    let reading = crate::readings::Reading::of_coefficients(name, alpha, beta)?;
+    Ok(LoadedMethod::with_reading(method, reading))
+}
+
+/// `zcheck order --format json` of one method: the classical order and what
+/// follows it, with `--modified N` and `--tolerance T` (exact text).
+pub fn order(
+    method: &LoadedMethod,
+    modified: Option<usize>,
+    tolerance: Option<&str>,
+) -> Result<Value, Error> {
+    use crate::answers::order::{report, to_json, Request};
+    let request = Request::parse(modified, tolerance)?;
+    let reading = method.reading().ok_or_else(|| {
+        Error::method(format!(
+            "{}: no nonlinear reading (a tableau, pair, splitting or multistep method): a .zm \
+             program is the method on the oscillator or on y' = λy only",
+            method.method().name()
+        ))
+    })?;
+    Ok(to_json(reading, &report(reading, &request)?))
+}
+
 /// `zcheck derive --format json`: M(z), P, χ(z) and, for an implicit
 /// method, P's denominator.
 pub fn derive(method: &LoadedMethod) -> Result<Value, Error> {
@@ -50,8 +98,8 @@ pub fn region(method: &LoadedMethod, params: &[String]) -> Result<Value, Error> 
     let params = read_params(params)?;
     crate::values::check_declared(&params, &[method.method()])?;
     let name = method.method().name();
-    let (shown, report) = crate::answers::plane::plane(name, method, &params)?;
-    Ok(crate::answers::plane::to_json(name, &shown, &report))
+    let (shown, report, classical) = crate::answers::plane::plane(name, method, &params)?;
+    Ok(crate::answers::plane::to_json(name, &shown, &report, classical))
 }
 
 /// One point of `zcheck verify --format json` (`check::verify`): the

@@ -9,7 +9,9 @@
 //! - [`load`]: a method argument (built-in, `.zm` file, Butcher tableau)
 //!   resolved once, with its one derivation;
 //! - [`tableau`]: Butcher tableaux read from TOML, and `multistep`: linear
-//!   multistep methods (`alpha`, `beta`) read from TOML;
+//!   multistep methods (`alpha`, `beta`) read from TOML; `partitioned`:
+//!   partitioned pairs (`[q]`, `[p]`) and splittings (`drift`, `kick`);
+//!   `readings`: a method's nonlinear reading (what `zcheck order` reads);
 //! - `region`: the w-plane report (JSON, text, SVG) of `zcheck region`;
 //! - [`paper`]: the proof of Hoffmann's paper as data (claims, verdicts,
 //!   evidence) and its Markdown/JSON report;
@@ -38,7 +40,9 @@ mod multistep;
 pub mod native;
 pub mod overview;
 pub mod paper;
+mod partitioned;
 pub mod plot;
+mod readings;
 pub mod scene;
 mod spectral;
 pub mod tableau;

@@ -25,6 +25,7 @@ use poly::{Derivation, Method};
 
 use crate::error::Error;
 use crate::multistep::Multistep;
+use crate::readings::Reading;
 use crate::scene::vector::Kernel;
 use crate::tableau::Tableau;
 
@@ -41,6 +42,9 @@ pub struct LoadedMethod {
     /// derives it rather than the oscillator's (one state, not two).
     scalar: Option<Method>,
     scalar_derivation: OnceLock<Result<Derivation, poly::Error>>,
+    /// The nonlinear reading (a tableau, pair, splitting or multistep
+    /// method), where the method has one: `zcheck order`'s input.
+    reading: Option<Reading>,
 }
 
 /// The oscillator a tableau's program is written for.
@@ -56,9 +60,10 @@ impl LoadedMethod {
     /// The method `arg` names, shown as `arg`: a built-in, a `.zm` file, or
     /// a Butcher tableau's program on the undamped oscillator.
     pub fn load(arg: &str) -> Result<LoadedMethod, Error> {
-        let (method, scalar) = resolve(arg, Oscillator::Undamped)?;
+        let (method, scalar, reading) = resolve(arg, Oscillator::Undamped)?;
         let mut loaded = LoadedMethod::new(method, arg.to_owned(), None, None);
         loaded.scalar = scalar;
+        loaded.reading = reading;
         Ok(loaded)
     }
 
@@ -70,14 +75,18 @@ impl LoadedMethod {
             return LoadedMethod::load(arg);
         }
         let (shown, stem, text) = crate::tableau::read_file(Path::new(arg))?;
-        let (method, what) = if crate::tableau::is_multistep(&text) {
+        let (method, what, reading) = if crate::tableau::is_multistep(&text) {
             let m = Multistep::parse(&shown, &stem, &text)?;
             crate::warn::report(m.warnings().to_vec())?;
-            (Method::parse(arg, &m.to_scalar_zm()), "multistep coefficients")
+            (
+                Method::parse(arg, &m.to_scalar_zm()),
+                "multistep coefficients",
+                Reading::of_multistep(&m),
+            )
         } else {
             let t = Tableau::parse(&shown, &stem, &text)?;
             crate::warn::report(t.warnings().to_vec())?;
-            (t.scalar_program(arg), "tableau")
+            (t.scalar_program(arg), "tableau", Reading::of_tableau(&t))
         };
         let method = method.map_err(|e| {
             Error::method(format!(
@@ -85,7 +94,9 @@ impl LoadedMethod {
                 e.message()
             ))
         })?;
-        Ok(LoadedMethod::new(method, arg.to_owned(), None, None))
+        let mut loaded = LoadedMethod::new(method, arg.to_owned(), None, None);
+        loaded.reading = Some(reading);
+        Ok(loaded)
     }
 
     /// The method `arg` names, on the damped spring (`param D`), for the
@@ -96,7 +107,7 @@ impl LoadedMethod {
         match damped_twin(arg) {
             Some(name) => LoadedMethod::builtin(name),
             None => {
-                let (method, _) = resolve(arg, Oscillator::Damped)?;
+                let (method, _, _) = resolve(arg, Oscillator::Damped)?;
                 Ok(LoadedMethod::new(method, arg.to_owned(), None, None))
             }
         }
@@ -118,7 +129,9 @@ impl LoadedMethod {
         } else {
             None
         };
-        Ok(LoadedMethod::new(method, base_name(name).to_owned(), hand, system))
+        let mut loaded = LoadedMethod::new(method, base_name(name).to_owned(), hand, system);
+        loaded.reading = Reading::builtin(name).transpose()?;
+        Ok(loaded)
     }
 
     /// A method already made (from `.zm` text, a tableau, multistep
@@ -126,6 +139,14 @@ impl LoadedMethod {
     pub(crate) fn of(method: Method) -> LoadedMethod {
         let display = method.name().to_owned();
         LoadedMethod::new(method, display, None, None)
+    }
+
+    /// A method made from its nonlinear reading's coefficients, with the
+    /// reading kept (`zcheck order` answers it).
+    pub(crate) fn with_reading(method: Method, reading: Reading) -> LoadedMethod {
+        let mut loaded = LoadedMethod::of(method);
+        loaded.reading = Some(reading);
+        loaded
     }
 
     /// The seven direct methods on the damped spring, the whole-scene
@@ -148,6 +169,7 @@ impl LoadedMethod {
             derivation: OnceLock::new(),
             scalar: None,
             scalar_derivation: OnceLock::new(),
+            reading: None,
         }
     }
 
@@ -175,6 +197,12 @@ impl LoadedMethod {
     /// damped direct methods loaded as built-ins.
     pub(crate) fn system_kernel(&self) -> Option<Kernel> {
         self.system_kernel
+    }
+
+    /// The nonlinear reading, where the method has one (a coefficient file,
+    /// a built-in with a tableau, pair, splitting or multistep form).
+    pub(crate) fn reading(&self) -> Option<&Reading> {
+        self.reading.as_ref()
     }
 
     /// The derivation, made on the first call and kept.
@@ -224,23 +252,32 @@ pub(crate) fn try_builtin_derivation(name: &str) -> Result<Derivation, poly::Err
     Ok(d)
 }
 
-/// The method `arg` names, and for a coefficient file its program on
-/// y' = λy.
-fn resolve(arg: &str, oscillator: Oscillator) -> Result<(Method, Option<Method>), Error> {
+/// The method `arg` names, for a coefficient file its program on y' = λy,
+/// and its nonlinear reading where it has one.
+fn resolve(
+    arg: &str,
+    oscillator: Oscillator,
+) -> Result<(Method, Option<Method>, Option<Reading>), Error> {
     // A TOML file is a Butcher tableau, or a linear multistep method when it
     // has `alpha` or `beta`.
     if arg.ends_with(".toml") {
         let (shown, stem, text) = crate::tableau::read_file(Path::new(arg))?;
         let damped = oscillator == Oscillator::Damped;
-        let (method, scalar, what) = if crate::tableau::is_multistep(&text) {
+        let (method, scalar, what, reading) = if crate::tableau::is_multistep(&text) {
             let m = Multistep::parse(&shown, &stem, &text)?;
             crate::warn::report(m.warnings().to_vec())?;
             let (src, scalar) = (m.to_zm(damped), m.to_scalar_zm());
-            (Method::parse(arg, &src), Method::parse(arg, &scalar), "multistep coefficients")
+            let reading = Reading::of_multistep(&m);
+            (
+                Method::parse(arg, &src),
+                Method::parse(arg, &scalar),
+                "multistep coefficients",
+                reading,
+            )
         } else {
             let t = Tableau::parse(&shown, &stem, &text)?;
             crate::warn::report(t.warnings().to_vec())?;
-            (t.program(arg, damped), t.scalar_program(arg), "tableau")
+            (t.program(arg, damped), t.scalar_program(arg), "tableau", Reading::of_tableau(&t))
         };
         let parsed = |m: Result<Method, poly::Error>| {
             m.map_err(|e| {
@@ -250,7 +287,7 @@ fn resolve(arg: &str, oscillator: Oscillator) -> Result<(Method, Option<Method>)
                 ))
             })
         };
-        return Ok((parsed(method)?, Some(parsed(scalar)?)));
+        return Ok((parsed(method)?, Some(parsed(scalar)?), Some(reading)));
     }
     let method = check::load::load_method(arg)?;
     if check::load::is_path(arg) {
@@ -260,8 +297,9 @@ fn resolve(arg: &str, oscillator: Oscillator) -> Result<(Method, Option<Method>)
             warnings.extend(crate::warn::zm_decimal_hints(arg, &text));
         }
         crate::warn::report(warnings)?;
+        return Ok((method, None, None));
     }
-    Ok((method, None))
+    Ok((method, None, Reading::builtin(arg).transpose()?))
 }
 
 /// The damped twin of a built-in's name: itself for a damped built-in,

@@ -18,7 +18,7 @@ use serde::Deserialize;
 use toml::Spanned;
 
 use crate::error::{line_col, Error};
-use crate::tableau::{entry_hint, exact_entry, method_name};
+use crate::tableau::{decimal_digits, entry_hint, exact_entry, method_name};
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -33,6 +33,7 @@ struct Raw {
 pub(crate) struct Multistep {
     source: String,
     method: multistep::Multistep,
+    decimal_digits: usize,
     warnings: Vec<String>,
 }
 
@@ -69,12 +70,14 @@ impl Multistep {
             ));
         }
         let mut warnings = Vec::new();
+        let mut digits = 0;
         let mut read = |what: &str, xs: &Spanned<Vec<Spanned<toml::Value>>>| {
             xs.get_ref()
                 .iter()
                 .enumerate()
                 .map(|(j, v)| {
                     warnings.extend(entry_hint(path, text, v, &format!("{what}[{j}]")));
+                    digits = digits.max(decimal_digits(v.get_ref()));
                     exact_entry(path, text, v, &format!("{what}[{j}]"))
                 })
                 .collect::<Result<Vec<_>, _>>()
@@ -114,16 +117,27 @@ impl Multistep {
                 "{path}:{line}:{col}: ρ(z) = Σα_j z^j has a root outside the unit circle, or a repeated one on it: the method is not zero-stable, so it does not converge"
             ));
         }
-        Ok(Multistep { source: path.to_owned(), method, warnings })
+        Ok(Multistep { source: path.to_owned(), method, decimal_digits: digits, warnings })
     }
 
-    /// The `.zm` program of the method on the oscillator, or on the damped
-    /// oscillator (`param D`) when `damped`.
     /// What the file says that it probably does not mean, located.
     pub(crate) fn warnings(&self) -> &[String] {
         &self.warnings
     }
 
+    /// The exact coefficients (`poly`'s).
+    pub(crate) fn exact(&self) -> &multistep::Multistep {
+        &self.method
+    }
+
+    /// The most significant digits of a decimal coefficient
+    /// ([`crate::tableau::decimal_digits`]).
+    pub(crate) fn decimal_digits(&self) -> usize {
+        self.decimal_digits
+    }
+
+    /// The `.zm` program of the method on the oscillator, or on the damped
+    /// oscillator (`param D`) when `damped`.
     pub(crate) fn to_zm(&self, damped: bool) -> String {
         self.method.to_zm(&self.source, damped)
     }

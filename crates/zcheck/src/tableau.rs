@@ -162,6 +162,72 @@ pub(crate) fn is_multistep(text: &str) -> bool {
         .is_ok_and(|t| t.contains_key("alpha") || t.contains_key("beta"))
 }
 
+/// A TOML list of entries, with its location.
+pub(crate) type RawList = Spanned<Vec<Spanned<toml::Value>>>;
+
+/// `A`, `b` and `c` of one tableau as TOML, with their locations.
+pub(crate) type RawParts<'a> =
+    (&'a Spanned<Vec<Spanned<Vec<Spanned<toml::Value>>>>>, &'a RawList, Option<&'a RawList>);
+
+/// A tableau's exact `A`, `b` and optional `c`.
+pub(crate) type Parts = (Vec<Vec<Exact>>, Vec<Exact>, Option<Vec<Exact>>);
+
+/// A tableau's `A`, `b` and optional `c`, shapes checked and entries read
+/// exactly, each mistake blamed on its location; `prefix` names the table
+/// in messages (`q.` for `[q]` of a partitioned pair).
+pub(crate) fn read_parts(
+    path: &str,
+    text: &str,
+    prefix: &str,
+    (raw_a, raw_b, raw_c): RawParts<'_>,
+    warnings: &mut Vec<String>,
+    digits: &mut usize,
+) -> Result<Parts, Error> {
+    let err = |span: Range<usize>, message: String| {
+        let (line, col) = line_col(text, span.start);
+        Error::file(path, line, col, &message)
+    };
+    let s = raw_a.get_ref().len();
+    if s == 0 || s > MAX_STAGES {
+        return Err(err(
+            raw_a.span(),
+            format!("{prefix}A has {s} rows: expected 1 to {MAX_STAGES} stages"),
+        ));
+    }
+    for (i, row) in raw_a.get_ref().iter().enumerate() {
+        if row.get_ref().len() != s {
+            return Err(err(
+                row.span(),
+                format!(
+                    "row {} of {prefix}A has {} entries: expected {s} (A is square, one row per \
+                     stage)",
+                    i + 1,
+                    row.get_ref().len()
+                ),
+            ));
+        }
+    }
+    let mut a = Vec::with_capacity(s);
+    for (i, row) in raw_a.get_ref().iter().enumerate() {
+        let mut r = Vec::with_capacity(s);
+        for (j, v) in row.get_ref().iter().enumerate() {
+            let what = format!("{prefix}A[{}][{}]", i + 1, j + 1);
+            warnings.extend(entry_hint(path, text, v, &what));
+            *digits = (*digits).max(decimal_digits(v.get_ref()));
+            r.push(exact_entry(path, text, v, &what)?);
+        }
+        a.push(r);
+    }
+    let b = entry_list(path, text, raw_b, &format!("{prefix}b"), Some(s), warnings, digits)?;
+    let c = match raw_c {
+        Some(c) => {
+            Some(entry_list(path, text, c, &format!("{prefix}c"), Some(s), warnings, digits)?)
+        }
+        None => None,
+    };
+    Ok((a, b, c))
+}
+
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct Raw {
@@ -170,6 +236,7 @@ struct Raw {
     a: Spanned<Vec<Spanned<Vec<Spanned<toml::Value>>>>>,
     b: Spanned<Vec<Spanned<toml::Value>>>,
     c: Option<Spanned<Vec<Spanned<toml::Value>>>>,
+    bhat: Option<Spanned<Vec<Spanned<toml::Value>>>>,
 }
 
 /// A Butcher tableau read exactly from a file.
@@ -177,7 +244,92 @@ struct Raw {
 pub struct Tableau {
     source: String,
     tableau: exact::Tableau,
+    bhat: Option<Vec<Exact>>,
+    decimal_digits: usize,
     warnings: Vec<String>,
+}
+
+/// The most significant digits of a decimal literal in an entry (`0` when it
+/// has none): the app knows the text, `poly`'s exact number does not, and a
+/// long decimal is a float written out (`zcheck order` then reads the order
+/// within a tolerance too).
+pub(crate) fn decimal_digits(v: &toml::Value) -> usize {
+    match v {
+        toml::Value::Float(f) if f.is_finite() => decimal_digits_in(&format!("{f:e}")),
+        toml::Value::String(s) => decimal_digits_in(s),
+        _ => 0,
+    }
+}
+
+/// [`decimal_digits`] of an entry's text.
+pub(crate) fn decimal_digits_in(text: &str) -> usize {
+    let mut best = 0;
+    let bytes = text.as_bytes();
+    let mut i = 0;
+    while i < bytes.len() {
+        if !(bytes[i].is_ascii_digit() || bytes[i] == b'.') {
+            i += 1;
+            continue;
+        }
+        let start = i;
+        while i < bytes.len() && (bytes[i].is_ascii_digit() || bytes[i] == b'.') {
+            i += 1;
+        }
+        let literal = &text[start..i];
+        let exponent = i < bytes.len() && (bytes[i] == b'e' || bytes[i] == b'E');
+        if literal.contains('.') || exponent {
+            let digits: String = literal.chars().filter(char::is_ascii_digit).collect();
+            best = best.max(digits.trim_start_matches('0').len());
+        }
+        // Skip the exponent's digits: they are no significant digits.
+        if exponent {
+            i += 1;
+            while i < bytes.len()
+                && (bytes[i].is_ascii_digit() || bytes[i] == b'+' || bytes[i] == b'-')
+            {
+                i += 1;
+            }
+        }
+    }
+    best
+}
+
+/// A list of exact entries (`b`, `c`, `bhat`, `drift`, …) of `s` entries,
+/// blamed on the list when its length is wrong and on the entry when it does
+/// not read; `digits` keeps the longest decimal seen.
+pub(crate) fn entry_list(
+    path: &str,
+    text: &str,
+    list: &Spanned<Vec<Spanned<toml::Value>>>,
+    what: &str,
+    s: Option<usize>,
+    warnings: &mut Vec<String>,
+    digits: &mut usize,
+) -> Result<Vec<Exact>, Error> {
+    if let Some(s) = s {
+        if list.get_ref().len() != s {
+            let (line, col) = line_col(text, list.span().start);
+            return Err(Error::file(
+                path,
+                line,
+                col,
+                &format!(
+                    "{what} has {} entries: expected {s}, one per stage",
+                    list.get_ref().len()
+                ),
+            ));
+        }
+    }
+    list.get_ref()
+        .iter()
+        .enumerate()
+        .map(|(i, v)| {
+            let name = format!("{what}[{}]", i + 1);
+            warnings.extend(entry_hint(path, text, v, &name));
+            *digits = (*digits).max(decimal_digits(v.get_ref()));
+            exact_entry(path, text, v, &name)
+        })
+        .collect()
 }
 
 impl Tableau {
@@ -197,64 +349,21 @@ impl Tableau {
         let raw: Raw = toml::from_str(text).map_err(|e| {
             err(e.span(), e.message().trim_end_matches('\n').replace('\n', "; ").to_string())
         })?;
-        let s = raw.a.get_ref().len();
-        if s == 0 || s > MAX_STAGES {
-            return Err(err(
-                Some(raw.a.span()),
-                format!("A has {s} rows: expected 1 to {MAX_STAGES} stages"),
-            ));
-        }
-        for (i, row) in raw.a.get_ref().iter().enumerate() {
-            if row.get_ref().len() != s {
-                return Err(err(
-                    Some(row.span()),
-                    format!(
-                        "row {} of A has {} entries: expected {s} (A is square, one row per stage)",
-                        i + 1,
-                        row.get_ref().len()
-                    ),
-                ));
-            }
-        }
-        if raw.b.get_ref().len() != s {
-            return Err(err(
-                Some(raw.b.span()),
-                format!("b has {} entries: expected {s}, one per stage", raw.b.get_ref().len()),
-            ));
-        }
-        if let Some(c) = &raw.c {
-            if c.get_ref().len() != s {
-                return Err(err(
-                    Some(c.span()),
-                    format!("c has {} entries: expected {s}, one per stage", c.get_ref().len()),
-                ));
-            }
-        }
         let mut warnings = Vec::new();
-        let mut entry = |v: &Spanned<toml::Value>, what: String| {
-            warnings.extend(entry_hint(path, text, v, &what));
-            exact_entry(path, text, v, &what)
-        };
-        let mut a = Vec::with_capacity(s);
-        for (i, row) in raw.a.get_ref().iter().enumerate() {
-            let mut r = Vec::with_capacity(s);
-            for (j, v) in row.get_ref().iter().enumerate() {
-                r.push(entry(v, format!("A[{}][{}]", i + 1, j + 1))?);
+        let mut digits = 0;
+        let (a, b, c) = read_parts(
+            path,
+            text,
+            "",
+            (&raw.a, &raw.b, raw.c.as_ref()),
+            &mut warnings,
+            &mut digits,
+        )?;
+        let s = a.len();
+        let bhat = match &raw.bhat {
+            Some(bh) => {
+                Some(entry_list(path, text, bh, "bhat", Some(s), &mut warnings, &mut digits)?)
             }
-            a.push(r);
-        }
-        let mut b = Vec::with_capacity(s);
-        for (i, v) in raw.b.get_ref().iter().enumerate() {
-            b.push(entry(v, format!("b[{}]", i + 1))?);
-        }
-        let c = match &raw.c {
-            Some(c) => Some(
-                c.get_ref()
-                    .iter()
-                    .enumerate()
-                    .map(|(i, v)| entry(v, format!("c[{}]", i + 1)))
-                    .collect::<Result<Vec<_>, _>>()?,
-            ),
             None => None,
         };
         let name = method_name(path, text, raw.name.as_ref(), stem)?;
@@ -288,12 +397,27 @@ impl Tableau {
                 ));
             }
         }
-        Ok(Tableau { source: path.to_owned(), tableau, warnings })
+        Ok(Tableau { source: path.to_owned(), tableau, bhat, decimal_digits: digits, warnings })
     }
 
     /// What the file says that it probably does not mean, located.
     pub(crate) fn warnings(&self) -> &[String] {
         &self.warnings
+    }
+
+    /// The exact tableau (`poly`'s).
+    pub(crate) fn exact(&self) -> &exact::Tableau {
+        &self.tableau
+    }
+
+    /// The embedded weights b̂ of a pair, when the file gives `bhat`.
+    pub(crate) fn bhat(&self) -> Option<&[Exact]> {
+        self.bhat.as_deref()
+    }
+
+    /// The most significant digits of a decimal entry ([`decimal_digits`]).
+    pub(crate) fn decimal_digits(&self) -> usize {
+        self.decimal_digits
     }
 
     /// The number of stages.

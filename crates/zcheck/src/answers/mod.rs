@@ -12,6 +12,8 @@
 pub(crate) mod advice;
 pub(crate) mod derive;
 pub(crate) mod equiv;
+pub(crate) mod exact;
+pub(crate) mod order;
 pub(crate) mod plane;
 pub(crate) mod region;
 pub(crate) mod stability;

@@ -7,44 +7,18 @@
 //! the shaded region, the boundary locus (the w where a root lies on the
 //! unit circle), and the exact axis intervals as thick segments.
 
+use super::exact::{constant, fine, number, to_f64};
 use crate::error::Error;
 use crate::load::LoadedMethod;
 use crate::values::ParamArg;
 use check::witness::{complex_polynomial_roots, C64};
 use num_traits::ToPrimitive;
 use plotters::prelude::*;
+use poly::advanced::order::Order;
 use poly::{Algebraic, PlaneReport, Poly, Sector, Sym, Q};
 use serde_json::{json, Value};
 use std::fmt::Write as _;
 use std::path::Path;
-
-/// Width to which exact numbers are narrowed before they become floats.
-fn fine() -> Q {
-    Q::from_integer(1.into()) / num_traits::pow(Q::from_integer(10.into()), 20)
-}
-
-fn to_f64(a: &Algebraic) -> f64 {
-    a.to_decimal(17).parse().expect("a decimal expansion parses as f64")
-}
-
-/// An exact number in the w-plane as JSON: its exact form and value.
-fn number(a: &Algebraic, var: &str) -> Value {
-    // Refined once: the interval and the description read the same number.
-    let fine_a = a.refine(&fine());
-    let (lo, hi) = fine_a.interval();
-    json!({
-        "exact": fine_a.describe(var),
-        "value": to_f64(a),
-        "defining_poly": a.defining_poly().to_string_in(var),
-        "interval": [lo.to_string(), hi.to_string()],
-    })
-}
-
-/// A constant of the method's field (rational, or with radicals) as JSON.
-fn constant(c: &Poly) -> Value {
-    let v = poly::advanced::field::approx(c, &fine());
-    json!({ "exact": c.to_string(), "value": v.to_f64() })
-}
 
 /// A(α) in degrees, within 1e-12: the arctangent of an enclosure of tan α
 /// narrower than 1e-20.
@@ -60,8 +34,17 @@ pub(crate) fn alpha_degrees(s: &Sector) -> f64 {
     }
 }
 
-/// The JSON object of `zcheck region`.
-pub(crate) fn to_json(name: &str, params: &[(String, Q)], r: &PlaneReport) -> Value {
+/// The JSON object of `zcheck region`: `order` is the classical order of
+/// the method's nonlinear reading (`null` with `order_at_least` past the
+/// trees checked; `null` for a `.zm` program, which has none),
+/// `linear_order` the order on y' = λy.
+pub(crate) fn to_json(
+    name: &str,
+    params: &[(String, Q)],
+    r: &PlaneReport,
+    classical: Option<Order>,
+) -> Value {
+    let (order, order_at_least) = super::order::order_json(classical);
     let params: serde_json::Map<String, Value> =
         params.iter().map(|(n, v)| (n.clone(), json!(v.to_string()))).collect();
     let limit = |l: &Option<Algebraic>| l.as_ref().map(|a| number(a, "r"));
@@ -70,7 +53,9 @@ pub(crate) fn to_json(name: &str, params: &[(String, Q)], r: &PlaneReport) -> Va
         "params": params,
         "charpoly": r.charpoly.to_string(),
         "zero_stable": r.zero_stable,
-        "order": r.order,
+        "order": order,
+        "order_at_least": order_at_least,
+        "linear_order": r.order,
         "error_constant": r.error_constant.as_ref().map(constant),
         "real_limit": limit(&r.real_limit),
         "imag_limit": limit(&r.imag_limit),
@@ -96,7 +81,12 @@ fn show(a: &Algebraic) -> String {
 }
 
 /// The table a person reads.
-pub(crate) fn to_text(name: &str, params: &[(String, Q)], r: &PlaneReport) -> String {
+pub(crate) fn to_text(
+    name: &str,
+    params: &[(String, Q)],
+    r: &PlaneReport,
+    classical: Option<Order>,
+) -> String {
     let mut s = String::new();
     let row = |s: &mut String, k: &str, v: String| {
         let _ = writeln!(s, "  {k:<16} {v}");
@@ -110,9 +100,20 @@ pub(crate) fn to_text(name: &str, params: &[(String, Q)], r: &PlaneReport) -> St
     row(&mut s, "chi(z, w)", r.charpoly.to_string());
     row(
         &mut s,
-        "order",
+        "classical order",
+        match classical {
+            Some(Order::Exact(p)) => format!("{p} (on y' = f(y), zcheck order)"),
+            Some(Order::AtLeast(p)) => format!("at least {p} (on y' = f(y), zcheck order)"),
+            None => "none: no nonlinear reading (a .zm program is the method on the \
+                     oscillator or y' = λy only)"
+                .to_owned(),
+        },
+    );
+    row(
+        &mut s,
+        "linear order",
         match r.order {
-            Some(p) => p.to_string(),
+            Some(p) => format!("{p} (on y' = λy)"),
             None => "none: no simple root of chi(z, 0) is 1 (not consistent)".to_owned(),
         },
     );
@@ -295,15 +296,15 @@ pub(crate) fn figure(reports: &[(String, PlaneReport)], path: &Path) -> Result<(
     Ok(())
 }
 
+/// The values bound, the w-plane report, and the classical order.
+pub(crate) type Plane = (Vec<(String, Q)>, PlaneReport, Option<Order>);
+
 /// The w-plane report of one method (shown as `arg` in an error), with the
 /// parameters it declares bound from `params` and the others left out
 /// (`zcheck region` takes one list for all its methods): the values bound,
-/// and the report.
-pub(crate) fn plane(
-    arg: &str,
-    m: &LoadedMethod,
-    params: &[ParamArg],
-) -> Result<(Vec<(String, Q)>, poly::PlaneReport), Error> {
+/// the report, and the classical order of the method's nonlinear reading
+/// (none for a `.zm` program).
+pub(crate) fn plane(arg: &str, m: &LoadedMethod, params: &[ParamArg]) -> Result<Plane, Error> {
     let mut bound = poly::Params::new();
     let mut shown: Vec<(String, Q)> = Vec::new();
     for p in params {
@@ -316,5 +317,6 @@ pub(crate) fn plane(
         .plane_derivation()?
         .plane(&bound)
         .map_err(|e| Error::from(e).context(format!("method {arg}")))?;
-    Ok((shown, report))
+    let classical = m.reading().map(super::order::classical_order).transpose()?;
+    Ok((shown, report, classical))
 }

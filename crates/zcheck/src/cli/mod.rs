@@ -17,6 +17,7 @@ pub(crate) mod from_tableau;
 pub(crate) mod map;
 pub(crate) mod mesh;
 pub(crate) mod methods;
+pub(crate) mod order;
 pub(crate) mod output;
 pub(crate) mod overview;
 pub(crate) mod paper;
@@ -100,8 +101,10 @@ enum Command {
     Emit(emit::Args),
     /// Write the .zm program of a Runge-Kutta method from its Butcher tableau (TOML).
     FromTableau(from_tableau::Args),
-    /// The method on y' = λy in the complex w = hλ plane: order, error constant, axis limits, A(α), ρ∞.
+    /// The method on y' = λy in the complex w = hλ plane: classical and linear order, error constant, axis limits, A(α), ρ∞.
     Region(region::Args),
+    /// Classical order by rooted trees, stage order, algebraic stability, symplecticity, SSP coefficient, embedded order, modified equation.
+    Order(order::Args),
     /// Write a scene (TOML) from a triangle mesh (OBJ): particles, edge and bending springs.
     SceneFromMesh(mesh::Args),
 }
@@ -128,6 +131,7 @@ impl Cli {
             Command::Emit(a) => emit::run(a),
             Command::FromTableau(a) => from_tableau::run(a),
             Command::Region(a) => region::run(a),
+            Command::Order(a) => order::run(a),
             Command::SceneFromMesh(a) => mesh::run(a),
         }
     }

@@ -36,26 +36,22 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     values::check_declared(&args.params, &methods)?;
     let mut reports = Vec::new();
     for (arg, m) in args.methods.iter().zip(&loaded) {
-        let (shown, report) = plane(arg, m, &args.params)?;
-        reports.push((m.method().name().to_owned(), shown, report));
+        let (shown, report, classical) = plane(arg, m, &args.params)?;
+        reports.push((m.method().name().to_owned(), shown, report, classical));
     }
     if let Some(path) = &args.svg {
         let figs: Vec<(String, poly::PlaneReport)> =
-            reports.iter().map(|(n, _, r)| (n.clone(), r.clone())).collect();
+            reports.iter().map(|(n, _, r, _)| (n.clone(), r.clone())).collect();
         crate::answers::plane::figure(&figs, path)?;
     }
     let out = match args.format {
         Format::Json => {
             let docs: Vec<Value> =
-                reports.iter().map(|(n, p, r)| crate::answers::plane::to_json(n, p, r)).collect();
+                reports.iter().map(|(n, p, r, o)| to_json(n, p, r, *o)).collect();
             let doc = if docs.len() == 1 { docs[0].clone() } else { Value::Array(docs) };
             serde_json::to_string_pretty(&doc)? + "\n"
         }
-        _ => reports
-            .iter()
-            .map(|(n, p, r)| crate::answers::plane::to_text(n, p, r))
-            .collect::<Vec<_>>()
-            .join("\n"),
+        _ => reports.iter().map(|(n, p, r, o)| to_text(n, p, r, *o)).collect::<Vec<_>>().join("\n"),
     };
     output::emit(&out)?;
     Ok(ExitCode::SUCCESS)

@@ -15,6 +15,7 @@ mod interrupt;
 mod limit_class;
 mod measured_cost;
 mod mesh_cli;
+mod order_cli;
 mod params_cli;
 mod plot_cli;
 mod region_cli;

@@ -89,8 +89,10 @@ fn parity_with_nodepy_on_its_runge_kutta_catalogue() {
         let own = &r["own"];
         let nodepy = &r["nodepy"];
         if *exact {
-            // The order on y' = λy (NodePy's `order()` is the nonlinear order).
-            assert_eq!(doc["order"], own["linear_order"], "{stem}");
+            // The order on y' = λy, and the classical order, NodePy's
+            // `order()` (the B-series order) on every exact file.
+            assert_eq!(doc["linear_order"], own["linear_order"], "{stem}");
+            assert_eq!(doc["order"], nodepy["order"], "{stem}");
             close(
                 stem,
                 "C",
@@ -143,6 +145,7 @@ fn multistep_catalogue_against_an_independent_computation() {
     for ((stem, _, _), doc) in files.iter().zip(&docs) {
         let own = &reference["lmm"][stem.as_str()]["own"];
         assert_eq!(doc["order"], own["order"], "{stem}");
+        assert_eq!(doc["linear_order"], own["order"], "{stem}");
         close(
             stem,
             "C",
@@ -204,6 +207,8 @@ fn every_field_of_the_json() {
     let v = &region(&[Path::new("rk4")])[0];
     for key in [
         "order",
+        "order_at_least",
+        "linear_order",
         "error_constant",
         "real_limit",
         "imag_limit",
@@ -214,7 +219,8 @@ fn every_field_of_the_json() {
     ] {
         assert!(v.get(key).is_some(), "{key} in {v}");
     }
-    assert_eq!(v["order"], 4);
+    assert_eq!((&v["order"], &v["linear_order"]), (&4.into(), &4.into()));
+    assert!(v["order_at_least"].is_null());
     assert_eq!(v["imag_limit"]["exact"], "2*sqrt(2)");
     assert!(v["rho_inf"].is_null());
     let bdf2 = &region(&[&data("nodepy/lmm/BDF2.toml")])[0];

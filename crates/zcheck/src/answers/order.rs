@@ -1,0 +1,306 @@
+//! `zcheck order`: the order analysis beyond y' = λy (poly's
+//! `poly::advanced::order`) of a method's nonlinear reading
+//! ([`crate::readings`]), as a JSON document and as text a person reads;
+//! and the classical order alone, for `zcheck region` and `zcheck methods`.
+//!
+//! Every field of the report is in the JSON, `null` where it does not apply
+//! to the kind of method. An order is a number, or `null` with
+//! `…_at_least` beside it when only a lower bound is proven (past the trees
+//! generated; the notes say why). Every exact number is `{"exact",
+//! "value"}` ([`super::exact`]).
+//!
+//! The default tolerance is the application's, not `poly`'s: `poly`'s exact
+//! number does not know it was written as a decimal. When an entry is a
+//! decimal of at least [`LONG_DECIMAL`] significant digits (a float written
+//! out, such as Tsit5's published coefficients), the order within 1e-12 is
+//! given beside the exact order; `--tolerance` sets the tolerance for any
+//! input.
+
+use std::fmt::Write as _;
+
+use poly::advanced::order::{self, Kind, Options, Order, OrderReport, Ssp};
+use poly::Q;
+use serde_json::{json, Value};
+
+use super::exact::{constant, infinity, number};
+use crate::error::Error;
+use crate::readings::{Form, Reading};
+
+/// A decimal entry with at least this many significant digits makes the
+/// order within a tolerance part of the report.
+pub(crate) const LONG_DECIMAL: usize = 10;
+
+/// What the caller asks beyond the defaults: the modified equation up to
+/// h^N, a tolerance.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Request {
+    pub(crate) modified: Option<usize>,
+    pub(crate) tolerance: Option<Q>,
+}
+
+impl Request {
+    /// A request from the command line's text: `--modified N` (1 to the
+    /// largest power the cached trees allow) and `--tolerance T` (an exact
+    /// number ≥ 0, `1e-12` or `1/10^12`).
+    pub(crate) fn parse(
+        modified: Option<usize>,
+        tolerance: Option<&str>,
+    ) -> Result<Request, Error> {
+        let most = order::MAX_TREE_ORDER - 1;
+        if let Some(n) = modified {
+            if n == 0 || n > most {
+                return Err(Error::usage(format!(
+                    "--modified {n}: the modified equation up to h^{n} needs rooted trees of \
+                     order {}: expected a power from 1 to {most} (trees are generated up to \
+                     order {})",
+                    n + 1,
+                    order::MAX_TREE_ORDER
+                )));
+            }
+        }
+        let tolerance = match tolerance {
+            None => None,
+            Some(t) => {
+                let v: crate::values::Exact =
+                    t.parse().map_err(|e: String| Error::usage(format!("--tolerance {t}: {e}")))?;
+                if v.value < Q::from_integer(0.into()) {
+                    return Err(Error::usage(format!("--tolerance {t}: expected a tolerance ≥ 0")));
+                }
+                Some(v.value)
+            }
+        };
+        Ok(Request { modified, tolerance })
+    }
+}
+
+/// 1e-12, the default tolerance for long decimals.
+fn default_tolerance() -> Q {
+    Q::from_integer(1.into()) / num_traits::pow(Q::from_integer(10.into()), 12)
+}
+
+/// The order report of a reading.
+pub(crate) fn report(reading: &Reading, request: &Request) -> Result<OrderReport, Error> {
+    let defaulted = request.tolerance.is_none() && reading.decimal_digits >= LONG_DECIMAL;
+    let tolerance = request.tolerance.clone().or_else(|| defaulted.then(default_tolerance));
+    let rk = matches!(reading.form, Form::RungeKutta { .. });
+    let options = Options { modified: request.modified.filter(|_| rk), tolerance };
+    let in_method = |e: poly::Error| Error::from(e).context(format!("method {}", reading.name));
+    let mut r = match &reading.form {
+        Form::RungeKutta { tableau, bhat } => {
+            order::runge_kutta(tableau, bhat.as_deref(), &options)
+        }
+        Form::Partitioned { q, p } => order::partitioned(q, p, &options),
+        Form::Splitting { drift, kick } => order::splitting(drift, kick, &options),
+        Form::Multistep(m) => order::multistep(m, &options),
+    }
+    .map_err(in_method)?;
+    if request.modified.is_some() && !rk {
+        r.notes.push(
+            "--modified: the modified equation is computed for Runge–Kutta tableaux only"
+                .to_owned(),
+        );
+    }
+    if defaulted && r.order_within_tolerance.is_some() {
+        r.notes.push(format!(
+            "an entry is a decimal of {} significant digits (a float written out): the order \
+             within 1e-12 is given beside the exact order of the decimals (--tolerance sets \
+             the tolerance)",
+            reading.decimal_digits
+        ));
+    }
+    Ok(r)
+}
+
+/// The classical order of a reading, alone.
+pub(crate) fn classical_order(reading: &Reading) -> Result<Order, Error> {
+    Ok(report(reading, &Request::default())?.order)
+}
+
+/// An order as JSON: `(number, at_least)`, one of them `null`.
+pub(crate) fn order_json(o: Option<Order>) -> (Value, Value) {
+    match o {
+        Some(Order::Exact(p)) => (json!(p), Value::Null),
+        Some(Order::AtLeast(p)) => (Value::Null, json!(p)),
+        None => (Value::Null, Value::Null),
+    }
+}
+
+fn set_order(v: &mut Value, key: &str, o: Option<Order>) {
+    let (exact, at_least) = order_json(o);
+    v[key] = exact;
+    v[format!("{key}_at_least")] = at_least;
+}
+
+/// The JSON object of `zcheck order` for one method.
+pub(crate) fn to_json(reading: &Reading, r: &OrderReport) -> Value {
+    let value = |x: &order::Value| constant(&x.to_poly());
+    let mut v = json!({
+        "method": reading.name,
+        "kind": r.kind.name(),
+        "reading": reading.about,
+    });
+    set_order(&mut v, "order", Some(r.order));
+    set_order(&mut v, "linear_order", Some(r.linear_order));
+    v["stage_order"] = json!(r.stage_order);
+    v["algebraically_stable"] = json!(r.algebraically_stable);
+    v["symplectic"] = json!(r.symplectic);
+    v["reducible"] = json!(r.reducible);
+    v["symmetric"] = json!(r.symmetric);
+    v["ssp_coefficient"] = match &r.ssp_coefficient {
+        None => Value::Null,
+        Some(Ssp::Unbounded) => infinity(),
+        Some(Ssp::Radius(a)) => number(a, "r"),
+    };
+    set_order(&mut v, "embedded_order", r.embedded_order);
+    set_order(&mut v, "embedded_linear_order", r.embedded_linear_order);
+    v["failed_conditions"] = json!(r.failed_conditions.as_ref().map(|f| {
+        f.iter()
+            .map(|c| {
+                json!({
+                    "tree": c.tree,
+                    "differential": c.differential,
+                    "residual": value(&c.residual),
+                })
+            })
+            .collect::<Vec<_>>()
+    }));
+    v["modified_equation"] = json!(r.modified_equation.as_ref().map(|terms| {
+        terms
+            .iter()
+            .map(|t| {
+                json!({
+                    "power": t.power,
+                    "tree": t.tree,
+                    "differential": t.differential,
+                    "coefficient": value(&t.coefficient),
+                })
+            })
+            .collect::<Vec<_>>()
+    }));
+    v["order_within_tolerance"] = match &r.order_within_tolerance {
+        None => Value::Null,
+        Some(t) => {
+            let mut w =
+                json!({ "tolerance": constant(&poly::Poly::constant(t.tolerance.clone())) });
+            set_order(&mut w, "order", Some(t.order));
+            w
+        }
+    };
+    v["notes"] = json!(r.notes);
+    v
+}
+
+fn show_order(o: Order) -> String {
+    match o {
+        Order::Exact(p) => p.to_string(),
+        Order::AtLeast(p) => format!("at least {p}"),
+    }
+}
+
+fn kind_text(k: Kind) -> &'static str {
+    match k {
+        Kind::RungeKutta => "Runge–Kutta tableau",
+        Kind::EmbeddedPair => "embedded Runge–Kutta pair",
+        Kind::Partitioned => "partitioned Runge–Kutta pair, for q' = f(q, p), p' = g(q, p)",
+        Kind::Splitting => "splitting, for q' = f(p), p' = g(q)",
+        Kind::Multistep => "linear multistep method",
+    }
+}
+
+/// The summary a person reads.
+pub(crate) fn to_text(shown: &str, reading: &Reading, r: &OrderReport) -> String {
+    let mut s = String::new();
+    let row = |s: &mut String, k: &str, v: String| {
+        let _ = writeln!(s, "  {k:<22} {v}");
+    };
+    let about = reading.about.map(|a| format!(": {a}")).unwrap_or_default();
+    let _ = writeln!(s, "{shown}: {}{about}", kind_text(r.kind));
+    let what = match r.kind {
+        Kind::Partitioned => "(all bicolored trees)",
+        Kind::Splitting => "(bicolored trees, colours alternating)",
+        Kind::Multistep => "(C_q = 0)",
+        _ => "(rooted trees)",
+    };
+    row(&mut s, "classical order", format!("{} {what}", show_order(r.order)));
+    let linear = match r.kind {
+        Kind::Partitioned | Kind::Splitting => "(linear separable systems, the oscillator)",
+        _ => "(y' = λy)",
+    };
+    row(&mut s, "linear order", format!("{} {linear}", show_order(r.linear_order)));
+    if let Some(t) = &r.order_within_tolerance {
+        let v = num_traits::ToPrimitive::to_f64(&t.tolerance).unwrap_or(f64::NAN);
+        row(
+            &mut s,
+            "order within tolerance",
+            format!("{} (|residual| ≤ {v:e})", show_order(t.order)),
+        );
+    }
+    if let Some(q) = r.stage_order {
+        row(&mut s, "stage order", q.to_string());
+    }
+    let yes = |b: bool| if b { "yes" } else { "no" }.to_owned();
+    if let Some(b) = r.algebraically_stable {
+        row(&mut s, "algebraically stable", yes(b));
+    }
+    if let Some(b) = r.symplectic {
+        row(&mut s, "symplectic", yes(b));
+    }
+    if let Some(b) = r.symmetric {
+        row(&mut s, "symmetric", yes(b));
+    }
+    match &r.ssp_coefficient {
+        Some(Ssp::Unbounded) => row(&mut s, "SSP coefficient", "∞ (unbounded)".to_owned()),
+        Some(Ssp::Radius(a)) => {
+            let exact = a.closed_form();
+            let text = match exact {
+                Some(c) if a.is_rational() => c,
+                Some(c) => format!("{c} ≈ {}", a.to_decimal(12)),
+                None => format!(
+                    "{} (a root of {})",
+                    a.to_decimal(12),
+                    a.defining_poly().to_string_in("r")
+                ),
+            };
+            row(&mut s, "SSP coefficient", text);
+        }
+        None => {}
+    }
+    if let Some(e) = r.embedded_order {
+        row(&mut s, "embedded order", show_order(e));
+    }
+    if let Some(e) = r.embedded_linear_order {
+        row(&mut s, "embedded linear order", show_order(e));
+    }
+    if let Some(failed) = r.failed_conditions.as_ref().filter(|f| !f.is_empty()) {
+        let _ =
+            writeln!(s, "  conditions failing at order {} (Φ(t) − 1/γ(t)):", r.order.value() + 1);
+        for c in failed {
+            let _ = writeln!(s, "    {:<14} {:<18} {}", c.tree, c.differential, c.residual);
+        }
+    }
+    if let Some(terms) = &r.modified_equation {
+        let _ = writeln!(s, "  modified equation: ỹ' = f + Σ h^k c(t) F(t)");
+        for t in terms {
+            let _ = writeln!(
+                s,
+                "    h^{:<3} {:<14} {:<18} {}",
+                t.power, t.tree, t.differential, t.coefficient
+            );
+        }
+    }
+    for n in &r.notes {
+        let _ = writeln!(s, "  note: {n}");
+    }
+    s
+}
+
+/// The reports of several arguments, in order, as one document: an
+/// object for one method, an array for several.
+pub(crate) fn document(readings: &[(String, Reading, OrderReport)]) -> Value {
+    let docs: Vec<Value> = readings.iter().map(|(_, g, r)| to_json(g, r)).collect();
+    if docs.len() == 1 {
+        docs.into_iter().next().expect("one document")
+    } else {
+        Value::Array(docs)
+    }
+}
