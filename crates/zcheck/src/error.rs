@@ -150,7 +150,7 @@ impl Error {
     }
 
     /// What kind of failure this is.
-    pub fn kind(&self) -> ErrorKind {
+    pub(crate) fn kind(&self) -> ErrorKind {
         self.inner.kind
     }
 

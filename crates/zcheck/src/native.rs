@@ -301,7 +301,7 @@ fn key_of(method: &Method, params: &Params) -> Result<(String, Unit), Error> {
 
 /// Compiles the steps of every `(method, params)` not yet loaded in this
 /// process, in one rustc call.
-pub fn prepare(steps: &[(&Method, &Params)]) -> Result<(), Error> {
+pub(crate) fn prepare(steps: &[(&Method, &Params)]) -> Result<(), Error> {
     let mut todo: Vec<(String, &Method, &Params)> = Vec::new();
     {
         let map = loaded().lock().unwrap_or_else(std::sync::PoisonError::into_inner);

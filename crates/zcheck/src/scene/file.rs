@@ -90,7 +90,7 @@ pub(crate) struct Mass {
 
 /// A linear spring with an optional viscous damper in parallel.
 #[derive(Clone, Debug, PartialEq)]
-pub(crate) struct Spring {
+pub struct Spring {
     /// Index of the first end's mass.
     pub a: usize,
     /// Index of the second end's mass; `None` for the ground.
@@ -193,7 +193,7 @@ fn chunks_of(text: &str, chunk_bytes: usize) -> Vec<(usize, &str)> {
 }
 
 /// Defaults for a scene file that leaves them out.
-pub(crate) const DEFAULT_DURATION_S: f64 = 1.0;
+pub const DEFAULT_DURATION_S: f64 = 1.0;
 /// Default phase target, radians.
 pub(crate) const DEFAULT_PHASE_RAD: f64 = 0.1;
 /// Default amplitude target.

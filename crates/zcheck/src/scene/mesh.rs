@@ -18,7 +18,7 @@ use crate::error::Error;
 
 /// How a mesh becomes a scene.
 #[derive(Clone, Debug, clap::Args)]
-pub struct MeshOptions {
+pub(crate) struct MeshOptions {
     /// Area density of the surface, kg/m² (a mesh only).
     #[arg(long)]
     pub density: Option<f64>,
@@ -56,7 +56,7 @@ struct Face {
 const MAX_MESH_BYTES: u64 = 256 << 20;
 
 /// Reads `path` and writes the scene TOML for it.
-pub fn scene_toml(path: &Path, opts: &MeshOptions) -> Result<String, Error> {
+pub(crate) fn scene_toml(path: &Path, opts: &MeshOptions) -> Result<String, Error> {
     let shown = path.display().to_string();
     let meta =
         std::fs::metadata(path).map_err(|e| Error::io(format!("{shown}: cannot read"), e))?;
@@ -85,7 +85,7 @@ fn positive(what: &str, v: Option<f64>) -> Result<f64, Error> {
 }
 
 /// The scene TOML of the OBJ text (`shown` names the file in errors).
-pub fn scene_from_text(shown: &str, text: &str, opts: &MeshOptions) -> Result<String, Error> {
+pub(crate) fn scene_from_text(shown: &str, text: &str, opts: &MeshOptions) -> Result<String, Error> {
     let density = positive("--density KG_PER_M2", opts.density)?;
     let stiffness = positive("--stiffness N_PER_M", opts.stiffness)?;
     let bending = match opts.bending {
@@ -338,7 +338,7 @@ fn read_obj(shown: &str, text: &str) -> Result<(Vec<[f64; 3]>, Vec<Face>), Error
 
 impl MeshOptions {
     /// Whether any mesh option is given (they belong to a mesh only).
-    pub fn any(&self) -> bool {
+    pub(crate) fn any(&self) -> bool {
         self.density.is_some()
             || self.stiffness.is_some()
             || self.bending.is_some()
@@ -350,6 +350,6 @@ impl MeshOptions {
 }
 
 /// Whether a scene path names an OBJ mesh.
-pub fn is_mesh(path: &Path) -> bool {
+pub(crate) fn is_mesh(path: &Path) -> bool {
     path.extension().is_some_and(|e| e.eq_ignore_ascii_case("obj"))
 }

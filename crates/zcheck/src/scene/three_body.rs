@@ -367,7 +367,7 @@ pub fn step(config: &ThreeBodyConfig, state: &mut State, reference_energy: f64, 
 
 /// The equations of motion without any control: the physics the scene
 /// approximates, for the reference integrator.
-pub(crate) fn derivative(y: &[f64; 12], law: ForceLaw) -> [f64; 12] {
+pub fn derivative(y: &[f64; 12], law: ForceLaw) -> [f64; 12] {
     let s = State::from_array(y);
     let a = s.acceleration(law);
     let mut d = [0.0; 12];

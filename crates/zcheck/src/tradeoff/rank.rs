@@ -43,7 +43,7 @@ pub enum Rank {
 
 impl Rank {
     /// `exact` or `measured`.
-    pub fn parse(text: &str) -> Option<Rank> {
+    pub(crate) fn parse(text: &str) -> Option<Rank> {
         match text {
             "exact" => Some(Rank::Exact),
             "measured" => Some(Rank::Measured),
@@ -52,7 +52,7 @@ impl Rank {
     }
 
     /// How a ranking of this kind is described to the user.
-    pub fn describe(self) -> &'static str {
+    pub(crate) fn describe(self) -> &'static str {
         match self {
             Rank::Exact => "ranked by exact operations (ties by name); --rank measured ranks by the ns measured here",
             Rank::Measured => "ranked by the ns measured on this machine (--rank measured)",
