@@ -125,6 +125,18 @@ impl NativeMethod {
         run(py, || json(api::verify(&self.inner, &phi, &params, steps)))
     }
 
+    /// `zcheck order --format json`: the classical order and what follows
+    /// it, of the method's nonlinear reading.
+    #[pyo3(signature = (modified=None, tolerance=None))]
+    fn order(
+        &self,
+        py: Python<'_>,
+        modified: Option<usize>,
+        tolerance: Option<String>,
+    ) -> PyResult<String> {
+        run(py, || json(api::order(&self.inner, modified, tolerance.as_deref())))
+    }
+
     /// `zcheck map --format json`.
     #[pyo3(signature = (phi, params, grid, samples))]
     fn map(
@@ -149,7 +161,7 @@ fn load(py: Python<'_>, arg: String) -> PyResult<NativeMethod> {
 /// A built-in method by name.
 #[pyfunction]
 fn builtin(py: Python<'_>, name: String) -> PyResult<NativeMethod> {
-    run(py, || method(poly::Method::builtin(&name).map(api::loaded).map_err(|e| poly_message(&e))))
+    run(py, || method(api::builtin(&name).map_err(|e| message(&e))))
 }
 
 /// A method from `.zm` source text, `file` naming it in errors.
@@ -160,25 +172,24 @@ fn from_zm(py: Python<'_>, file: String, text: String) -> PyResult<NativeMethod>
     })
 }
 
-/// A Runge–Kutta method from its Butcher tableau, every entry exact text.
+/// A Runge–Kutta method from its Butcher tableau, every entry exact text,
+/// with `bhat` for an embedded pair.
 #[pyfunction]
-#[pyo3(signature = (name, a, b, c=None))]
+#[pyo3(signature = (name, a, b, c=None, bhat=None))]
 fn from_tableau(
     py: Python<'_>,
     name: String,
     a: Vec<Vec<String>>,
     b: Vec<String>,
     c: Option<Vec<String>>,
+    bhat: Option<Vec<String>>,
 ) -> PyResult<NativeMethod> {
     run(py, || {
         let a: Vec<Vec<&str>> = a.iter().map(|r| r.iter().map(String::as_str).collect()).collect();
         let b: Vec<&str> = b.iter().map(String::as_str).collect();
         let c: Option<Vec<&str>> = c.as_ref().map(|c| c.iter().map(String::as_str).collect());
-        method(
-            poly::Method::from_tableau(&name, &a, &b, c.as_deref())
-                .map(api::loaded)
-                .map_err(|e| poly_message(&e)),
-        )
+        let bhat: Option<Vec<&str>> = bhat.as_ref().map(|x| x.iter().map(String::as_str).collect());
+        method(api::tableau(&name, &a, &b, c.as_deref(), bhat.as_deref()).map_err(|e| message(&e)))
     })
 }
 
@@ -193,11 +204,7 @@ fn from_multistep(
     run(py, || {
         let alpha: Vec<&str> = alpha.iter().map(String::as_str).collect();
         let beta: Vec<&str> = beta.iter().map(String::as_str).collect();
-        method(
-            poly::Method::from_multistep(&name, &alpha, &beta)
-                .map(api::loaded)
-                .map_err(|e| poly_message(&e)),
-        )
+        method(api::multistep(&name, &alpha, &beta).map_err(|e| message(&e)))
     })
 }
 

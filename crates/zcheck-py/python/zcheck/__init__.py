@@ -13,6 +13,8 @@ command line gives one.
 '2'
 >>> heun.region()["order"]
 2
+>>> heun.order()["stage_order"]
+1
 
 Nothing here computes: this package converts Python values to exact text,
 calls the engine and parses its JSON. numpy, SymPy and NodePy are optional,
@@ -157,7 +159,7 @@ class Method:
     Make one with :meth:`from_tableau`, :meth:`from_multistep`,
     :meth:`from_zm`, :meth:`from_file`, :meth:`builtin` or
     :meth:`from_nodepy`; then ask :meth:`stability`, :meth:`region`,
-    :meth:`verify`, :attr:`charpoly`, :attr:`transition_matrix`.
+    :meth:`order`, :meth:`verify`, :attr:`charpoly`, :attr:`transition_matrix`.
     """
 
     __slots__ = ("_native",)
@@ -193,8 +195,9 @@ class Method:
         return cls(_native.builtin(name))
 
     @classmethod
-    def from_tableau(cls, A, b, c=None, name="tableau"):
-        """A Runge–Kutta method from its Butcher tableau.
+    def from_tableau(cls, A, b, c=None, name="tableau", bhat=None):
+        """A Runge–Kutta method from its Butcher tableau (``bhat``: the
+        weights of an embedded estimator, for :meth:`order`).
 
         Entries are exact: an int, a ``fractions.Fraction``, a str such as
         ``"1/4 - sqrt(3)/6"`` (``+ - * / ^``, ``sqrt(n)``, ``cbrt(n)``,
@@ -207,7 +210,8 @@ class Method:
         a = [[_entry(x, f"A[{i + 1}][{j + 1}]") for j, x in enumerate(r)] for i, r in enumerate(rows)]
         bb = [_entry(x, f"b[{i + 1}]") for i, x in enumerate(b)]
         cc = None if c is None else [_entry(x, f"c[{i + 1}]") for i, x in enumerate(c)]
-        return cls(_native.from_tableau(name, a, bb, cc))
+        bh = None if bhat is None else [_entry(x, f"bhat[{i + 1}]") for i, x in enumerate(bhat)]
+        return cls(_native.from_tableau(name, a, bb, cc, bh))
 
     @classmethod
     def from_multistep(cls, alpha, beta, name="multistep"):
@@ -222,16 +226,18 @@ class Method:
     @classmethod
     def from_nodepy(cls, method, name=None):
         """A method from a NodePy object: a Runge–Kutta method (its ``A``,
-        ``b``) or a linear multistep method (its ``alpha``, ``beta``).
-        NodePy's exact entries (SymPy) stay exact; its floats are read as
-        their shortest decimals."""
+        ``b``, and ``bhat`` for an embedded pair) or a linear multistep
+        method (its ``alpha``, ``beta``). NodePy's exact entries (SymPy) stay
+        exact; its floats are read as their shortest decimals."""
         from ._entries import identifier
 
         label = name or identifier(getattr(method, "shortname", None) or getattr(method, "name", None) or "nodepy")
         # A NodePy RK method also has `alpha` and `beta` (its Shu-Osher
         # form): the tableau decides.
         if hasattr(method, "A") and hasattr(method, "b"):
-            return cls.from_tableau([list(r) for r in method.A], list(method.b), name=label)
+            bhat = getattr(method, "bhat", None)
+            bhat = None if bhat is None else list(bhat)
+            return cls.from_tableau([list(r) for r in method.A], list(method.b), name=label, bhat=bhat)
         if hasattr(method, "alpha") and hasattr(method, "beta"):
             return cls.from_multistep(list(method.alpha), list(method.beta), name=label)
         raise Error(f"{type(method).__name__}: expected a NodePy Runge-Kutta (A, b) or linear multistep (alpha, beta) method")
@@ -278,6 +284,21 @@ class Method:
         plane of w = h*lambda: order, error constant, the real and imaginary
         stability limits, A- and L-stability, A(alpha), rho_inf."""
         return _parse(self._native.region(_params(params)))
+
+    def order(self, modified=None, tolerance=None):
+        """``zcheck order --format json``: the classical order by rooted
+        trees (``order``; ``order_at_least`` past the trees checked), the
+        ``linear_order`` on y' = lambda*y, ``stage_order``,
+        ``algebraically_stable``, ``symplectic``, ``symmetric``,
+        ``ssp_coefficient``, the ``embedded_order`` of a pair, the
+        ``failed_conditions`` of the next order with exact residuals, and
+        with ``modified=N`` the modified equation up to h^N. ``tolerance``
+        (exact, as entries are) adds ``order_within_tolerance``; it defaults
+        to 1e-12 when an entry is a decimal of 10 or more significant
+        digits. A method from ``.zm`` text has no nonlinear reading: an
+        :class:`Error`."""
+        tol = None if tolerance is None else _entry(tolerance, "tolerance")
+        return _parse(self._native.order(None if modified is None else int(modified), tol))
 
     def verify(self, phi, steps=100000, **params):
         """The numeric witnesses at ``phi`` (``check::verify``): eigenvalues

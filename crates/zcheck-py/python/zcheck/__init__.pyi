@@ -41,8 +41,10 @@ class Method:
         b: Sequence[Number],
         c: Optional[Sequence[Number]] = None,
         name: str = "tableau",
+        bhat: Optional[Sequence[Number]] = None,
     ) -> "Method":
-        """A Runge-Kutta method from its Butcher tableau, read exactly."""
+        """A Runge-Kutta method from its Butcher tableau, read exactly
+        (``bhat``: an embedded estimator's weights)."""
     @classmethod
     def from_multistep(
         cls, alpha: Sequence[Number], beta: Sequence[Number], name: str = "multistep"
@@ -69,6 +71,9 @@ class Method:
         """`zcheck stability --format json`."""
     def region(self, **params: Number) -> Document:
         """`zcheck region --format json`."""
+    def order(self, modified: Optional[int] = None, tolerance: Optional[Number] = None) -> Document:
+        """`zcheck order --format json`: classical order, stage order,
+        algebraic stability, symplecticity, SSP coefficient, ..."""
     def verify(self, phi: Number, steps: int = 100000, **params: Number) -> Document:
         """The numeric witnesses at phi (`check::verify`)."""
 
