@@ -11,7 +11,9 @@
 //! [`Derivation::stability`](crate::Derivation::stability) decides it from
 //! the transition matrix.
 
-pub use crate::analysis::{cost, equiv, invariant, order, plane, region, series, stability};
+pub use crate::analysis::{
+    cost, design, equiv, invariant, order, plane, region, series, stability,
+};
 pub use crate::derive::routes::{
     charpoly, charpoly_state_route, charpoly_z_route, transition_matrix, w, z_matrix,
     ReducedZMatrix,

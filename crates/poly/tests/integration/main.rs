@@ -1,6 +1,8 @@
 //! Integration tests of the `poly` crate, built as one test binary.
 //!
 //! - `algebra`: ring laws of [`poly::Poly`] and the [`poly::UPoly`] toolkit;
+//! - `design`: the exact optimiser's known optima, against the front
+//!   door's values and bisection (issue 37);
 //! - `det`: Berkowitz against the Laplace oracle, det(AB) = det(A)·det(B);
 //! - `routes`: the two derivations agree on random step programs, and the
 //!   transition matrix matches an independent exact interpreter;
@@ -23,6 +25,7 @@
 mod algebra;
 mod common;
 mod cost;
+mod design;
 mod det;
 mod double_root;
 mod errors;

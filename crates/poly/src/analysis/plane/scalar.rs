@@ -67,6 +67,21 @@ impl Derivation {
         Ok(primitive_in_z(&chi))
     }
 
+    /// χ(z, w) with the parameters in `values` bound and every other one
+    /// kept as a symbol (the design search lifts the axes' conditions with
+    /// the free parameters in them); not made primitive.
+    pub(crate) fn symbolic_scalar_charpoly(
+        &self,
+        values: &std::collections::HashMap<Sym, Q>,
+    ) -> Result<Poly, Error> {
+        if self.method().is_scalar() {
+            return Ok(self.charpoly().eval_partial(values));
+        }
+        let p = self.transition_matrix().map(|e| e.eval_partial(values));
+        let d = self.p_denominator().eval_partial(values);
+        self.scalar_from_oscillator(&p, &d)
+    }
+
     fn scalar_from_oscillator(&self, p: &PolyMatrix, d: &Poly) -> Result<Poly, Error> {
         let m = self.method();
         let name = m.name();

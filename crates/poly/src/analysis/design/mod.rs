@@ -1,0 +1,315 @@
+//! Design, not only check: the free parameters of a method chosen for the
+//! best exact stability, with a certificate (issue 37, the library core).
+//!
+//! The objective (Φ_max on the oscillator, the real or imaginary stability
+//! limit on y' = λy, or the SSP coefficient of a tableau) is piecewise
+//! algebraic in the parameters. Its breakpoints are where the conditions
+//! that bound it change their arrangement: roots of resultants and
+//! discriminants in the parameters, found exactly. The objective is
+//! evaluated exactly at every breakpoint, at the ends of the range and
+//! inside every piece, and the values are compared exactly; the optimum is
+//! an exact number or +∞, never a float. Where the search cannot finish
+//! (a breakpoint polynomial past [`MAX_BREAKPOINT_DEGREE`], an irrational
+//! point where the engine only reads rational ones), it stops with an error
+//! that says so.
+//!
+//! - `report.rs`: the answer types. `problem.rs`: the input, checked, and
+//!   the engine of each objective. `tableau.rs`: tableaux with parameters.
+//! - `system.rs`: objectives read from signs (the axes of one-step methods,
+//!   the SSP coefficient), exact at algebraic points; `oscillator.rs`: Φ_max.
+//! - `algebra.rs`: elimination, roots in a range, signs at algebraic points.
+//! - `one.rs`: the search along one parameter; `two.rs`: over a box of two.
+//! - here: the entry, the grid check and the certificate.
+//!
+//! ```
+//! use poly::advanced::design::{maximize, FreeParam, Objective, Problem, Subject};
+//! let d = poly::derive_source("cheb.zm", "method cheb\nparam a2\nstate y\ny = y + w*y + a2*w^2*y\n")?;
+//! let problem = Problem {
+//!     subject: Subject::Program(&d),
+//!     objective: Objective::RealLimit,
+//!     free: vec![FreeParam::new("a2", poly::q(0, 1), poly::q(1, 2))],
+//!     bound: poly::Params::new(),
+//!     min_order: None,
+//! };
+//! let design = maximize(&problem)?;
+//! assert_eq!(design.optimum.to_string(), "8");
+//! assert_eq!(design.at[0].1.to_string(), "1/8");
+//! # Ok::<(), poly::Error>(())
+//! ```
+
+mod algebra;
+mod certify;
+mod one;
+mod oscillator;
+mod problem;
+mod report;
+mod system;
+mod tableau;
+mod two;
+
+use crate::error::{Error, ErrorKind};
+use crate::{Algebraic, Poly, Sym, Q};
+
+use certify::{evaluate, header, solves};
+use one::{search_line, LineResult, Visit};
+use problem::{setup, Engine, Setup};
+pub use problem::{Problem, Subject};
+pub use report::{
+    Design, FreeParam, GridCheck, Objective, Score, GRID_ONE, GRID_TWO, MAX_BREAKPOINT_DEGREE,
+};
+use system::Eval;
+pub use tableau::ParamTableau;
+
+/// The exact supremum of the problem's objective over its box (and its
+/// allowed set, under `min_order`), where it is attained, why, and the
+/// exact grid check.
+pub fn maximize(problem: &Problem) -> Result<Design, Error> {
+    let s = setup(problem)?;
+    let polys = match &s.engine {
+        Engine::Signs(sys) => sys.breakpoints(&s.syms)?,
+        Engine::Oscillator(o) => system::arrangement(&o.factors, Sym::phi(), &s.syms)?,
+    };
+    let (optimum, attained, at, certificate, candidates) = if s.syms.len() == 1 {
+        let f = &problem.free[0];
+        let p = s.syms[0];
+        if s.order_conditions.is_empty() {
+            let line = search_line(&s.engine, &polys, &[], p, &f.lo, &f.hi)?;
+            let cert = certificate_one(problem, &s, &line);
+            (line.best.clone(), line.attained, vec![line.at.clone()], cert, line.visited.len())
+        } else {
+            let pts = allowed_points(&s, &f.lo, &f.hi)?;
+            finite_set(problem, &s, pts)?
+        }
+    } else {
+        if !s.order_conditions.is_empty() {
+            return Err(report::input_error(format!(
+                "min_order with two free parameters restricts the box to a curve or points ({} \
+                 conditions); the exact search over such a set is not implemented",
+                s.order_conditions.len()
+            )));
+        }
+        two::search_box(problem, &s, &polys)?
+    };
+    let grid_check = grid(problem, &s)?;
+    if grid_check.max > optimum {
+        return Err(Error::analysis(
+            ErrorKind::Undecided,
+            format!(
+                "internal check failed: the grid reaches {} above the optimum {} found by the \
+                 exact search",
+                grid_check.max, optimum
+            ),
+        ));
+    }
+    let mut certificate = certificate;
+    certificate.push(format!(
+        "grid check: {} points of the allowed set evaluated exactly; their largest value {} \
+         does not exceed the optimum",
+        grid_check.points, grid_check.max
+    ));
+    // The objective's variable reads as x, y or r.
+    let certificate = certificate.into_iter().map(|l| l.replace("_design", "")).collect();
+    let at = problem.free.iter().map(|f| f.name.clone()).zip(at).collect();
+    Ok(Design {
+        objective: problem.objective,
+        params: problem.free.clone(),
+        optimum,
+        attained,
+        at,
+        certificate,
+        grid_check,
+        candidates,
+    })
+}
+
+/// The objective at one rational point of the free parameters, by the
+/// engine the search uses (the oracle tests compare it with the front
+/// door's [`Derivation::stability`](crate::Derivation::stability),
+/// [`Derivation::plane`](crate::Derivation::plane) and
+/// [`ssp_coefficient`](crate::advanced::order::ssp_coefficient)).
+pub fn objective_at(problem: &Problem, values: &[(&str, Q)]) -> Result<Score, Error> {
+    let s = setup(problem)?;
+    let point: Vec<(Sym, Q)> = values.iter().map(|(n, v)| (Sym::new(n), v.clone())).collect();
+    Ok(evaluate_rational(&s, &point)?.score)
+}
+
+fn evaluate_rational(s: &Setup, point: &[(Sym, Q)]) -> Result<Eval, Error> {
+    let alg: Vec<(Sym, Algebraic)> =
+        point.iter().map(|(s, q)| (*s, Algebraic::from_rational(q.clone()))).collect();
+    match &s.engine {
+        Engine::Signs(sys) => sys.evaluate(&alg),
+        Engine::Oscillator(o) => o.evaluate(&alg),
+    }
+}
+
+/// The points of [lo, hi] where every order condition vanishes (one
+/// parameter): the roots of their gcd.
+fn allowed_points(s: &Setup, lo: &Q, hi: &Q) -> Result<Vec<Algebraic>, Error> {
+    let p = s.syms[0];
+    let g = s.order_conditions.iter().fold(Poly::zero(), |g, c| g.gcd(c));
+    let u = g.to_upoly(p).ok_or_else(|| {
+        report::input_error("the order conditions hold a symbol other than the parameter".into())
+    })?;
+    let pts = algebra::roots_in(&u, lo, hi);
+    if pts.is_empty() {
+        return Err(Error::analysis(
+            ErrorKind::NoRoots,
+            format!(
+                "no {} in [{lo}, {hi}] has the order asked: the order conditions have no common \
+                 root there",
+                p.name()
+            ),
+        ));
+    }
+    Ok(pts)
+}
+
+type Found = (Score, bool, Vec<Algebraic>, Vec<String>, usize);
+
+/// The optimum over a finite allowed set.
+fn finite_set(problem: &Problem, s: &Setup, pts: Vec<Algebraic>) -> Result<Found, Error> {
+    let p = s.syms[0];
+    let mut best: Option<(Score, Algebraic, Eval)> = None;
+    for a in &pts {
+        let e = evaluate(s, &[(p, a.clone())])?;
+        if best.as_ref().is_none_or(|b| e.score > b.0) {
+            best = Some((e.score.clone(), a.clone(), e));
+        }
+    }
+    let (score, at, e) = best.expect("a nonempty set");
+    let mut cert = vec![header(problem)];
+    cert.push(format!(
+        "min_order {}: the order conditions hold only at {} = {} in the range",
+        problem.min_order.unwrap_or(0),
+        p.name(),
+        pts.iter().map(|a| a.describe(p.name())).collect::<Vec<_>>().join(", ")
+    ));
+    cert.push(format!("optimum {score} at {} = {}, attained", p.name(), at.describe(p.name())));
+    cert.extend(solves(s, &e, &[(p, at.clone())]));
+    Ok((score, true, vec![at], cert, pts.len()))
+}
+
+fn certificate_one(problem: &Problem, s: &Setup, line: &LineResult) -> Vec<String> {
+    let p = s.syms[0];
+    let name = p.name();
+    let mut cert = vec![header(problem)];
+    let breaks = line
+        .visited
+        .iter()
+        .filter(|v| matches!(&v.visit, Visit::Candidate(w) if w.iter().any(|w| !w.starts_with("the end"))))
+        .count();
+    cert.push(format!(
+        "the exact search evaluated {} points: both ends, {breaks} breakpoints in the range (the \
+         roots there of {} breakpoint polynomials: where the conditions' roots in the objective's \
+         variable meet, pass through 0 or infinity, or are stationary in {name}), and a rational \
+         point inside each piece{}",
+        line.visited.len(),
+        line.polys,
+        if matches!(s.engine, Engine::Oscillator(_)) {
+            ", with the exact limits at both ends of each piece"
+        } else {
+            "; the objective is upper semicontinuous, so its maximum is attained at one of them"
+        }
+    ));
+    let how = if line.attained { "attained" } else { "approached, not attained" };
+    cert.push(format!("optimum {} at {name} = {}, {how}", line.best, line.at.describe(name)));
+    if let Some(v) = line.visited.iter().find(|v| v.p == line.at && v.eval.score == line.best) {
+        if let Visit::Candidate(why) = &v.visit {
+            cert.push(format!("{name} = {} is {}", v.p.describe(name), why.join("; ")));
+        }
+        cert.extend(solves(s, &v.eval, &[(p, v.p.clone())]));
+    }
+    // The neighbouring pieces.
+    let idx = line.visited.iter().position(|v| v.p == line.at).unwrap_or(0);
+    let side = |v: &one::Visited, word: &str| -> String {
+        let labels: Vec<String> = match &s.engine {
+            Engine::Signs(sys) => {
+                v.eval.vanishing.iter().map(|&k| sys.factors[k].label.clone()).collect()
+            }
+            Engine::Oscillator(o) => {
+                v.eval.vanishing.iter().map(|&k| o.factors[k].label.clone()).collect()
+            }
+        };
+        let value = match &v.eval.score {
+            Score::Finite(a) => format!("{} (about {})", a.describe("x"), a.to_decimal(6)),
+            Score::Infinite => "inf".to_owned(),
+        };
+        let active = if labels.is_empty() {
+            String::new()
+        } else {
+            format!(", limited by {}", labels.join(" and "))
+        };
+        format!(
+            "{word} ({name} = {}): {} = {value}{active}",
+            v.p.describe(name),
+            problem_objective(problem)
+        )
+    };
+    if let Some(v) = line.visited[..idx].iter().rev().find(|v| v.visit == Visit::Sample) {
+        cert.push(side(v, "just below"));
+    }
+    if let Some(v) = line.visited[idx..].iter().find(|v| v.visit == Visit::Sample) {
+        cert.push(side(v, "just above"));
+    }
+    // A whole interval of maximisers.
+    let run: Vec<&one::Visited> = line.visited[idx..]
+        .iter()
+        .filter(|v| !matches!(v.visit, Visit::Limit(_)))
+        .take_while(|v| v.eval.score == line.best)
+        .collect();
+    if run.iter().any(|v| v.visit == Visit::Sample) {
+        let last = run.last().expect("nonempty");
+        cert.push(format!(
+            "the maximisers form a set: every {name} in [{}, {}] attains the optimum (the \
+             objective is constant on those pieces); `at` is its least point",
+            line.at.describe(name),
+            last.p.describe(name)
+        ));
+    }
+    cert
+}
+
+fn problem_objective(problem: &Problem) -> &'static str {
+    problem.objective.name()
+}
+
+/// The objective on a grid of the box (or the allowed set's rational
+/// points), exactly.
+fn grid(problem: &Problem, s: &Setup) -> Result<GridCheck, Error> {
+    let axis = |f: &FreeParam, n: usize| -> Vec<Q> {
+        if f.lo == f.hi || n < 2 {
+            return vec![f.lo.clone()];
+        }
+        let step = (&f.hi - &f.lo) / Q::from_integer(((n - 1) as i64).into());
+        (0..n).map(|k| &f.lo + &step * Q::from_integer((k as i64).into())).collect()
+    };
+    let mut points: Vec<Vec<(Sym, Q)>> = Vec::new();
+    if !s.order_conditions.is_empty() {
+        let f = &problem.free[0];
+        for a in allowed_points(s, &f.lo, &f.hi)? {
+            if let Some(q) = a.as_rational() {
+                points.push(vec![(s.syms[0], q.clone())]);
+            }
+        }
+    } else if s.syms.len() == 1 {
+        for q in axis(&problem.free[0], GRID_ONE) {
+            points.push(vec![(s.syms[0], q)]);
+        }
+    } else {
+        for a in axis(&problem.free[0], GRID_TWO) {
+            for b in axis(&problem.free[1], GRID_TWO) {
+                points.push(vec![(s.syms[0], a.clone()), (s.syms[1], b)]);
+            }
+        }
+    }
+    let mut max = Score::zero();
+    let mut at = Vec::new();
+    for pt in &points {
+        let e = evaluate_rational(s, pt)?;
+        if at.is_empty() || e.score > max {
+            max = e.score;
+            at = pt.iter().map(|(s, q)| (s.name().to_owned(), q.clone())).collect();
+        }
+    }
+    Ok(GridCheck { points: points.len(), max, at })
+}

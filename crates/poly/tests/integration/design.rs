@@ -1,0 +1,216 @@
+//! The exact optimiser (issue 37): the known optima, each checked
+//! independently first (SymPy, and by hand in the comments), the engine's
+//! value at rational points against the front door (the slow oracles:
+//! `Derivation::plane`, `Derivation::stability`, `order::ssp_coefficient`),
+//! and bisection on rational parameters near each optimum.
+
+use std::time::Instant;
+
+use poly::advanced::design::{
+    maximize, objective_at, Design, FreeParam, Objective, ParamTableau, Problem, Score, Subject,
+};
+use poly::{q, Derivation, Params, Q};
+
+fn derive(src: &str) -> Derivation {
+    poly::derive_source("design.zm", src).unwrap()
+}
+
+fn problem<'a>(d: &'a Derivation, objective: Objective, free: Vec<FreeParam>) -> Problem<'a> {
+    Problem { subject: Subject::Program(d), objective, free, bound: Params::new(), min_order: None }
+}
+
+fn timed(p: &Problem, budget_ms: u128) -> Design {
+    let t = Instant::now();
+    let d = maximize(p).unwrap();
+    let ms = t.elapsed().as_millis();
+    // The issue's goal is 1 s (one parameter) and 10 s (two) in release; a
+    // debug build is allowed ten times that.
+    let budget = if cfg!(debug_assertions) { budget_ms * 10 } else { budget_ms };
+    assert!(ms <= budget, "{ms} ms > {budget} ms\n{}", d.certificate.join("\n"));
+    d
+}
+
+fn finite(s: &Score) -> String {
+    s.to_string()
+}
+
+/// Every rational grid value never exceeds the optimum (asserted inside
+/// `maximize` too), and the points around the maximiser, on a finer
+/// bisection toward it, stay below.
+fn bisect_around(p: &Problem, name: &str, at: &Q, lo: &Q, hi: &Q, optimum: &Score) {
+    let mut h = q(1, 16);
+    for _ in 0..12 {
+        for x in [at - &h, at + &h] {
+            if &x >= lo && &x <= hi {
+                let v = objective_at(p, &[(name, x.clone())]).unwrap();
+                assert!(&v <= optimum, "{name} = {x}: {v} > {optimum}");
+            }
+        }
+        h = &h / Q::from_integer(3.into());
+    }
+}
+
+const CHEB: &str = "method cheb\nparam a2\nstate y\ny = y + w*y + a2*w^2*y\n";
+
+/// Chebyshev's 2s² for s = 2: R = 1 + w + a₂w², best real limit 8 at a₂ =
+/// 1/8 (R(−x) = 1 − x + x²/8: R = 1 at x = 8, and R = −1 only touched at
+/// x = 4, a tangency).
+#[test]
+fn chebyshev_two_stages() {
+    let d = derive(CHEB);
+    let p = problem(&d, Objective::RealLimit, vec![FreeParam::new("a2", q(0, 1), q(1, 2))]);
+    let r = timed(&p, 1000);
+    assert_eq!(finite(&r.optimum), "8", "{:#?}", r.certificate);
+    assert!(r.attained);
+    assert_eq!(r.at[0].1.to_string(), "1/8");
+    assert!(r.grid_check.points >= 200 && r.grid_check.max <= r.optimum);
+    bisect_around(&p, "a2", &q(1, 8), &q(0, 1), &q(1, 2), &r.optimum);
+}
+
+/// The engine's value at rational points equals `Derivation::plane`'s.
+#[test]
+fn engine_matches_plane_at_rational_points() {
+    let d = derive(CHEB);
+    for obj in [Objective::RealLimit, Objective::ImagLimit] {
+        let p = problem(&d, obj, vec![FreeParam::new("a2", q(0, 1), q(1, 2))]);
+        for k in 0..=20 {
+            let a = q(k, 40);
+            let mine = objective_at(&p, &[("a2", a.clone())]).unwrap();
+            let plane = d.plane(&Params::new().bind("a2", a.clone())).unwrap();
+            let limit =
+                if obj == Objective::RealLimit { plane.real_limit } else { plane.imag_limit };
+            let theirs = limit.map_or(Score::Infinite, Score::Finite);
+            assert_eq!(mine, theirs, "{obj} at a2 = {a}");
+        }
+    }
+}
+
+const KG: &str = "method kg\nparam a3\nstate y\ny = y + w*y + 1/2*w^2*y + a3*w^3*y\n";
+
+/// Kinnmark–Gray: |R(iy)|² = 1 + (1/4 − 2a₃)y⁴ + a₃²y⁶; the imaginary limit
+/// is √((2a₃ − 1/4)/a₃²)... for a₃ < 1/8 it is 0... best 2 at a₃ = 1/4
+/// (|R|² − 1 = y⁴(y² − 4)/16). With order ≥ 3 only a₃ = 1/6: √3.
+#[test]
+fn kinnmark_gray() {
+    let d = derive(KG);
+    let p = problem(&d, Objective::ImagLimit, vec![FreeParam::new("a3", q(0, 1), q(1, 2))]);
+    let r = timed(&p, 1000);
+    assert_eq!(finite(&r.optimum), "2", "{:#?}", r.certificate);
+    assert_eq!(r.at[0].1.to_string(), "1/4");
+    bisect_around(&p, "a3", &q(1, 4), &q(0, 1), &q(1, 2), &r.optimum);
+    let mut p3 = p.clone();
+    p3.min_order = Some(3);
+    let r = timed(&p3, 1000);
+    assert_eq!(finite(&r.optimum), "sqrt(3)", "{:#?}", r.certificate);
+    assert_eq!(r.at[0].1.to_string(), "1/6");
+}
+
+const THETA: &str = "method theta\nparam theta\nstate y\ny' = y + w*((1 - theta)*y + theta*y')\n";
+
+/// The θ-method R = (1 + (1 − θ)w)/(1 − θw): the real limit is 2/(1 − 2θ)
+/// below θ = 1/2 and +∞ from there.
+#[test]
+fn theta_method() {
+    let d = derive(THETA);
+    let p = problem(&d, Objective::RealLimit, vec![FreeParam::new("theta", q(0, 1), q(2, 5))]);
+    let r = timed(&p, 1000);
+    assert_eq!(finite(&r.optimum), "10", "{:#?}", r.certificate);
+    assert_eq!(r.at[0].1.to_string(), "2/5");
+    let p = problem(&d, Objective::RealLimit, vec![FreeParam::new("theta", q(0, 1), q(1, 2))]);
+    let r = timed(&p, 1000);
+    assert_eq!(r.optimum, Score::Infinite, "{:#?}", r.certificate);
+    assert_eq!(r.at[0].1.to_string(), "1/2");
+    assert!(r.attained);
+}
+
+const NEWMARK: &str = "method newmark\nparam beta\nparam gamma\nstate v y\n\
+    y' = y + Phi*v + Phi^2*((1/2 - beta)*(-y) + beta*(-y'))\n\
+    v' = v + Phi*((1 - gamma)*(-y) + gamma*(-y'))\n";
+
+/// Newmark with γ = 1/2: Φ_max = 2/√(1 − 4β) (χ(−1) = 4 + (4β − 1)Φ²), so
+/// 2√5 at β = 1/5.
+#[test]
+fn newmark_phi_max() {
+    let d = derive(NEWMARK);
+    let mut p = problem(&d, Objective::PhiMax, vec![FreeParam::new("beta", q(0, 1), q(1, 5))]);
+    p.bound = Params::new().bind("gamma", q(1, 2));
+    let r = timed(&p, 1000);
+    assert_eq!(finite(&r.optimum), "2*sqrt(5)", "{:#?}", r.certificate);
+    assert_eq!(r.at[0].1.to_string(), "1/5");
+    assert!(r.attained);
+    // The oracle: the front door at rational β.
+    for k in 0..=10 {
+        let b = q(k, 50);
+        let mine = objective_at(&p, &[("beta", b.clone())]).unwrap();
+        let s = d.stability(&Params::new().bind("gamma", q(1, 2)).bind("beta", b.clone())).unwrap();
+        assert_eq!(mine.finite(), s.phi_max(), "beta = {b}");
+    }
+}
+
+fn heun_family() -> ParamTableau {
+    ParamTableau::new("rk2", &["c"], &[vec!["0", "0"], vec!["c", "0"]], &["1 - 1/(2*c)", "1/(2*c)"])
+        .unwrap()
+}
+
+/// The explicit 2-stage order-2 family: SSP coefficient min(2 − 1/c, 1/c)
+/// for c ≥ 1/2 (0 below, where b₁ < 0): 1 at c = 1 (Heun).
+#[test]
+fn two_stage_ssp() {
+    let t = heun_family();
+    let p = Problem {
+        subject: Subject::Tableau(&t),
+        objective: Objective::SspCoefficient,
+        free: vec![FreeParam::new("c", q(1, 4), q(2, 1))],
+        bound: Params::new(),
+        min_order: None,
+    };
+    let r = timed(&p, 1000);
+    assert_eq!(finite(&r.optimum), "1", "{:#?}", r.certificate);
+    assert_eq!(r.at[0].1.to_string(), "1");
+    bisect_around(&p, "c", &q(1, 1), &q(1, 4), &q(2, 1), &r.optimum);
+    // The oracle: order::ssp_coefficient on the tableau at rational c.
+    for k in 1..=16 {
+        let c = q(k, 8);
+        let mine = objective_at(&p, &[("c", c.clone())]).unwrap();
+        let tab = t.at(&[(poly::Sym::new("c"), c.clone())]).unwrap();
+        let theirs = match poly::advanced::order::ssp_coefficient(&tab).unwrap() {
+            poly::advanced::order::Ssp::Radius(r) => Score::Finite(r),
+            poly::advanced::order::Ssp::Unbounded => Score::Infinite,
+        };
+        assert_eq!(mine, theirs, "c = {c}");
+    }
+}
+
+/// Bad input gets a clean error.
+#[test]
+fn bad_input() {
+    let d = derive(CHEB);
+    let p = problem(&d, Objective::RealLimit, vec![FreeParam::new("a2", q(1, 1), q(0, 1))]);
+    assert!(maximize(&p).unwrap_err().to_string().contains("empty"));
+    let p = problem(&d, Objective::RealLimit, vec![FreeParam::new("b", q(0, 1), q(1, 1))]);
+    assert!(maximize(&p).unwrap_err().to_string().contains("no parameter b"));
+    let p = problem(&d, Objective::SspCoefficient, vec![FreeParam::new("a2", q(0, 1), q(1, 1))]);
+    assert!(maximize(&p).unwrap_err().to_string().contains("tableau"));
+    assert!(Objective::parse("speed").is_err());
+}
+
+/// The certificate names the optimum, the equation it solves and the
+/// conditions on each side.
+#[test]
+fn certificate_reads() {
+    let d = derive(CHEB);
+    let p = problem(&d, Objective::RealLimit, vec![FreeParam::new("a2", q(0, 1), q(1, 2))]);
+    let r = maximize(&p).unwrap();
+    let text = r.certificate.join("\n");
+    println!("{text}");
+    assert!(text.contains("optimum 8 at a2 = 1/8, attained"), "{text}");
+    assert!(text.contains("just below") && text.contains("just above"), "{text}");
+    assert!(text.contains("R = -1") && text.contains("R = 1"), "{text}");
+    let d = derive(NEWMARK);
+    let mut p = problem(&d, Objective::PhiMax, vec![FreeParam::new("beta", q(0, 1), q(1, 2))]);
+    p.bound = Params::new().bind("gamma", q(1, 2));
+    let r = maximize(&p).unwrap();
+    println!("{}", r.certificate.join("\n"));
+    assert_eq!(r.optimum, Score::Infinite);
+    assert_eq!(r.at[0].1.to_string(), "1/4");
+}
