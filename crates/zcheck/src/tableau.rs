@@ -11,6 +11,9 @@
 //! c = ["1/2 - sqrt(3)/6", "1/2 + sqrt(3)/6"]  # optional, checked
 //! ```
 //!
+//! An optional `bhat` (one entry per stage) makes the tableau an embedded
+//! pair for `zcheck order`; the other commands read `A`, `b` and `c`.
+//!
 //! The meaning of a tableau is `poly`'s (`poly::advanced::tableau`): this
 //! module reads the TOML file and blames every mistake on its line and
 //! column.

@@ -446,6 +446,36 @@ fn builtin_readings_agree_with_their_programs() {
     );
 }
 
+/// `zcheck methods` names the state size and gives the classical order
+/// where a built-in has a nonlinear reading, `—` where it has none.
+#[test]
+fn methods_lists_state_size_and_classical_order() {
+    let out = zcheck(&["methods"]);
+    assert!(out.status.success());
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.starts_with("method") && text.lines().next().unwrap().contains("state size"));
+    let row = |name: &str| -> Vec<String> {
+        let line = text.lines().find(|l| l.split_whitespace().next() == Some(name)).unwrap();
+        line.split_whitespace().skip(1).take(3).map(str::to_owned).collect()
+    };
+    for (name, cells) in [
+        ("standard_euler", ["2", "1", "RK"]),
+        ("damped_euler", ["2", "1", "split"]),
+        ("false_euler", ["2", "1", "split"]),
+        ("verlet", ["2", "2", "split"]),
+        ("standard_heun", ["2", "2", "RK"]),
+        ("false_heun", ["2", "1", "PRK"]),
+        ("semi_false_heun", ["2", "2", "PRK"]),
+        ("rk4", ["2", "4", "RK"]),
+        ("ab8", ["16", "8", "LMM"]),
+        ("bdf2", ["4", "2", "LMM"]),
+    ] {
+        assert_eq!(row(name), cells, "{name}");
+    }
+    assert_eq!(row("soft_spring")[1], "—");
+    assert_eq!(row("false_euler_damped")[1], "—");
+}
+
 // ---------------------------------------------------------------------
 // The library route against the command.
 
