@@ -42,6 +42,10 @@ use crate::error::Error;
 /// Largest state (of the substep map) decided exactly over Q.
 pub(crate) const EXACT_MAX_STATE: usize = 12;
 
+/// Largest N·(constraints) decided exactly (the rationals of the map grow
+/// with every projection).
+pub(crate) const EXACT_MAX_WORK: u64 = 64;
+
 /// Largest state analysed with dense eigenvalues.
 pub(crate) const DENSE_MAX_STATE: usize = 2400;
 
@@ -248,7 +252,13 @@ pub(crate) fn analyse(
     let model = &prep.model;
     let s = config.substeps;
     let sub = kernel::substep_f64(model, config, prep.tick_hz);
-    let p = dense::mat(&sub.matrix());
+    // In the scaled state (x, h·v, h·Σw·impulse), where every entry of the
+    // map is of order one: a similarity, so the same eigenvalues, and the
+    // powers and norms are computed without the cancellation of entries
+    // of order kh.
+    let scale = scaling(&sub);
+    let raw = sub.matrix();
+    let p = Mat::<f64>::from_fn(raw.len(), raw.len(), |i, j| raw[i][j] * scale[j] / scale[i]);
     let extra = sub.state_len() - 2 * model.n();
     let q = prep.rperp.as_ref().map(|r| dense::block_complement(r, extra));
     let d = match &q {
@@ -259,7 +269,8 @@ pub(crate) fn analyse(
     let rho_sub = mu.iter().map(|z| z.norm()).fold(0.0, f64::max);
     let rho_nr = rho_sub.powf(s as f64);
     // The exact verdict, when the state is small.
-    let verdict = if sub.state_len() <= EXACT_MAX_STATE {
+    let exact_work = config.iterations.saturating_mul(model.m() as u64);
+    let verdict = if sub.state_len() <= EXACT_MAX_STATE && exact_work <= EXACT_MAX_WORK {
         let pq = exact::substep_q(model, config, prep.tick_hz).matrix();
         Some(exact::verdict(&pq, 2 * prep.rigid).ok_or_else(|| {
             Error::numeric(
@@ -334,7 +345,7 @@ pub(crate) fn analyse(
             norm_bound = certify(&d, s);
             certified = norm_bound.is_some();
         }
-        simulation = Some(simulation_check(&sub, &p, s, prep.ticks().min(120.0) as u64));
+        simulation = Some(simulation_check(&sub, &p, &scale, s, prep.ticks().min(120.0) as u64));
     }
     Ok(ConfigAdvice {
         solver: config.solver,
@@ -378,10 +389,31 @@ fn certify(d: &Mat<f64>, s: u64) -> Option<f64> {
     best
 }
 
+/// D with state = D·scaled state: 1 for x, 1/h for v, 1/(h·Σw) for a
+/// joint's impulse.
+fn scaling(sub: &Substep<f64>) -> Vec<f64> {
+    let n = sub.n;
+    let mut d = vec![1.0; n];
+    d.extend(std::iter::repeat_n(sub.inv_h, n));
+    if sub.solver == Solver::SoftStep {
+        for c in &sub.cons {
+            let wsum: f64 = c.grad.iter().zip(&c.wgrad).map(|((_, g), (_, wg))| g * wg).sum();
+            d.push(sub.inv_h / wsum);
+        }
+    }
+    d
+}
+
 /// The tick map's powers against stepping the solver: T = P^S (by squaring
 /// when the state is small, else S products with P per tick) applied to a
 /// fixed pseudo-random state, `ticks` times.
-fn simulation_check(sub: &Substep<f64>, p: &Mat<f64>, s: u64, ticks: u64) -> SimulationCheck {
+fn simulation_check(
+    sub: &Substep<f64>,
+    p: &Mat<f64>,
+    scale: &[f64],
+    s: u64,
+    ticks: u64,
+) -> SimulationCheck {
     let len = sub.state_len();
     let mut seed = 0x9e3779b97f4a7c15u64;
     let mut state: Vec<f64> = (0..len)
@@ -393,7 +425,7 @@ fn simulation_check(sub: &Substep<f64>, p: &Mat<f64>, s: u64, ticks: u64) -> Sim
         })
         .collect();
     let t = (len <= 600).then(|| dense::power(p, s));
-    let mut via_map = state.clone();
+    let mut via_map: Vec<f64> = state.iter().zip(scale).map(|(x, d)| x / d).collect();
     let mut worst = 0.0f64;
     for _ in 0..ticks {
         kernel::simulate(sub, s, 1, &mut state);
@@ -401,8 +433,10 @@ fn simulation_check(sub: &Substep<f64>, p: &Mat<f64>, s: u64, ticks: u64) -> Sim
             Some(t) => dense::mat_vec(t, &via_map),
             None => (0..s).fold(via_map, |x, _| dense::mat_vec(p, &x)),
         };
-        let norm = state.iter().map(|x| x * x).sum::<f64>().sqrt();
-        let diff = state.iter().zip(&via_map).map(|(a, b)| (a - b) * (a - b)).sum::<f64>().sqrt();
+        // Compared in the scaled state.
+        let scaled: Vec<f64> = state.iter().zip(scale).map(|(x, d)| x / d).collect();
+        let norm = scaled.iter().map(|x| x * x).sum::<f64>().sqrt();
+        let diff = scaled.iter().zip(&via_map).map(|(a, b)| (a - b) * (a - b)).sum::<f64>().sqrt();
         if norm > 0.0 {
             worst = worst.max(diff / norm);
         }
@@ -439,6 +473,96 @@ mod tests {
                 "{solver:?}: {}",
                 sim.max_relative_difference
             );
+        }
+    }
+
+    /// (Ψ, ln r) per substep of a sequence obeying q_{k+1} = a q_k + b q_{k−1}
+    /// (least squares), for a complex pair.
+    fn fit(q: &[f64]) -> Option<C64> {
+        let scale = q.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        let (mut s11, mut s12, mut s22, mut r1, mut r2) = (0.0, 0.0, 0.0, 0.0, 0.0);
+        for k in 1..q.len() - 1 {
+            let (x1, x2, y) = (q[k] / scale, q[k - 1] / scale, q[k + 1] / scale);
+            s11 += x1 * x1;
+            s12 += x1 * x2;
+            s22 += x2 * x2;
+            r1 += x1 * y;
+            r2 += x2 * y;
+        }
+        let det = s11 * s22 - s12 * s12;
+        let a = (r1 * s22 - r2 * s12) / det;
+        let b = (s11 * r2 - s12 * r1) / det;
+        let disc = -b - a * a / 4.0;
+        (disc > 0.0).then(|| C64::new(a / 2.0, disc.sqrt()))
+    }
+
+    /// The 1000:1 mass-ratio chain (ground, 1000 kg, 1 kg, 1000 kg, 1 kg;
+    /// 1000 N/m springs): the stated spectral radius against the decay of
+    /// a simulated state (‖s_2K‖/‖s_K‖)^(1/K), and every stated effective
+    /// frequency and ratio (to 1e-4 relative and 1e-5: the fit's own accuracy on the
+    /// slow modes) against the substep root fitted to a simulation
+    /// started on the real part of each complex eigenvector.
+    #[test]
+    fn mass_ratio_chain_against_simulation() {
+        let s = scene("tick_hz = 60\nduration_s = 2\n[[mass]]\nname = \"a\"\nkg = 1000\n[[mass]]\nname = \"b\"\nkg = 1\n[[mass]]\nname = \"c\"\nkg = 1000\n[[mass]]\nname = \"d\"\nkg = 1\n[[spring]]\nbetween = [\"ground\", \"a\"]\nstiffness = 1000\n[[spring]]\nbetween = [\"a\", \"b\"]\nstiffness = 1000\n[[spring]]\nbetween = [\"b\", \"c\"]\nstiffness = 1000\n[[spring]]\nbetween = [\"c\", \"d\"]\nstiffness = 1000\n");
+        let prep = Prepared::new(&s).unwrap();
+        for (solver, substeps, iterations) in
+            [(Solver::Xpbd, 2, 4), (Solver::XpbdJacobi, 4, 2), (Solver::SoftStep, 4, 1)]
+        {
+            let config = Config::new(solver, substeps, iterations).unwrap();
+            let a = analyse(&prep, &config, Depth::Full).unwrap();
+            assert_eq!(a.modes.len(), 4);
+            let sub = kernel::substep_f64(&prep.model, &config, 60.0);
+            // Radius: a random state's decay over K ticks.
+            let mut state: Vec<f64> =
+                (0..sub.state_len()).map(|i| ((i * 7919) % 13) as f64 - 6.0).collect();
+            let k = 3000;
+            kernel::simulate(&sub, substeps, k, &mut state);
+            let n1 = state.iter().map(|x| x * x).sum::<f64>().sqrt();
+            kernel::simulate(&sub, substeps, k, &mut state);
+            let n2 = state.iter().map(|x| x * x).sum::<f64>().sqrt();
+            let rho_sim = (n2 / n1).powf(1.0 / k as f64);
+            let rho = a.spectral_radius.value;
+            assert!((rho_sim - rho).abs() < 2e-3 * rho, "{solver:?}: {rho_sim} vs {rho}");
+            // Frequencies: per complex eigenvector of P, the fitted root.
+            let p = dense::mat(&sub.matrix());
+            let evd = p.eigen().unwrap();
+            let (u, vals) = (evd.U(), evd.S());
+            let mut fitted = Vec::new();
+            for col in 0..sub.state_len() {
+                if vals[col].im <= 1e-9 {
+                    continue;
+                }
+                let mut st: Vec<f64> = (0..sub.state_len()).map(|i| u[(i, col)].re).collect();
+                let i = (0..sub.state_len())
+                    .max_by(|&x, &y| u[(x, col)].norm().total_cmp(&u[(y, col)].norm()))
+                    .unwrap();
+                let mut seq = vec![st[i]];
+                for _ in 0..40 {
+                    sub.apply(&mut st);
+                    seq.push(st[i]);
+                }
+                if let Some(m) = fit(&seq) {
+                    let theta = substeps as f64 * m.arg().abs();
+                    let ln_r = substeps as f64 * m.norm().ln();
+                    fitted.push((
+                        theta / (2.0 * std::f64::consts::PI) * 60.0,
+                        -ln_r / (ln_r * ln_r + theta * theta).sqrt(),
+                    ));
+                }
+            }
+            for m in &a.modes {
+                assert!(
+                    fitted
+                        .iter()
+                        .any(|&(hz, ratio)| (hz - m.effective_hz).abs() <= 1e-4 * m.effective_hz
+                            && (ratio - m.effective_ratio).abs() <= 1e-5),
+                    "{solver:?}: mode {} Hz: effective {} Hz, ratio {} not among {fitted:?}",
+                    m.hz,
+                    m.effective_hz,
+                    m.effective_ratio
+                );
+            }
         }
     }
 }

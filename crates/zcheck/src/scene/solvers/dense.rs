@@ -9,6 +9,7 @@ use num_complex::Complex64 as C64;
 use crate::error::Error;
 
 /// A row-major nested matrix as faer's.
+#[cfg(test)]
 pub(crate) fn mat(rows: &[Vec<f64>]) -> Mat<f64> {
     let n = rows.len();
     let m = rows.first().map_or(0, Vec::len);
