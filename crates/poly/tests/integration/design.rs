@@ -214,3 +214,46 @@ fn certificate_reads() {
     assert_eq!(r.optimum, Score::Infinite);
     assert_eq!(r.at[0].1.to_string(), "1/4");
 }
+
+const CUBIC: &str =
+    "method cubic\nparam a2\nparam a3\nstate y\ny = y + w*y + a2*w^2*y + a3*w^3*y\n";
+
+/// Two parameters: 1 + w + a₂w² + a₃w³ over [0, 1/2] × [0, 1/6], order ≥ 1:
+/// 18 at (4/27, 4/729), the shifted Chebyshev T₃(1 + w/9), whose interior
+/// points with |R| = 1 (x = 9/2 and 27/2) are tangencies, not exits. The
+/// grid's best is below (no grid point hits the isolated optimum).
+#[test]
+fn shifted_chebyshev_two_parameters() {
+    let d = derive(CUBIC);
+    let mut p = problem(
+        &d,
+        Objective::RealLimit,
+        vec![FreeParam::new("a2", q(0, 1), q(1, 2)), FreeParam::new("a3", q(0, 1), q(1, 6))],
+    );
+    p.min_order = Some(1);
+    let r = timed(&p, 10_000);
+    println!("{}", r.certificate.join("\n"));
+    assert_eq!(finite(&r.optimum), "18", "{:#?}", r.certificate);
+    assert_eq!(r.at[0].1.to_string(), "4/27");
+    assert_eq!(r.at[1].1.to_string(), "4/729");
+    assert_eq!(r.grid_check.points, 2500);
+    assert!(r.grid_check.max < r.optimum);
+    // The tangencies: R(−x) = −1 touched at 9/2, +1 at 27/2, exit at 18.
+    let at = |x: Q| {
+        let (a2, a3) = (q(4, 27), q(4, 729));
+        Q::from_integer(1.into()) - &x + &a2 * &x * &x - &a3 * &x * &x * &x
+    };
+    assert_eq!(at(q(9, 2)), q(-1, 1));
+    assert_eq!(at(q(27, 2)), q(1, 1));
+    assert_eq!(at(q(18, 1)), q(-1, 1));
+    // Bisection-style oracle: rational points near the optimum stay below.
+    for k in 1..6 {
+        let h = Q::new(1.into(), num_bigint::BigInt::from(10u64.pow(k)));
+        for (da, db) in [(1, 0), (-1, 0), (0, 1), (0, -1), (1, 1), (-1, -1), (1, -1), (-1, 1)] {
+            let a2 = q(4, 27) + &h * Q::from_integer(da.into());
+            let a3 = q(4, 729) + &h * Q::from_integer(db.into()) / Q::from_integer(100.into());
+            let v = objective_at(&p, &[("a2", a2.clone()), ("a3", a3.clone())]).unwrap();
+            assert!(v <= r.optimum, "({a2}, {a3}): {v}");
+        }
+    }
+}

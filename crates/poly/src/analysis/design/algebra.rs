@@ -187,6 +187,26 @@ pub(crate) fn sign_at(p: &Poly, point: &[(Sym, Algebraic)]) -> Option<Ordering> 
     None
 }
 
+/// The sign of `p` at the point from one interval evaluation on the
+/// current isolating boxes; `None` when the enclosure holds 0 (and the
+/// point is not rational).
+pub(crate) fn interval_sign(p: &Poly, point: &[(Sym, Algebraic)]) -> Option<Ordering> {
+    let q = substitute_rational(p, point);
+    if let Some(c) = q.as_constant() {
+        return Some(c.cmp(&Q::zero()));
+    }
+    let iv: HashMap<Sym, (Q, Q)> =
+        irrational(point).iter().map(|(s, a)| (*s, a.interval())).collect();
+    let (lo, hi) = interval_eval(&q, &iv);
+    if lo > Q::zero() {
+        Some(Ordering::Greater)
+    } else if hi < Q::zero() {
+        Some(Ordering::Less)
+    } else {
+        None
+    }
+}
+
 fn iv_mul(a: &(Q, Q), b: &(Q, Q)) -> (Q, Q) {
     let c = [&a.0 * &b.0, &a.0 * &b.1, &a.1 * &b.0, &a.1 * &b.1];
     let lo = c.iter().min().expect("four").clone();

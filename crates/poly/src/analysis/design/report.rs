@@ -83,7 +83,13 @@ impl Score {
     /// The closed form (`2*sqrt(5)`), `inf`, or the root description.
     pub fn describe(&self) -> String {
         match self {
-            Score::Finite(a) => a.describe("x"),
+            Score::Finite(a) => match a.closed_form() {
+                Some(c) => c,
+                None => {
+                    let width = Q::new(1.into(), (1i64 << 40).into());
+                    format!("{} (about {})", a.refine(&width).describe("x"), a.to_decimal(6))
+                }
+            },
             Score::Infinite => "inf".to_owned(),
         }
     }
