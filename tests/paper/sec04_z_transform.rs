@@ -166,7 +166,7 @@ fn samples_per_period_of_the_harmonic_cases() {
 #[test]
 fn pair_reaching_minus_one_grows_linearly() {
     let d = derive("false_euler");
-    let xs = run_exact(&d.transition_matrix(), &poly::q(2, 1), &[poly::q(0, 1), poly::q(1, 1)], 60);
+    let xs = run_exact(d.transition_matrix(), &poly::q(2, 1), &[poly::q(0, 1), poly::q(1, 1)], 60);
     let y = |n: usize| if n.is_multiple_of(2) { xs[n][1].clone() } else { -xs[n][1].clone() };
     let (a, b) = (y(0), y(1) - y(0));
     assert_ne!(b, poly::q(0, 1));
@@ -229,9 +229,9 @@ fn exact_class_changes_agree_with_the_numeric_sweep() {
         "semi_false_heun",
     ] {
         let d = derive(name);
-        let exact = poly::advanced::stability::analyze(&d.charpoly()).expect("analysis");
+        let exact = poly::advanced::stability::analyze(d.charpoly()).expect("analysis");
         let numeric = check::sweep::sweep(
-            &d.method(),
+            d.method(),
             &check::numeric::Params::phi(1.0),
             &check::sweep::default_grid(),
         )

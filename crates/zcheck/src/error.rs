@@ -257,6 +257,17 @@ impl std::error::Error for Error {
     }
 }
 
+/// The error's message, then each of its sources after `: `.
+pub(crate) fn with_sources(e: &Error) -> String {
+    let mut text = e.to_string();
+    let mut next = std::error::Error::source(e);
+    while let Some(source) = next {
+        text.push_str(&format!(": {source}"));
+        next = source.source();
+    }
+    text
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -280,15 +291,4 @@ mod tests {
         assert_eq!(f.location(), Some(Location { line: 2, col: 3 }));
         assert_eq!(Error::file("a.toml", 0, 0, "cannot read").location(), None);
     }
-}
-
-/// The error's message, then each of its sources after `: `.
-pub(crate) fn with_sources(e: &Error) -> String {
-    let mut text = e.to_string();
-    let mut next = std::error::Error::source(e);
-    while let Some(source) = next {
-        text.push_str(&format!(": {source}"));
-        next = source.source();
-    }
-    text
 }

@@ -42,7 +42,7 @@ pub mod overview;
 pub mod paper;
 mod partitioned;
 pub mod plot;
-mod readings;
+pub mod readings;
 pub mod scene;
 mod spectral;
 pub mod tableau;

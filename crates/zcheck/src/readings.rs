@@ -263,6 +263,31 @@ impl Reading {
         }
     }
 
+    /// The lengths of every list the reading holds, which all agree (one
+    /// entry per stage, per flow or per step): for the fuzz target.
+    fn lengths(&self) -> Vec<usize> {
+        let table = |t: &exact::Tableau| {
+            let (a, b, c) = t.entries();
+            let mut n = vec![a.len(), b.len()];
+            n.extend(a.iter().map(Vec::len));
+            n.extend(c.map(<[Exact]>::len));
+            n
+        };
+        match &self.form {
+            Form::RungeKutta { tableau, bhat } => {
+                let mut n = table(tableau);
+                n.extend(bhat.as_ref().map(Vec::len));
+                n
+            }
+            Form::Partitioned { q, p } => [table(q), table(p)].concat(),
+            Form::Splitting { drift, kick } => vec![drift.len(), kick.len()],
+            Form::Multistep(m) => {
+                let (alpha, beta) = m.coefficients();
+                vec![alpha.len(), beta.len()]
+            }
+        }
+    }
+
     /// A built-in's reading (a `_matrix` twin's is its direct method's);
     /// `None` when it has none.
     pub(crate) fn builtin(name: &str) -> Option<Result<Reading, Error>> {
@@ -350,4 +375,35 @@ impl Reading {
     pub(crate) fn new(name: String, form: Form, decimal_digits: usize) -> Reading {
         Reading { name, form, decimal_digits, about: None }
     }
+}
+
+/// A coefficient file's text as `zcheck order` reads it: its kind, the
+/// lengths of every list it holds, its warnings.
+#[derive(Clone, Debug)]
+pub struct Coefficients {
+    /// "runge_kutta", "embedded_pair", "partitioned", "splitting" or
+    /// "multistep".
+    pub kind: &'static str,
+    /// Every list's length (rows and each row of `A`, `b`, `c`, `bhat`;
+    /// both tables of a pair; `drift` and `kick`; `alpha` and `beta`): all
+    /// equal in a file that reads.
+    pub lengths: Vec<usize>,
+    /// The warnings, each located.
+    pub warnings: Vec<String>,
+}
+
+/// Reads a coefficient file's text as `zcheck order` does (a tableau with
+/// an optional `bhat`, a partitioned pair `[q]`/`[p]`, a splitting
+/// `drift`/`kick`, a multistep method `alpha`/`beta`, told apart by the
+/// keys), for the fuzz target `order_toml` (`testkit::fuzz`).
+pub fn read_coefficients(path: &str, stem: &str, text: &str) -> Result<Coefficients, Error> {
+    let (reading, warnings) = Reading::parse(path, stem, text)?;
+    let kind = match &reading.form {
+        Form::RungeKutta { bhat: None, .. } => "runge_kutta",
+        Form::RungeKutta { bhat: Some(_), .. } => "embedded_pair",
+        Form::Partitioned { .. } => "partitioned",
+        Form::Splitting { .. } => "splitting",
+        Form::Multistep(_) => "multistep",
+    };
+    Ok(Coefficients { kind, lengths: reading.lengths(), warnings })
 }

@@ -258,6 +258,32 @@ fn surd(a: i64, b: i64, n: i64, k: i64) -> String {
     }
 }
 
+/// The most bytes of an error message printed: enough for any real error,
+/// and a bound on what a hostile input can put on the terminal.
+const MAX_ERROR_BYTES: usize = 4000;
+
+/// Prints an error on stderr: control and invisible characters (other than
+/// line feeds) as `U+XXXX`, and at most [`MAX_ERROR_BYTES`]. A failure to
+/// write stderr is ignored: there is nowhere left to report it.
+pub(crate) fn print_error(text: &str) {
+    let lines: Vec<String> = text
+        .trim_end()
+        .split('\n')
+        .map(|l| poly::advanced::show_invisible(l).into_owned())
+        .collect();
+    let mut shown = lines.join("\n");
+    if shown.len() > MAX_ERROR_BYTES {
+        let mut cut = MAX_ERROR_BYTES;
+        while !shown.is_char_boundary(cut) {
+            cut -= 1;
+        }
+        let more = shown.len() - cut;
+        shown.truncate(cut);
+        shown.push_str(&format!("… ({more} more bytes)"));
+    }
+    let _ = writeln!(std::io::stderr().lock(), "{shown}");
+}
+
 #[cfg(test)]
 mod tests {
     use super::closed_form_hint;
@@ -334,30 +360,4 @@ mod tests {
             assert_eq!(closed_form_hint(decimal).as_deref(), hint, "{decimal}");
         }
     }
-}
-
-/// The most bytes of an error message printed: enough for any real error,
-/// and a bound on what a hostile input can put on the terminal.
-const MAX_ERROR_BYTES: usize = 4000;
-
-/// Prints an error on stderr: control and invisible characters (other than
-/// line feeds) as `U+XXXX`, and at most [`MAX_ERROR_BYTES`]. A failure to
-/// write stderr is ignored: there is nowhere left to report it.
-pub(crate) fn print_error(text: &str) {
-    let lines: Vec<String> = text
-        .trim_end()
-        .split('\n')
-        .map(|l| poly::advanced::show_invisible(l).into_owned())
-        .collect();
-    let mut shown = lines.join("\n");
-    if shown.len() > MAX_ERROR_BYTES {
-        let mut cut = MAX_ERROR_BYTES;
-        while !shown.is_char_boundary(cut) {
-            cut -= 1;
-        }
-        let more = shown.len() - cut;
-        shown.truncate(cut);
-        shown.push_str(&format!("… ({more} more bytes)"));
-    }
-    let _ = writeln!(std::io::stderr().lock(), "{shown}");
 }

@@ -80,7 +80,7 @@ fn transition_matrix_matches_exact_entries() {
                 for j in 0..n {
                     // An implicit step's P is d·P over its denominator d = det A.
                     let exact = eval_poly(&d.transition_matrix()[(i, j)], &params).unwrap()
-                        / eval_poly(&d.p_denominator(), &params).unwrap();
+                        / eval_poly(d.p_denominator(), &params).unwrap();
                     let scale = 1.0 + exact.abs() + phi.powi(4);
                     assert!(
                         (p[(i, j)] - exact).abs() <= 16.0 * f64::EPSILON * scale,

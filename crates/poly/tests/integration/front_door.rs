@@ -72,7 +72,7 @@ fn gauss_legendre_2_is_stable_for_every_phi() {
     let d = poly::derive(&poly::builtin("gauss_legendre_2").unwrap()).unwrap();
     let full = d.stability(&Params::new()).unwrap();
     assert_eq!(full.stability, Stability::BoundedForAllPhi);
-    let bare = poly::advanced::stability::analyze(&d.charpoly()).unwrap();
+    let bare = poly::advanced::stability::analyze(d.charpoly()).unwrap();
     match bare.stability {
         Stability::UndecidedAt { at, .. } => assert_eq!(at.to_string(), "2*sqrt(3)"),
         other => panic!("{other:?}"),

@@ -13,7 +13,7 @@ fn derivation(name: &str) -> Derivation {
 }
 
 fn report(name: &str) -> StabilityReport {
-    analyze(&derivation(name).charpoly()).expect("analysis")
+    analyze(derivation(name).charpoly()).expect("analysis")
 }
 
 /// χ at a rational Φ as a polynomial in z.
@@ -117,7 +117,7 @@ fn adams_bashforth_five_and_six() {
 fn leapfrog_limit_is_one() {
     let d = derivation("leapfrog");
     // χ alone: bounded below 1, undecided at 1 (a repeated pair at ±i).
-    let r = analyze(&d.charpoly()).unwrap();
+    let r = analyze(d.charpoly()).unwrap();
     match &r.stability {
         Stability::UndecidedAt { at, .. } => assert_eq!(at, &Algebraic::from_rational(q(1, 1))),
         other => panic!("{other:?}"),
@@ -128,7 +128,7 @@ fn leapfrog_limit_is_one() {
     assert_eq!(rp.bounded_at_phi_max(), Some(false));
     // Just above 1, a root is outside.
     let chi = d.charpoly();
-    assert!(!schur_strictly_inside(&chi_at(&chi, &q(1001, 1000))));
+    assert!(!schur_strictly_inside(&chi_at(chi, &q(1001, 1000))));
 }
 
 /// The explicit Nyström methods with three or more steps are unstable for
@@ -162,7 +162,7 @@ fn runge_kutta_limits() {
 #[test]
 fn merson_limit_is_bounded_from_the_transition_matrix() {
     let d = derivation("merson");
-    let r = analyze(&d.charpoly()).unwrap();
+    let r = analyze(d.charpoly()).unwrap();
     let Stability::UndecidedAt { at: m, boundary } = r.stability else {
         panic!("{:?}", r.stability)
     };

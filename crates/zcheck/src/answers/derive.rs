@@ -20,7 +20,7 @@ pub(crate) fn to_json(d: &Derivation) -> serde_json::Value {
         "program": m.to_string(),
         "z_matrix": rows(&reduced.matrix, &Derivation::z_entry_string),
         "z_matrix_labels": reduced.labels,
-        "transition_matrix": rows(&d.transition_matrix(), &|p| p.to_string()),
+        "transition_matrix": rows(d.transition_matrix(), &|p| p.to_string()),
         "charpoly": d.charpoly().to_string(),
         "charpoly_coeffs": d.coeffs().iter().map(ToString::to_string).collect::<Vec<_>>(),
         "routes_agree": true,
@@ -149,7 +149,7 @@ pub(crate) fn latex(d: &Derivation, full: bool) -> String {
         let _ = writeln!(s, "% M(z), one equation per assignment");
         let _ = writeln!(s, "M(z) = {}", mat(&d.z_matrix().to_dense(), &Derivation::z_entry_latex));
     }
-    let _ = writeln!(s, "\\mathbf{{P}} = {}", mat(&d.transition_matrix(), &|p| p.latex()));
+    let _ = writeln!(s, "\\mathbf{{P}} = {}", mat(d.transition_matrix(), &|p| p.latex()));
     let _ = writeln!(s, "\\det(zI - \\mathbf{{P}}) = {} = 0", d.charpoly().latex());
     if let Some((p, q)) = d.p_q() {
         let _ = writeln!(s, "p = {}, \\quad q = {}", p.latex(), q.latex());

@@ -85,7 +85,11 @@ fn positive(what: &str, v: Option<f64>) -> Result<f64, Error> {
 }
 
 /// The scene TOML of the OBJ text (`shown` names the file in errors).
-pub(crate) fn scene_from_text(shown: &str, text: &str, opts: &MeshOptions) -> Result<String, Error> {
+pub(crate) fn scene_from_text(
+    shown: &str,
+    text: &str,
+    opts: &MeshOptions,
+) -> Result<String, Error> {
     let density = positive("--density KG_PER_M2", opts.density)?;
     let stiffness = positive("--stiffness N_PER_M", opts.stiffness)?;
     let bending = match opts.bending {

@@ -244,7 +244,11 @@ pub fn reduce_with(scene: &SceneFile, shapes: Shapes) -> Result<Modal, Error> {
 }
 
 /// Reduces a scene to its modes by the eigensolver given.
-pub(crate) fn reduce_with_route(scene: &SceneFile, shapes: Shapes, route: Route) -> Result<Modal, Error> {
+pub(crate) fn reduce_with_route(
+    scene: &SceneFile,
+    shapes: Shapes,
+    route: Route,
+) -> Result<Modal, Error> {
     match &scene.body {
         Body::Modes(list) => {
             let mut modes: Vec<Mode> = list

@@ -607,7 +607,7 @@ mod tests {
     fn newmark_limit_curves() {
         let src = include_str!("../../../methods/newmark.zm");
         let d = poly::derive_source("newmark.zm", src).unwrap();
-        let (l, curves) = limit_conditions(&d.charpoly());
+        let (l, curves) = limit_conditions(d.charpoly());
         let (b, g, z) = (Poly::var("beta"), Poly::var("gamma"), Poly::sym(Sym::z()));
         let half = Poly::constant(poly::q(1, 2));
         let want = &(&(&b * &z.pow(2)) + &(&(&(&half + &g) - &b.scale(&poly::q(2, 1))) * &z))

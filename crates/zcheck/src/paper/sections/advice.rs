@@ -34,16 +34,16 @@ fn leading(c: &[Q], skip: usize) -> Option<(usize, Q)> {
 /// The criteria of a built-in, from its exact χ.
 pub(crate) fn criteria(method: &'static str) -> Criteria {
     let d = builtin_derivation(method);
-    let mut psi = poly::advanced::series::psi_series(&d.charpoly(), 7).expect("Ψ series");
+    let mut psi = poly::advanced::series::psi_series(d.charpoly(), 7).expect("Ψ series");
     if psi.len() > 1 {
         psi[1] -= poly::q(1, 1);
     }
     let mut modulus =
-        poly::advanced::series::modulus_sq_series(&d.charpoly(), 7).expect("|z|² series");
+        poly::advanced::series::modulus_sq_series(d.charpoly(), 7).expect("|z|² series");
     if !modulus.is_empty() {
         modulus[0] -= poly::q(1, 1);
     }
-    let c = poly::advanced::cost::step_cost(&d.method()).program;
+    let c = poly::advanced::cost::step_cost(d.method()).program;
     Criteria {
         method,
         limit: ranges::limit_of(&ranges::report(method)),

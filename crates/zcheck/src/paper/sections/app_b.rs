@@ -38,11 +38,11 @@ fn twins(s: &mut Section, matrix: &str) {
     if !same {
         evidence = format!(
             "{direct}: P = {}; {matrix}: P = {}",
-            matrix_text(&a.transition_matrix()),
-            matrix_text(&b.transition_matrix())
+            matrix_text(a.transition_matrix()),
+            matrix_text(b.transition_matrix())
         );
     }
-    let dead = dead_assignments(&a.method());
+    let dead = dead_assignments(a.method());
     if !dead.is_empty() {
         evidence.push_str(&format!(
             "; the direct branch computes {} and never reads it",
@@ -55,8 +55,8 @@ fn twins(s: &mut Section, matrix: &str) {
             "{}: {{ Direct Integration }} and {{ Transition matrix }} compute the same step",
             title(direct)
         ),
-        format!("P = {}", matrix_text(&a.transition_matrix())),
-        Finding::same(matrix_text(&b.transition_matrix()), matrix_text(&a.transition_matrix())),
+        format!("P = {}", matrix_text(a.transition_matrix())),
+        Finding::same(matrix_text(b.transition_matrix()), matrix_text(a.transition_matrix())),
         evidence,
     );
 }
@@ -81,7 +81,7 @@ fn verlet_start(s: &mut Section) {
     let fe = builtin_derivation("false_euler");
     let n = 24;
     let ok = phis.iter().all(|phi| {
-        let p = matrix_at(&fe.transition_matrix(), phi);
+        let p = matrix_at(fe.transition_matrix(), phi);
         let euler = iterate_exact(&p, &[poly::q(0, 1), poly::q(1, 1)], n);
         let verlet = sec08::verlet_samples(phi, &poly::q(1, 1), &poly::q(1, 1), n);
         euler.iter().map(|x| &x[1]).eq(verlet.iter())

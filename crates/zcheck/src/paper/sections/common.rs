@@ -398,7 +398,7 @@ pub(crate) fn ode_claim(
     };
     let derived = format!(
         "{method}: P = {}; the printed ODE has A = {} (units of ω0, state v, y)",
-        matrix_text(&d.transition_matrix()),
+        matrix_text(d.transition_matrix()),
         matrix_text(&printed_a)
     );
     let evidence = if ok {

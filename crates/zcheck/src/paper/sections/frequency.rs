@@ -19,7 +19,7 @@ use crate::paper::finding::{Finding, Scope};
 #[track_caller]
 pub(crate) fn psi_coeffs(method: &str, order: usize) -> Vec<Q> {
     let d = builtin_derivation(method);
-    poly::advanced::series::psi_series(&d.charpoly(), order)
+    poly::advanced::series::psi_series(d.charpoly(), order)
         .unwrap_or_else(|e| panic!("Ψ series of {method}: {e}"))
 }
 

@@ -42,8 +42,8 @@ fn euler_transition(s: &mut Section) {
         "y_i = (I + TA) y_i z⁻¹ + TB x_i z⁻¹;  y = P y z⁻¹ + Q x z⁻¹ (P is the transition matrix)",
         format!(
             "standard_euler: P = {}; damped_euler_d: P = {}",
-            matrix_text(&builtin_derivation("standard_euler").transition_matrix()),
-            matrix_text(&builtin_derivation("damped_euler_d").transition_matrix())
+            matrix_text(builtin_derivation("standard_euler").transition_matrix()),
+            matrix_text(builtin_derivation("damped_euler_d").transition_matrix())
         ),
         Finding::all([
             ("standard_euler: P − (I + ΦA) = 0", is_zero_matrix(&plain)),
@@ -339,7 +339,7 @@ fn double_roots(s: &mut Section) {
         n + 1,
     );
     let fe = builtin_derivation("false_euler");
-    let p2 = matrix_at(&fe.transition_matrix(), &poly::q(2, 1));
+    let p2 = matrix_at(fe.transition_matrix(), &poly::q(2, 1));
     let fe_run = iterate_exact(&p2, &[zero.clone(), one.clone()], n);
     s.push(
         "double_root_minus_one",
@@ -354,7 +354,7 @@ fn double_roots(s: &mut Section) {
              from 1 to {} in {n} steps (exact)",
             neg_identity[n + 1][0],
             n + 1,
-            matrix_text(&fe.transition_matrix()),
+            matrix_text(fe.transition_matrix()),
             fe_run[n][1]
         ),
     );
@@ -363,7 +363,7 @@ fn double_roots(s: &mut Section) {
 fn approach_minus_one(s: &mut Section) {
     let fe = builtin_derivation("false_euler");
     let two = poly::q(2, 1);
-    let p2 = matrix_at(&fe.transition_matrix(), &two);
+    let p2 = matrix_at(fe.transition_matrix(), &two);
     let run = iterate_exact(&p2, &[poly::q(0, 1), poly::q(1, 1)], 40);
     let samples: Vec<String> =
         [10, 20, 40].iter().map(|&k| format!("y_{k} = {}", run[k][1])).collect();

@@ -178,7 +178,7 @@ fn y_first_symplectic(s: &mut Section) {
             "with D = Φ/2 the step is exactly the symplectic Euler that updates y first (`y = y + Phi*v; \
              v = v - Phi*y`): the same transition matrix, P = {}; that is False Euler with v and y exchanged \
              and one sign flipped, so the artificial damping leaves no damping, which is why r1² = 1",
-            matrix_text(&damped.transition_matrix()),
+            matrix_text(damped.transition_matrix()),
         ),
         Finding::all([
             ("Damped Euler (D = Φ/2) and the y-first symplectic Euler have equal P", equal),

@@ -97,8 +97,8 @@ fn secant_change_of_variables(s: &mut Section) {
         change.is_some_and(|c| super::ranges::positive_roots(&c.undefined_at()).is_empty());
     let (forward, back) = change.map_or((Vec::new(), Vec::new()), |c| {
         (
-            crate::answers::equiv::equations(|i| c.t_row(i), &ve.method(), &fe.method()),
-            crate::answers::equiv::equations(|i| c.inverse_row(i), &fe.method(), &ve.method()),
+            crate::answers::equiv::equations(|i| c.t_row(i), ve.method(), fe.method()),
+            crate::answers::equiv::equations(|i| c.inverse_row(i), fe.method(), ve.method()),
         )
     });
     s.push(
@@ -143,7 +143,7 @@ pub(crate) fn same_samples(phis: &[Q], n: usize) -> bool {
         (poly::q(5, 7), poly::q(0, 1)),
     ];
     phis.iter().all(|phi| {
-        let p = matrix_at(&fe.transition_matrix(), phi);
+        let p = matrix_at(fe.transition_matrix(), phi);
         starts.iter().all(|(v0, y0)| {
             let euler = iterate_exact(&p, &[v0.clone(), y0.clone()], n);
             let verlet = verlet_samples(phi, y0, &(y0 - phi * v0), n);

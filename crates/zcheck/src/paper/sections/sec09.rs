@@ -79,7 +79,7 @@ fn scheme(s: &mut Section) {
         "dy(1) = τ(Ay + Bx); y(1) = y + dy(1); dy(2) = τ(Ay(1) + Bx); dy = 0.5(dy(1) + dy(2)); y = y + dy",
         format!(
             "standard_heun: P = {}",
-            matrix_text(&builtin_derivation("standard_heun").transition_matrix())
+            matrix_text(builtin_derivation("standard_heun").transition_matrix())
         ),
         Finding::same(matrix_text(&defect), matrix_text(&poly::PolyMatrix::zeros(2, 2))),
         "for x = 0 the scheme is y ← (I + τA + (τA)²/2) y; the built-in program (Appendix B case 5) gives \

@@ -131,13 +131,13 @@ fn as_accurate(s: &mut Section) {
     let d_sh = builtin_derivation("standard_heun");
     let psi_sf = frequency::psi_coeffs("semi_false_heun", 5);
     let psi_sh = frequency::psi_coeffs("standard_heun", 5);
-    let m_sf = poly::advanced::series::modulus_sq_series(&d_sf.charpoly(), 6).expect("series");
-    let m_sh = poly::advanced::series::modulus_sq_series(&d_sh.charpoly(), 6).expect("series");
+    let m_sf = poly::advanced::series::modulus_sq_series(d_sf.charpoly(), 6).expect("series");
+    let m_sh = poly::advanced::series::modulus_sq_series(d_sh.charpoly(), 6).expect("series");
     let disp = |d: &poly::Derivation| {
-        poly::advanced::series::dispersion_order(&d.charpoly()).expect("series").map(|t| t.order)
+        poly::advanced::series::dispersion_order(d.charpoly()).expect("series").map(|t| t.order)
     };
     let diss = |d: &poly::Derivation| {
-        poly::advanced::series::dissipation_order(&d.charpoly()).expect("series").map(|t| t.order)
+        poly::advanced::series::dissipation_order(d.charpoly()).expect("series").map(|t| t.order)
     };
     let (sf, sh) = (advice::criteria("semi_false_heun"), advice::criteria("standard_heun"));
     s.push(

@@ -49,8 +49,7 @@ pub(crate) fn null_basis(model: &Model) -> Vec<Vec<Q>> {
             .filter(|(_, g)| !g.is_zero())
             .collect();
         row.sort_by_key(|e| e.0);
-        loop {
-            let Some((lead, a)) = row.first().cloned() else { break };
+        while let Some((lead, a)) = row.first().cloned() {
             let Some(p) = &pivots[lead] else {
                 let inv = a.recip();
                 row.iter_mut().for_each(|(_, x)| *x = &*x * &inv);
@@ -127,10 +126,10 @@ pub(crate) fn charpoly(a: &[Vec<Q>]) -> Vec<Q> {
             }
             let f = &h[r][j] * &inv;
             // row r −= f · row j+1; column j+1 += f · column r.
-            for c in 0..n {
-                if !h[j + 1][c].is_zero() {
-                    let t = &f * &h[j + 1][c];
-                    h[r][c] -= t;
+            let pivot_row = h[j + 1].clone();
+            for (target, x) in h[r].iter_mut().zip(&pivot_row) {
+                if !x.is_zero() {
+                    *target -= &f * x;
                 }
             }
             for row in h.iter_mut() {
@@ -292,10 +291,10 @@ pub(crate) fn rank(mut a: Vec<Vec<Q>>) -> usize {
                 continue;
             }
             let f = &a[i][c] * &inv;
-            for j in c..cols {
-                if !a[r][j].is_zero() {
-                    let t = &f * &a[r][j];
-                    a[i][j] -= t;
+            let pivot_row = a[r].clone();
+            for (target, x) in a[i][c..cols].iter_mut().zip(&pivot_row[c..cols]) {
+                if !x.is_zero() {
+                    *target -= &f * x;
                 }
             }
         }
