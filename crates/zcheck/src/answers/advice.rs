@@ -328,3 +328,78 @@ pub(crate) fn scene_text(name: &str, a: &advisor::SceneAdvice) -> String {
     }
     out
 }
+
+/// `zcheck advise --scene FILE --solver S` as text: one configuration's
+/// radius, stability, errors and modes, or the search's recommendation.
+pub(crate) fn solver_text(name: &str, a: &crate::scene::solvers::SolverAdvice) -> String {
+    use crate::scene::solvers::{Answer, ConfigAdvice};
+    let mut out = format!(
+        "scene {name}: {} degrees of freedom, {} constraints; tick {} Hz, {} s; target: phase <= {} rad, amplitude <= {}\n",
+        a.dof, a.constraints, a.tick_hz, a.duration_s, a.phase_rad, a.amplitude
+    );
+    let one = |c: &ConfigAdvice| {
+        let mut t = format!(
+            "{} with {} substeps x {} iterations: spectral radius {:.9}{} ({}), {} ({}); cost {} projections per tick\n",
+            c.solver.name(),
+            c.substeps,
+            c.iterations,
+            c.spectral_radius.value,
+            c.spectral_radius.exact.as_ref().map_or(String::new(), |e| format!(", exactly {e}")),
+            if c.spectral_radius.certified { "certified" } else { "numeric, uncertified" },
+            if c.stable { "stable" } else { "UNSTABLE" },
+            c.stable_from,
+            c.cost
+        );
+        t += &format!(
+            "errors over the duration: phase {:.3e} rad, amplitude {:.3e} ({} the target)\n",
+            c.phase_error_rad,
+            c.amplitude_error,
+            if c.meets_accuracy { "meets" } else { "misses" }
+        );
+        t += "mode Hz -> effective Hz (damping ratio -> effective ratio):\n";
+        for m in c.modes.iter().take(8) {
+            t += &format!(
+                "  {:.3} -> {:.3} ({:.4} -> {:.4}){}\n",
+                m.hz,
+                m.effective_hz,
+                m.ratio,
+                m.effective_ratio,
+                if m.in_band { "" } else { ", out of the band" }
+            );
+        }
+        if c.modes.len() > 8 {
+            t += &format!("  and {} more (the JSON has every mode)\n", c.modes.len() - 8);
+        }
+        t += &format!("pairing: {}\n", c.pairing);
+        t
+    };
+    match &a.answer {
+        Answer::One(c) => out += &one(c),
+        Answer::Search(s) => {
+            let passing = s.candidates.iter().filter(|c| c.stable && c.meets_accuracy).count();
+            out += &format!(
+                "{}: searched {}; {} candidates screened, {} stable and accurate\n",
+                s.solver.name(),
+                s.searched,
+                s.candidates.len(),
+                passing
+            );
+            match (&s.recommended, &s.analysis) {
+                (Some(r), Some(c)) => {
+                    out += &format!(
+                        "recommended: {} substeps x {} iterations (the cheapest in projections per tick; ties: fewer iterations, then fewer substeps)\n",
+                        r.substeps, r.iterations
+                    );
+                    out += &one(c);
+                }
+                _ => {
+                    out += &format!(
+                        "recommended: none ({})\n",
+                        s.reason.as_deref().unwrap_or("no configuration meets the targets")
+                    )
+                }
+            }
+        }
+    }
+    out
+}

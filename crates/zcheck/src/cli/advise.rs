@@ -62,6 +62,22 @@ pub(crate) struct Args {
     /// 1/10); without it the spring is undamped.
     #[arg(long, allow_negative_numbers = true)]
     pub damping: Option<Exact>,
+    /// A game-engine solver to analyse on the scene instead of the
+    /// force-based methods: `xpbd` (Gauss-Seidel), `xpbd_jacobi` or
+    /// `soft_step` (Box2D v3). With --substeps and --iterations, that one
+    /// configuration; without, the search over 1..64 substeps and 1..16
+    /// iterations. Its JSON is a document of its own (README).
+    #[arg(long, requires = "scene")]
+    pub solver: Option<String>,
+    /// Substeps per tick for --solver (with --iterations).
+    #[arg(long, requires = "solver", requires = "iterations")]
+    pub substeps: Option<u64>,
+    /// Iterations per substep for --solver (with --substeps; 1 for soft_step).
+    #[arg(long, requires = "solver", requires = "substeps")]
+    pub iterations: Option<u64>,
+    /// Jacobi's relaxation factor for --solver xpbd_jacobi (default 1: plain Jacobi).
+    #[arg(long, requires = "solver")]
+    pub relaxation: Option<f64>,
     /// What the recommendation is ranked by: `exact` operations per tick
     /// (the same answer on every machine; ties by name) or the ns
     /// `measured` on this machine.
@@ -198,6 +214,24 @@ fn run_scene(path: &std::path::Path, args: &Args) -> Result<ExitCode, Error> {
             "--duration, --phase-tol and --amp-tol belong in the scene file with --scene \
              (duration_s, [accuracy])",
         ));
+    }
+    if let Some(word) = &args.solver {
+        let solver = crate::scene::solvers::Solver::parse(word)?;
+        let config = args.substeps.zip(args.iterations);
+        let advice = match args.relaxation {
+            Some(factor) => {
+                crate::scene::solvers::solver_advice_relaxed(&scene, solver, config, factor)?
+            }
+            None => crate::scene::solvers::solver_advice(&scene, solver, config)?,
+        };
+        match args.format {
+            Format::Json => super::output::emitln(&serde_json::to_string_pretty(&advice)?)?,
+            _ => super::output::emit(&crate::answers::advice::solver_text(
+                &path.display().to_string(),
+                &advice,
+            ))?,
+        }
+        return Ok(ExitCode::SUCCESS);
     }
     let options = Options {
         simulate: !args.no_simulate,

@@ -19,7 +19,7 @@ pub mod file;
 pub mod mesh;
 pub mod modal;
 pub(crate) mod reference;
-pub mod solvers;
+pub(crate) mod solvers;
 pub(crate) mod sparse;
 pub(crate) mod spectrum;
 pub mod three_body;

@@ -21,7 +21,7 @@ mod plot_cli;
 mod region_cli;
 mod scene_advise;
 mod scene_cli;
-mod solvers;
+mod solvers_cli;
 mod sparse_scene;
 use testkit::snapshot;
 mod stability_cli;

@@ -54,7 +54,7 @@ pub(crate) const DENSE_MAX_STATE: usize = 2400;
 pub(crate) const RHO_TOL: f64 = 1e-12;
 
 /// The pairing rule, as the output states it.
-pub const PAIRING: &str = "each true mode (continuous eigenvalue lambda, Im >= 0, rigid modes deflated) is \
+pub(crate) const PAIRING: &str = "each true mode (continuous eigenvalue lambda, Im >= 0, rigid modes deflated) is \
      paired with a distinct eigenvalue mu of the substep map minimising the total |ln mu - lambda*h| \
      (Hungarian assignment, h = 1/(tick*S))";
 
@@ -153,7 +153,7 @@ impl Prepared {
 
 /// The spectral radius of the tick map.
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct Radius {
+pub(crate) struct Radius {
     /// ρ of the tick map over every free degree of freedom (1 at least when
     /// there are rigid modes).
     pub value: f64,
@@ -173,7 +173,7 @@ pub struct Radius {
 
 /// One true mode as the solver realises it.
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct ModeAdvice {
+pub(crate) struct ModeAdvice {
     /// The true undamped frequency |λ|/2π, Hz.
     pub hz: f64,
     /// The true damping ratio −Re λ/|λ|.
@@ -189,7 +189,7 @@ pub struct ModeAdvice {
 /// The check by simulation: the tick map's powers against the solver
 /// stepped in f64.
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct SimulationCheck {
+pub(crate) struct SimulationCheck {
     /// Ticks compared.
     pub ticks: u64,
     /// Largest ‖T^k s − step^k s‖ / ‖step^k s‖.
@@ -199,7 +199,7 @@ pub struct SimulationCheck {
 /// One configuration's answer (`zcheck advise --solver S --substeps S
 /// --iterations N`).
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct ConfigAdvice {
+pub(crate) struct ConfigAdvice {
     /// The solver.
     pub solver: Solver,
     /// Substeps per tick.

@@ -23,10 +23,9 @@ mod exact;
 mod kernel;
 mod model;
 mod search;
+#[cfg(test)]
+mod tests;
 
-pub use analysis::{ConfigAdvice, ModeAdvice, Radius, SimulationCheck, PAIRING};
-pub use model::{Config, Solver, MAX_ITERATIONS, MAX_SUBSTEPS};
-pub use search::{
-    solver_advice, solver_advice_relaxed, Answer, Candidate, Recommended, SearchAdvice,
-    SolverAdvice,
-};
+pub(crate) use analysis::ConfigAdvice;
+pub(crate) use model::Solver;
+pub(crate) use search::{solver_advice, solver_advice_relaxed, Answer, SolverAdvice};

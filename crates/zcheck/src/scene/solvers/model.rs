@@ -16,7 +16,7 @@ use crate::error::Error;
 /// The solvers analysed (`zcheck advise --solver`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
 #[serde(rename_all = "snake_case")]
-pub enum Solver {
+pub(crate) enum Solver {
     /// XPBD, Gauss–Seidel over the constraints in file order (Macklin,
     /// Müller, Chentanez 2016, Algorithm 1).
     Xpbd,
@@ -30,10 +30,10 @@ pub enum Solver {
 
 impl Solver {
     /// Every solver, in a fixed order.
-    pub const ALL: [Solver; 3] = [Solver::Xpbd, Solver::XpbdJacobi, Solver::SoftStep];
+    pub(crate) const ALL: [Solver; 3] = [Solver::Xpbd, Solver::XpbdJacobi, Solver::SoftStep];
 
     /// Its name on the command line and in JSON.
-    pub fn name(self) -> &'static str {
+    pub(crate) fn name(self) -> &'static str {
         match self {
             Solver::Xpbd => "xpbd",
             Solver::XpbdJacobi => "xpbd_jacobi",
@@ -42,7 +42,7 @@ impl Solver {
     }
 
     /// The solver called `name`, or a usage error naming the flag.
-    pub fn parse(name: &str) -> Result<Solver, Error> {
+    pub(crate) fn parse(name: &str) -> Result<Solver, Error> {
         Solver::ALL.into_iter().find(|s| s.name() == name).ok_or_else(|| {
             Error::usage(format!(
                 "--solver {name}: unknown solver, expected one of: xpbd, xpbd_jacobi, soft_step"
@@ -61,13 +61,13 @@ impl Solver {
 }
 
 /// Largest substep count searched.
-pub const MAX_SUBSTEPS: u64 = 64;
+pub(crate) const MAX_SUBSTEPS: u64 = 64;
 /// Largest iteration count searched.
-pub const MAX_ITERATIONS: u64 = 16;
+pub(crate) const MAX_ITERATIONS: u64 = 16;
 
 /// One solver configuration.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Config {
+pub(crate) struct Config {
     /// The solver.
     pub solver: Solver,
     /// Substeps per tick, S ≥ 1.
@@ -81,13 +81,15 @@ pub struct Config {
 
 impl Config {
     /// A configuration, checked: S ≥ 1, N ≥ 1, N = 1 for the soft step, a
-    /// relaxation factor in (0, 2). Errors name the flag.
-    pub fn new(solver: Solver, substeps: u64, iterations: u64) -> Result<Config, Error> {
+    /// relaxation factor in (0, 2). Errors name the flag. (The tests' door;
+    /// the command line passes its relaxation factor.)
+    #[cfg(test)]
+    pub(crate) fn new(solver: Solver, substeps: u64, iterations: u64) -> Result<Config, Error> {
         Config::with_relaxation(solver, substeps, iterations, 1.0)
     }
 
     /// [`Config::new`] with a Jacobi relaxation factor.
-    pub fn with_relaxation(
+    pub(crate) fn with_relaxation(
         solver: Solver,
         substeps: u64,
         iterations: u64,

@@ -26,7 +26,7 @@ use crate::error::Error;
 
 /// A configuration the search screened.
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct Candidate {
+pub(crate) struct Candidate {
     /// The solver.
     pub solver: Solver,
     /// Substeps per tick.
@@ -47,7 +47,7 @@ pub struct Candidate {
 
 /// The recommended configuration.
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct Recommended {
+pub(crate) struct Recommended {
     /// The solver.
     pub solver: Solver,
     /// Substeps per tick.
@@ -58,7 +58,7 @@ pub struct Recommended {
 
 /// The search's answer.
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct SearchAdvice {
+pub(crate) struct SearchAdvice {
     /// The solver searched.
     pub solver: Solver,
     /// What was searched.
@@ -81,7 +81,7 @@ pub struct SearchAdvice {
 /// One configuration or the search.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 #[serde(untagged)]
-pub enum Answer {
+pub(crate) enum Answer {
     /// `--substeps S --iterations N`.
     One(ConfigAdvice),
     /// No configuration given.
@@ -90,7 +90,7 @@ pub enum Answer {
 
 /// The document `zcheck advise --scene FILE --solver ...` prints.
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct SolverAdvice {
+pub(crate) struct SolverAdvice {
     /// Tick rate, Hz.
     pub tick_hz: f64,
     /// Duration, s.
@@ -114,7 +114,7 @@ pub struct SolverAdvice {
 /// Advice for `solver` on a scene: the configuration `(substeps,
 /// iterations)` analysed, or without one the search. Bad configurations
 /// are usage errors naming the flag.
-pub fn solver_advice(
+pub(crate) fn solver_advice(
     scene: &SceneFile,
     solver: Solver,
     config: Option<(u64, u64)>,
@@ -123,7 +123,7 @@ pub fn solver_advice(
 }
 
 /// [`solver_advice`] with Jacobi's relaxation factor (`xpbd_jacobi`).
-pub fn solver_advice_relaxed(
+pub(crate) fn solver_advice_relaxed(
     scene: &SceneFile,
     solver: Solver,
     config: Option<(u64, u64)>,

@@ -1,4 +1,4 @@
-//! The game-engine solvers of issue 36 (`zcheck::scene::solvers`): XPBD
+//! The game-engine solvers of issue 36 (`crate::scene::solvers`): XPBD
 //! (Gauss–Seidel and Jacobi) and Box2D v3's soft step on scenes of
 //! linearised springs, against oracles computed here: backward Euler on the
 //! oscillator in closed form, backward Euler on a whole chain by nalgebra,
@@ -6,9 +6,10 @@
 
 use std::path::PathBuf;
 
+use super::search::{Candidate, SearchAdvice};
+use super::{solver_advice, Answer, ConfigAdvice, Solver};
+use crate::scene::file::SceneFile;
 use nalgebra::{DMatrix, DVector};
-use zcheck::scene::file::SceneFile;
-use zcheck::scene::solvers::{solver_advice, Answer, ConfigAdvice, SearchAdvice, Solver};
 
 fn one(scene: &SceneFile, solver: Solver, s: u64, n: u64) -> ConfigAdvice {
     match solver_advice(scene, solver, Some((s, n))).unwrap().answer {
@@ -136,7 +137,7 @@ fn bad_configurations_are_clean_errors() {
     assert!(e.contains("--iterations 3"), "{e}");
     let e = Solver::parse("verlet").unwrap_err().to_string();
     assert!(e.contains("--solver verlet"), "{e}");
-    assert_eq!(zcheck::scene::solvers::Solver::parse("xpbd_jacobi").unwrap(), Solver::XpbdJacobi);
+    assert_eq!(Solver::parse("xpbd_jacobi").unwrap(), Solver::XpbdJacobi);
 }
 
 /// The example scenes of at most 200 degrees of freedom.
@@ -215,7 +216,7 @@ fn the_search_recommends_the_cheapest_passing_configuration() {
                 a.candidates.len(),
                 t.elapsed().as_secs_f64()
             );
-            let key = |c: &zcheck::scene::solvers::Candidate| (c.cost, c.iterations, c.substeps);
+            let key = |c: &Candidate| (c.cost, c.iterations, c.substeps);
             match &a.recommended {
                 Some(r) => {
                     let rec = a
