@@ -4,7 +4,6 @@
 //! `Derivation::plane`, `Derivation::stability`, `order::ssp_coefficient`),
 //! and bisection on rational parameters near each optimum.
 
-
 use poly::advanced::design::{
     maximize, objective_at, Design, FreeParam, Objective, ParamTableau, Problem, Score, Subject,
 };
