@@ -362,8 +362,8 @@ pub(crate) fn solver_text(name: &str, a: &crate::scene::solvers::SolverAdvice) -
                 "  {:.3} -> {:.3} ({:.4} -> {:.4}){}\n",
                 m.hz,
                 m.effective_hz,
-                m.ratio,
-                m.effective_ratio,
+                m.ratio + 0.0, // never -0.0000
+                m.effective_ratio + 0.0,
                 if m.in_band { "" } else { ", out of the band" }
             );
         }
