@@ -1,5 +1,6 @@
 //! The bodies of the fuzz targets that read the application's TOML files:
-//! the scene reader and the Butcher-tableau reader. Behind testkit's `app`
+//! the scene reader, the Butcher-tableau reader and the coefficient files of
+//! `zcheck order` (pairs, splittings, `bhat`). Behind testkit's `app`
 //! feature, because they need the `zcheck` crate; `zcheck`'s integration
 //! tests replay their corpora.
 
@@ -46,6 +47,27 @@ pub fn tableau(data: &[u8]) {
                     // some tableaux (and a clear error), never a panic.
                     assert!(e.to_string().len() <= MAX_ERROR_BYTES, "{e}");
                 }
+            }
+        }
+        Err(e) => check_error(&e),
+    }
+}
+
+/// The readers of `zcheck order` (a tableau with `bhat`, a partitioned pair
+/// `[q]`/`[p]`, a splitting `drift`/`kick`, a multistep method): every input
+/// gives a reading whose lists all have one entry per stage (per flow, per
+/// step), with located, bounded warnings, or a located, bounded error.
+pub fn order_toml(data: &[u8]) {
+    let Ok(text) = std::str::from_utf8(data) else { return };
+    match zcheck::readings::read_coefficients("fuzz.toml", "fuzz", text) {
+        Ok(r) => {
+            let s = r.lengths[0];
+            assert!(s >= 1, "a {} without a stage: {:?}", r.kind, r.lengths);
+            assert!(r.lengths.iter().all(|&n| n == s), "{}: lengths {:?}", r.kind, r.lengths);
+            for w in &r.warnings {
+                assert!(w.len() <= MAX_ERROR_BYTES, "warning of {} bytes", w.len());
+                assert!(!w.chars().any(|c| c.is_control()), "control character in warning: {w:?}");
+                assert!(w.starts_with("fuzz.toml:"), "warning not located: {w}");
             }
         }
         Err(e) => check_error(&e),

@@ -16,7 +16,7 @@ pub mod snapshot;
 /// The bodies of the fuzz targets, one function per target.
 pub mod fuzz {
     #[cfg(feature = "app")]
-    pub use crate::fuzz_app::{scene_toml, tableau};
+    pub use crate::fuzz_app::{order_toml, scene_toml, tableau};
     pub use crate::fuzz_poly::{parse, parse_derive, stability};
 }
 

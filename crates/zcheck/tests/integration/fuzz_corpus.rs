@@ -1,5 +1,5 @@
 //! The application fuzz targets' committed corpora and crash regressions
-//! (`fuzz/{corpus,regressions}/{scene_toml,tableau}/`), replayed as ordinary
+//! (`fuzz/{corpus,regressions}/{scene_toml,tableau,order_toml}/`), replayed as ordinary
 //! tests through the same functions the libFuzzer targets call, so CI checks
 //! them without the nightly toolchain cargo-fuzz needs (FUZZING.md).
 
@@ -22,4 +22,9 @@ fn scene_toml_corpus() {
 #[test]
 fn tableau_corpus() {
     replay("tableau", app::tableau);
+}
+
+#[test]
+fn order_toml_corpus() {
+    replay("order_toml", app::order_toml);
 }
