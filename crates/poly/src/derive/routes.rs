@@ -32,7 +32,7 @@ use crate::{Poly, PolyMatrix, Sym};
 
 /// Everything derived from one method.
 ///
-/// Sealed: only [`derive`] builds one, after the z-domain route and the
+/// Sealed: only [`derive()`] builds one, after the z-domain route and the
 /// state route agree, so χ and P never disagree. Read it through the
 /// getters ([`Derivation::charpoly`], [`Derivation::transition_matrix`],
 /// ...).
