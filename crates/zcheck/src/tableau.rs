@@ -40,7 +40,6 @@ use poly::advanced::tableau::{self as exact, method_ident, Exact};
 use serde::Deserialize;
 use toml::Spanned;
 
-/// Any coefficient file `zcheck order` reads (a pair, a splitting, `bhat`).
 pub(crate) use poly::advanced::tableau::MAX_STAGES;
 
 use crate::error::{line_col, Error};
