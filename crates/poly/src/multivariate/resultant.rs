@@ -9,7 +9,7 @@ use crate::multivariate::poly::Poly;
 /// The Sylvester resultant of two polynomials given by their coefficients
 /// (lowest power first), each coefficient a polynomial in the remaining
 /// symbols; zero when either is zero.
-pub(crate) fn resultant(f: &[Poly], g: &[Poly]) -> Poly {
+pub fn resultant(f: &[Poly], g: &[Poly]) -> Poly {
     let trim = |c: &[Poly]| -> Vec<Poly> {
         let mut v = c.to_vec();
         while v.last().is_some_and(Poly::is_zero) {

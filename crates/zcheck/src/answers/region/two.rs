@@ -33,7 +33,7 @@ use check::numeric::{f64_to_q, q_to_f64};
 use check::witness::Witnesses;
 use num_traits::{One, Signed, Zero};
 use plotters::prelude::*;
-use poly::{Algebraic, Poly, PolyMatrix, Stability, StabilityReport, Sym, Q};
+use poly::{Algebraic, Poly, Stability, StabilityReport, Sym, Q};
 use rayon::prelude::*;
 use serde::Serialize;
 
@@ -161,25 +161,6 @@ fn primitive(p: &Poly) -> Poly {
     }
 }
 
-/// Res_z(f, g) of two polynomials given by their coefficients in z, lowest
-/// first (the Sylvester determinant).
-fn resultant(f: &[Poly], g: &[Poly]) -> Poly {
-    let (m, n) = (f.len() - 1, g.len() - 1);
-    let size = m + n;
-    let mut rows = vec![vec![Poly::zero(); size]; size];
-    for i in 0..n {
-        for (k, c) in f.iter().rev().enumerate() {
-            rows[i][i + k] = c.clone();
-        }
-    }
-    for i in 0..m {
-        for (k, c) in g.iter().rev().enumerate() {
-            rows[n + i][i + k] = c.clone();
-        }
-    }
-    PolyMatrix::from_rows(rows).det()
-}
-
 /// L, the top coefficient of `chi` in Φ, and the four conditions on it
 /// (non-constant ones only, primitive, without repeats).
 fn limit_conditions(chi: &Poly) -> (Poly, Vec<(&'static str, Poly)>) {
@@ -208,7 +189,7 @@ fn limit_conditions(chi: &Poly) -> (Poly, Vec<(&'static str, Poly)>) {
         2 => conditions.push(("unit_circle", &a[2] - &a[0])),
         _ => {
             let rev: Vec<Poly> = a.iter().rev().cloned().collect();
-            conditions.push(("unit_circle", resultant(&a, &rev)));
+            conditions.push(("unit_circle", poly::advanced::resultant(&a, &rev)));
         }
     }
     let mut out: Vec<(&'static str, Poly)> = Vec::new();
@@ -642,10 +623,10 @@ mod tests {
         let f = &(&(&z - &Poly::int(2)) * &(&z - &Poly::constant(poly::q(1, 2)))) * &(&z - &c);
         let a = f.coeffs_in(Sym::z());
         let rev: Vec<Poly> = a.iter().rev().cloned().collect();
-        assert!(resultant(&a, &rev).is_zero());
+        assert!(poly::advanced::resultant(&a, &rev).is_zero());
         let g = &(&(&z - &Poly::int(3)) * &(&z - &Poly::constant(poly::q(1, 2)))) * &(&z - &c);
         let a = g.coeffs_in(Sym::z());
         let rev: Vec<Poly> = a.iter().rev().cloned().collect();
-        assert!(!resultant(&a, &rev).is_zero());
+        assert!(!poly::advanced::resultant(&a, &rev).is_zero());
     }
 }
