@@ -1,5 +1,19 @@
 //! Generated `.zm` programs for the benches and the tests of large
-//! derivations.
+//! derivations, and small programs several crates' tests share.
+
+/// False Euler in three substeps of Φ/3, each reading the new v: at Φ = 3
+/// each substep is 1, P = −I and χ = (z + 1)², a double root on the unit
+/// circle that is bounded; at Φ = 6 χ is the same but P a Jordan block.
+pub const FALSE_EULER_3: &str = "\
+method false_euler_3
+state v y
+v = v - Phi/3*y
+y = y + Phi/3*v
+v = v - Phi/3*y
+y = y + Phi/3*v
+v = v - Phi/3*y
+y = y + Phi/3*v
+";
 
 /// RK4 applied to a chain of `n` unit masses joined by unit springs to
 /// each other and to two fixed walls, with Phi = ω₀T as the step. The

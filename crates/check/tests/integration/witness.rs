@@ -292,14 +292,7 @@ fn pairing_is_order_free() {
 /// witness agrees with the exact χ at both.
 #[test]
 fn a_double_root_on_the_circle_is_bounded_where_p_is_semisimple() {
-    let d = poly::derive_source(
-        "false_euler_3.zm",
-        "method false_euler_3\nstate v y\n\
-         v = v - Phi/3*y\ny = y + Phi/3*v\n\
-         v = v - Phi/3*y\ny = y + Phi/3*v\n\
-         v = v - Phi/3*y\ny = y + Phi/3*v\n",
-    )
-    .unwrap();
+    let d = poly::derive_source("false_euler_3.zm", testkit::programs::FALSE_EULER_3).unwrap();
     let at3 = check::verify(&d, &Params::phi(3.0), 10_000).unwrap();
     assert!(at3.agree(), "{:?}", at3.checks);
     assert_eq!(at3.exact.class, poly::RootClass::DoubleRootOnCircle);

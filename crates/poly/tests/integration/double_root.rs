@@ -9,17 +9,7 @@
 use poly::advanced::stability::{analyze, class_at, ClassAt};
 use poly::{q, Params, Poly, PolyMatrix, RootClass, Stability, Sym, Q};
 
-/// False Euler in three substeps of Φ/3, each reading the new v.
-const FALSE_EULER_3: &str = "\
-method false_euler_3
-state v y
-v = v - Phi/3*y
-y = y + Phi/3*v
-v = v - Phi/3*y
-y = y + Phi/3*v
-v = v - Phi/3*y
-y = y + Phi/3*v
-";
+use testkit::programs::FALSE_EULER_3;
 
 /// The same with the damping of the test equation v' = −2Dv − y, y' = v
 /// (D = 0 is [`FALSE_EULER_3`]), for the (Φ, D) region.

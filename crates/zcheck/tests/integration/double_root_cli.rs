@@ -6,16 +6,7 @@ use std::process::Command;
 
 use serde_json::Value;
 
-const FALSE_EULER_3: &str = "\
-method false_euler_3
-state v y
-v = v - Phi/3*y
-y = y + Phi/3*v
-v = v - Phi/3*y
-y = y + Phi/3*v
-v = v - Phi/3*y
-y = y + Phi/3*v
-";
+use testkit::programs::FALSE_EULER_3;
 
 fn json(args: &[&str]) -> Value {
     let dir = std::env::temp_dir().join(format!("zcheck-double-root-{}", std::process::id()));
