@@ -710,12 +710,13 @@ fn nothing_below_cli_imports_it() {
 
 /// zcheck's library is public for its tests, benches, fuzz targets and the
 /// Python module, and shows them only what they use, counted as lines
-/// opening with `pub fn`, `pub struct`, ... The goal is 150; every item left
-/// is used from outside the crate (the proof's tests drive the appendix
-/// scenes and the trade-off directly, the benches the kernels, Python the
-/// `api`), so the count can only shrink with them. This test holds the line
-/// where it stands: a new export needs a reason and a lower count elsewhere.
-const ZCHECK_EXPORTS: usize = 186;
+/// opening with `pub fn`, `pub struct`, ... at most 150. Every item left is
+/// used from outside the crate (the proof's tests drive the appendix scenes
+/// directly, the benches the kernels, Python the `api`); `unreachable_pub`
+/// (lib.rs) makes every item of a private module say `pub(crate)`, so the
+/// count is the real surface. This test holds the line where it stands: a new
+/// export needs a reason and a lower count elsewhere.
+const ZCHECK_EXPORTS: usize = 145;
 
 #[test]
 fn zcheck_exports_do_not_grow() {

@@ -28,6 +28,8 @@
 //! The exact algebra lives in `poly`, the numeric witnesses in `check`; this
 //! crate depends on both and neither depends on it.
 
+#![warn(unreachable_pub)]
+
 mod answers;
 pub mod api;
 pub mod cli;

@@ -51,29 +51,29 @@ impl PhiPoly {
 /// The exact spring a method is judged against: undamped (D = 0) or with a
 /// physical damping ratio 0 ≤ D < 1.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Spring {
+pub(crate) struct Spring {
     /// The damping ratio D of ÿ + 2Dω₀ẏ + ω₀²y = 0.
     pub damping: f64,
 }
 
 impl Spring {
     /// The undamped spring of sections 5–11.
-    pub const UNDAMPED: Spring = Spring { damping: 0.0 };
+    pub(crate) const UNDAMPED: Spring = Spring { damping: 0.0 };
 
     /// The exact phase advance per step, Φ√(1 − D²).
-    pub fn psi_exact(self, phi: f64) -> f64 {
+    pub(crate) fn psi_exact(self, phi: f64) -> f64 {
         phi * (1.0 - self.damping * self.damping).sqrt()
     }
 
     /// The exact ln|z| per step, −DΦ.
-    pub fn ln_r_exact(self, phi: f64) -> f64 {
+    pub(crate) fn ln_r_exact(self, phi: f64) -> f64 {
         -self.damping * phi
     }
 }
 
 /// What a duration of simulation must meet.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Target {
+pub(crate) struct Target {
     /// Largest accumulated phase error over the duration, in radians.
     pub phase_tol: f64,
     /// Largest relative amplitude change over the duration (0.01 = 1 %).
@@ -84,7 +84,7 @@ pub struct Target {
 
 impl Target {
     /// The defaults of `zcheck tradeoff`: 0.1 rad and 1 % over 10 periods.
-    pub const DEFAULT: Target = Target { phase_tol: 0.1, amp_tol: 0.01, periods: 10.0 };
+    pub(crate) const DEFAULT: Target = Target { phase_tol: 0.1, amp_tol: 0.01, periods: 10.0 };
 }
 
 /// One method's second-order model, χ = a·z² + b·z + c with a, b, c
@@ -92,7 +92,7 @@ impl Target {
 /// one): p = −b/2a, q − 1 = (c − a)/a and Δ = q − p² = (4ac − b²)/4a², each
 /// numerator exact before it is rounded.
 #[derive(Clone, Debug)]
-pub struct SecondOrder {
+pub(crate) struct SecondOrder {
     /// −b/2, the numerator of p.
     p: PhiPoly,
     /// c − a, the numerator of q − 1.
@@ -105,7 +105,7 @@ pub struct SecondOrder {
 
 /// The principal root and its errors at one Φ.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Accuracy {
+pub(crate) struct Accuracy {
     /// The step.
     pub phi: f64,
     /// Whether the roots are a complex pair (an oscillation); a method with
@@ -126,7 +126,7 @@ impl Accuracy {
     }
 
     /// |z/z_exact|^(2π/Φ): the amplitude factor per period.
-    pub fn amplitude_factor_per_period(&self) -> f64 {
+    pub(crate) fn amplitude_factor_per_period(&self) -> f64 {
         (self.ln_growth_per_step * self.steps(1.0)).exp()
     }
 
@@ -146,12 +146,12 @@ impl Accuracy {
     /// The larger of the two drifts (radians and relative amplitude, which
     /// are comparable for small errors): the error axis of the
     /// work-precision figure.
-    pub fn error(&self, periods: f64) -> f64 {
+    pub(crate) fn error(&self, periods: f64) -> f64 {
         self.phase_drift(periods).max(self.amplitude_drift(periods))
     }
 
     /// Whether the target is met at this Φ.
-    pub fn meets(&self, target: &Target) -> bool {
+    pub(crate) fn meets(&self, target: &Target) -> bool {
         self.oscillating
             && self.phase_drift(target.periods) <= target.phase_tol
             && self.amplitude_drift(target.periods) <= target.amp_tol
@@ -161,7 +161,7 @@ impl Accuracy {
 impl SecondOrder {
     /// The model of `charpoly` (a polynomial in z and the parameters) with
     /// every parameter but Φ given a value. Errs unless χ is monic of degree 2.
-    pub fn new(charpoly: &Poly, params: &[(Sym, Q)]) -> Result<SecondOrder, Error> {
+    pub(crate) fn new(charpoly: &Poly, params: &[(Sym, Q)]) -> Result<SecondOrder, Error> {
         let values: HashMap<Sym, Q> = params.iter().cloned().collect();
         let chi = charpoly.eval_partial(&values);
         let c = chi.coeffs_in(Sym::z());
@@ -206,7 +206,7 @@ impl SecondOrder {
     }
 
     /// The accuracy at Φ against `spring`.
-    pub fn accuracy(&self, phi: f64, spring: Spring) -> Accuracy {
+    pub(crate) fn accuracy(&self, phi: f64, spring: Spring) -> Accuracy {
         let (psi, ln_r, oscillating) = self.principal_root(phi);
         Accuracy {
             phi,
@@ -224,7 +224,7 @@ impl SecondOrder {
     ///
     /// The caller passes a cap strictly below the exact stability limit, so
     /// the answer is never a step at or beyond `phi_max`.
-    pub fn largest_admissible_phi(
+    pub(crate) fn largest_admissible_phi(
         &self,
         spring: Spring,
         target: &Target,

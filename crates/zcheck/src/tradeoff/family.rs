@@ -22,7 +22,7 @@ use check::numeric::{f64_to_q, q_to_f64};
 
 /// The exact stability limit of one method (at fixed other parameters).
 #[derive(Clone, Debug)]
-pub struct Limit {
+pub(crate) struct Limit {
     /// Φ_max from `poly::advanced::stability::analyze`: every 0 < Φ < Φ_max is
     /// bounded. `None` with `bounded_for_all == false`: unbounded for every
     /// small Φ > 0 (Standard Euler, Standard Heun).
@@ -34,7 +34,7 @@ pub struct Limit {
 impl Limit {
     /// Whether Φ (the exact value of this `f64`) is strictly below Φ_max,
     /// decided exactly.
-    pub fn is_below(&self, phi: f64) -> bool {
+    pub(crate) fn is_below(&self, phi: f64) -> bool {
         if self.bounded_for_all {
             return phi > 0.0;
         }
@@ -61,7 +61,7 @@ impl Limit {
     /// The largest step a search may try: the largest `f64` strictly below
     /// Φ_max (checked exactly), π when every Φ is bounded (beyond π the
     /// phase per step is ambiguous, Nyquist), `None` when no Φ is stable.
-    pub fn search_cap(&self) -> Option<f64> {
+    pub(crate) fn search_cap(&self) -> Option<f64> {
         if self.bounded_for_all {
             return Some(PI);
         }
@@ -106,7 +106,7 @@ pub(crate) const MAX_SUBSTEPS: u64 = 1_000_000_000_000_000;
 /// One method ready to trade: its definition, exact cost, accuracy model
 /// and stability limit, at fixed values of its parameters other than Φ.
 #[derive(Clone, Debug)]
-pub struct Candidate {
+pub(crate) struct Candidate {
     /// The method's name (its `.zm` name).
     pub name: String,
     /// The name shown to a user: a built-in's base name (the damped
@@ -125,15 +125,13 @@ pub struct Candidate {
     pub model: SecondOrder,
     /// The exact stability limit at these parameter values.
     pub limit: Limit,
-    /// χ with the parameters substituted (a polynomial in z and Φ).
-    pub charpoly: poly::Poly,
 }
 
 impl Candidate {
     /// Builds a candidate from a loaded method (derived once, there) and
     /// the values of its parameters other than Φ: count, model and analyse
     /// exactly.
-    pub fn new(loaded: &LoadedMethod, params: Vec<(Sym, Q)>) -> Result<Candidate, Error> {
+    pub(crate) fn new(loaded: &LoadedMethod, params: Vec<(Sym, Q)>) -> Result<Candidate, Error> {
         let method = loaded.method().clone();
         let name = method.name().to_owned();
         let derivation = loaded.derivation().map_err(|e| e.context(format!("method `{name}`")))?;
@@ -162,13 +160,12 @@ impl Candidate {
             cost,
             model,
             limit,
-            charpoly,
         })
     }
 }
 
 /// Every paper built-in with no free parameter but Φ, in built-in order.
-pub fn undamped_family() -> Result<Vec<Candidate>, Error> {
+pub(crate) fn undamped_family() -> Result<Vec<Candidate>, Error> {
     let mut family = Vec::new();
     for name in poly::advanced::builtins::paper_builtin_names() {
         let method = builtin(name)?;
@@ -177,12 +174,6 @@ pub fn undamped_family() -> Result<Vec<Candidate>, Error> {
         }
     }
     Ok(family)
-}
-
-/// The seven direct methods applied to a spring with damping ratio `d`
-/// (an exact rational).
-pub fn damped_family(d: &Q) -> Result<Vec<Candidate>, Error> {
-    damped_candidates(&LoadedMethod::damped_builtins()?, d)
 }
 
 /// The damped `methods` (with `param D`) as candidates at the damping

@@ -24,28 +24,12 @@ use poly::Method;
 
 use super::kernels::time_ns_per_step;
 
-/// The default time budget of one measurement.
-pub(crate) const DEFAULT_BUDGET: Duration = Duration::from_millis(3);
-
 /// Steps between two renormalisations of the timed state.
 const CHUNK: u64 = 1024;
 
 /// Measured nanoseconds per step of `method`'s compiled step at `params`
 /// (which must give every parameter of the method, Φ included), one state,
-/// timed for about `DEFAULT_BUDGET`.
-///
-/// ```
-/// use check::numeric::{Params, ParamsF64};
-/// let m = poly::builtin("false_euler")?;
-/// let ns = zcheck::tradeoff::measure_ns_per_step(&m, &Params::phi(0.1))?;
-/// assert!(ns.is_finite() && ns > 0.0);
-/// # Ok::<(), Box<dyn std::error::Error>>(())
-/// ```
-pub fn measure_ns_per_step(method: &Method, params: &Params) -> Result<f64, Error> {
-    measure_ns_per_step_within(method, params, DEFAULT_BUDGET)
-}
-
-/// [`measure_ns_per_step`] with a time budget.
+/// timed for about `budget`.
 pub(crate) fn measure_ns_per_step_within(
     method: &Method,
     params: &Params,

@@ -10,7 +10,7 @@
 //! - accuracy per step from the exact characteristic polynomial
 //!   (`accuracy`): phase error Ψ − Φ and amplitude factor per period;
 //! - the exact stability limit Φ_max (`poly::advanced::stability`), which no answer
-//!   ever reaches ([`family`]);
+//!   ever reaches (`family`);
 //! - the trade: the largest admissible Φ for a target, steps per period, cost
 //!   per simulated period, a ranking and a work-precision figure
 //!   (`rank`, `figure`);
@@ -19,17 +19,17 @@
 //!   [`crate::scene::advisor`]'s).
 //!
 //! The submodules import one another directly, never through this file,
-//! which only re-exports what the tests use.
+//! which only names `Rank`, the one type the advisors share.
 
 pub(crate) mod accuracy;
-pub mod family;
+pub(crate) mod family;
 pub(crate) mod figure;
 pub mod kernels;
 pub(crate) mod measure;
 pub(crate) mod rank;
 pub(crate) mod spring_advisor;
 
-pub use accuracy::{SecondOrder, Spring, Target};
-pub use measure::measure_ns_per_step;
-pub use rank::{trade, Rank, TradeRow};
-pub use spring_advisor::{advise_spring, SpringScene};
+pub(crate) use rank::Rank;
+
+#[cfg(test)]
+mod tests;

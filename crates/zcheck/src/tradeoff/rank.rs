@@ -70,7 +70,7 @@ impl Rank {
 
 /// Operations, for JSON.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-pub struct Ops {
+pub(crate) struct Ops {
     /// Multiplications.
     pub mul: u64,
     /// Additions and subtractions.
@@ -87,7 +87,7 @@ impl From<poly::OpCount> for Ops {
 
 /// The cost of simulating one period of the spring.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-pub struct CostPerPeriod {
+pub(crate) struct CostPerPeriod {
     /// Operations: `steps_per_period ×` [`TradeRow::ops_per_step`].
     pub ops: Ops,
     /// Multiplications plus additions per period.
@@ -98,7 +98,7 @@ pub struct CostPerPeriod {
 
 /// One method in the trade.
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct TradeRow {
+pub(crate) struct TradeRow {
     /// The method's name.
     pub method: String,
     /// Exact operations per step of the program as written.
@@ -184,7 +184,7 @@ pub(crate) fn trade_row(
 /// The trade for every candidate, ranked `by` (admissible methods by exact
 /// operations per period or by the ns measured), then the rest in the given
 /// order. `ns_per_step` gives each candidate's measured time.
-pub fn trade(
+pub(crate) fn trade(
     candidates: &[Candidate],
     spring: Spring,
     target: &Target,

@@ -32,7 +32,7 @@ use crate::error::Error;
 
 /// A spring in a game: its frequency, the tick rate, and the target.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-pub struct SpringScene {
+pub(crate) struct SpringScene {
     /// The spring's natural frequency, Hz.
     pub freq_hz: f64,
     /// The simulation tick rate, Hz.
@@ -49,11 +49,11 @@ pub struct SpringScene {
 
 impl SpringScene {
     /// Default duration: one second.
-    pub const DEFAULT_DURATION_S: f64 = 1.0;
+    pub(crate) const DEFAULT_DURATION_S: f64 = 1.0;
     /// Default phase tolerance: 0.1 rad accumulated over the duration.
-    pub const DEFAULT_PHASE_TOL: f64 = 0.1;
+    pub(crate) const DEFAULT_PHASE_TOL: f64 = 0.1;
     /// Default amplitude tolerance: 1 % over the duration.
-    pub const DEFAULT_AMP_TOL: f64 = 0.01;
+    pub(crate) const DEFAULT_AMP_TOL: f64 = 0.01;
 
     /// Checks the spring's numbers; the error names the bad value and what
     /// was expected.
@@ -81,12 +81,12 @@ impl SpringScene {
     }
 
     /// Φ = 2π·f/tick, radians per tick.
-    pub fn phi(&self) -> f64 {
+    pub(crate) fn phi(&self) -> f64 {
         2.0 * PI * self.freq_hz / self.tick_hz
     }
 
     /// The duration in periods of the spring, f·duration.
-    pub fn periods(&self) -> f64 {
+    pub(crate) fn periods(&self) -> f64 {
         self.freq_hz * self.duration_s
     }
 
@@ -96,14 +96,14 @@ impl SpringScene {
     }
 
     /// The exact spring judged against.
-    pub fn spring(&self) -> Spring {
+    pub(crate) fn spring(&self) -> Spring {
         Spring { damping: self.damping.unwrap_or(0.0) }
     }
 }
 
 /// One method's answer for the spring.
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct MethodAdvice {
+pub(crate) struct MethodAdvice {
     /// The method (damped variants by their base name).
     pub method: String,
     /// Exact Φ_max as text ("none": unbounded at every Φ > 0).
@@ -133,7 +133,7 @@ pub struct MethodAdvice {
 
 /// The single-spring advisor's answer.
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct SpringAdvice {
+pub(crate) struct SpringAdvice {
     /// The spring as given.
     pub scene: SpringScene,
     /// Φ per tick.
@@ -151,7 +151,7 @@ pub struct SpringAdvice {
 /// Advises on `scene` among `candidates`, with each candidate's measured
 /// ns per step from `ns_per_step`; the cheapest is chosen `by` exact
 /// operations per tick or by the ns measured.
-pub fn advise_spring(
+pub(crate) fn advise_spring(
     scene: &SpringScene,
     candidates: &[Candidate],
     by: Rank,

@@ -26,6 +26,5 @@ mod sparse_scene;
 use testkit::snapshot;
 mod stability_cli;
 mod tableau;
-mod tradeoff;
 mod verify_cli;
 mod warnings_cli;

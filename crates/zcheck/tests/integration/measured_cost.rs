@@ -30,20 +30,3 @@ fn tradeoff_ranks_a_user_method_by_measured_cost() {
     }
     std::fs::remove_file(&path).ok();
 }
-
-/// The library call the advisor uses measures any method.
-#[test]
-fn measure_any_method() {
-    let m = poly::Method::parse("x.zm", "method x\nstate y\ny = 2*y - y@1 - Phi^2*y\n").unwrap();
-    let ns = zcheck::tradeoff::measure_ns_per_step(
-        &m,
-        &<check::numeric::Params as check::numeric::ParamsF64>::phi(0.1),
-    )
-    .unwrap();
-    assert!(ns.is_finite() && ns > 0.0);
-    let err = zcheck::tradeoff::measure_ns_per_step(
-        &poly::builtin("damped_euler_d").unwrap(),
-        &<check::numeric::Params as check::numeric::ParamsF64>::phi(0.1),
-    );
-    assert!(err.is_err(), "D has no value");
-}

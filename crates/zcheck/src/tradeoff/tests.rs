@@ -1,4 +1,4 @@
-//! The speed/accuracy trade (`zcheck::tradeoff`): the accuracy model against
+//! The speed/accuracy trade (`crate::tradeoff`): the accuracy model against
 //! the paper's closed forms and B's numeric witnesses, the hand kernels
 //! against the exact transition matrix, the admissible-Φ search against the
 //! exact stability limit, the ranking against its own definition, and the
@@ -8,16 +8,33 @@ use check::numeric::ParamsF64;
 use std::collections::HashMap;
 use std::f64::consts::PI;
 
+use super::accuracy::{SecondOrder, Spring, Target};
+use super::measure::measure_ns_per_step_within;
+use super::rank::{self, TradeRow};
+use super::spring_advisor::{advise_spring, SpringScene};
+use super::{family, kernels, Rank};
+use crate::load::LoadedMethod;
+use crate::tradeoff::family::Candidate;
 use check::numeric::{f64_to_q, q_to_f64, Params, Step};
 use check::witness;
 use poly::{Sym, Q};
-use zcheck::load::LoadedMethod;
-use zcheck::tradeoff::family::Candidate;
-use zcheck::tradeoff::{
-    self, advise_spring, family, kernels, Rank, SecondOrder, Spring, SpringScene, Target, TradeRow,
-};
 
 const EPS: f64 = f64::EPSILON;
+
+/// The seven direct methods applied to a spring with damping ratio `d`.
+fn damped_family(d: &Q) -> Result<Vec<Candidate>, crate::Error> {
+    family::damped_candidates(&LoadedMethod::damped_builtins()?, d)
+}
+
+/// χ of a candidate with its parameters substituted (a polynomial in z and
+/// Φ), derived again from its method.
+fn charpoly(c: &Candidate) -> poly::Poly {
+    let values: HashMap<Sym, Q> = c.params.iter().cloned().collect();
+    poly::advanced::charpoly(&c.method).unwrap().eval_partial(&values)
+}
+
+/// The measurement budget of the tests' timings.
+const BUDGET: std::time::Duration = std::time::Duration::from_millis(3);
 
 fn undamped() -> Vec<Candidate> {
     family::undamped_family().expect("built-ins derive")
@@ -117,7 +134,7 @@ fn small_phi_phase_error_leading_term() {
     // C1's exact series of Ψ to Φ⁷, summed at small Φ, against the model's Ψ.
     let mut checked = 0;
     for c in undamped() {
-        let Ok(series) = poly::advanced::series::psi_series(&c.charpoly, 7) else { continue };
+        let Ok(series) = poly::advanced::series::psi_series(&charpoly(&c), 7) else { continue };
         checked += 1;
         for phi in [1e-3f64, 1e-2, 5e-2] {
             let sum: f64 =
@@ -203,7 +220,7 @@ fn accuracy_of_implicit_methods_matches_eigenvalues_and_closed_forms() {
 fn hand_kernels_follow_their_definitions() {
     let d_value = 0.125; // exact in binary
     let mut cands = undamped();
-    cands.extend(family::damped_family(&f64_to_q(d_value).unwrap()).unwrap());
+    cands.extend(damped_family(&f64_to_q(d_value).unwrap()).unwrap());
     for c in &cands {
         let name = c.hand_kernel.expect("every built-in has a hand kernel");
         for phi in [0.125, 0.75, 1.5] {
@@ -231,9 +248,9 @@ fn hand_kernels_follow_their_definitions() {
 #[test]
 fn damped_family_reduces_to_the_undamped_methods() {
     let zero = f64_to_q(0.0).unwrap();
-    for c in family::damped_family(&zero).unwrap() {
+    for c in damped_family(&zero).unwrap() {
         let base = poly::builtin(&c.display).unwrap();
-        assert_eq!(c.charpoly, poly::advanced::charpoly(&base).unwrap(), "{}", c.name);
+        assert_eq!(charpoly(&c), poly::advanced::charpoly(&base).unwrap(), "{}", c.name);
     }
 }
 
@@ -266,7 +283,7 @@ fn admissible_phi_is_a_sharp_bound_below_phi_max() {
 fn rows(target: &Target) -> Vec<TradeRow> {
     let cands = undamped();
     // Invented but distinct timings: the ranking must follow whatever is measured.
-    tradeoff::trade(&cands, Spring::UNDAMPED, target, Rank::Measured, |c| {
+    rank::trade(&cands, Spring::UNDAMPED, target, Rank::Measured, |c| {
         1.0 + c.cost.program.arithmetic() as f64
     })
 }
@@ -277,7 +294,7 @@ fn rows(target: &Target) -> Vec<TradeRow> {
 #[test]
 fn exact_ranking_ignores_the_timings() {
     let target = Target::DEFAULT;
-    let rows = tradeoff::trade(&undamped(), Spring::UNDAMPED, &target, Rank::Exact, |c| {
+    let rows = rank::trade(&undamped(), Spring::UNDAMPED, &target, Rank::Exact, |c| {
         1e6 - c.cost.program.arithmetic() as f64
     });
     let ranked: Vec<&TradeRow> = rows.iter().filter(|r| r.rank.is_some()).collect();
@@ -352,7 +369,7 @@ fn trade_summary_snapshot() {
         })
         .collect();
     lines.sort();
-    crate::snapshot::in_dir("zcheck")
+    testkit::snapshot::in_dir("zcheck")
         .bind(|| insta::assert_snapshot!("tradeoff_default_target", lines.join("\n")));
 }
 
@@ -369,7 +386,7 @@ fn scene(freq: f64, tick: f64, damping: Option<f64>) -> SpringScene {
 
 fn candidates_for(s: &SpringScene) -> Vec<Candidate> {
     match s.damping {
-        Some(d) => family::damped_family(&f64_to_q(d).unwrap()).unwrap(),
+        Some(d) => damped_family(&f64_to_q(d).unwrap()).unwrap(),
         None => direct_undamped(),
     }
 }
@@ -393,7 +410,7 @@ fn advisor_agrees_with_stability_and_classification() {
         let cands = candidates_for(&s);
         let advice = advise_spring(&s, &cands, Rank::Exact, |_| 1.0).unwrap();
         for (c, m) in cands.iter().zip(&advice.methods) {
-            let report = poly::advanced::stability::analyze(&c.charpoly).unwrap();
+            let report = poly::advanced::stability::analyze(&charpoly(c)).unwrap();
             // χ alone: bounded below Φ_max, or below the point P would decide.
             let below_max = report.phi_max().or(report.undecided_at()).is_some_and(|max| {
                 max.cmp_rational(&f64_to_q(advice.phi).unwrap()) == std::cmp::Ordering::Greater
@@ -401,7 +418,7 @@ fn advisor_agrees_with_stability_and_classification() {
             assert_eq!(m.stable_at_phi, below_max, "{} at {}", c.name, advice.phi);
             let bounded = |phi: f64| {
                 let exact =
-                    poly::advanced::stability::class_at(&c.charpoly, &f64_to_q(phi).unwrap())
+                    poly::advanced::stability::class_at(&charpoly(c), &f64_to_q(phi).unwrap())
                         .unwrap();
                 let numeric = numeric_class(c, phi);
                 assert_eq!(exact.bounded(), numeric.bounded(), "{} at {phi}", c.name);
@@ -475,7 +492,7 @@ fn advisor_120_hz_on_60_hz_tick() {
 fn damped_scene_is_judged_against_the_damped_oscillator() {
     let s = scene(2.0, 60.0, Some(0.1));
     let spring = s.spring();
-    let fe = family::damped_family(&f64_to_q(0.1).unwrap())
+    let fe = damped_family(&f64_to_q(0.1).unwrap())
         .unwrap()
         .into_iter()
         .find(|c| c.display == "false_euler")
@@ -521,7 +538,7 @@ fn model_errors() {
 #[test]
 fn overview_of_the_implicit_builtins() {
     for name in poly::advanced::builtins::IMPLICIT_METHODS {
-        let row = zcheck::overview::summarize(&poly::builtin(name).unwrap(), 5).unwrap();
+        let row = crate::overview::summarize(&poly::builtin(name).unwrap(), 5).unwrap();
         match name {
             "newmark_linear" => assert_eq!(row.phi_max_exact, "2*sqrt(3)"),
             "forest_ruth" => {
@@ -535,10 +552,29 @@ fn overview_of_the_implicit_builtins() {
             assert!(row.solve.0 > 0 && row.solve.0 <= row.mul, "{name}: {:?}", row.solve);
         }
     }
-    let text = zcheck::overview::to_markdown(&[zcheck::overview::summarize(
+    let text = crate::overview::to_markdown(&[crate::overview::summarize(
         &poly::builtin("gauss_legendre_2").unwrap(),
         5,
     )
     .unwrap()]);
     assert!(text.contains("(4 unknowns; LU once per Φ)"), "{text}");
+}
+
+/// The library call the advisor uses measures any method.
+#[test]
+fn measure_any_method() {
+    let m = poly::Method::parse("x.zm", "method x\nstate y\ny = 2*y - y@1 - Phi^2*y\n").unwrap();
+    let ns = measure_ns_per_step_within(
+        &m,
+        &<check::numeric::Params as check::numeric::ParamsF64>::phi(0.1),
+        BUDGET,
+    )
+    .unwrap();
+    assert!(ns.is_finite() && ns > 0.0);
+    let err = measure_ns_per_step_within(
+        &poly::builtin("damped_euler_d").unwrap(),
+        &<check::numeric::Params as check::numeric::ParamsF64>::phi(0.1),
+        BUDGET,
+    );
+    assert!(err.is_err(), "D has no value");
 }
