@@ -208,16 +208,50 @@ fn from_multistep(
     })
 }
 
-/// `zcheck advise --scene FILE --format json`.
+/// `substeps` and `iterations`, both or neither.
+fn config_of(substeps: Option<u64>, iterations: Option<u64>) -> Answer<Option<(u64, u64)>> {
+    match (substeps, iterations) {
+        (Some(s), Some(n)) => Ok(Some((s, n))),
+        (None, None) => Ok(None),
+        _ => Err("substeps= and iterations= go together: give both, or neither for the search"
+            .to_owned()),
+    }
+}
+
+/// `zcheck advise --scene FILE --format json` (with `--solver`, its
+/// configuration, or `--solvers`).
 #[pyfunction]
-fn advise_file(py: Python<'_>, path: PathBuf) -> PyResult<String> {
-    run(py, || json(api::advise_scene_file(&path)))
+#[pyo3(signature = (path, solver=None, substeps=None, iterations=None, solvers=Vec::new()))]
+fn advise_file(
+    py: Python<'_>,
+    path: PathBuf,
+    solver: Option<String>,
+    substeps: Option<u64>,
+    iterations: Option<u64>,
+    solvers: Vec<String>,
+) -> PyResult<String> {
+    run(py, || {
+        let config = config_of(substeps, iterations)?;
+        json(api::advise_scene_file(&path, solver.as_deref(), config, &solvers))
+    })
 }
 
 /// The same, on a scene's TOML text (`name` shown in errors).
 #[pyfunction]
-fn advise_text(py: Python<'_>, name: String, text: String) -> PyResult<String> {
-    run(py, || json(api::advise_scene_text(&name, &text)))
+#[pyo3(signature = (name, text, solver=None, substeps=None, iterations=None, solvers=Vec::new()))]
+fn advise_text(
+    py: Python<'_>,
+    name: String,
+    text: String,
+    solver: Option<String>,
+    substeps: Option<u64>,
+    iterations: Option<u64>,
+    solvers: Vec<String>,
+) -> PyResult<String> {
+    run(py, || {
+        let config = config_of(substeps, iterations)?;
+        json(api::advise_scene_text(&name, &text, solver.as_deref(), config, &solvers))
+    })
 }
 
 /// `zcheck paper --format json`.

@@ -214,3 +214,31 @@ def test_no_panic_reaches_the_interpreter():
         _native._panic_for_test()
     # The interpreter and the engine carry on.
     assert zcheck.Method.builtin("verlet").stability()["phi_max_exact"] == "2"
+
+
+def _without_timings(doc):
+    """The document without the measured ns (the rest is deterministic)."""
+    if isinstance(doc, dict):
+        return {k: _without_timings(v) for k, v in doc.items() if not k.startswith("ns_per")}
+    if isinstance(doc, list):
+        return [_without_timings(v) for v in doc]
+    return doc
+
+
+def test_advise_with_a_solver_is_the_cli_document():
+    path = os.path.join(REPO, "crates", "zcheck", "scenes", "quarter_car.toml")
+    one = zcheck.advise(path, solver="xpbd", substeps=4, iterations=2)
+    assert (one["solver"], one["substeps"], one["iterations"]) == ("xpbd", 4, 2)
+    assert one["cost"] == 4 * 2 * one["constraints"]
+    cli = zcheck_cli(
+        "advise", "--scene", path, "--solver", "xpbd", "--substeps", "4", "--iterations", "2"
+    )
+    assert _without_timings(one) == _without_timings(cli)
+    search = zcheck.advise(path, solver="soft_step")
+    assert "candidates" in search and "recommended" in search
+    table = zcheck.advise(path, solvers=["paper", "xpbd"])
+    assert [r["family"] for r in table["families"]][0] == table["recommended"]["family"]
+    with pytest.raises(zcheck.Error, match="substeps= and iterations= go together"):
+        zcheck.advise(path, solver="xpbd", substeps=4)
+    with pytest.raises(zcheck.Error, match="--solver nope: unknown solver"):
+        zcheck.advise(path, solver="nope")

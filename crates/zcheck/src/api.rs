@@ -140,18 +140,37 @@ pub fn map(
 }
 
 /// `zcheck advise --scene FILE --format json`, the prediction checked by
-/// simulation.
-pub fn advise_scene_file(path: &Path) -> Result<Value, Error> {
-    advise(&SceneFile::load(path)?)
+/// simulation; with `solver` (`xpbd`, `xpbd_jacobi`, `soft_step`),
+/// `--solver`'s document: the configuration `(substeps, iterations)`, or
+/// without one the search; with `families` (`paper`, and solver names),
+/// `--solvers`' table.
+pub fn advise_scene_file(
+    path: &Path,
+    solver: Option<&str>,
+    config: Option<(u64, u64)>,
+    families: &[String],
+) -> Result<Value, Error> {
+    advise(&SceneFile::load(path)?, solver, config, families)
 }
 
 /// [`advise_scene_file`] on the text of a scene file, named `name` in
 /// errors.
-pub fn advise_scene_text(name: &str, text: &str) -> Result<Value, Error> {
-    advise(&SceneFile::parse(name, text)?)
+pub fn advise_scene_text(
+    name: &str,
+    text: &str,
+    solver: Option<&str>,
+    config: Option<(u64, u64)>,
+    families: &[String],
+) -> Result<Value, Error> {
+    advise(&SceneFile::parse(name, text)?, solver, config, families)
 }
 
-fn advise(scene: &SceneFile) -> Result<Value, Error> {
+fn advise(
+    scene: &SceneFile,
+    solver: Option<&str>,
+    config: Option<(u64, u64)>,
+    families: &[String],
+) -> Result<Value, Error> {
     let options = Options {
         simulate: true,
         simulate_all: false,
@@ -159,7 +178,26 @@ fn advise(scene: &SceneFile) -> Result<Value, Error> {
         route: Default::default(),
         rank: Default::default(),
     };
-    Ok(serde_json::to_value(crate::answers::advice::scene_advice(scene, &[], options)?)?)
+    if !families.is_empty() {
+        if solver.is_some() || config.is_some() {
+            return Err(Error::usage("solvers= compares families: give it without solver="));
+        }
+        let families = crate::answers::families::parse_families(families)?;
+        let table = crate::answers::families::family_table(scene, &families, &[], options)?;
+        return Ok(serde_json::to_value(table)?);
+    }
+    match solver {
+        Some(word) => {
+            let solver = crate::scene::solvers::Solver::parse(word)?;
+            Ok(serde_json::to_value(crate::scene::solvers::solver_advice(scene, solver, config)?)?)
+        }
+        None if config.is_some() => {
+            Err(Error::usage("substeps= and iterations= configure a solver: give solver= too"))
+        }
+        None => {
+            Ok(serde_json::to_value(crate::answers::advice::scene_advice(scene, &[], options)?)?)
+        }
+    }
 }
 
 /// `zcheck paper --format json`: the claims, the summary and the overview.

@@ -362,14 +362,24 @@ def map(method, phi=None, grid=40, samples=200, **params):
     return doc
 
 
-def advise(scene):
+def advise(scene, solver=None, substeps=None, iterations=None, solvers=None):
     """``zcheck advise --scene``: the method and substeps per tick for a
     scene of masses and springs (or modes), checked by simulation.
     ``scene`` is the TOML text (any str holding a newline or ``=``) or the
-    path of a scene file."""
+    path of a scene file.
+
+    With ``solver`` (``"xpbd"``, ``"xpbd_jacobi"`` or ``"soft_step"``), the
+    document of ``--solver``: one configuration with ``substeps`` and
+    ``iterations``, or without them the search. With ``solvers`` (a list of
+    ``"paper"`` and solver names), the table of ``--solvers``."""
+    families = list(solvers or [])
     if isinstance(scene, str) and ("\n" in scene or "=" in scene):
-        return _parse(_native.advise_text("<scene>", scene))
-    return _parse(_native.advise_file(_os.fspath(scene)))
+        return _parse(
+            _native.advise_text("<scene>", scene, solver, substeps, iterations, families)
+        )
+    return _parse(
+        _native.advise_file(_os.fspath(scene), solver, substeps, iterations, families)
+    )
 
 
 def paper():

@@ -86,7 +86,13 @@ def map(
 ) -> Document:
     """`zcheck map --format json`, its grid as numpy arrays."""
 
-def advise(scene: Union[str, "os.PathLike[str]"]) -> Document:
+def advise(
+    scene: Union[str, "os.PathLike[str]"],
+    solver: Optional[str] = ...,
+    substeps: Optional[int] = ...,
+    iterations: Optional[int] = ...,
+    solvers: Optional[Sequence[str]] = ...,
+) -> Document:
     """`zcheck advise --scene`, on TOML text or a path."""
 
 def paper() -> List[Document]:

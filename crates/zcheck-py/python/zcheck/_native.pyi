@@ -1,7 +1,7 @@
 """Type stubs of zcheck's Rust half (import zcheck, not this module)."""
 
 import os
-from typing import List, Optional, Union
+from typing import List, Optional, Sequence, Union
 
 class Error(ValueError): ...
 
@@ -28,7 +28,20 @@ def from_tableau(
     bhat: Optional[List[str]] = None,
 ) -> NativeMethod: ...
 def from_multistep(name: str, alpha: List[str], beta: List[str]) -> NativeMethod: ...
-def advise_file(path: Union[str, "os.PathLike[str]"]) -> str: ...
-def advise_text(name: str, text: str) -> str: ...
+def advise_file(
+    path: Union[str, "os.PathLike[str]"],
+    solver: Optional[str] = ...,
+    substeps: Optional[int] = ...,
+    iterations: Optional[int] = ...,
+    solvers: Sequence[str] = ...,
+) -> str: ...
+def advise_text(
+    name: str,
+    text: str,
+    solver: Optional[str] = ...,
+    substeps: Optional[int] = ...,
+    iterations: Optional[int] = ...,
+    solvers: Sequence[str] = ...,
+) -> str: ...
 def paper() -> str: ...
 def _panic_for_test() -> None: ...

@@ -9,6 +9,15 @@ use crate::scene::file::SceneFile;
 use crate::scene::modal::{self, Modal, Shapes};
 use crate::tradeoff::spring_advisor::SpringAdvice;
 
+/// "1 degree of freedom", "n degrees of freedom".
+pub(crate) fn dof_phrase(n: usize) -> String {
+    if n == 1 {
+        "1 degree of freedom".to_owned()
+    } else {
+        format!("{n} degrees of freedom")
+    }
+}
+
 /// `zcheck advise --freq --tick` as JSON: the one-spring advice, plus the
 /// whole-scene advisor's keys for the same spring as a one-mode scene.
 #[derive(serde::Serialize)]
@@ -153,8 +162,8 @@ pub(crate) fn scene_advice(
 /// The scene advice as text: the modes that matter, a table, a sentence.
 pub(crate) fn scene_text(name: &str, a: &advisor::SceneAdvice) -> String {
     let mut out = format!(
-        "scene {name}: {} degrees of freedom, {} modes ({} zero-frequency (rigid) left out: they need no substeps), damping {}\n",
-        a.dof,
+        "scene {name}: {}, {} modes ({} zero-frequency (rigid) left out: they need no substeps), damping {}\n",
+        dof_phrase(a.dof),
         a.modes.iter().filter(|m| !m.sampled).count(),
         a.rigid_modes,
         match a.damping {
@@ -334,8 +343,8 @@ pub(crate) fn scene_text(name: &str, a: &advisor::SceneAdvice) -> String {
 pub(crate) fn solver_text(name: &str, a: &crate::scene::solvers::SolverAdvice) -> String {
     use crate::scene::solvers::{Answer, ConfigAdvice};
     let mut out = format!(
-        "scene {name}: {} degrees of freedom, {} constraints; tick {} Hz, {} s; target: phase <= {} rad, amplitude <= {}\n",
-        a.dof, a.constraints, a.tick_hz, a.duration_s, a.phase_rad, a.amplitude
+        "scene {name}: {}, {} constraints; tick {} Hz, {} s; target: phase <= {} rad, amplitude <= {}\n",
+        dof_phrase(a.dof), a.constraints, a.tick_hz, a.duration_s, a.phase_rad, a.amplitude
     );
     let one = |c: &ConfigAdvice| {
         let mut t = format!(

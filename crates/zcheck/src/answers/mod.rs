@@ -13,6 +13,7 @@ pub(crate) mod advice;
 pub(crate) mod derive;
 pub(crate) mod equiv;
 pub(crate) mod exact;
+pub(crate) mod families;
 pub(crate) mod order;
 pub(crate) mod plane;
 pub(crate) mod region;

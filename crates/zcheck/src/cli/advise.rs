@@ -69,6 +69,12 @@ pub(crate) struct Args {
     /// iterations. Its JSON is a document of its own (README).
     #[arg(long, requires = "scene")]
     pub solver: Option<String>,
+    /// Families side by side on the scene, each at its cheapest passing
+    /// configuration, ranked by exact operations per tick: `paper` (the
+    /// force-based methods, or --methods), `xpbd`, `xpbd_jacobi`,
+    /// `soft_step` (comma-separated).
+    #[arg(long, value_delimiter = ',', requires = "scene", conflicts_with = "solver")]
+    pub solvers: Vec<String>,
     /// Substeps per tick for --solver (with --iterations).
     #[arg(long, requires = "solver", requires = "iterations")]
     pub substeps: Option<u64>,
@@ -214,6 +220,27 @@ fn run_scene(path: &std::path::Path, args: &Args) -> Result<ExitCode, Error> {
             "--duration, --phase-tol and --amp-tol belong in the scene file with --scene \
              (duration_s, [accuracy])",
         ));
+    }
+    if !args.solvers.is_empty() {
+        let families = crate::answers::families::parse_families(&args.solvers)?;
+        let options = Options {
+            simulate: !args.no_simulate,
+            simulate_all: args.simulate_all,
+            gauss_seidel: false,
+            route: args.spectrum,
+            rank: Rank::Exact,
+        };
+        crate::interrupt::install();
+        let table =
+            crate::answers::families::family_table(&scene, &families, &args.methods, options)?;
+        match args.format {
+            Format::Json => super::output::emitln(&serde_json::to_string_pretty(&table)?)?,
+            _ => super::output::emit(&crate::answers::families::family_text(
+                &path.display().to_string(),
+                &table,
+            ))?,
+        }
+        return Ok(ExitCode::SUCCESS);
     }
     if let Some(word) = &args.solver {
         let solver = crate::scene::solvers::Solver::parse(word)?;

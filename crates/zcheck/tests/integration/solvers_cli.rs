@@ -119,3 +119,64 @@ fn bad_solver_flags_are_clean_errors() {
         assert!(!err.contains("panicked"), "{err}");
     }
 }
+
+/// `--solvers`: one row per family, ranked by the exact operations per
+/// tick (recomputed here from the rows' own fields, ties by name), the
+/// recommendation the first ranked row; a family with no passing
+/// configuration is unranked and says why; the table's solver rows are the
+/// searches' own recommendations. Bad lists are clean errors naming the flag.
+#[test]
+fn families_side_by_side() {
+    // rope2d with a looser amplitude target, so XPBD passes too.
+    let text = std::fs::read_to_string(scene("rope2d.toml"))
+        .unwrap()
+        .replace("amplitude = 0.05", "amplitude = 0.5");
+    let path = std::env::temp_dir().join(format!("zcheck-families-{}.toml", std::process::id()));
+    std::fs::write(&path, text).unwrap();
+    let p = path.to_str().unwrap();
+    let (code, out, err) =
+        zcheck(&["advise", "--scene", p, "--solvers", "paper,xpbd,soft_step", "--format", "json"]);
+    assert_eq!(code, 0, "{err}");
+    let v: Value = serde_json::from_str(&out).expect("JSON");
+    let rows = v["families"].as_array().unwrap();
+    assert_eq!(rows.len(), 3);
+    let mut ranked: Vec<(u64, String)> = rows
+        .iter()
+        .filter(|r| !r["ops_per_tick"].is_null())
+        .map(|r| (r["ops_per_tick"].as_u64().unwrap(), r["family"].as_str().unwrap().to_owned()))
+        .collect();
+    assert!(ranked.len() >= 2, "paper and xpbd both pass: {v}");
+    ranked.sort();
+    for (k, (_, family)) in ranked.iter().enumerate() {
+        let row = rows.iter().find(|r| r["family"] == family.as_str()).unwrap();
+        assert_eq!(row["rank"].as_u64(), Some(k as u64 + 1), "{family}");
+        assert!(row["ns_per_tick"].as_f64().is_some_and(|x| x > 0.0), "{row}");
+    }
+    assert_eq!(v["recommended"]["family"], ranked[0].1.as_str());
+    for r in rows.iter().filter(|r| r["rank"].is_null()) {
+        assert!(r["reason"].as_str().is_some_and(|s| !s.is_empty()), "{r}");
+    }
+    // The xpbd row is the search's recommendation, with its exact count.
+    let (code, out, err) =
+        zcheck(&["advise", "--scene", p, "--solver", "xpbd", "--format", "json"]);
+    assert_eq!(code, 0, "{err}");
+    let search: Value = serde_json::from_str(&out).unwrap();
+    let row = rows.iter().find(|r| r["family"] == "xpbd").unwrap();
+    assert_eq!(row["substeps"], search["recommended"]["substeps"]);
+    assert_eq!(row["iterations"], search["recommended"]["iterations"]);
+    assert_eq!(row["ops_per_tick"], search["analysis"]["ops_per_tick"]);
+    // The text has the table and the recommendation.
+    let (code, out, _) = zcheck(&["advise", "--scene", p, "--solvers", "paper,xpbd"]);
+    assert_eq!(code, 0);
+    assert!(out.contains("ops/tick") && out.contains("recommended: "), "{out}");
+    std::fs::remove_file(&path).ok();
+    for (list, want) in [
+        ("paper,nope", "--solvers nope: unknown family"),
+        ("xpbd,xpbd", "--solvers: xpbd is listed twice"),
+    ] {
+        let (code, _, err) =
+            zcheck(&["advise", "--scene", &scene("chain10.toml"), "--solvers", list]);
+        assert_eq!(code, 2, "{list}");
+        assert!(err.contains(want), "{list}: {err}");
+    }
+}

@@ -223,6 +223,13 @@ pub(crate) struct ConfigAdvice {
     pub amplitude_error: f64,
     /// Constraint projections per tick, S·N·(constraints).
     pub cost: u64,
+    /// Exact arithmetic operations per tick: the substep kernel's count on
+    /// this scene (`kernel::ops_per_substep`) times S. The same on every
+    /// machine; what `--solvers` ranks families by.
+    pub ops_per_tick: u64,
+    /// Measured ns per tick on this machine (a full analysis only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub ns_per_tick: Option<f64>,
     /// Rigid modes deflated (dim null J).
     pub rigid_modes: usize,
     /// Every non-rigid mode, increasing frequency.
@@ -340,7 +347,9 @@ pub(crate) fn analyse(
     let mut certified = verdict.as_ref().is_some_and(|v| v.bounded.is_some());
     let mut norm_bound = None;
     let mut simulation = None;
+    let mut ns_per_tick = None;
     if depth == Depth::Full {
+        ns_per_tick = Some(kernel::ns_per_tick(&sub, s, std::time::Duration::from_millis(3)));
         if !certified && rho_nr < 1.0 {
             norm_bound = certify(&d, s);
             certified = norm_bound.is_some();
@@ -365,6 +374,8 @@ pub(crate) fn analyse(
         phase_error_rad: phase,
         amplitude_error: amp,
         cost: model.cost(config),
+        ops_per_tick: kernel::ops_per_substep(model, config, prep.tick_hz).saturating_mul(s),
+        ns_per_tick,
         rigid_modes: prep.rigid,
         modes,
         pairing: PAIRING,

@@ -337,6 +337,92 @@ pub(crate) fn simulate(sub: &Substep<f64>, substeps: u64, ticks: u64, state: &mu
     }
 }
 
+thread_local! {
+    /// The operations [`Counted`] has performed on this thread.
+    static OPS: std::cell::Cell<u64> = const { std::cell::Cell::new(0) };
+}
+
+/// An f64 that counts its arithmetic: the substep kernel run once in it
+/// counts the kernel's own operations (additions, subtractions,
+/// multiplications, divisions), exactly as written, on the scene's
+/// structure. Zero tests and constants are free.
+#[derive(Clone, Debug)]
+pub(crate) struct Counted(f64);
+
+impl Counted {
+    fn op(v: f64) -> Counted {
+        OPS.with(|c| c.set(c.get() + 1));
+        Counted(v)
+    }
+}
+
+impl Field for Counted {
+    fn zero() -> Counted {
+        Counted(0.0)
+    }
+    fn int(n: u64) -> Counted {
+        Counted(n as f64)
+    }
+    fn add(&self, o: &Counted) -> Counted {
+        Counted::op(self.0 + o.0)
+    }
+    fn sub(&self, o: &Counted) -> Counted {
+        Counted::op(self.0 - o.0)
+    }
+    fn mul(&self, o: &Counted) -> Counted {
+        Counted::op(self.0 * o.0)
+    }
+    fn div(&self, o: &Counted) -> Counted {
+        Counted::op(self.0 / o.0)
+    }
+    fn is_zero(&self) -> bool {
+        self.0 == 0.0
+    }
+}
+
+/// The arithmetic operations of one substep of `config` on `model`: the
+/// kernel's own count (the coefficients computed once per configuration
+/// are not counted). It depends on the scene's structure and the
+/// configuration only, so it is the same on every machine.
+pub(crate) fn ops_per_substep(model: &Model, config: &Config, tick_hz: f64) -> u64 {
+    let conv = Convert { physical: &Counted, geometric: &Counted };
+    let sub = Substep::<Counted>::new(model, config, tick_hz, &conv);
+    let mut state = vec![Counted(1.0); sub.state_len()];
+    OPS.with(|c| c.set(0));
+    sub.apply(&mut state);
+    OPS.with(|c| c.replace(0))
+}
+
+/// Measured ns per tick (`substeps` substeps of `sub`) on this machine: the
+/// best of repeated runs within about `budget`, the state renormalised
+/// between runs so it neither overflows nor underflows.
+pub(crate) fn ns_per_tick(sub: &Substep<f64>, substeps: u64, budget: std::time::Duration) -> f64 {
+    use std::hint::black_box;
+    use std::time::Instant;
+    let mut state = vec![1.0; sub.state_len()];
+    let start = Instant::now();
+    let mut best = f64::INFINITY;
+    let mut ticks = 1u64;
+    loop {
+        let t = Instant::now();
+        simulate(sub, substeps, ticks, black_box(&mut state));
+        let ns = t.elapsed().as_nanos() as f64 / ticks as f64;
+        best = best.min(ns);
+        let scale = state.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        if scale.is_finite() && scale > 0.0 {
+            state.iter_mut().for_each(|x| *x /= scale);
+        } else {
+            state.iter_mut().for_each(|x| *x = 1.0);
+        }
+        if start.elapsed() >= budget {
+            return best;
+        }
+        if ns * (ticks as f64) < 2e5 {
+            ticks *= 2;
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -39,6 +39,8 @@ pub(crate) struct Candidate {
     pub meets_accuracy: bool,
     /// Constraint projections per tick.
     pub cost: u64,
+    /// Exact arithmetic operations per tick (the kernel's count × S).
+    pub ops_per_tick: u64,
     /// Largest phase error over the duration, rad.
     pub phase_error_rad: f64,
     /// Largest relative amplitude error over the duration.
@@ -176,6 +178,7 @@ pub(crate) fn search(
                     stable: a.stable,
                     meets_accuracy: a.meets_accuracy,
                     cost: a.cost,
+                    ops_per_tick: a.ops_per_tick,
                     phase_error_rad: a.phase_error_rad,
                     amplitude_error: a.amplitude_error,
                 },
