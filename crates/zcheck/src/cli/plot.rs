@@ -21,7 +21,9 @@ use check::witness::ExactCharpoly;
 pub(crate) struct Args {
     /// What to draw: `yt` (one file per method plus `yt_all.svg`), `zplane`,
     /// `spectral-radius` (`spectral_radius.svg`), `period` (`period.svg`:
-    /// period elongation and algorithmic damping), or `all`.
+    /// period elongation and algorithmic damping), `all`, or `solvers`
+    /// (`solvers.svg`, with --scene: the game-engine solvers' phase and
+    /// amplitude error against cost over substeps x iterations).
     #[arg(value_enum)]
     what: What,
     /// The directory to write into (created if missing).
@@ -45,6 +47,13 @@ pub(crate) struct Args {
     /// it; repeatable.
     #[arg(long = "param", value_name = "NAME=VALUE", allow_hyphen_values = true)]
     params: Vec<ParamArg>,
+    /// The scene of `plot solvers` (TOML: masses and springs).
+    #[arg(long)]
+    scene: Option<PathBuf>,
+    /// The solvers of `plot solvers` (comma-separated); default: xpbd,
+    /// xpbd_jacobi, soft_step.
+    #[arg(long, value_delimiter = ',')]
+    solvers: Vec<String>,
 }
 
 #[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -54,9 +63,16 @@ enum What {
     SpectralRadius,
     Period,
     All,
+    Solvers,
 }
 
 pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
+    if args.what == What::Solvers {
+        return solvers(&args);
+    }
+    if args.scene.is_some() || !args.solvers.is_empty() {
+        return Err(Error::usage("--scene and --solvers belong to `zcheck plot solvers`"));
+    }
     if !(args.phi > 0.0 && args.phi.is_finite()) {
         return Err(Error::usage(format!("--phi {}: expected a positive number", args.phi)));
     }
@@ -172,5 +188,46 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     }
     let list: String = written.iter().map(|p| format!("{}\n", p.display())).collect();
     super::output::emit(&list)?;
+    Ok(ExitCode::SUCCESS)
+}
+
+/// `zcheck plot solvers --scene FILE --out DIR`: the figure, then the
+/// small-steps comparison in words.
+fn solvers(args: &Args) -> Result<ExitCode, Error> {
+    use crate::scene::solvers::{figure, Solver};
+    let Some(path) = &args.scene else {
+        return Err(Error::usage("plot solvers: expected --scene FILE"));
+    };
+    if !args.methods.is_empty() || !args.params.is_empty() {
+        return Err(Error::usage("plot solvers: --methods and --param are the method figures'"));
+    }
+    let solvers: Vec<Solver> = if args.solvers.is_empty() {
+        vec![Solver::Xpbd, Solver::XpbdJacobi, Solver::SoftStep]
+    } else {
+        args.solvers.iter().map(|w| Solver::parse(w.trim())).collect::<Result<_, _>>()?
+    };
+    let scene = crate::scene::file::SceneFile::load(path)?;
+    crate::interrupt::install();
+    let all = figure::points(&scene, &solvers)?;
+    std::fs::create_dir_all(&args.out)
+        .map_err(|e| Error::io(format!("{}: cannot create", args.out.display()), e))?;
+    let written = figure::draw(&args.out, &path.display().to_string(), &all)?;
+    let mut text = format!("{}\n", written.display());
+    let word = |b: bool| if b { "holds" } else { "fails" };
+    for s in &all {
+        for c in figure::small_steps(&s.points) {
+            text += &format!(
+                "small steps ({}): S x N = {:2}: {} substeps x 1 against 1 substep x {} iterations: \
+                 phase {}, amplitude {}\n",
+                s.solver.name(),
+                c.units,
+                c.units,
+                c.units,
+                word(c.phase_holds),
+                word(c.amplitude_holds)
+            );
+        }
+    }
+    super::output::emit(&text)?;
     Ok(ExitCode::SUCCESS)
 }

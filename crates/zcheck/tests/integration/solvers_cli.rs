@@ -180,3 +180,76 @@ fn families_side_by_side() {
         assert!(err.contains(want), "{list}: {err}");
     }
 }
+
+/// `zcheck plot solvers`: the SVG is written with a line per solver and
+/// iteration count, and each small-steps verdict it prints is the
+/// comparison of the two configurations' own documents (`advise --solver
+/// --substeps --iterations`): phase by the phase error, amplitude by the
+/// amplitude error and then the damping-ratio gap.
+#[test]
+fn plot_solvers_and_the_small_steps_verdicts() {
+    let dir = std::env::temp_dir().join(format!("zcheck-plot-solvers-{}", std::process::id()));
+    let d = dir.to_str().unwrap();
+    let quarter = scene("quarter_car.toml");
+    let (code, out, err) =
+        zcheck(&["plot", "solvers", "--scene", &quarter, "--out", d, "--solvers", "xpbd"]);
+    assert_eq!(code, 0, "{err}");
+    let svg = std::fs::read_to_string(dir.join("solvers.svg")).unwrap();
+    assert!(svg.starts_with("<svg") && svg.contains("xpbd N = 1") && svg.contains("xpbd N = 16"));
+    let doc = |s: u64, n: u64| -> Value {
+        let (code, out, err) = zcheck(&[
+            "advise",
+            "--scene",
+            &quarter,
+            "--solver",
+            "xpbd",
+            "--substeps",
+            &s.to_string(),
+            "--iterations",
+            &n.to_string(),
+            "--format",
+            "json",
+        ]);
+        assert_eq!(code, 0, "{err}");
+        serde_json::from_str(&out).unwrap()
+    };
+    let gap = |v: &Value| {
+        v["modes"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .filter(|m| m["in_band"] == true)
+            .map(|m| (m["effective_ratio"].as_f64().unwrap() - m["ratio"].as_f64().unwrap()).abs())
+            .fold(0.0, f64::max)
+    };
+    let mut checked = 0;
+    for k in [2u64, 4, 8, 16] {
+        let (small, iter) = (doc(k, 1), doc(1, k));
+        let f = |v: &Value, key: &str| v[key].as_f64().unwrap();
+        let stable = |v: &Value| v["stable"] == true;
+        let phase = stable(&small)
+            && (!stable(&iter) || f(&small, "phase_error_rad") < f(&iter, "phase_error_rad"));
+        let amp = stable(&small)
+            && (!stable(&iter)
+                || (f(&small, "amplitude_error"), gap(&small))
+                    < (f(&iter, "amplitude_error"), gap(&iter)));
+        let word = |b: bool| if b { "holds" } else { "fails" };
+        let line = format!(
+            "small steps (xpbd): S x N = {k:2}: {k} substeps x 1 against 1 substep x {k} iterations: \
+             phase {}, amplitude {}",
+            word(phase),
+            word(amp)
+        );
+        assert!(out.contains(&line), "expected {line:?} in\n{out}");
+        checked += 1;
+    }
+    assert_eq!(checked, 4);
+    let _ = std::fs::remove_dir_all(&dir);
+    let (code, _, err) = zcheck(&["plot", "solvers", "--out", d]);
+    assert_eq!(code, 2);
+    assert!(err.contains("expected --scene FILE"), "{err}");
+    let (code, _, err) =
+        zcheck(&["plot", "solvers", "--scene", &quarter, "--out", d, "--solvers", "pbd"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("--solver pbd: unknown solver"), "{err}");
+}

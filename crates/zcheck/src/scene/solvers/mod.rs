@@ -15,11 +15,13 @@
 //! classes; the exact null space of the constraint Jacobian), `dense`
 //! (faer linear algebra and the pairing assignment), `analysis` (one
 //! configuration), `search` (the search and the entry
-//! [`solver_advice`]).
+//! [`solver_advice`]), `figure` (`zcheck plot solvers`: error against cost
+//! over (S, N), and the small-steps comparison).
 
 mod analysis;
 mod dense;
 mod exact;
+pub(crate) mod figure;
 mod kernel;
 mod model;
 mod search;

@@ -81,9 +81,7 @@ pub(crate) struct Config {
 
 impl Config {
     /// A configuration, checked: S ≥ 1, N ≥ 1, N = 1 for the soft step, a
-    /// relaxation factor in (0, 2). Errors name the flag. (The tests' door;
-    /// the command line passes its relaxation factor.)
-    #[cfg(test)]
+    /// relaxation factor in (0, 2). Errors name the flag.
     pub(crate) fn new(solver: Solver, substeps: u64, iterations: u64) -> Result<Config, Error> {
         Config::with_relaxation(solver, substeps, iterations, 1.0)
     }
