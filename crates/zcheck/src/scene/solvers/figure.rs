@@ -22,6 +22,9 @@ const SUBSTEPS: [u64; 7] = [1, 2, 4, 8, 16, 32, 64];
 /// The iteration counts, one line each (1 only for the soft step).
 const ITERATIONS: [u64; 5] = [1, 2, 4, 8, 16];
 
+/// What a panel draws of a point.
+type Measure = fn(&Point) -> f64;
+
 /// One configuration's point.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct Point {
@@ -163,7 +166,7 @@ pub(crate) fn draw(
         )
         .map_err(|e| err(&e))?;
     let panels = root.split_evenly((1, 2));
-    let which: [(&str, fn(&Point) -> f64); 2] =
+    let which: [(&str, Measure); 2] =
         [("phase error [rad]", |p| p.phase), ("relative amplitude error", |p| p.amplitude)];
     for (area, (label, f)) in panels.iter().zip(which) {
         let (ylo, yhi) = range(f);
