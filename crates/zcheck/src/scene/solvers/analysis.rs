@@ -90,13 +90,8 @@ impl Prepared {
                 "no spring of the scene moves a free mass: nothing for a solver to project",
             ));
         }
-        if model.state_len(Solver::SoftStep) > DENSE_MAX_STATE {
-            return Err(Error::unsupported(format!(
-                "the scene has {} free degrees of freedom and {} constraints: the solver analysis takes \
-                 states of at most {DENSE_MAX_STATE} (2 x DOF, plus one impulse per joint)",
-                model.n(),
-                model.m()
-            )));
+        if model.state_len(Solver::Xpbd) > DENSE_MAX_STATE {
+            return Err(too_large(&model, 2 * model.n()));
         }
         let n = model.n();
         let basis = exact::null_basis(&model);
@@ -106,27 +101,12 @@ impl Prepared {
                 basis.iter().map(|v| v.iter().map(check::numeric::q_to_f64).collect()).collect();
             dense::complement(&f, n)
         });
-        // The continuous system, deflated.
         let (k, c) = model.stiffness_damping();
-        let a = Mat::<f64>::from_fn(2 * n, 2 * n, |i, j| match (i < n, j < n) {
-            (true, true) => 0.0,
-            (true, false) => f64::from(u8::from(j - n == i)),
-            (false, true) => -k[(i - n) * n + j] * model.w[i - n],
-            (false, false) => -c[(i - n) * n + (j - n)] * model.w[i - n],
-        });
-        let a = match &rperp {
-            Some(r) => dense::project(&a, &dense::block_complement(r, 0)),
-            None => a,
+        let lambdas = if c.iter().all(|&x| x == 0.0) {
+            undamped_lambdas(&k, &model.w, rigid)?
+        } else {
+            general_lambdas(&k, &c, &model.w, rperp.as_ref())?
         };
-        let all = dense::eigenvalues(&a)?;
-        let scale = all.iter().map(|z| z.norm()).fold(0.0, f64::max);
-        let tol = 1e-10 * scale.max(f64::MIN_POSITIVE);
-        let mut lambdas: Vec<C64> = all
-            .into_iter()
-            .filter(|z| z.im > -tol)
-            .map(|z| if z.im.abs() <= tol { C64::new(z.re, 0.0) } else { z })
-            .collect();
-        lambdas.sort_by(|x, y| x.norm().total_cmp(&y.norm()));
         Ok(Prepared {
             model,
             tick_hz: scene.tick_hz,
@@ -149,6 +129,64 @@ impl Prepared {
     fn in_band(&self, l: C64) -> bool {
         self.max_hz.is_none_or(|f| l.norm() / (2.0 * std::f64::consts::PI) <= f)
     }
+}
+
+/// The error of a scene past the dense route's size.
+fn too_large(model: &Model, state: usize) -> Error {
+    Error::unsupported(format!(
+        "the scene has {} free degrees of freedom and {} constraints: the solver's state has {state} \
+         entries, and the dense analysis takes at most {DENSE_MAX_STATE} (2 x DOF, plus one impulse \
+         per joint for soft_step)",
+        model.n(),
+        model.m()
+    ))
+}
+
+/// The true non-rigid eigenvalues of an undamped scene: λ = i·√μ for the
+/// eigenvalues μ of the symmetric W^½ K W^½ (W the inverse masses), the
+/// `rigid` smallest (zero: null K = null J) left out. An n × n symmetric
+/// problem in place of the 2n × 2n general one.
+pub(crate) fn undamped_lambdas(k: &[f64], w: &[f64], rigid: usize) -> Result<Vec<C64>, Error> {
+    let n = w.len();
+    let sw: Vec<f64> = w.iter().map(|x| x.sqrt()).collect();
+    let a = Mat::<f64>::from_fn(n, n, |i, j| sw[i] * k[i * n + j] * sw[j]);
+    let mut mu = a.self_adjoint_eigenvalues(faer::Side::Lower).map_err(|e| {
+        Error::numeric(format!("the eigenvalues of the scene's stiffness did not converge: {e:?}"))
+    })?;
+    mu.sort_by(f64::total_cmp);
+    Ok(mu.into_iter().skip(rigid).map(|m| C64::new(0.0, m.max(0.0).sqrt())).collect())
+}
+
+/// The true non-rigid eigenvalues with Im λ ≥ 0 of ẋ = v,
+/// v̇ = −W(Kx + Cv), from the 2n × 2n first-order system deflated by
+/// `rperp`, increasing |λ|.
+pub(crate) fn general_lambdas(
+    k: &[f64],
+    c: &[f64],
+    w: &[f64],
+    rperp: Option<&Mat<f64>>,
+) -> Result<Vec<C64>, Error> {
+    let n = w.len();
+    let a = Mat::<f64>::from_fn(2 * n, 2 * n, |i, j| match (i < n, j < n) {
+        (true, true) => 0.0,
+        (true, false) => f64::from(u8::from(j - n == i)),
+        (false, true) => -k[(i - n) * n + j] * w[i - n],
+        (false, false) => -c[(i - n) * n + (j - n)] * w[i - n],
+    });
+    let a = match rperp {
+        Some(r) => dense::project(&a, &dense::block_complement(r, 0)),
+        None => a,
+    };
+    let all = dense::eigenvalues(&a)?;
+    let scale = all.iter().map(|z| z.norm()).fold(0.0, f64::max);
+    let tol = 1e-10 * scale.max(f64::MIN_POSITIVE);
+    let mut lambdas: Vec<C64> = all
+        .into_iter()
+        .filter(|z| z.im > -tol)
+        .map(|z| if z.im.abs() <= tol { C64::new(z.re, 0.0) } else { z })
+        .collect();
+    lambdas.sort_by(|x, y| x.norm().total_cmp(&y.norm()));
+    Ok(lambdas)
 }
 
 /// The spectral radius of the tick map.
@@ -258,6 +296,9 @@ pub(crate) fn analyse(
 ) -> Result<ConfigAdvice, Error> {
     let model = &prep.model;
     let s = config.substeps;
+    if model.state_len(config.solver) > DENSE_MAX_STATE {
+        return Err(too_large(model, model.state_len(config.solver)));
+    }
     let sub = kernel::substep_f64(model, config, prep.tick_hz);
     // In the scaled state (x, h·v, h·Σw·impulse), where every entry of the
     // map is of order one: a similarity, so the same eigenvalues, and the
@@ -354,7 +395,10 @@ pub(crate) fn analyse(
             norm_bound = certify(&d, s);
             certified = norm_bound.is_some();
         }
-        simulation = Some(simulation_check(&sub, &p, &scale, s, prep.ticks().min(120.0) as u64));
+        let len = p.nrows() as f64;
+        let affordable = (CHECK_FLOPS / (2.0 * len * len * s as f64)) as u64;
+        let ticks = (prep.ticks().min(120.0) as u64).min(affordable.max(MIN_CHECK_TICKS));
+        simulation = Some(simulation_check(&sub, &p, &scale, s, ticks));
     }
     Ok(ConfigAdvice {
         solver: config.solver,
@@ -385,20 +429,39 @@ pub(crate) fn analyse(
 
 /// A norm bound on the deflated tick map T = D^S: the smallest
 /// ‖T^{2^j}‖_∞^{1/2^j} over j ≤ 8 when it is below 1 − 10⁻⁹ (far above the
-/// rounding of the products), else `None`.
+/// rounding of the products), else `None`. The matrix products are capped
+/// at about [`CERTIFY_FLOPS`] of work, so a large map tries fewer powers and
+/// stays uncertified sooner.
 fn certify(d: &Mat<f64>, s: u64) -> Option<f64> {
+    let n = d.nrows().max(1) as f64;
+    let budget = ((CERTIFY_FLOPS / (2.0 * n * n * n)) as u64).max(4);
+    // D^S by squaring costs about 2·log2 S products.
+    let mut products = 2 * u64::from(64 - s.leading_zeros());
     let mut t = dense::power(d, s);
-    let mut best: Option<f64> = None;
     for j in 0..=8 {
         let b = dense::norm_inf(&t).powf(1.0 / f64::from(1u32 << j));
         if b < 1.0 - 1e-9 {
-            best = Some(best.map_or(b, |x: f64| x.min(b)));
-            break;
+            return Some(b);
+        }
+        products += 1;
+        if products > budget {
+            return None;
         }
         t = &t * &t;
     }
-    best
+    None
 }
+
+/// The work [`certify`] may spend on matrix products, flops.
+const CERTIFY_FLOPS: f64 = 6e10;
+
+/// The work the simulation check may spend on products of the substep map
+/// with a state, flops: a large state is compared over fewer ticks (at
+/// least [`MIN_CHECK_TICKS`]).
+const CHECK_FLOPS: f64 = 2e9;
+
+/// The fewest ticks the simulation check compares.
+const MIN_CHECK_TICKS: u64 = 10;
 
 /// D with state = D·scaled state: 1 for x, 1/h for v, 1/(h·Σw) for a
 /// joint's impulse.

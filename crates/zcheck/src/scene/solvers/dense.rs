@@ -118,12 +118,21 @@ pub(crate) fn power(a: &Mat<f64>, mut k: u64) -> Mat<f64> {
 
 /// The ∞-norm (largest absolute row sum).
 pub(crate) fn norm_inf(a: &Mat<f64>) -> f64 {
-    (0..a.nrows()).map(|i| (0..a.ncols()).map(|j| a[(i, j)].abs()).sum::<f64>()).fold(0.0, f64::max)
+    // Column by column: faer stores columns contiguously.
+    let mut rows = vec![0.0f64; a.nrows()];
+    for j in 0..a.ncols() {
+        for (r, x) in rows.iter_mut().zip(a.col(j).iter()) {
+            *r += x.abs();
+        }
+    }
+    rows.into_iter().fold(0.0, f64::max)
 }
 
-/// y = A x.
+/// y = A x (faer's matrix-vector product).
 pub(crate) fn mat_vec(a: &Mat<f64>, x: &[f64]) -> Vec<f64> {
-    (0..a.nrows()).map(|i| (0..a.ncols()).map(|j| a[(i, j)] * x[j]).sum()).collect()
+    let x = faer::Col::<f64>::from_fn(x.len(), |j| x[j]);
+    let y = a * &x;
+    y.iter().copied().collect()
 }
 
 /// The minimum-cost assignment of every row to a distinct column (rows ≤

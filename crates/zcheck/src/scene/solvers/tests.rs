@@ -290,3 +290,38 @@ fn operation_counts_match_the_algorithms() {
         assert_eq!(ops_per_substep(&model, &soft, scene.tick_hz), soft_ops);
     }
 }
+
+/// The undamped scene's true eigenvalues by the n × n symmetric problem
+/// against the 2n × 2n first-order system deflated (the route of damped
+/// scenes), on scenes with and without rigid modes.
+#[test]
+fn undamped_modes_by_the_symmetric_problem() {
+    use super::analysis::{general_lambdas, undamped_lambdas};
+    use super::dense;
+    use super::exact;
+    use super::model::Model;
+    let free_pair = SceneFile::parse(
+        "pair.toml",
+        "tick_hz = 60\n[[mass]]\nname = \"a\"\nkg = 2\npos = [0, 0]\n[[mass]]\nname = \"b\"\nkg = 3\npos = [1, 0]\n[[spring]]\nbetween = [\"a\", \"b\"]\nstiffness = 500\n",
+    )
+    .unwrap();
+    let scenes =
+        [chain(&[1000.0, 1.0, 1000.0, 1.0], &[1000.0; 4], 0.0), example("rope2d.toml"), free_pair];
+    for scene in &scenes {
+        let model = Model::of_scene(scene);
+        let basis = exact::null_basis(&model);
+        let rperp = (!basis.is_empty()).then(|| {
+            let f: Vec<Vec<f64>> =
+                basis.iter().map(|v| v.iter().map(check::numeric::q_to_f64).collect()).collect();
+            dense::complement(&f, model.n())
+        });
+        let (k, c) = model.stiffness_damping();
+        let fast = undamped_lambdas(&k, &model.w, basis.len()).unwrap();
+        let slow = general_lambdas(&k, &c, &model.w, rperp.as_ref()).unwrap();
+        assert_eq!(fast.len(), slow.len(), "{} modes", model.n());
+        let top = slow.iter().map(|z| z.norm()).fold(0.0, f64::max);
+        for (a, b) in fast.iter().zip(&slow) {
+            assert!((a - b).norm() <= 1e-8 * top, "{a} against {b}");
+        }
+    }
+}
