@@ -26,7 +26,7 @@ pub use crate::lang::method::{
 };
 pub use crate::lang::syntax::parse_number;
 pub use crate::lang::system::{system as implicit_system, System as ImplicitSystem};
-pub use crate::lang::{builtins, multistep, tableau};
+pub use crate::lang::{builtins, multistep, partitioned, tableau};
 pub use crate::multivariate::constants as field;
 pub use crate::multivariate::matrix::SparsePolyMatrix;
 pub use crate::multivariate::poly::Monomial;

@@ -12,6 +12,7 @@ pub(crate) mod lower;
 pub(crate) mod method;
 pub mod multistep;
 pub(crate) mod params;
+pub mod partitioned;
 pub(crate) mod syntax;
 pub(crate) mod system;
 pub mod tableau;

@@ -83,8 +83,8 @@ pub(crate) fn entry_error(message: String) -> Error {
 #[derive(Clone, Debug)]
 pub struct Tableau {
     name: String,
-    a: Vec<Vec<Exact>>,
-    b: Vec<Exact>,
+    pub(crate) a: Vec<Vec<Exact>>,
+    pub(crate) b: Vec<Exact>,
     /// `c` as given, when it was.
     c: Option<Vec<Exact>>,
     /// `Some(rows)` when `c` was given: the rows where it differs from A's
