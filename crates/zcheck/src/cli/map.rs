@@ -19,7 +19,7 @@ pub(crate) struct Args {
     pub phi: Option<String>,
     /// NAME=LO..HI: one range for a (Phi, NAME) map, two for a map over two
     /// parameters coloured by Phi_max; NAME=VALUE binds another parameter
-    /// of a two-parameter map. Repeatable.
+    /// of either map (Newmark's (Phi, beta) map with gamma=1/2). Repeatable.
     #[arg(long = "param", value_name = "NAME=LO..HI", allow_hyphen_values = true)]
     pub params: Vec<String>,
     /// Write the map as SVG here.
@@ -61,9 +61,10 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
             use std::fmt::Write as _;
             let mut out = String::new();
             let p = &m.axes[1];
+            let bound: String = m.bound.iter().map(|(k, v)| format!(", {k} = {v}")).collect();
             let _ = writeln!(
                 out,
-                "method {}: Phi in [{}, {}], {p} in [{}, {}]",
+                "method {}: Phi in [{}, {}], {p} in [{}, {}]{bound}",
                 m.method, m.phi.0, m.phi.1, m.range.0, m.range.1
             );
             let _ = writeln!(
