@@ -14,6 +14,20 @@
 //! An optional `bhat` (one entry per stage) makes the tableau an embedded
 //! pair for `zcheck order`; the other commands read `A`, `b` and `c`.
 //!
+//! A family of tableaux names its parameters in `params`, and its entries
+//! are expressions in them (numbers, names, `+ - * / ^`, brackets):
+//!
+//! ```toml
+//! params = ["c"]
+//! A = [[0, 0], ["c", 0]]
+//! b = ["1 - 1/(2*c)", "1/(2*c)"]
+//! ```
+//!
+//! Every command reads it with the values given by `--param c=1`
+//! (`Tableau::parse_bound`, once, as the file is loaded: each value is
+//! substituted into the entries, which are then read exactly as written
+//! numbers are).
+//!
 //! The meaning of a tableau is `poly`'s (`poly::advanced::tableau`): this
 //! module reads the TOML file and blames every mistake on its line and
 //! column.
@@ -37,6 +51,7 @@ use std::ops::Range;
 use std::path::Path;
 
 use poly::advanced::tableau::{self as exact, method_ident, Exact};
+use poly::Q;
 use serde::Deserialize;
 use toml::Spanned;
 
@@ -235,6 +250,7 @@ pub(crate) fn read_parts(
 #[serde(deny_unknown_fields)]
 struct Raw {
     name: Option<Spanned<String>>,
+    params: Option<Spanned<Vec<Spanned<String>>>>,
     #[serde(rename = "A")]
     a: Spanned<Vec<Spanned<Vec<Spanned<toml::Value>>>>>,
     b: Spanned<Vec<Spanned<toml::Value>>>,
@@ -250,6 +266,91 @@ pub struct Tableau {
     bhat: Option<Vec<Exact>>,
     decimal_digits: usize,
     warnings: Vec<String>,
+    /// The values of the parameters the file declares (`params`), bound.
+    bound: Vec<(String, Q)>,
+}
+
+/// Names a tableau's parameter may not take: the variables of the programs
+/// made from it and the functions of an entry.
+const RESERVED: [&str; 6] = ["w", "z", "Phi", "sqrt", "cbrt", "root"];
+
+/// The parameters a tableau file declares (`params = ["c"]`), each checked
+/// (a name of letters, digits and `_`, not reserved, declared once), with
+/// the span of its declaration.
+fn declared_params(
+    path: &str,
+    text: &str,
+    list: &Spanned<Vec<Spanned<String>>>,
+) -> Result<Vec<(String, Range<usize>)>, Error> {
+    let mut out: Vec<(String, Range<usize>)> = Vec::new();
+    for p in list.get_ref() {
+        let name = p.get_ref().trim();
+        let at = |m: String| {
+            let (line, col) = line_col(text, p.span().start);
+            Error::file(path, line, col, &m)
+        };
+        let ident = name.chars().next().is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
+            && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_');
+        if !ident {
+            return Err(at(format!(
+                "params: {:?} is not a parameter name: expected letters, digits and `_`, starting \
+                 with a letter",
+                p.get_ref()
+            )));
+        }
+        if RESERVED.contains(&name) {
+            return Err(at(format!(
+                "params: {name} is reserved (w, z and Phi are the programs' variables; sqrt, cbrt \
+                 and root are functions): choose another name"
+            )));
+        }
+        if out.iter().any(|(n, _)| n == name) {
+            return Err(at(format!("params: {name} is declared twice")));
+        }
+        out.push((name.to_owned(), p.span()));
+    }
+    Ok(out)
+}
+
+/// An entry's text with each name of `values` replaced by its value in
+/// brackets (`1/(2*c)` with c = 1/2 is `1/(2*(1/2))`); numbers, functions
+/// and other names are left as written.
+fn substitute(text: &str, values: &[(String, Q)]) -> String {
+    let chars: Vec<char> = text.chars().collect();
+    let mut out = String::with_capacity(text.len());
+    let mut i = 0;
+    while i < chars.len() {
+        let start = i;
+        if chars[i].is_alphabetic() || chars[i] == '_' {
+            while i < chars.len() && (chars[i].is_alphanumeric() || chars[i] == '_') {
+                i += 1;
+            }
+            let word: String = chars[start..i].iter().collect();
+            match values.iter().find(|(n, _)| *n == word) {
+                Some((_, v)) => out.push_str(&format!("({v})")),
+                None => out.push_str(&word),
+            }
+        } else if chars[i].is_ascii_digit() || chars[i] == '.' {
+            // A number with its exponent letter (`1e5`) is no name.
+            while i < chars.len() && (chars[i].is_ascii_alphanumeric() || chars[i] == '.') {
+                i += 1;
+            }
+            out.extend(&chars[start..i]);
+        } else {
+            out.push(chars[i]);
+            i += 1;
+        }
+    }
+    out
+}
+
+/// Each string entry of `list` with `values` substituted.
+fn bind_list(list: &mut RawList, values: &[(String, Q)]) {
+    for v in list.get_mut() {
+        if let toml::Value::String(s) = v.get_mut() {
+            *s = substitute(s, values);
+        }
+    }
 }
 
 /// The most significant digits of a decimal literal in an entry (`0` when it
@@ -343,15 +444,54 @@ impl Tableau {
     }
 
     /// Parses the text of a tableau file; `stem` names the method when the
-    /// file has no `name`.
+    /// file has no `name`. A file that declares parameters (`params`) needs
+    /// their values: [`Tableau::parse_bound`].
     pub fn parse(path: &str, stem: &str, text: &str) -> Result<Tableau, Error> {
+        Tableau::parse_bound(path, stem, text, &[])
+    }
+
+    /// [`Tableau::parse`], with the parameters the file declares (`params =
+    /// ["c"]`, entries such as `"1 - 1/(2*c)"`) bound to their values in
+    /// `values` (the command's `--param NAME=VALUE`; names the file does
+    /// not declare are left for the command to check). A declared
+    /// parameter without a value is an error at its declaration.
+    pub(crate) fn parse_bound(
+        path: &str,
+        stem: &str,
+        text: &str,
+        values: &[(String, Q)],
+    ) -> Result<Tableau, Error> {
         let err = |span: Option<Range<usize>>, message: String| {
             let (line, col) = line_col(text, span.map_or(0, |s| s.start));
             Error::file(path, line, col, &message)
         };
-        let raw: Raw = toml::from_str(text).map_err(|e| {
+        let mut raw: Raw = toml::from_str(text).map_err(|e| {
             err(e.span(), e.message().trim_end_matches('\n').replace('\n', "; ").to_string())
         })?;
+        let mut bound = Vec::new();
+        if let Some(list) = &raw.params {
+            for (name, span) in declared_params(path, text, list)? {
+                match values.iter().find(|(n, _)| *n == name) {
+                    Some(v) => bound.push(v.clone()),
+                    None => {
+                        return Err(err(
+                            Some(span),
+                            format!(
+                                "parameter {name} has no value: give it one with --param \
+                                 {name}=VALUE"
+                            ),
+                        ))
+                    }
+                }
+            }
+            for row in raw.a.get_mut() {
+                bind_list(row, &bound);
+            }
+            bind_list(&mut raw.b, &bound);
+            for list in [raw.c.as_mut(), raw.bhat.as_mut()].into_iter().flatten() {
+                bind_list(list, &bound);
+            }
+        }
         let mut warnings = Vec::new();
         let mut digits = 0;
         let (a, b, c) = read_parts(
@@ -400,7 +540,19 @@ impl Tableau {
                 ));
             }
         }
-        Ok(Tableau { source: path.to_owned(), tableau, bhat, decimal_digits: digits, warnings })
+        Ok(Tableau {
+            source: path.to_owned(),
+            tableau,
+            bhat,
+            decimal_digits: digits,
+            warnings,
+            bound,
+        })
+    }
+
+    /// The values of the parameters the file declares, as bound.
+    pub(crate) fn bound(&self) -> &[(String, Q)] {
+        &self.bound
     }
 
     /// What the file says that it probably does not mean, located.

@@ -4,7 +4,7 @@
 use super::format::{Format, TEXT_JSON};
 use crate::answers::region::*;
 use crate::error::Error;
-use crate::load::LoadedMethod;
+use crate::load::{self, LoadedMethod};
 use std::process::ExitCode;
 
 /// Arguments of `zcheck map`.
@@ -36,9 +36,10 @@ pub(crate) struct Args {
 }
 
 pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
-    let method = LoadedMethod::load(&args.method)?;
+    let method = LoadedMethod::load_with(&args.method, &load::values_of(&args.params))?;
+    let params = load::unclaimed(&args.params, |s| load::arg_name(s), &[&method]);
     crate::interrupt::install();
-    let map = compute(&method, args.phi.as_deref(), &args.params, args.grid, args.samples)?;
+    let map = compute(&method, args.phi.as_deref(), &params, args.grid, args.samples)?;
     let m = match map {
         Map::PhiParam(m) => m,
         Map::TwoParams(m) => {
