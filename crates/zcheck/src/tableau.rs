@@ -26,7 +26,8 @@
 //! Every command reads it with the values given by `--param c=1`
 //! (`Tableau::parse_bound`, once, as the file is loaded: each value is
 //! substituted into the entries, which are then read exactly as written
-//! numbers are).
+//! numbers are); `zcheck design` reads it with some parameters free
+//! (`family`, poly's `ParamTableau`).
 //!
 //! The meaning of a tableau is `poly`'s (`poly::advanced::tableau`): this
 //! module reads the TOML file and blames every mistake on its line and
@@ -50,6 +51,7 @@
 use std::ops::Range;
 use std::path::Path;
 
+use poly::advanced::design::ParamTableau;
 use poly::advanced::tableau::{self as exact, method_ident, Exact};
 use poly::Q;
 use serde::Deserialize;
@@ -353,6 +355,120 @@ fn bind_list(list: &mut RawList, values: &[(String, Q)]) {
     }
 }
 
+/// An entry's text, as a tableau with parameters reads it: an integer, a
+/// finite float, or a string.
+fn entry_text(
+    path: &str,
+    text: &str,
+    v: &Spanned<toml::Value>,
+    what: &str,
+) -> Result<String, Error> {
+    match v.get_ref() {
+        toml::Value::Integer(i) => Ok(i.to_string()),
+        toml::Value::Float(f) if f.is_finite() => Ok(format!("{f}")),
+        toml::Value::String(s) => Ok(s.clone()),
+        other => {
+            let (line, col) = line_col(text, v.span().start);
+            Err(Error::file(
+                path,
+                line,
+                col,
+                &format!(
+                    "{what}: expected an exact number or an expression in the parameters (such \
+                     as \"1/(2*c)\"), found a {}",
+                    other.type_str()
+                ),
+            ))
+        }
+    }
+}
+
+/// A tableau file whose entries name parameters, as `zcheck design` reads
+/// it: poly's [`ParamTableau`] over every declared parameter, with the
+/// values in `bound` substituted (each must be declared) and the others
+/// free. Every mistake is blamed on its line and column.
+pub(crate) fn family(
+    path: &str,
+    stem: &str,
+    text: &str,
+    bound: &[(String, Q)],
+) -> Result<ParamTableau, Error> {
+    let err = |span: Option<Range<usize>>, message: String| {
+        let (line, col) = line_col(text, span.map_or(0, |s| s.start));
+        Error::file(path, line, col, &message)
+    };
+    let raw: Raw = toml::from_str(text).map_err(|e| {
+        err(e.span(), e.message().trim_end_matches('\n').replace('\n', "; ").to_string())
+    })?;
+    let declared = match &raw.params {
+        Some(list) => declared_params(path, text, list)?,
+        None => Vec::new(),
+    };
+    let names: Vec<&str> = declared.iter().map(|(n, _)| n.as_str()).collect();
+    for (name, _) in bound {
+        if !names.contains(&name.as_str()) {
+            let listed = if names.is_empty() { "none".to_owned() } else { names.join(", ") };
+            return Err(Error::usage(format!(
+                "--param {name}: tableau {path} has no parameter {name} (declared in its \
+                 `params`: {listed})"
+            )));
+        }
+    }
+    let s = raw.a.get_ref().len();
+    if s == 0 || s > MAX_STAGES {
+        return Err(err(
+            Some(raw.a.span()),
+            format!("A has {s} rows: expected 1 to {MAX_STAGES} stages"),
+        ));
+    }
+    let mut a = Vec::with_capacity(s);
+    for (i, row) in raw.a.get_ref().iter().enumerate() {
+        if row.get_ref().len() != s {
+            return Err(err(
+                Some(row.span()),
+                format!(
+                    "row {} of A has {} entries: expected {s} (A is square, one row per stage)",
+                    i + 1,
+                    row.get_ref().len()
+                ),
+            ));
+        }
+        let mut r = Vec::with_capacity(s);
+        for (j, v) in row.get_ref().iter().enumerate() {
+            r.push((format!("A[{}][{}]", i + 1, j + 1), v));
+        }
+        a.push(r);
+    }
+    if raw.b.get_ref().len() != s {
+        return Err(err(
+            Some(raw.b.span()),
+            format!("b has {} entries: expected {s}, one per stage", raw.b.get_ref().len()),
+        ));
+    }
+    let name = method_name(path, text, raw.name.as_ref(), stem)?;
+    // Each entry read alone first, so that a mistake is blamed on it.
+    let entry = |(what, v): &(String, &Spanned<toml::Value>)| -> Result<String, Error> {
+        let e = substitute(&entry_text(path, text, v, what)?, bound);
+        ParamTableau::new(&name, &names, &[vec![e.as_str()]], &[e.as_str()]).map_err(|e| {
+            let (line, col) = line_col(text, v.span().start);
+            Error::file(path, line, col, &format!("{what}: {}", e.message()))
+        })?;
+        Ok(e)
+    };
+    let a: Vec<Vec<String>> =
+        a.iter().map(|row| row.iter().map(entry).collect()).collect::<Result<_, _>>()?;
+    let b: Vec<String> = raw
+        .b
+        .get_ref()
+        .iter()
+        .enumerate()
+        .map(|(i, v)| entry(&(format!("b[{}]", i + 1), v)))
+        .collect::<Result<_, _>>()?;
+    let a_ref: Vec<Vec<&str>> = a.iter().map(|r| r.iter().map(String::as_str).collect()).collect();
+    let b_ref: Vec<&str> = b.iter().map(String::as_str).collect();
+    ParamTableau::new(&name, &names, &a_ref, &b_ref).map_err(|e| err(None, e.message().to_owned()))
+}
+
 /// The most significant digits of a decimal literal in an entry (`0` when it
 /// has none): the app knows the text, `poly`'s exact number does not, and a
 /// long decimal is a float written out (`zcheck order` then reads the order
@@ -478,7 +594,7 @@ impl Tableau {
                             Some(span),
                             format!(
                                 "parameter {name} has no value: give it one with --param \
-                                 {name}=VALUE"
+                                 {name}=VALUE (`zcheck design` chooses it)"
                             ),
                         ))
                     }
