@@ -241,6 +241,31 @@ fn shifted_chebyshev_two_parameters() {
     assert!(d["grid_check"]["max"]["value"].as_f64().unwrap() < 18.0, "{d}");
 }
 
+/// A tableau with a second parameter bound (`--param d=1`): the value is
+/// substituted into the entries as the file is read, so the search sees
+/// the one-parameter family (poly's ParamTableau would keep d a symbol
+/// there and answer for the wrong method).
+#[test]
+fn tableau_with_a_bound_parameter() {
+    let file = temp_file(
+        "rk2_cd.toml",
+        "params = [\"c\", \"d\"]\nA = [[0, 0], [\"c*d\", 0]]\nb = [\"1 - 1/(2*c)\", \"1/(2*c)\"]\n",
+    );
+    let file = file.to_str().unwrap();
+    let args = |objective| {
+        ["design", file, "--maximize", objective, "--param", "c=1/4..2", "--param", "d=1"]
+    };
+    let d = json(&args("ssp_coefficient"));
+    check_document(&d, 1, 200);
+    assert_eq!(exact(&d["optimum"]), "1");
+    assert_eq!(at(&d), pairs(&[("c", "1")]));
+    assert!(d["certificate"][0].as_str().unwrap().contains("with d=1"), "{d}");
+    // R = 1 + w + w^2/2 for every c: the real limit is 2 throughout.
+    let d = json(&args("real_limit"));
+    check_document(&d, 1, 200);
+    assert_eq!(exact(&d["optimum"]), "2");
+}
+
 /// The text a person reads: the optimum, where, the grid check and the
 /// certificate.
 #[test]
