@@ -5,6 +5,12 @@
 //! Run: `cargo bench -p poly --bench stability -- --warm-up-time 1
 //! --measurement-time 3`; `benches/sympy_stability.py` does the same job in
 //! SymPy for the ratio recorded in BENCHMARKS.md.
+//!
+//! The `design` group times the exact optimiser (`poly::advanced::design`,
+//! issue 37) on one one-parameter and one two-parameter known optimum, the
+//! derivation included: Newmark's beta with gamma = 1/2 for Phi_max (2*sqrt(5)
+//! at 1/5; target 1 s) and the shifted Chebyshev polynomial's (a2, a3) for
+//! the real limit (18 at (4/27, 4/729); target 10 s).
 
 use criterion::{criterion_group, criterion_main, Criterion};
 
@@ -28,5 +34,49 @@ fn stability(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, stability);
+const NEWMARK: &str = "method newmark\nparam beta\nparam gamma\nstate v y\n\
+    y' = y + Phi*v + Phi^2*((1/2 - beta)*(-y) + beta*(-y'))\n\
+    v' = v + Phi*((1 - gamma)*(-y) + gamma*(-y'))\n";
+
+const CUBIC: &str =
+    "method cubic\nparam a2\nparam a3\nstate y\ny = y + w*y + a2*w^2*y + a3*w^3*y\n";
+
+fn design(c: &mut Criterion) {
+    use poly::advanced::design::{maximize, FreeParam, Objective, Problem, Subject};
+    use poly::{q, Params};
+    let mut g = c.benchmark_group("design");
+    g.sample_size(10);
+    g.bench_function("newmark_beta_phi_max", |b| {
+        b.iter(|| {
+            let d = poly::derive_source("newmark.zm", NEWMARK).expect("derives");
+            let p = Problem {
+                subject: Subject::Program(&d),
+                objective: Objective::PhiMax,
+                free: vec![FreeParam::new("beta", q(0, 1), q(1, 5))],
+                bound: Params::new().bind("gamma", q(1, 2)),
+                min_order: None,
+            };
+            maximize(&p).expect("a design")
+        })
+    });
+    g.bench_function("shifted_chebyshev_real_limit", |b| {
+        b.iter(|| {
+            let d = poly::derive_source("cubic.zm", CUBIC).expect("derives");
+            let p = Problem {
+                subject: Subject::Program(&d),
+                objective: Objective::RealLimit,
+                free: vec![
+                    FreeParam::new("a2", q(0, 1), q(1, 2)),
+                    FreeParam::new("a3", q(0, 1), q(1, 6)),
+                ],
+                bound: Params::new(),
+                min_order: Some(1),
+            };
+            maximize(&p).expect("a design")
+        })
+    });
+    g.finish();
+}
+
+criterion_group!(benches, stability, design);
 criterion_main!(benches);

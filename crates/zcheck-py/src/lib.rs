@@ -149,6 +149,20 @@ impl NativeMethod {
     ) -> PyResult<String> {
         run(py, || json(api::map(&self.inner, phi.as_deref(), &params, grid, samples)))
     }
+
+    /// `zcheck design --format json`: the free parameters (`NAME=LO..HI`)
+    /// chosen for the best exact objective, the others bound (`NAME=VALUE`).
+    #[pyo3(signature = (maximize, params, min_order=None, per=None))]
+    fn design(
+        &self,
+        py: Python<'_>,
+        maximize: String,
+        params: Vec<String>,
+        min_order: Option<usize>,
+        per: Option<String>,
+    ) -> PyResult<String> {
+        run(py, || json(api::design(&self.inner, &maximize, &params, min_order, per.as_deref())))
+    }
 }
 
 /// A method as a command reads its argument: a `.zm`, or a `.toml` tableau

@@ -70,6 +70,30 @@ def test_verify_is_checks_witnesses():
     assert v["agree"] and v["class"] == "harmonic" and v["phi"] == 0.5
 
 
+def test_design_known_optima_and_the_clis_document():
+    # Kinnmark-Gray: |R(iy)|^2 = 1 + (1/4 - 2 a3) y^4 + a3^2 y^6, best
+    # imaginary limit 2 at a3 = 1/4 (issue 37).
+    kg = zcheck.Method.from_zm("method kg\nparam a3\nstate y\ny = y + w*y + 1/2*w^2*y + a3*w^3*y\n")
+    d = zcheck.design(kg, maximize="imag_limit", a3=(0, "1/2"))
+    assert d["optimum"]["exact"] == "2" and d["attained"]
+    assert d["at"]["a3"]["exact"] == "1/4"
+    assert d["grid_check"]["points"] >= 200 and d["grid_check"]["max"]["value"] <= d["optimum"]["value"]
+    assert d["optimum"]["exact"].to_sympy() == 2
+    # Newmark with gamma bound to 1/2: Phi_max = 2/sqrt(1 - 4 beta), so
+    # 2 sqrt(5) at beta = 1/5; the same document as the command line's.
+    path = os.path.join(REPO, "crates", "zcheck", "methods", "newmark.zm")
+    newmark = zcheck.Method.from_file(path)
+    d = zcheck.design(newmark, maximize="phi_max", beta=(0, Fraction(1, 5)), gamma="1/2")
+    assert d["optimum"]["exact"] == "2*sqrt(5)" and d["at"]["beta"]["exact"] == "1/5"
+    assert sympy.simplify(d["optimum"]["exact"].to_sympy() - 2 * sympy.sqrt(5)) == 0
+    cli = zcheck_cli("design", path, "--maximize", "phi_max", "--param", "beta=0..1/5", "--param", "gamma=1/2")
+    assert json.dumps(d, sort_keys=True) == json.dumps(cli, sort_keys=True)
+    with pytest.raises(zcheck.Error, match="unknown objective"):
+        zcheck.design(kg, maximize="speed", a3=(0, 1))
+    with pytest.raises(zcheck.Error, match="the range is empty"):
+        zcheck.design(kg, maximize="imag_limit", a3=(1, 0))
+
+
 def test_map_gives_numpy_arrays():
     np = pytest.importorskip("numpy")
     m = zcheck.Method.builtin("false_euler_damped")

@@ -39,7 +39,7 @@ fn region(arg: &str) {
 fn bench(c: &mut Criterion) {
     let builtins: Vec<String> = poly::advanced::builtins::all_builtin_names()
         .filter(|n| {
-            let m = LoadedMethod::load(n).expect("a built-in");
+            let m = zcheck::api::load(n).expect("a built-in");
             m.plane_derivation().and_then(|d| Ok(d.plane(&poly::Params::new())?)).is_ok()
         })
         .map(str::to_owned)

@@ -139,6 +139,25 @@ pub fn map(
     crate::answers::region::compute(method, phi, params, grid, samples)?.to_json()
 }
 
+/// `zcheck design --format json` of a program (a `.zm` or a built-in): its
+/// one or two free parameters chosen for the best exact `maximize`
+/// (`phi_max`, `real_limit`, `imag_limit`, `ssp_coefficient`), with
+/// `params` as typed after `--param` (`NAME=LO..HI` free, `NAME=VALUE`
+/// bound), `min_order` and `per` (`stage` or `cost`). A tableau whose
+/// entries name parameters is designed from the command line.
+pub fn design(
+    method: &LoadedMethod,
+    maximize: &str,
+    params: &[String],
+    min_order: Option<usize>,
+    per: Option<&str>,
+) -> Result<Value, Error> {
+    use crate::answers::design::{design, to_json, Request, Subject};
+    let request = Request::parse(maximize, params, min_order, per)?;
+    let subject = Subject::Program(Box::new(method.clone()));
+    Ok(to_json(&design(&subject, &request)?))
+}
+
 /// `zcheck advise --scene FILE --format json`, the prediction checked by
 /// simulation; with `solver` (`xpbd`, `xpbd_jacobi`, `soft_step`),
 /// `--solver`'s document: the configuration `(substeps, iterations)`, or

@@ -21,13 +21,14 @@ use std::collections::HashMap;
 use std::path::Path;
 use std::sync::{Mutex, OnceLock};
 
-use poly::{Derivation, Method};
+use poly::{Derivation, Method, Q};
 
 use crate::error::Error;
 use crate::multistep::Multistep;
 use crate::readings::Reading;
 use crate::scene::vector::Kernel;
 use crate::tableau::Tableau;
+use crate::values::ParamArg;
 
 /// A method argument, resolved: the method and everything the commands
 /// ask of it.
@@ -45,6 +46,9 @@ pub struct LoadedMethod {
     /// The nonlinear reading (a tableau, pair, splitting or multistep
     /// method), where the method has one: `zcheck order`'s input.
     reading: Option<Reading>,
+    /// The parameters a tableau file declares, bound as it was read: they
+    /// are not the program's ([`unclaimed`]).
+    tableau_params: Vec<String>,
 }
 
 /// The oscillator a tableau's program is written for.
@@ -59,11 +63,19 @@ enum Oscillator {
 impl LoadedMethod {
     /// The method `arg` names, shown as `arg`: a built-in, a `.zm` file, or
     /// a Butcher tableau's program on the undamped oscillator.
-    pub fn load(arg: &str) -> Result<LoadedMethod, Error> {
-        let (method, scalar, reading) = resolve(arg, Oscillator::Undamped)?;
+    pub(crate) fn load(arg: &str) -> Result<LoadedMethod, Error> {
+        LoadedMethod::load_with(arg, &[])
+    }
+
+    /// [`LoadedMethod::load`], the parameters a tableau file declares
+    /// (`params`) bound to their values in `values` (the command's
+    /// `--param NAME=VALUE`; see `Tableau::parse_bound`).
+    pub(crate) fn load_with(arg: &str, values: &[(String, Q)]) -> Result<LoadedMethod, Error> {
+        let (method, scalar, reading, taken) = resolve(arg, Oscillator::Undamped, values)?;
         let mut loaded = LoadedMethod::new(method, arg.to_owned(), None, None);
         loaded.scalar = scalar;
         loaded.reading = reading;
+        loaded.tableau_params = taken;
         Ok(loaded)
     }
 
@@ -71,10 +83,20 @@ impl LoadedMethod {
     /// file as its program on y' = λy alone (its oscillator program is not
     /// generated), anything else as [`LoadedMethod::load`] reads it.
     pub fn load_for_plane(arg: &str) -> Result<LoadedMethod, Error> {
+        LoadedMethod::load_for_plane_with(arg, &[])
+    }
+
+    /// [`LoadedMethod::load_for_plane`] with a tableau's parameters bound
+    /// to `values`, as [`LoadedMethod::load_with`] binds them.
+    pub(crate) fn load_for_plane_with(
+        arg: &str,
+        values: &[(String, Q)],
+    ) -> Result<LoadedMethod, Error> {
         if !arg.ends_with(".toml") {
-            return LoadedMethod::load(arg);
+            return LoadedMethod::load_with(arg, values);
         }
         let (shown, stem, text) = crate::tableau::read_file(Path::new(arg))?;
+        let mut taken = Vec::new();
         let (method, what, reading) = if crate::tableau::is_multistep(&text) {
             let m = Multistep::parse(&shown, &stem, &text)?;
             crate::warn::report(m.warnings().to_vec())?;
@@ -84,8 +106,9 @@ impl LoadedMethod {
                 Reading::of_multistep(&m),
             )
         } else {
-            let t = Tableau::parse(&shown, &stem, &text)?;
+            let t = Tableau::parse_bound(&shown, &stem, &text, values)?;
             crate::warn::report(t.warnings().to_vec())?;
+            taken = t.bound().iter().map(|(n, _)| n.clone()).collect();
             (t.scalar_program(arg), "tableau", Reading::of_tableau(&t))
         };
         let method = method.map_err(|e| {
@@ -96,6 +119,7 @@ impl LoadedMethod {
         })?;
         let mut loaded = LoadedMethod::new(method, arg.to_owned(), None, None);
         loaded.reading = Some(reading);
+        loaded.tableau_params = taken;
         Ok(loaded)
     }
 
@@ -107,7 +131,7 @@ impl LoadedMethod {
         match damped_twin(arg) {
             Some(name) => LoadedMethod::builtin(name),
             None => {
-                let (method, _, _) = resolve(arg, Oscillator::Damped)?;
+                let (method, _, _, _) = resolve(arg, Oscillator::Damped, &[])?;
                 Ok(LoadedMethod::new(method, arg.to_owned(), None, None))
             }
         }
@@ -170,6 +194,7 @@ impl LoadedMethod {
             scalar: None,
             scalar_derivation: OnceLock::new(),
             reading: None,
+            tableau_params: Vec::new(),
         }
     }
 
@@ -197,6 +222,11 @@ impl LoadedMethod {
     /// damped direct methods loaded as built-ins.
     pub(crate) fn system_kernel(&self) -> Option<Kernel> {
         self.system_kernel
+    }
+
+    /// The parameters a tableau file declared, bound as it was read.
+    pub(crate) fn tableau_params(&self) -> &[String] {
+        &self.tableau_params
     }
 
     /// The nonlinear reading, where the method has one (a coefficient file,
@@ -252,17 +282,19 @@ pub(crate) fn try_builtin_derivation(name: &str) -> Result<Derivation, poly::Err
     Ok(d)
 }
 
-/// The method `arg` names, for a coefficient file its program on y' = λy,
-/// and its nonlinear reading where it has one.
-fn resolve(
-    arg: &str,
-    oscillator: Oscillator,
-) -> Result<(Method, Option<Method>, Option<Reading>), Error> {
+/// What [`resolve`] finds: the method, for a coefficient file its program
+/// on y' = λy, its nonlinear reading where it has one, and the parameters
+/// a tableau file declared (bound).
+type Resolved = (Method, Option<Method>, Option<Reading>, Vec<String>);
+
+/// The method `arg` names, a tableau's parameters bound to `values`.
+fn resolve(arg: &str, oscillator: Oscillator, values: &[(String, Q)]) -> Result<Resolved, Error> {
     // A TOML file is a Butcher tableau, or a linear multistep method when it
     // has `alpha` or `beta`.
     if arg.ends_with(".toml") {
         let (shown, stem, text) = crate::tableau::read_file(Path::new(arg))?;
         let damped = oscillator == Oscillator::Damped;
+        let mut taken = Vec::new();
         let (method, scalar, what, reading) = if crate::tableau::is_multistep(&text) {
             let m = Multistep::parse(&shown, &stem, &text)?;
             crate::warn::report(m.warnings().to_vec())?;
@@ -275,8 +307,9 @@ fn resolve(
                 reading,
             )
         } else {
-            let t = Tableau::parse(&shown, &stem, &text)?;
+            let t = Tableau::parse_bound(&shown, &stem, &text, values)?;
             crate::warn::report(t.warnings().to_vec())?;
+            taken = t.bound().iter().map(|(n, _)| n.clone()).collect();
             (t.program(arg, damped), t.scalar_program(arg), "tableau", Reading::of_tableau(&t))
         };
         let parsed = |m: Result<Method, poly::Error>| {
@@ -287,7 +320,7 @@ fn resolve(
                 ))
             })
         };
-        return Ok((parsed(method)?, Some(parsed(scalar)?), Some(reading)));
+        return Ok((parsed(method)?, Some(parsed(scalar)?), Some(reading), taken));
     }
     let method = check::load::load_method(arg)?;
     if check::load::is_path(arg) {
@@ -297,9 +330,52 @@ fn resolve(
             warnings.extend(crate::warn::zm_decimal_hints(arg, &text));
         }
         crate::warn::report(warnings)?;
-        return Ok((method, None, None));
+        return Ok((method, None, None, Vec::new()));
     }
-    Ok((method, None, Reading::builtin(arg).transpose()?))
+    Ok((method, None, Reading::builtin(arg).transpose()?, Vec::new()))
+}
+
+/// The `--param NAME=VALUE` values as the loaders bind a tableau's
+/// parameters; a range (`NAME=LO..HI`) or a malformed argument is skipped
+/// here and reported by the command.
+pub(crate) fn values_of(params: &[String]) -> Vec<(String, Q)> {
+    params
+        .iter()
+        .filter(|s| !s.contains(".."))
+        .filter_map(|s| s.parse::<ParamArg>().ok())
+        .map(|p| (p.name, p.value.value))
+        .collect()
+}
+
+/// The parameter's name in a `--param NAME=...` argument as typed.
+pub(crate) fn arg_name(s: &str) -> &str {
+    s.split('=').next().unwrap_or("").trim()
+}
+
+/// [`values_of`] for arguments already read.
+pub(crate) fn values_of_args(params: &[ParamArg]) -> Vec<(String, Q)> {
+    params.iter().map(|p| (p.name.clone(), p.value.value.clone())).collect()
+}
+
+/// The `--param` arguments left for the methods' programs once each
+/// tableau with parameters has taken its own (they were bound as it was
+/// read): a name some tableau took is dropped unless some program declares
+/// it too. A name nobody declares stays, for the command to refuse.
+pub(crate) fn unclaimed<T: Clone>(
+    params: &[T],
+    name: impl Fn(&T) -> &str,
+    loaded: &[&LoadedMethod],
+) -> Vec<T> {
+    params
+        .iter()
+        .filter(|p| {
+            let n = name(p);
+            let taken = loaded.iter().any(|m| m.tableau_params.iter().any(|t| t == n));
+            let declared = loaded.iter().any(|m| m.method.params().iter().any(|s| s.name() == n));
+            !taken || declared
+        })
+        .cloned()
+        .collect()
 }
 
 /// The damped twin of a built-in's name: itself for a damped built-in,

@@ -36,6 +36,7 @@ use std::path::Path;
 
 use poly::advanced::multistep;
 use poly::advanced::tableau::{self as exact, Exact};
+use poly::Q;
 
 use crate::error::Error;
 use crate::multistep::Multistep;
@@ -66,6 +67,8 @@ pub(crate) struct Reading {
     pub(crate) decimal_digits: usize,
     /// A built-in's: what the reading is.
     pub(crate) about: Option<&'static str>,
+    /// The parameters a tableau file declared (`params`), bound as read.
+    pub(crate) params: Vec<String>,
 }
 
 /// `(built-in, what its reading is, the reading as TOML)`.
@@ -210,10 +213,11 @@ impl Reading {
     /// The reading of a method argument: a built-in's, or a `.toml`
     /// coefficient file's (its warnings reported as every command reports
     /// them). A `.zm` program has none.
-    pub(crate) fn load(arg: &str) -> Result<Reading, Error> {
+    /// A tableau's parameters (`params`) take their values from `values`.
+    pub(crate) fn load(arg: &str, values: &[(String, Q)]) -> Result<Reading, Error> {
         if arg.ends_with(".toml") {
             let (shown, stem, text) = crate::tableau::read_file(Path::new(arg))?;
-            let (reading, warnings) = Reading::parse(&shown, &stem, &text)?;
+            let (reading, warnings) = Reading::parse_bound(&shown, &stem, &text, values)?;
             crate::warn::report(warnings)?;
             return Ok(reading);
         }
@@ -246,6 +250,17 @@ impl Reading {
         stem: &str,
         text: &str,
     ) -> Result<(Reading, Vec<String>), Error> {
+        Reading::parse_bound(path, stem, text, &[])
+    }
+
+    /// [`Reading::parse`], a tableau's parameters bound to `values`
+    /// ([`Tableau::parse_bound`]).
+    pub(crate) fn parse_bound(
+        path: &str,
+        stem: &str,
+        text: &str,
+        values: &[(String, Q)],
+    ) -> Result<(Reading, Vec<String>), Error> {
         if is_partitioned(text) {
             let p = Partitioned::parse(path, stem, text)?;
             let form = Form::Partitioned { q: p.q, p: p.p };
@@ -258,8 +273,10 @@ impl Reading {
             let m = Multistep::parse(path, stem, text)?;
             Ok((Reading::of_multistep(&m), m.warnings().to_vec()))
         } else {
-            let t = Tableau::parse(path, stem, text)?;
-            Ok((Reading::of_tableau(&t), t.warnings().to_vec()))
+            let t = Tableau::parse_bound(path, stem, text, values)?;
+            let mut reading = Reading::of_tableau(&t);
+            reading.params = t.bound().iter().map(|(n, _)| n.clone()).collect();
+            Ok((reading, t.warnings().to_vec()))
         }
     }
 
@@ -373,7 +390,7 @@ impl Reading {
     }
 
     pub(crate) fn new(name: String, form: Form, decimal_digits: usize) -> Reading {
-        Reading { name, form, decimal_digits, about: None }
+        Reading { name, form, decimal_digits, about: None, params: Vec::new() }
     }
 }
 

@@ -14,6 +14,21 @@
 //! An optional `bhat` (one entry per stage) makes the tableau an embedded
 //! pair for `zcheck order`; the other commands read `A`, `b` and `c`.
 //!
+//! A family of tableaux names its parameters in `params`, and its entries
+//! are expressions in them (numbers, names, `+ - * / ^`, brackets):
+//!
+//! ```toml
+//! params = ["c"]
+//! A = [[0, 0], ["c", 0]]
+//! b = ["1 - 1/(2*c)", "1/(2*c)"]
+//! ```
+//!
+//! Every command reads it with the values given by `--param c=1`
+//! (`Tableau::parse_bound`, once, as the file is loaded: each value is
+//! substituted into the entries, which are then read exactly as written
+//! numbers are); `zcheck design` reads it with some parameters free
+//! (`family`, poly's `ParamTableau`).
+//!
 //! The meaning of a tableau is `poly`'s (`poly::advanced::tableau`): this
 //! module reads the TOML file and blames every mistake on its line and
 //! column.
@@ -36,7 +51,9 @@
 use std::ops::Range;
 use std::path::Path;
 
+use poly::advanced::design::ParamTableau;
 use poly::advanced::tableau::{self as exact, method_ident, Exact};
+use poly::Q;
 use serde::Deserialize;
 use toml::Spanned;
 
@@ -235,6 +252,7 @@ pub(crate) fn read_parts(
 #[serde(deny_unknown_fields)]
 struct Raw {
     name: Option<Spanned<String>>,
+    params: Option<Spanned<Vec<Spanned<String>>>>,
     #[serde(rename = "A")]
     a: Spanned<Vec<Spanned<Vec<Spanned<toml::Value>>>>>,
     b: Spanned<Vec<Spanned<toml::Value>>>,
@@ -250,6 +268,205 @@ pub struct Tableau {
     bhat: Option<Vec<Exact>>,
     decimal_digits: usize,
     warnings: Vec<String>,
+    /// The values of the parameters the file declares (`params`), bound.
+    bound: Vec<(String, Q)>,
+}
+
+/// Names a tableau's parameter may not take: the variables of the programs
+/// made from it and the functions of an entry.
+const RESERVED: [&str; 6] = ["w", "z", "Phi", "sqrt", "cbrt", "root"];
+
+/// The parameters a tableau file declares (`params = ["c"]`), each checked
+/// (a name of letters, digits and `_`, not reserved, declared once), with
+/// the span of its declaration.
+fn declared_params(
+    path: &str,
+    text: &str,
+    list: &Spanned<Vec<Spanned<String>>>,
+) -> Result<Vec<(String, Range<usize>)>, Error> {
+    let mut out: Vec<(String, Range<usize>)> = Vec::new();
+    for p in list.get_ref() {
+        let name = p.get_ref().trim();
+        let at = |m: String| {
+            let (line, col) = line_col(text, p.span().start);
+            Error::file(path, line, col, &m)
+        };
+        let ident = name.chars().next().is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
+            && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_');
+        if !ident {
+            return Err(at(format!(
+                "params: {:?} is not a parameter name: expected letters, digits and `_`, starting \
+                 with a letter",
+                p.get_ref()
+            )));
+        }
+        if RESERVED.contains(&name) {
+            return Err(at(format!(
+                "params: {name} is reserved (w, z and Phi are the programs' variables; sqrt, cbrt \
+                 and root are functions): choose another name"
+            )));
+        }
+        if out.iter().any(|(n, _)| n == name) {
+            return Err(at(format!("params: {name} is declared twice")));
+        }
+        out.push((name.to_owned(), p.span()));
+    }
+    Ok(out)
+}
+
+/// An entry's text with each name of `values` replaced by its value in
+/// brackets (`1/(2*c)` with c = 1/2 is `1/(2*(1/2))`); numbers, functions
+/// and other names are left as written.
+fn substitute(text: &str, values: &[(String, Q)]) -> String {
+    let chars: Vec<char> = text.chars().collect();
+    let mut out = String::with_capacity(text.len());
+    let mut i = 0;
+    while i < chars.len() {
+        let start = i;
+        if chars[i].is_alphabetic() || chars[i] == '_' {
+            while i < chars.len() && (chars[i].is_alphanumeric() || chars[i] == '_') {
+                i += 1;
+            }
+            let word: String = chars[start..i].iter().collect();
+            match values.iter().find(|(n, _)| *n == word) {
+                Some((_, v)) => out.push_str(&format!("({v})")),
+                None => out.push_str(&word),
+            }
+        } else if chars[i].is_ascii_digit() || chars[i] == '.' {
+            // A number with its exponent letter (`1e5`) is no name.
+            while i < chars.len() && (chars[i].is_ascii_alphanumeric() || chars[i] == '.') {
+                i += 1;
+            }
+            out.extend(&chars[start..i]);
+        } else {
+            out.push(chars[i]);
+            i += 1;
+        }
+    }
+    out
+}
+
+/// Each string entry of `list` with `values` substituted.
+fn bind_list(list: &mut RawList, values: &[(String, Q)]) {
+    for v in list.get_mut() {
+        if let toml::Value::String(s) = v.get_mut() {
+            *s = substitute(s, values);
+        }
+    }
+}
+
+/// An entry's text, as a tableau with parameters reads it: an integer, a
+/// finite float, or a string.
+fn entry_text(
+    path: &str,
+    text: &str,
+    v: &Spanned<toml::Value>,
+    what: &str,
+) -> Result<String, Error> {
+    match v.get_ref() {
+        toml::Value::Integer(i) => Ok(i.to_string()),
+        toml::Value::Float(f) if f.is_finite() => Ok(format!("{f}")),
+        toml::Value::String(s) => Ok(s.clone()),
+        other => {
+            let (line, col) = line_col(text, v.span().start);
+            Err(Error::file(
+                path,
+                line,
+                col,
+                &format!(
+                    "{what}: expected an exact number or an expression in the parameters (such \
+                     as \"1/(2*c)\"), found a {}",
+                    other.type_str()
+                ),
+            ))
+        }
+    }
+}
+
+/// A tableau file whose entries name parameters, as `zcheck design` reads
+/// it: poly's [`ParamTableau`] over every declared parameter, with the
+/// values in `bound` substituted (each must be declared) and the others
+/// free. Every mistake is blamed on its line and column.
+pub(crate) fn family(
+    path: &str,
+    stem: &str,
+    text: &str,
+    bound: &[(String, Q)],
+) -> Result<ParamTableau, Error> {
+    let err = |span: Option<Range<usize>>, message: String| {
+        let (line, col) = line_col(text, span.map_or(0, |s| s.start));
+        Error::file(path, line, col, &message)
+    };
+    let raw: Raw = toml::from_str(text).map_err(|e| {
+        err(e.span(), e.message().trim_end_matches('\n').replace('\n', "; ").to_string())
+    })?;
+    let declared = match &raw.params {
+        Some(list) => declared_params(path, text, list)?,
+        None => Vec::new(),
+    };
+    let names: Vec<&str> = declared.iter().map(|(n, _)| n.as_str()).collect();
+    for (name, _) in bound {
+        if !names.contains(&name.as_str()) {
+            let listed = if names.is_empty() { "none".to_owned() } else { names.join(", ") };
+            return Err(Error::usage(format!(
+                "--param {name}: tableau {path} has no parameter {name} (declared in its \
+                 `params`: {listed})"
+            )));
+        }
+    }
+    let s = raw.a.get_ref().len();
+    if s == 0 || s > MAX_STAGES {
+        return Err(err(
+            Some(raw.a.span()),
+            format!("A has {s} rows: expected 1 to {MAX_STAGES} stages"),
+        ));
+    }
+    let mut a = Vec::with_capacity(s);
+    for (i, row) in raw.a.get_ref().iter().enumerate() {
+        if row.get_ref().len() != s {
+            return Err(err(
+                Some(row.span()),
+                format!(
+                    "row {} of A has {} entries: expected {s} (A is square, one row per stage)",
+                    i + 1,
+                    row.get_ref().len()
+                ),
+            ));
+        }
+        let mut r = Vec::with_capacity(s);
+        for (j, v) in row.get_ref().iter().enumerate() {
+            r.push((format!("A[{}][{}]", i + 1, j + 1), v));
+        }
+        a.push(r);
+    }
+    if raw.b.get_ref().len() != s {
+        return Err(err(
+            Some(raw.b.span()),
+            format!("b has {} entries: expected {s}, one per stage", raw.b.get_ref().len()),
+        ));
+    }
+    let name = method_name(path, text, raw.name.as_ref(), stem)?;
+    // Each entry read alone first, so that a mistake is blamed on it.
+    let entry = |(what, v): &(String, &Spanned<toml::Value>)| -> Result<String, Error> {
+        let e = substitute(&entry_text(path, text, v, what)?, bound);
+        ParamTableau::new(&name, &names, &[vec![e.as_str()]], &[e.as_str()]).map_err(|e| {
+            let (line, col) = line_col(text, v.span().start);
+            Error::file(path, line, col, &format!("{what}: {}", e.message()))
+        })?;
+        Ok(e)
+    };
+    let a: Vec<Vec<String>> =
+        a.iter().map(|row| row.iter().map(entry).collect()).collect::<Result<_, _>>()?;
+    let b: Vec<String> = raw
+        .b
+        .get_ref()
+        .iter()
+        .enumerate()
+        .map(|(i, v)| entry(&(format!("b[{}]", i + 1), v)))
+        .collect::<Result<_, _>>()?;
+    let a_ref: Vec<Vec<&str>> = a.iter().map(|r| r.iter().map(String::as_str).collect()).collect();
+    let b_ref: Vec<&str> = b.iter().map(String::as_str).collect();
+    ParamTableau::new(&name, &names, &a_ref, &b_ref).map_err(|e| err(None, e.message().to_owned()))
 }
 
 /// The most significant digits of a decimal literal in an entry (`0` when it
@@ -343,15 +560,54 @@ impl Tableau {
     }
 
     /// Parses the text of a tableau file; `stem` names the method when the
-    /// file has no `name`.
+    /// file has no `name`. A file that declares parameters (`params`) needs
+    /// their values: [`Tableau::parse_bound`].
     pub fn parse(path: &str, stem: &str, text: &str) -> Result<Tableau, Error> {
+        Tableau::parse_bound(path, stem, text, &[])
+    }
+
+    /// [`Tableau::parse`], with the parameters the file declares (`params =
+    /// ["c"]`, entries such as `"1 - 1/(2*c)"`) bound to their values in
+    /// `values` (the command's `--param NAME=VALUE`; names the file does
+    /// not declare are left for the command to check). A declared
+    /// parameter without a value is an error at its declaration.
+    pub(crate) fn parse_bound(
+        path: &str,
+        stem: &str,
+        text: &str,
+        values: &[(String, Q)],
+    ) -> Result<Tableau, Error> {
         let err = |span: Option<Range<usize>>, message: String| {
             let (line, col) = line_col(text, span.map_or(0, |s| s.start));
             Error::file(path, line, col, &message)
         };
-        let raw: Raw = toml::from_str(text).map_err(|e| {
+        let mut raw: Raw = toml::from_str(text).map_err(|e| {
             err(e.span(), e.message().trim_end_matches('\n').replace('\n', "; ").to_string())
         })?;
+        let mut bound = Vec::new();
+        if let Some(list) = &raw.params {
+            for (name, span) in declared_params(path, text, list)? {
+                match values.iter().find(|(n, _)| *n == name) {
+                    Some(v) => bound.push(v.clone()),
+                    None => {
+                        return Err(err(
+                            Some(span),
+                            format!(
+                                "parameter {name} has no value: give it one with --param \
+                                 {name}=VALUE (`zcheck design` chooses it)"
+                            ),
+                        ))
+                    }
+                }
+            }
+            for row in raw.a.get_mut() {
+                bind_list(row, &bound);
+            }
+            bind_list(&mut raw.b, &bound);
+            for list in [raw.c.as_mut(), raw.bhat.as_mut()].into_iter().flatten() {
+                bind_list(list, &bound);
+            }
+        }
         let mut warnings = Vec::new();
         let mut digits = 0;
         let (a, b, c) = read_parts(
@@ -400,7 +656,19 @@ impl Tableau {
                 ));
             }
         }
-        Ok(Tableau { source: path.to_owned(), tableau, bhat, decimal_digits: digits, warnings })
+        Ok(Tableau {
+            source: path.to_owned(),
+            tableau,
+            bhat,
+            decimal_digits: digits,
+            warnings,
+            bound,
+        })
+    }
+
+    /// The values of the parameters the file declares, as bound.
+    pub(crate) fn bound(&self) -> &[(String, Q)] {
+        &self.bound
     }
 
     /// What the file says that it probably does not mean, located.

@@ -162,6 +162,31 @@ pub(crate) fn check_declared(params: &[ParamArg], methods: &[&Method]) -> Result
     Ok(())
 }
 
+/// Checks that every `--param` names a parameter that a tableau among the
+/// methods declared (`taken`): for the commands that bind only a tableau's
+/// parameters (`zcheck order`, `derive`, `from-tableau`).
+pub(crate) fn check_taken<'a>(
+    params: &[ParamArg],
+    taken: impl IntoIterator<Item = &'a String>,
+) -> Result<(), Error> {
+    let taken: Vec<&String> = taken.into_iter().collect();
+    for (k, p) in params.iter().enumerate() {
+        if params[..k].iter().any(|q| q.name == p.name) {
+            return Err(Error::usage(format!("--param {}: given twice", p.name)));
+        }
+        if !taken.contains(&&p.name) {
+            let listed: Vec<&str> = taken.iter().map(|s| s.as_str()).collect();
+            let listed = if listed.is_empty() { "none".to_owned() } else { listed.join(", ") };
+            return Err(Error::usage(format!(
+                "--param {}={}: no tableau here declares a parameter {} (declared in `params`: \
+                 {listed}); a program's parameters stay symbolic in this command",
+                p.name, p.value, p.name
+            )));
+        }
+    }
+    Ok(())
+}
+
 /// An `f64` for a table: plain decimal between 1e-4 and 1e16, otherwise in
 /// exponent form (never a 309-digit integer).
 pub(crate) fn show_f64(x: f64) -> String {

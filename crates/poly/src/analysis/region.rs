@@ -129,6 +129,8 @@ pub struct Region {
     derivation: Derivation,
     chi: Poly,
     param: Sym,
+    /// The method's other parameters, bound ([`Derivation::region_with`]).
+    bound: Params,
     curves: Vec<Curve>,
 }
 
@@ -144,12 +146,32 @@ impl Derivation {
     /// # Ok::<(), poly::Error>(())
     /// ```
     pub fn region(&self, param: Sym) -> Result<Region, StabilityError> {
-        region(self, param)
+        region(self, param, &Params::new())
+    }
+
+    /// [`Derivation::region`] of a method with further parameters, each
+    /// bound in `bound` (Newmark's (Φ, β) region with γ = 1/2): χ and every
+    /// analysis of the region read them at those values.
+    ///
+    /// ```
+    /// let src = "method nm\nparam beta\nparam gamma\nstate v y\n\
+    ///     y' = y + Phi*v + Phi^2*((1/2 - beta)*(-y) + beta*(-y'))\n\
+    ///     v' = v + Phi*((1 - gamma)*(-y) + gamma*(-y'))\n";
+    /// let d = poly::derive_source("nm.zm", src)?;
+    /// let half = poly::Params::new().bind("gamma", poly::q(1, 2));
+    /// let r = d.region_with(poly::Sym::new("beta"), &half)?;
+    /// assert!(r.contains(&poly::q(100, 1), &poly::q(1, 4))?);
+    /// assert!(!r.contains(&poly::q(3, 1), &poly::q(0, 1))?);
+    /// # Ok::<(), poly::Error>(())
+    /// ```
+    pub fn region_with(&self, param: Sym, bound: &Params) -> Result<Region, StabilityError> {
+        region(self, param, bound)
     }
 }
 
-fn region(derivation: &Derivation, param: Sym) -> Result<Region, StabilityError> {
-    let chi = derivation.charpoly();
+fn region(derivation: &Derivation, param: Sym, bound: &Params) -> Result<Region, StabilityError> {
+    let values: HashMap<Sym, Q> = bound.iter().map(|(n, v)| (Sym::new(n), v.clone())).collect();
+    let chi = &derivation.charpoly().eval_partial(&values);
     // The one-variable engine validates the symbols: any symbol other than
     // z, Φ and `param` is reported by it.
     stability::class_at(&substitute(chi, param, &Q::one()), &Q::one())?;
@@ -183,7 +205,13 @@ fn region(derivation: &Derivation, param: Sym) -> Result<Region, StabilityError>
         let (monomial, poly) = split_monomial(&p, &[phi, param]);
         curves.push(Curve { kind, poly: primitive(&poly), monomial });
     }
-    Ok(Region { derivation: derivation.clone(), chi: chi.clone(), param, curves })
+    Ok(Region {
+        derivation: derivation.clone(),
+        chi: chi.clone(),
+        param,
+        bound: bound.clone(),
+        curves,
+    })
 }
 
 impl Region {
@@ -217,7 +245,7 @@ impl Region {
     /// stays bounded there, from the derivation (so with P: a repeated root
     /// on the unit circle is bounded exactly when P is semisimple there).
     pub fn class_at(&self, phi: &Q, d: &Q) -> Result<ClassAt, StabilityError> {
-        self.derivation.class_at(&Params::new().bind(self.param.name(), d.clone()), phi)
+        self.derivation.class_at(&self.bound.clone().bind(self.param.name(), d.clone()), phi)
     }
 
     /// Whether the rational (Φ, D) is in the stable region: the sequence
@@ -229,7 +257,7 @@ impl Region {
     /// The whole stability analysis over Φ at a rational value of the
     /// parameter, from the derivation (so with P).
     pub fn stability_at(&self, d: &Q) -> Result<crate::StabilityReport, StabilityError> {
-        self.derivation.stability(&Params::new().bind(self.param.name(), d.clone()))
+        self.derivation.stability(&self.bound.clone().bind(self.param.name(), d.clone()))
     }
 
     /// Φ_max at a rational D, exactly (boundedness at a repeated root on

@@ -33,6 +33,7 @@ __all__ = [
     "Exact",
     "Method",
     "advise",
+    "design",
     "map",
     "paper",
     "to_sympy",
@@ -360,6 +361,34 @@ def map(method, phi=None, grid=40, samples=200, **params):
             "witnesses_agree": arr(lambda p: p["witnesses_agree"], bool),
         }
     return doc
+
+
+def design(method, maximize, min_order=None, per=None, **params):
+    """``zcheck design --format json``: one or two free parameters of
+    ``method`` chosen for the best exact objective, with a certificate.
+
+    ``design(m, maximize="imag_limit", a3=(0, "1/2"))``: a tuple is a free
+    parameter's exact range, a single value binds a parameter
+    (``gamma="1/2"``). ``maximize`` is ``"phi_max"``, ``"real_limit"``,
+    ``"imag_limit"`` or ``"ssp_coefficient"``; ``min_order=P`` keeps only
+    the values where the (linear) order is at least P; ``per="stage"`` or
+    ``"cost"`` divides the objective by the stage count or the step's
+    multiplications. Returns the command line's document: ``optimum`` and
+    each ``at`` value exact (``{"exact", "value"}``, +inf as ``"inf"``),
+    ``attained``, the ``certificate`` lines and the exact ``grid_check``.
+    A tableau whose entries name parameters is designed with the command
+    line (``zcheck design FILE.toml``).
+    """
+
+    def text(v, k):
+        if isinstance(v, (tuple, list)):
+            lo, hi = v
+            return f"{_entry(lo, k)}..{_entry(hi, k)}"
+        return _entry(v, k)
+
+    args = [f"{k}={text(v, f'parameter {k}')}" for k, v in params.items()]
+    order = None if min_order is None else int(min_order)
+    return _parse(method._native.design(str(maximize), args, order, None if per is None else str(per)))
 
 
 def advise(scene, solver=None, substeps=None, iterations=None, solvers=None):

@@ -86,6 +86,16 @@ def map(
 ) -> Document:
     """`zcheck map --format json`, its grid as numpy arrays."""
 
+def design(
+    method: Method,
+    maximize: str,
+    min_order: Optional[int] = None,
+    per: Optional[str] = None,
+    **params: Union[Number, Tuple[Number, Number]],
+) -> Document:
+    """`zcheck design --format json`: free parameters (a tuple: a range)
+    chosen for the best exact objective, with a certificate."""
+
 def advise(
     scene: Union[str, "os.PathLike[str]"],
     solver: Optional[str] = ...,

@@ -11,6 +11,7 @@
 
 pub(crate) mod advice;
 pub(crate) mod derive;
+pub(crate) mod design;
 pub(crate) mod equiv;
 pub(crate) mod exact;
 pub(crate) mod families;

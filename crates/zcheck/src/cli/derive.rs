@@ -15,8 +15,13 @@ const FORMATS: &[Format] = &[Format::Text, Format::Json, Format::Latex];
 /// Arguments of `zcheck derive`.
 #[derive(clap::Args)]
 pub(crate) struct Args {
-    /// A built-in method name or a path to a `.zm` file.
+    /// A built-in method name, a path to a `.zm` file, or a `.toml` file.
     pub method: String,
+    /// A value for a parameter a tableau declares (`params = ["c"]`),
+    /// `NAME=VALUE` (exact); repeatable. A program's parameters stay
+    /// symbolic.
+    #[arg(long = "param", value_name = "NAME=VALUE", allow_hyphen_values = true)]
+    pub params: Vec<crate::values::ParamArg>,
     #[arg(long, value_parser = Format::parser(FORMATS), default_value = "text")]
     pub format: Format,
     /// Also print M(z) with one row per assignment (temporaries included),
@@ -31,7 +36,8 @@ pub(crate) struct Args {
 const FULL_Z_MATRIX_ROWS: usize = 256;
 
 pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
-    let method = LoadedMethod::load(&args.method)?;
+    let method = LoadedMethod::load_with(&args.method, &crate::load::values_of_args(&args.params))?;
+    crate::values::check_taken(&args.params, method.tableau_params())?;
     let d = method.derivation()?;
     let full = args.full_z_matrix;
     if full && d.z_matrix().rows() > FULL_Z_MATRIX_ROWS {

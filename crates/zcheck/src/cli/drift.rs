@@ -174,7 +174,7 @@ fn study<T: Real>(
     threads: usize,
     stop: &AtomicBool,
 ) -> Result<Report, Error> {
-    let loaded = LoadedMethod::load(name)?;
+    let loaded = LoadedMethod::load_with(name, extra)?;
     let method = loaded.method();
     let mut exact: HashMap<Sym, Q> = HashMap::new();
     let mut params = Params::new();

@@ -5,7 +5,7 @@ use std::process::ExitCode;
 
 use crate::emit::{emit, Binding, Lang};
 use crate::error::Error;
-use crate::load::LoadedMethod;
+use crate::load::{self, LoadedMethod};
 use poly::{Sym, Q};
 
 /// The language to emit.
@@ -18,7 +18,7 @@ pub(crate) enum Language {
 /// Arguments of `zcheck emit`.
 #[derive(clap::Args)]
 pub(crate) struct Args {
-    /// A built-in method name or a path to a `.zm` file.
+    /// A built-in method name, a path to a `.zm` file, or a `.toml` file.
     pub method: String,
     #[arg(long, value_enum)]
     pub lang: Language,
@@ -26,13 +26,15 @@ pub(crate) struct Args {
     /// without it Phi, and every other parameter, is an argument.
     #[arg(long, allow_hyphen_values = true)]
     pub phi: Option<crate::values::Exact>,
-    /// With --phi: a value for another parameter, `NAME=VALUE`; repeatable.
+    /// With --phi: a value for another parameter, `NAME=VALUE`; repeatable
+    /// (a tableau's parameters take theirs with or without --phi).
     #[arg(long = "param", value_name = "NAME=VALUE")]
     pub params: Vec<String>,
 }
 
 pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
-    let loaded = LoadedMethod::load(&args.method)?;
+    let loaded = LoadedMethod::load_with(&args.method, &load::values_of(&args.params))?;
+    let params = load::unclaimed(&args.params, |s| load::arg_name(s), &[&loaded]);
     let method = loaded.method();
     let lang = match args.lang {
         Language::Rust => Lang::Rust,
@@ -40,7 +42,7 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     };
     let binding = match &args.phi {
         None => {
-            if !args.params.is_empty() {
+            if !params.is_empty() {
                 return Err(Error::usage(
                     "--param needs --phi: without --phi every parameter is an argument",
                 ));
@@ -49,7 +51,7 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
         }
         Some(phi) => {
             let mut given: Vec<(String, Q)> = vec![("Phi".to_owned(), phi.value.clone())];
-            for p in &args.params {
+            for p in &params {
                 given.push(crate::values::parse_param(p)?);
             }
             let mut values: Vec<(Sym, Q)> = Vec::new();

@@ -5,6 +5,7 @@ use std::process::ExitCode;
 
 use crate::error::Error;
 use crate::tableau::Tableau;
+use crate::values::ParamArg;
 
 /// Arguments of `zcheck from-tableau`.
 #[derive(clap::Args)]
@@ -16,10 +17,17 @@ pub(crate) struct Args {
     /// Write the program for the damped oscillator (`param D`).
     #[arg(long)]
     pub damped: bool,
+    /// A value for a parameter the tableau declares (`params = ["c"]`),
+    /// `NAME=VALUE` (exact); repeatable.
+    #[arg(long = "param", value_name = "NAME=VALUE", allow_hyphen_values = true)]
+    pub params: Vec<ParamArg>,
 }
 
 pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
-    let tableau = Tableau::load(std::path::Path::new(&args.file))?;
+    let (shown, stem, text) = crate::tableau::read_file(std::path::Path::new(&args.file))?;
+    let values = crate::load::values_of_args(&args.params);
+    let tableau = Tableau::parse_bound(&shown, &stem, &text, &values)?;
+    crate::values::check_taken(&args.params, tableau.bound().iter().map(|(n, _)| n))?;
     crate::warn::report(tableau.warnings().to_vec())?;
     let src = tableau.to_zm(args.damped);
     // The program parses (and derives) before it is printed.

@@ -4,7 +4,7 @@
 use super::format::{Format, TEXT_JSON};
 use crate::answers::region::*;
 use crate::error::Error;
-use crate::load::LoadedMethod;
+use crate::load::{self, LoadedMethod};
 use std::process::ExitCode;
 
 /// Arguments of `zcheck map`.
@@ -19,7 +19,7 @@ pub(crate) struct Args {
     pub phi: Option<String>,
     /// NAME=LO..HI: one range for a (Phi, NAME) map, two for a map over two
     /// parameters coloured by Phi_max; NAME=VALUE binds another parameter
-    /// of a two-parameter map. Repeatable.
+    /// of either map (Newmark's (Phi, beta) map with gamma=1/2). Repeatable.
     #[arg(long = "param", value_name = "NAME=LO..HI", allow_hyphen_values = true)]
     pub params: Vec<String>,
     /// Write the map as SVG here.
@@ -36,9 +36,10 @@ pub(crate) struct Args {
 }
 
 pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
-    let method = LoadedMethod::load(&args.method)?;
+    let method = LoadedMethod::load_with(&args.method, &load::values_of(&args.params))?;
+    let params = load::unclaimed(&args.params, |s| load::arg_name(s), &[&method]);
     crate::interrupt::install();
-    let map = compute(&method, args.phi.as_deref(), &args.params, args.grid, args.samples)?;
+    let map = compute(&method, args.phi.as_deref(), &params, args.grid, args.samples)?;
     let m = match map {
         Map::PhiParam(m) => m,
         Map::TwoParams(m) => {
@@ -61,9 +62,10 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
             use std::fmt::Write as _;
             let mut out = String::new();
             let p = &m.axes[1];
+            let bound: String = m.bound.iter().map(|(k, v)| format!(", {k} = {v}")).collect();
             let _ = writeln!(
                 out,
-                "method {}: Phi in [{}, {}], {p} in [{}, {}]",
+                "method {}: Phi in [{}, {}], {p} in [{}, {}]{bound}",
                 m.method, m.phi.0, m.phi.1, m.range.0, m.range.1
             );
             let _ = writeln!(

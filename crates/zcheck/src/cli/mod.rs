@@ -9,6 +9,7 @@ use crate::error::Error;
 
 pub(crate) mod advise;
 pub(crate) mod derive;
+pub(crate) mod design;
 pub(crate) mod drift;
 pub(crate) mod emit;
 pub(crate) mod equiv;
@@ -105,6 +106,8 @@ enum Command {
     Region(region::Args),
     /// Classical order by rooted trees, stage order, algebraic stability, symplecticity, SSP coefficient, embedded order, modified equation.
     Order(order::Args),
+    /// Choose one or two free parameters for the best exact stability (Phi_max, real or imaginary limit, SSP coefficient), with a certificate.
+    Design(design::Args),
     /// Write a scene (TOML) from a triangle mesh (OBJ): particles, edge and bending springs.
     SceneFromMesh(mesh::Args),
 }
@@ -132,6 +135,7 @@ impl Cli {
             Command::FromTableau(a) => from_tableau::run(a),
             Command::Region(a) => region::run(a),
             Command::Order(a) => order::run(a),
+            Command::Design(a) => design::run(a),
             Command::SceneFromMesh(a) => mesh::run(a),
         }
     }

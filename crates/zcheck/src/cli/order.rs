@@ -10,6 +10,7 @@ use super::output;
 use crate::answers::order::{document, report, to_text, Request};
 use crate::error::Error;
 use crate::readings::Reading;
+use crate::values::ParamArg;
 
 /// Arguments of `zcheck order`.
 #[derive(clap::Args)]
@@ -29,16 +30,22 @@ pub(crate) struct Args {
     /// when an entry is a decimal of 10 or more significant digits).
     #[arg(long, value_name = "T")]
     pub tolerance: Option<String>,
+    /// A value for a parameter a tableau declares (`params = ["c"]`),
+    /// `NAME=VALUE` (exact); repeatable.
+    #[arg(long = "param", value_name = "NAME=VALUE", allow_hyphen_values = true)]
+    pub params: Vec<ParamArg>,
 }
 
 pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     let request = Request::parse(args.modified, args.tolerance.as_deref())?;
+    let values = crate::load::values_of_args(&args.params);
     let mut reports = Vec::new();
     for arg in &args.methods {
-        let reading = Reading::load(arg)?;
+        let reading = Reading::load(arg, &values)?;
         let r = report(&reading, &request)?;
         reports.push((arg.clone(), reading, r));
     }
+    crate::values::check_taken(&args.params, reports.iter().flat_map(|(_, g, _)| &g.params))?;
     let out = match args.format {
         Format::Json => serde_json::to_string_pretty(&document(&reports))? + "\n",
         _ => reports.iter().map(|(a, g, r)| to_text(a, g, r)).collect::<Vec<_>>().join("\n"),

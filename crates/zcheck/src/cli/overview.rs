@@ -44,18 +44,20 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
         } else {
             args.methods.clone()
         };
-        let loaded = names.iter().map(|m| LoadedMethod::load(m)).collect::<Result<Vec<_>, _>>()?;
+        let values = crate::load::values_of_args(&args.params);
+        let loaded = names
+            .iter()
+            .map(|m| LoadedMethod::load_with(m, &values))
+            .collect::<Result<Vec<_>, _>>()?;
+        let params =
+            crate::load::unclaimed(&args.params, |p| &p.name, &loaded.iter().collect::<Vec<_>>());
         let methods: Vec<&poly::Method> = loaded.iter().map(|m| m.method()).collect();
-        values::check_declared(&args.params, &methods)?;
+        values::check_declared(&params, &methods)?;
         loaded
             .iter()
             .map(|m| {
-                crate::overview::summary_at(
-                    m.derivation()?,
-                    &bind(&args.params, m.method()),
-                    args.order,
-                )
-                .map_err(|e| e.context(format!("method {}", m.method().name())))
+                crate::overview::summary_at(m.derivation()?, &bind(&params, m.method()), args.order)
+                    .map_err(|e| e.context(format!("method {}", m.method().name())))
             })
             .collect::<Result<Vec<_>, Error>>()?
     };

@@ -87,7 +87,11 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     } else {
         args.methods.clone()
     };
-    let methods = names.iter().map(|n| LoadedMethod::load(n)).collect::<Result<Vec<_>, _>>()?;
+    let values = crate::load::values_of_args(&args.params);
+    let methods =
+        names.iter().map(|n| LoadedMethod::load_with(n, &values)).collect::<Result<Vec<_>, _>>()?;
+    let params =
+        crate::load::unclaimed(&args.params, |p| &p.name, &methods.iter().collect::<Vec<_>>());
     if matches!(args.what, What::Period | What::All)
         && !(args.phi_max > 0.0 && args.phi_max.is_finite())
     {
@@ -97,14 +101,13 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
         )));
     }
     let declared: Vec<&poly::Method> = methods.iter().map(|m| m.method()).collect();
-    values::check_declared(&args.params, &declared)?;
+    values::check_declared(&params, &declared)?;
     // Each method's own parameters, bound; a parameter left without a
     // value is named before anything is drawn.
     let bound: Vec<Params> = methods
         .iter()
         .map(|m| {
-            let p = args
-                .params
+            let p = params
                 .iter()
                 .filter(|p| m.method().params().iter().any(|s| s.name() == p.name))
                 .fold(Params::new(), |acc, p| acc.bind(&p.name, p.value.value.clone()));
@@ -126,7 +129,7 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
         .map_err(|e| Error::io(format!("{}: cannot create", args.out.display()), e))?;
     // Every --param, for y(t) and the z-plane (a method reads its own).
     let given =
-        args.params.iter().fold(Params::new(), |acc, p| acc.bind(&p.name, p.value.value.clone()));
+        params.iter().fold(Params::new(), |acc, p| acc.bind(&p.name, p.value.value.clone()));
     let params = given.clone().try_with("Phi", args.phi)?;
     let mut written = Vec::new();
     if matches!(args.what, What::Yt | What::All) {

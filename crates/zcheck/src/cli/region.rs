@@ -30,13 +30,19 @@ pub(crate) struct Args {
 }
 
 pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
-    let loaded: Vec<LoadedMethod> =
-        args.methods.iter().map(|m| LoadedMethod::load_for_plane(m)).collect::<Result<_, _>>()?;
+    let values = crate::load::values_of_args(&args.params);
+    let loaded: Vec<LoadedMethod> = args
+        .methods
+        .iter()
+        .map(|m| LoadedMethod::load_for_plane_with(m, &values))
+        .collect::<Result<_, _>>()?;
+    let params =
+        crate::load::unclaimed(&args.params, |p| &p.name, &loaded.iter().collect::<Vec<_>>());
     let methods: Vec<&poly::Method> = loaded.iter().map(LoadedMethod::method).collect();
-    values::check_declared(&args.params, &methods)?;
+    values::check_declared(&params, &methods)?;
     let mut reports = Vec::new();
     for (arg, m) in args.methods.iter().zip(&loaded) {
-        let (shown, report, classical) = plane(arg, m, &args.params)?;
+        let (shown, report, classical) = plane(arg, m, &params)?;
         reports.push((m.method().name().to_owned(), shown, report, classical));
     }
     if let Some(path) = &args.svg {

@@ -5,14 +5,15 @@ use super::format::{Format, TEXT_JSON};
 use super::output;
 use crate::answers::stability::*;
 use crate::error::Error;
-use crate::load::LoadedMethod;
+use crate::load::{self, LoadedMethod};
 use crate::values::ParamArg;
 use std::process::ExitCode;
 
 /// Arguments of `zcheck stability`.
 #[derive(clap::Args)]
 pub(crate) struct Args {
-    /// A built-in method name or a path to a `.zm` file.
+    /// A built-in method name, a path to a `.zm` file, or a `.toml` file (a
+    /// Butcher tableau, or multistep coefficients).
     pub method: String,
     /// A parameter value, `NAME=VALUE`, with VALUE an integer, a fraction
     /// (`1/2`) or a decimal (`0.5`, `1e-12`, read exactly); repeatable.
@@ -23,9 +24,10 @@ pub(crate) struct Args {
 }
 
 pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
-    let loaded = LoadedMethod::load(&args.method)?;
+    let loaded = LoadedMethod::load_with(&args.method, &load::values_of_args(&args.params))?;
+    let params = load::unclaimed(&args.params, |p| &p.name, &[&loaded]);
     // The one derivation: χ, the report and the implicit facts all read it.
-    let analysis = Analysis::of(loaded.derivation()?, &args.params)?;
+    let analysis = Analysis::of(loaded.derivation()?, &params)?;
     let out = match args.format {
         Format::Json => serde_json::to_string_pretty(&analysis.to_json())? + "\n",
         _ => analysis.text(),

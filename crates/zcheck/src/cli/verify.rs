@@ -59,11 +59,17 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
     for phi in &args.phi {
         phis.push((phi.to_f64("--phi")?, Some(phi.value.clone())));
     }
-    let methods =
-        args.methods.iter().map(|name| LoadedMethod::load(name)).collect::<Result<Vec<_>, _>>()?;
-    values::check_declared(&args.params, &methods.iter().map(|m| m.method()).collect::<Vec<_>>())?;
+    let values = crate::load::values_of_args(&args.params);
+    let methods = args
+        .methods
+        .iter()
+        .map(|name| LoadedMethod::load_with(name, &values))
+        .collect::<Result<Vec<_>, _>>()?;
+    let params =
+        crate::load::unclaimed(&args.params, |p| &p.name, &methods.iter().collect::<Vec<_>>());
+    values::check_declared(&params, &methods.iter().map(|m| m.method()).collect::<Vec<_>>())?;
     let mut base = Params::default();
-    for p in &args.params {
+    for p in &params {
         p.value.to_f64(&format!("--param {}", p.name))?;
         base.insert(&p.name, p.value.value.clone());
     }

@@ -3,6 +3,7 @@
 
 mod advise_cli;
 mod cli_derive;
+mod design_cli;
 mod double_root_cli;
 mod drift;
 mod emit;

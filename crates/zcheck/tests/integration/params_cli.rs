@@ -2,7 +2,8 @@
 //! parameter not named D, and the map over Newmark's (beta, gamma), held to
 //! Hughes' closed forms: unconditionally stable exactly when
 //! 2 beta >= gamma >= 1/2, and otherwise (gamma >= 1/2)
-//! Phi_max = (gamma/2 - beta)^(-1/2). `zcheck overview --param`.
+//! Phi_max = (gamma/2 - beta)^(-1/2); Newmark's (Phi, beta) map with gamma
+//! bound. `zcheck overview --param`.
 
 use std::process::Command;
 
@@ -244,5 +245,39 @@ fn overview_binds_params() {
         let (code, _, err) = zcheck(args);
         assert_eq!(code, 2, "{args:?}: {err}");
         assert!(err.contains(wanted) && !err.contains("panicked"), "{args:?}: {err}");
+    }
+}
+
+/// `zcheck map` binds Newmark's gamma for the (Phi, beta) map Hughes draws:
+/// Phi_max = 2/sqrt(1 - 4 beta) below beta = 1/4, every Phi from there.
+#[test]
+fn map_binds_other_parameters() {
+    let d = json(&[
+        "map",
+        NEWMARK,
+        "--phi",
+        "0..5",
+        "--param",
+        "beta=0..1/2",
+        "--param",
+        "gamma=1/2",
+        "--grid",
+        "8",
+        "--samples",
+        "20",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(d["axes"], serde_json::json!(["Phi", "beta"]));
+    assert_eq!(d["bound"], serde_json::json!([["gamma", "1/2"]]));
+    assert_eq!(d["disagreements"], 0);
+    let limits = d["limits"].as_array().unwrap();
+    assert_eq!(limits[0]["exact"], "2", "{limits:?}");
+    assert_eq!(limits[1]["exact"], "2*sqrt(2)", "{limits:?}");
+    assert!(limits[2..].iter().all(|l| l["phi_max"] == "every"), "{limits:?}");
+    for g in d["grid"].as_array().unwrap() {
+        let (phi, beta) = (g["phi"].as_f64().unwrap(), g["value"].as_f64().unwrap());
+        let stable = beta >= 0.25 || phi * phi * (1.0 - 4.0 * beta) < 4.0;
+        assert_eq!(g["class"] != "alternating_unstable", stable, "({phi}, {beta}): {g}");
     }
 }

@@ -153,14 +153,8 @@ pub(crate) fn compute(
     if phi.0 < Q::from_integer(0.into()) {
         return Err(Error::usage(format!("--phi {phi_text}: expected Phi >= 0")));
     }
-    if let Some((name, _)) = params.fixed.first() {
-        return Err(Error::usage(format!(
-            "--param {name}: a (Phi, {}) map binds no other parameter: the method's only parameter must be {}",
-            params.ranges[0].0, params.ranges[0].0
-        )));
-    }
     let (param, range) = params.ranges.into_iter().next().expect("one range");
-    let window = one::MapWindow { phi, param, range, grid, samples };
+    let window = one::MapWindow { phi, param, range, fixed: params.fixed, grid, samples };
     one::map(method, &window).map(Map::PhiParam)
 }
 

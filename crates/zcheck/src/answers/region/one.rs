@@ -75,6 +75,9 @@ pub(crate) struct StabilityMap {
     pub phi: (f64, f64),
     /// The parameter's window.
     pub range: (f64, f64),
+    /// The other parameters, bound (exact text), in the order given.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub bound: Vec<(String, String)>,
     /// Grid points, row by row (the parameter outer, Φ inner).
     pub grid: Vec<GridPoint>,
     /// Grid size (Φ, D).
@@ -98,6 +101,8 @@ pub(crate) struct MapWindow {
     pub param: String,
     /// Its range, exact.
     pub range: (Q, Q),
+    /// The method's other parameters, bound (`--param NAME=VALUE`).
+    pub fixed: Vec<(String, Q)>,
     /// Grid points per axis.
     pub grid: usize,
     /// Curve samples per axis.
@@ -116,7 +121,8 @@ pub(crate) fn centre(lo: &Q, hi: &Q, k: usize, n: usize) -> Q {
 }
 
 /// Computes the map of a method over (Φ, `w.param`), from its one
-/// derivation. The parameter must be the method's only one besides Φ.
+/// derivation. Every other parameter of the method must be bound in
+/// `w.fixed`.
 pub(crate) fn map(loaded: &LoadedMethod, w: &MapWindow) -> Result<StabilityMap, Error> {
     let method = loaded.method();
     let d_sym = Sym::new(&w.param);
@@ -128,21 +134,28 @@ pub(crate) fn map(loaded: &LoadedMethod, w: &MapWindow) -> Result<StabilityMap, 
             w.param
         )));
     }
-    let others: Vec<&str> =
-        method.params().iter().map(|s| s.name()).filter(|n| *n != "Phi" && *n != w.param).collect();
+    let others: Vec<&str> = method
+        .params()
+        .iter()
+        .map(|s| s.name())
+        .filter(|n| *n != "Phi" && *n != w.param && !w.fixed.iter().any(|(f, _)| f == n))
+        .collect();
     if !others.is_empty() {
         return Err(Error::usage(format!(
-            "--param {}: method {} has further parameters ({}), which have no value on a (Phi, {}) map: give two --param ranges (and no --phi) for a map over two parameters",
+            "--param {}: method {} has further parameters ({}), which have no value on a (Phi, {}) map: bind each with --param NAME=VALUE, or give two --param ranges (and no --phi) for a map over two parameters",
             w.param,
             method.name(),
             others.join(", "),
             w.param
         )));
     }
+    let bound = w.fixed.iter().fold(poly::Params::new(), |p, (k, v)| p.bind(k, v.clone()));
     let derivation = loaded.derivation()?;
     let r = derivation
-        .region(d_sym)
+        .region_with(d_sym, &bound)
         .map_err(|e| Error::from(e).context(format!("method {}", method.name())))?;
+    let fixed_f64: Vec<(&str, f64)> =
+        w.fixed.iter().map(|(k, v)| (k.as_str(), q_to_f64(v))).collect();
     let witnesses = Witnesses::from_derivation(derivation);
     let n = w.grid.max(2);
     let cells: Vec<(usize, usize)> = (0..n).flat_map(|j| (0..n).map(move |i| (i, j))).collect();
@@ -170,8 +183,9 @@ pub(crate) fn map(loaded: &LoadedMethod, w: &MapWindow) -> Result<StabilityMap, 
                     ))))
                 }
             };
+            let at = fixed_f64.iter().fold(Params::phi(phi), |p, (k, v)| p.with(k, *v));
             let agree = witnesses
-                .at(&Params::phi(phi).with(&w.param, d), 0)
+                .at(&at.with(&w.param, d), 0)
                 .is_ok_and(|rep| rep.agree() && rep.exact.class == class);
             Some(Ok(GridPoint { phi, value: d, class, witnesses_agree: agree }))
         })
@@ -247,6 +261,7 @@ pub(crate) fn map(loaded: &LoadedMethod, w: &MapWindow) -> Result<StabilityMap, 
         axes: ["Phi".to_owned(), w.param.clone()],
         phi: (q_to_f64(&w.phi.0), q_to_f64(&w.phi.1)),
         range: (q_to_f64(&w.range.0), q_to_f64(&w.range.1)),
+        bound: w.fixed.iter().map(|(k, v)| (k.clone(), v.to_string())).collect(),
         grid,
         size: (n, n),
         curves,

@@ -1,0 +1,441 @@
+//! `zcheck design` end to end (issue 37): the seven known optima, each
+//! checked independently first (by hand in `methods/design/`'s comments and
+//! in poly's `tests/integration/design.rs`, and by a float scan), their
+//! exact JSON (`optimum`, `at`, `attained`, the grid check never above the
+//! optimum), the text, `--per`, and the errors; a tableau whose entries name
+//! a parameter, read by every command with `--param c=1` exactly as the
+//! same tableau written with numbers (the oracle).
+
+use std::path::PathBuf;
+use std::process::Command;
+
+use serde_json::Value;
+
+fn method(name: &str) -> String {
+    format!("{}/methods/{name}", env!("CARGO_MANIFEST_DIR"))
+}
+
+fn design_file(name: &str) -> String {
+    method(&format!("design/{name}"))
+}
+
+fn zcheck(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_zcheck")).args(args).output().expect("zcheck runs");
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+#[track_caller]
+fn json(args: &[&str]) -> Value {
+    let mut all = args.to_vec();
+    all.extend(["--format", "json"]);
+    let (code, out, err) = zcheck(&all);
+    assert_eq!(code, 0, "zcheck {all:?}: {err}");
+    serde_json::from_str(&out).unwrap_or_else(|e| panic!("zcheck {all:?}: {e}: {out}"))
+}
+
+/// The exact text of a `{"exact", "value"}` number.
+fn exact(v: &Value) -> &str {
+    v["exact"].as_str().unwrap_or_else(|| panic!("no exact text: {v}"))
+}
+
+/// The document's shape, and what every design must satisfy: the eight
+/// fields of the contract, exact numbers with a float beside them (none
+/// for +inf), the grid's size and its maximum never above the optimum
+/// (compared as floats only when both are finite and the exact texts
+/// differ: the exact comparison is poly's, which refuses a grid above).
+#[track_caller]
+fn check_document(d: &Value, free: usize, grid_points: usize) {
+    let keys: Vec<&str> = d.as_object().unwrap().keys().map(String::as_str).collect();
+    assert_eq!(
+        keys,
+        ["at", "attained", "certificate", "grid_check", "method", "objective", "optimum", "params"],
+        "{d}"
+    );
+    assert_eq!(d["params"].as_object().unwrap().len(), free, "{d}");
+    assert_eq!(d["at"].as_object().unwrap().len(), free, "{d}");
+    for (name, range) in d["params"].as_object().unwrap() {
+        assert!(range["lo"]["exact"].is_string() && range["hi"]["value"].is_number(), "{name}");
+    }
+    let g = &d["grid_check"];
+    assert!(g["points"].as_u64().unwrap() as usize >= grid_points, "{g}");
+    let (opt, max) = (&d["optimum"], &g["max"]);
+    match (opt["value"].as_f64(), max["value"].as_f64()) {
+        (Some(o), Some(m)) => assert!(m <= o || exact(max) == exact(opt), "{m} > {o}"),
+        (None, _) => assert_eq!(exact(opt), "inf", "{opt}"),
+        (Some(_), None) => panic!("the grid reaches inf above a finite optimum: {d}"),
+    }
+    let certificate = d["certificate"].as_array().unwrap();
+    assert!(certificate.len() >= 3, "{d}");
+    assert!(certificate.iter().any(|l| l.as_str().unwrap().starts_with("optimum ")), "{d}");
+}
+
+/// `at` as NAME = exact text.
+fn at(d: &Value) -> Vec<(String, String)> {
+    d["at"].as_object().unwrap().iter().map(|(k, v)| (k.clone(), exact(v).to_owned())).collect()
+}
+
+fn pairs(p: &[(&str, &str)]) -> Vec<(String, String)> {
+    p.iter().map(|(a, b)| (a.to_string(), b.to_string())).collect()
+}
+
+/// Chebyshev's 2s² for s = 2: R = 1 + w + a₂w², best real limit 8 at a₂ =
+/// 1/8 (R(−8) = 1, and R = −1 only touched at x = 4).
+#[test]
+fn chebyshev_real_limit() {
+    let d = json(&[
+        "design",
+        &design_file("chebyshev2.zm"),
+        "--maximize",
+        "real_limit",
+        "--param",
+        "a2=0..1/2",
+    ]);
+    check_document(&d, 1, 200);
+    assert_eq!((exact(&d["optimum"]), &d["attained"]), ("8", &Value::Bool(true)));
+    assert_eq!(at(&d), pairs(&[("a2", "1/8")]));
+    assert_eq!(
+        (d["method"].as_str(), d["objective"].as_str()),
+        (Some("chebyshev2"), Some("real_limit"))
+    );
+}
+
+/// Kinnmark–Gray: |R(iy)|² = 1 + (1/4 − 2a₃)y⁴ + a₃²y⁶, best imaginary
+/// limit 2 at a₃ = 1/4; with order ≥ 3 only a₃ = 1/6 is allowed: √3.
+#[test]
+fn kinnmark_gray_imag_limit() {
+    let kg = design_file("kinnmark_gray.zm");
+    let d = json(&["design", &kg, "--maximize", "imag_limit", "--param", "a3=0..1/2"]);
+    check_document(&d, 1, 200);
+    assert_eq!((exact(&d["optimum"]), &d["attained"]), ("2", &Value::Bool(true)));
+    assert_eq!(at(&d), pairs(&[("a3", "1/4")]));
+    let d = json(&[
+        "design",
+        &kg,
+        "--maximize",
+        "imag_limit",
+        "--param",
+        "a3=0..1/2",
+        "--min-order",
+        "3",
+    ]);
+    // The allowed set is the single point a3 = 1/6: the grid is that point.
+    check_document(&d, 1, 1);
+    assert_eq!((exact(&d["optimum"]), &d["attained"]), ("sqrt(3)", &Value::Bool(true)));
+    assert_eq!(at(&d), pairs(&[("a3", "1/6")]));
+    let text = d["certificate"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|l| l.as_str().unwrap())
+        .collect::<Vec<_>>()
+        .join("\n");
+    assert!(text.contains("order conditions hold only at a3 = 1/6"), "{text}");
+}
+
+/// The θ-method, R = (1 + (1 − θ)w)/(1 − θw): real limit 2/(1 − 2θ) below
+/// θ = 1/2, +∞ from there.
+#[test]
+fn theta_method_real_limit() {
+    let theta = design_file("theta.zm");
+    let d = json(&["design", &theta, "--maximize", "real_limit", "--param", "theta=0..2/5"]);
+    check_document(&d, 1, 200);
+    assert_eq!((exact(&d["optimum"]), &d["attained"]), ("10", &Value::Bool(true)));
+    assert_eq!(at(&d), pairs(&[("theta", "2/5")]));
+    let d = json(&["design", &theta, "--maximize", "real_limit", "--param", "theta=0..1/2"]);
+    check_document(&d, 1, 200);
+    assert_eq!(d["optimum"], serde_json::json!({ "exact": "inf", "value": null }));
+    assert_eq!(d["attained"], true);
+    assert_eq!(at(&d), pairs(&[("theta", "1/2")]));
+}
+
+/// Newmark with γ = 1/2: χ(−1) = 4 + (4β − 1)Φ², so Φ_max = 2/√(1 − 4β):
+/// 2√5 at β = 1/5. Over [0, 1/2] every β ≥ 1/4 is unconditionally stable:
+/// +inf, at the set's least point 1/4, the set described.
+#[test]
+fn newmark_phi_max_with_gamma_bound() {
+    let newmark = method("newmark.zm");
+    let args = [
+        "design",
+        &newmark,
+        "--maximize",
+        "phi_max",
+        "--param",
+        "beta=0..1/5",
+        "--param",
+        "gamma=1/2",
+    ];
+    let d = json(&args);
+    check_document(&d, 1, 200);
+    assert_eq!((exact(&d["optimum"]), &d["attained"]), ("2*sqrt(5)", &Value::Bool(true)));
+    assert!((d["optimum"]["value"].as_f64().unwrap() - 2.0 * 5f64.sqrt()).abs() < 1e-12);
+    assert_eq!(at(&d), pairs(&[("beta", "1/5")]));
+    // The bound value is named in the certificate.
+    assert!(d["certificate"][0].as_str().unwrap().contains("with gamma=1/2"), "{d}");
+    let d = json(&[
+        "design",
+        &newmark,
+        "--maximize",
+        "phi_max",
+        "--param",
+        "gamma=1/2",
+        "--param",
+        "beta=0..1/2",
+    ]);
+    check_document(&d, 1, 200);
+    assert_eq!(exact(&d["optimum"]), "inf");
+    assert_eq!(at(&d), pairs(&[("beta", "1/4")]));
+    let text = d["certificate"].to_string();
+    assert!(text.contains("the maximisers form a set"), "{text}");
+}
+
+/// The explicit 2-stage order-2 family, a tableau whose entries name c:
+/// SSP coefficient min(2 − 1/c, 1/c) for c ≥ 1/2, best 1 at c = 1 (Heun);
+/// per stage, 1/2.
+#[test]
+fn two_stage_family_ssp_coefficient() {
+    let rk2 = design_file("rk2_family.toml");
+    let d = json(&["design", &rk2, "--maximize", "ssp_coefficient", "--param", "c=1/4..2"]);
+    check_document(&d, 1, 200);
+    assert_eq!((exact(&d["optimum"]), &d["attained"]), ("1", &Value::Bool(true)));
+    assert_eq!(at(&d), pairs(&[("c", "1")]));
+    assert_eq!(d["method"], "rk2_family");
+    let d = json(&[
+        "design",
+        &rk2,
+        "--maximize",
+        "ssp_coefficient",
+        "--param",
+        "c=1/4..2",
+        "--per",
+        "stage",
+    ]);
+    check_document(&d, 1, 200);
+    assert_eq!(exact(&d["optimum"]), "1/2");
+    assert_eq!(at(&d), pairs(&[("c", "1")]));
+}
+
+/// Two parameters: 1 + w + a₂w² + a₃w³ over [0, 1/2] × [0, 1/6] with order
+/// ≥ 1: 18 at (4/27, 4/729), the shifted Chebyshev T₃(1 + w/9). No grid
+/// point hits the isolated optimum: the grid's best is strictly below.
+#[test]
+fn shifted_chebyshev_two_parameters() {
+    let d = json(&[
+        "design",
+        &design_file("cubic.zm"),
+        "--maximize",
+        "real_limit",
+        "--param",
+        "a2=0..1/2",
+        "--param",
+        "a3=0..1/6",
+        "--min-order",
+        "1",
+    ]);
+    check_document(&d, 2, 2500);
+    assert_eq!((exact(&d["optimum"]), &d["attained"]), ("18", &Value::Bool(true)));
+    assert_eq!(at(&d), pairs(&[("a2", "4/27"), ("a3", "4/729")]));
+    assert!(d["grid_check"]["max"]["value"].as_f64().unwrap() < 18.0, "{d}");
+}
+
+/// A tableau with a second parameter bound (`--param d=1`): the value is
+/// substituted into the entries as the file is read, so the search sees
+/// the one-parameter family (poly's ParamTableau would keep d a symbol
+/// there and answer for the wrong method).
+#[test]
+fn tableau_with_a_bound_parameter() {
+    let file = temp_file(
+        "rk2_cd.toml",
+        "params = [\"c\", \"d\"]\nA = [[0, 0], [\"c*d\", 0]]\nb = [\"1 - 1/(2*c)\", \"1/(2*c)\"]\n",
+    );
+    let file = file.to_str().unwrap();
+    let args = |objective| {
+        ["design", file, "--maximize", objective, "--param", "c=1/4..2", "--param", "d=1"]
+    };
+    let d = json(&args("ssp_coefficient"));
+    check_document(&d, 1, 200);
+    assert_eq!(exact(&d["optimum"]), "1");
+    assert_eq!(at(&d), pairs(&[("c", "1")]));
+    assert!(d["certificate"][0].as_str().unwrap().contains("with d=1"), "{d}");
+    // R = 1 + w + w^2/2 for every c: the real limit is 2 throughout.
+    let d = json(&args("real_limit"));
+    check_document(&d, 1, 200);
+    assert_eq!(exact(&d["optimum"]), "2");
+}
+
+/// The text a person reads: the optimum, where, the grid check and the
+/// certificate.
+#[test]
+fn text_report() {
+    let (code, out, err) = zcheck(&[
+        "design",
+        &method("newmark.zm"),
+        "--maximize",
+        "phi_max",
+        "--param",
+        "beta=0..1/5",
+        "--param",
+        "gamma=1/2",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    for wanted in [
+        "design newmark: maximise phi_max",
+        "optimum     2*sqrt(5) ≈ 4.472136",
+        "at          beta = 1/5 (attained)",
+        "grid check  201 points",
+        "certificate (",
+    ] {
+        assert!(out.contains(wanted), "{wanted}\n{out}");
+    }
+}
+
+/// Bad input: a clean one-line message, exit 2, no panic.
+#[test]
+fn errors_are_clean() {
+    let (kg, rk2) = (design_file("kinnmark_gray.zm"), design_file("rk2_family.toml"));
+    let cubic = design_file("cubic.zm");
+    let big = temp_file(
+        "big.zm",
+        "method big\nparam a\nstate y\n\
+         y = y + w*y + a^64*a^64*a^64*a^64*a^64*a^64*a^64*w^2*y\n",
+    );
+    let big = big.to_str().unwrap();
+    for (args, wanted) in [
+        (
+            &["design", &kg, "--maximize", "imag_limit", "--param", "a3=1..0"][..],
+            "--param a3=1..0: the range is empty",
+        ),
+        (
+            &["design", &kg, "--maximize", "imag_limit", "--param", "b=0..1"][..],
+            "method `kinnmark_gray` has no parameter b",
+        ),
+        (
+            &[
+                "design",
+                &rk2,
+                "--maximize",
+                "ssp_coefficient",
+                "--param",
+                "c=1..2",
+                "--param",
+                "d=1",
+            ][..],
+            "--param d: tableau",
+        ),
+        (
+            &["design", &kg, "--maximize", "ssp_coefficient", "--param", "a3=0..1"][..],
+            "ssp_coefficient applies to a Butcher tableau",
+        ),
+        (
+            &["design", &kg, "--maximize", "speed", "--param", "a3=0..1"][..],
+            "unknown objective \"speed\"",
+        ),
+        (
+            &[
+                "design",
+                &cubic,
+                "--maximize",
+                "real_limit",
+                "--param",
+                "a2=0..1",
+                "--param",
+                "a3=0..1",
+                "--param",
+                "a4=0..1",
+            ][..],
+            "3 free parameters",
+        ),
+        (&["design", &kg, "--maximize", "imag_limit"][..], "no free parameter"),
+        (
+            &["design", &kg, "--maximize", "imag_limit", "--param", "a3=0..1", "--per", "stage"][..],
+            "--per stage: `kinnmark_gray` is a program",
+        ),
+        (
+            &["design", &method("newmark.zm"), "--maximize", "phi_max", "--param", "beta=0..1"][..],
+            "parameter gamma is neither free nor bound",
+        ),
+        // The exact search stops at its size bound and names it.
+        (
+            &["design", big, "--maximize", "real_limit", "--param", "a=0..1"][..],
+            "past the bound MAX_BREAKPOINT_DEGREE = 400",
+        ),
+    ] {
+        let (code, out, err) = zcheck(args);
+        assert_eq!(code, 2, "{args:?}: {err}");
+        assert!(out.is_empty(), "{args:?}: {out}");
+        assert!(err.contains(wanted), "{args:?}: {err}");
+        assert_eq!(err.trim_end().lines().count(), 1, "{args:?}: {err}");
+        assert!(!err.contains("panicked"), "{args:?}: {err}");
+    }
+    // The 1-line check is relaxed for a file error, which shows its line.
+    let (code, _, err) = zcheck(&[
+        "design",
+        &kg.replace(".zm", "_missing.zm"),
+        "--maximize",
+        "imag_limit",
+        "--param",
+        "a3=0..1",
+    ]);
+    assert_eq!(code, 2, "{err}");
+}
+
+fn temp_file(name: &str, text: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("zcheck-design-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let path = dir.join(name);
+    std::fs::write(&path, text).expect("write");
+    path
+}
+
+/// A tableau whose entries name c, read by the other commands with
+/// `--param c=1`, is the same tableau as Heun's written with numbers (the
+/// oracle): the same documents, byte for byte (both are named `rk2_family`).
+#[test]
+fn parameterised_tableau_agrees_with_numbers() {
+    let family = design_file("rk2_family.toml");
+    let numbers = temp_file(
+        "rk2_family.toml",
+        "name = \"rk2_family\"\nA = [[0, 0], [1, 0]]\nb = [\"1/2\", \"1/2\"]\n",
+    );
+    let numbers = numbers.to_str().unwrap();
+    for command in ["stability", "order", "region", "derive"] {
+        let bound = json(&[command, &family, "--param", "c=1"]);
+        let written = json(&[command, numbers]);
+        assert_eq!(bound, written, "zcheck {command}");
+    }
+    // c = 1/2, the explicit midpoint rule: the same stability, another
+    // tableau (order 2 either way).
+    let midpoint = json(&["order", &family, "--param", "c=1/2"]);
+    assert_eq!(midpoint["order"], 2, "{midpoint}");
+    let (code, out, err) = zcheck(&["verify", &family, "--param", "c=1", "--phi", "1/2"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("witnesses agree"), "{out}");
+}
+
+/// A tableau's parameter without a value, or a value for a parameter
+/// nothing declares: a clean error (located at the declaration).
+#[test]
+fn parameterised_tableau_errors() {
+    let family = design_file("rk2_family.toml");
+    for (args, wanted) in [
+        (
+            &["stability", &family][..],
+            "rk2_family.toml:5:11: parameter c has no value: give it one with --param c=VALUE",
+        ),
+        (&["order", &family][..], "parameter c has no value"),
+        (&["region", &family, "--param", "c=1", "--param", "d=2"][..], "has no parameter d"),
+        (
+            &["order", &family, "--param", "c=1", "--param", "d=2"][..],
+            "no tableau here declares a parameter d",
+        ),
+        (&["stability", &family, "--param", "c=0"][..], "b[1]: division by zero"),
+    ] {
+        let (code, _, err) = zcheck(args);
+        assert_eq!(code, 2, "{args:?}: {err}");
+        assert!(err.contains(wanted), "{args:?}: {err}");
+        assert!(!err.contains("panicked"), "{args:?}: {err}");
+    }
+}
