@@ -251,3 +251,55 @@ fn shifted_chebyshev_two_parameters() {
         }
     }
 }
+
+/// Bound values enter a tableau's entries: the 2-stage family written in
+/// c·d with d bound to 1 designs as the family written in c alone (the
+/// oracle), for the SSP coefficient (1 at c = 1) and the real limit (2).
+#[test]
+fn bound_values_enter_a_tableau() {
+    let two = ParamTableau::new(
+        "rk2cd",
+        &["c", "d"],
+        &[vec!["0", "0"], vec!["c*d", "0"]],
+        &["1 - 1/(2*c*d)", "1/(2*c*d)"],
+    )
+    .unwrap();
+    let one = ParamTableau::new(
+        "rk2",
+        &["c"],
+        &[vec!["0", "0"], vec!["c", "0"]],
+        &["1 - 1/(2*c)", "1/(2*c)"],
+    )
+    .unwrap();
+    for objective in [Objective::SspCoefficient, Objective::RealLimit] {
+        let free = vec![FreeParam::new("c", q(1, 4), q(2, 1))];
+        let bound = Problem {
+            subject: Subject::Tableau(&two),
+            objective,
+            free: free.clone(),
+            bound: Params::new().bind("d", q(1, 1)),
+            min_order: None,
+        };
+        let plain = Problem {
+            subject: Subject::Tableau(&one),
+            objective,
+            free,
+            bound: Params::new(),
+            min_order: None,
+        };
+        let (a, b) = (maximize(&bound).unwrap(), maximize(&plain).unwrap());
+        assert_eq!(a.optimum, b.optimum, "{objective}");
+        assert_eq!(a.at, b.at, "{objective}");
+        let at = [("c", q(3, 2))];
+        assert_eq!(objective_at(&bound, &at).unwrap(), objective_at(&plain, &at).unwrap());
+    }
+    let d = maximize(&Problem {
+        subject: Subject::Tableau(&one),
+        objective: Objective::SspCoefficient,
+        free: vec![FreeParam::new("c", q(1, 4), q(2, 1))],
+        bound: Params::new(),
+        min_order: None,
+    })
+    .unwrap();
+    assert_eq!(d.optimum.to_string(), "1");
+}

@@ -64,6 +64,27 @@ pub use tableau::ParamTableau;
 /// allowed set, under `min_order`), where it is attained, why, and the
 /// exact grid check.
 pub fn maximize(problem: &Problem) -> Result<Design, Error> {
+    match bound_tableau(problem)? {
+        Some(t) => maximize_bound(&Problem { subject: Subject::Tableau(&t), ..problem.clone() }),
+        None => maximize_bound(problem),
+    }
+}
+
+/// A tableau subject with its bound parameters replaced by their values,
+/// when there are any (a program reads them at each evaluation).
+fn bound_tableau(problem: &Problem) -> Result<Option<ParamTableau>, Error> {
+    match problem.subject {
+        Subject::Tableau(t) if !problem.bound.is_empty() => {
+            let values: std::collections::HashMap<Sym, Q> =
+                problem.bound.iter().map(|(n, v)| (Sym::new(n), v.clone())).collect();
+            Ok(Some(t.bind(&values)?))
+        }
+        _ => Ok(None),
+    }
+}
+
+/// [`maximize`] once a tableau's bound values are in its entries.
+fn maximize_bound(problem: &Problem) -> Result<Design, Error> {
     let s = setup(problem)?;
     let polys = match &s.engine {
         Engine::Signs(sys) => sys.breakpoints(&s.syms)?,
@@ -128,7 +149,12 @@ pub fn maximize(problem: &Problem) -> Result<Design, Error> {
 /// [`Derivation::plane`](crate::Derivation::plane) and
 /// [`ssp_coefficient`](crate::advanced::order::ssp_coefficient)).
 pub fn objective_at(problem: &Problem, values: &[(&str, Q)]) -> Result<Score, Error> {
-    let s = setup(problem)?;
+    let bound = bound_tableau(problem)?;
+    let problem = match &bound {
+        Some(t) => Problem { subject: Subject::Tableau(t), ..problem.clone() },
+        None => problem.clone(),
+    };
+    let s = setup(&problem)?;
     let point: Vec<(Sym, Q)> = values.iter().map(|(n, v)| (Sym::new(n), v.clone())).collect();
     Ok(evaluate_rational(&s, &point)?.score)
 }

@@ -232,6 +232,31 @@ impl ParamTableau {
         Ok(ParamTableau { name: name.to_owned(), params: syms, a, b })
     }
 
+    /// The tableau with the parameters in `values` replaced by their
+    /// values (the declared list is kept, so a bound name still checks).
+    pub(crate) fn bind(
+        &self,
+        values: &std::collections::HashMap<Sym, Q>,
+    ) -> Result<ParamTableau, Error> {
+        let bind = |r: &Ratio| -> Result<Ratio, Error> {
+            let den = r.den.eval_partial(values);
+            if den.is_zero() {
+                return Err(Error::analysis(
+                    ErrorKind::Singular,
+                    format!("an entry's denominator {} vanishes at the bound values", r.den),
+                ));
+            }
+            Ok(Ratio::reduced(r.num.eval_partial(values), den))
+        };
+        let a = self
+            .a
+            .iter()
+            .map(|row| row.iter().map(bind).collect::<Result<Vec<_>, _>>())
+            .collect::<Result<Vec<_>, _>>()?;
+        let b = self.b.iter().map(bind).collect::<Result<Vec<_>, _>>()?;
+        Ok(ParamTableau { name: self.name.clone(), params: self.params.clone(), a, b })
+    }
+
     /// The number of stages.
     pub fn stages(&self) -> usize {
         self.b.len()
