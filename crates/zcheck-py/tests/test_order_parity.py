@@ -133,3 +133,15 @@ def test_order_document_shape():
         zcheck.Method.builtin("rk4").order(modified=11)
     with pytest.raises(zcheck.Error, match="bhat has 1 entries"):
         zcheck.Method.from_tableau([[0, 0], [1, 0]], ["1/2", "1/2"], bhat=[1])
+
+
+def test_a_splitting_from_a_file(tmp_path):
+    # Strang's splitting is Stormer-Verlet: order 2, symplectic, and on the
+    # oscillator the paper's Verlet (the same chi, Phi_max = 2).
+    path = tmp_path / "strang.toml"
+    path.write_text('drift = ["1/2", "1/2"]\nkick = [1, 0]\n')
+    m = zcheck.Method.from_file(path)
+    o = m.order()
+    assert (o["kind"], o["order"], o["symplectic"]) == ("splitting", 2, True)
+    assert m.charpoly == zcheck.Method.builtin("verlet").charpoly
+    assert m.stability()["phi_max_exact"] == "2"

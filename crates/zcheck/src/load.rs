@@ -295,6 +295,18 @@ fn resolve(arg: &str, oscillator: Oscillator, values: &[(String, Q)]) -> Result<
         let (shown, stem, text) = crate::tableau::read_file(Path::new(arg))?;
         let damped = oscillator == Oscillator::Damped;
         let mut taken = Vec::new();
+        if crate::partitioned::is_partitioned(&text) || crate::partitioned::is_splitting(&text) {
+            let (src, reading, warnings) = partitioned_program(arg, &shown, &stem, &text, damped)?;
+            crate::warn::report(warnings)?;
+            let method = Method::parse(arg, &src).map_err(|e| {
+                Error::method(format!(
+                    "{arg}: the program generated from the partitioned method does not parse: {}",
+                    e.message()
+                ))
+            })?;
+            // No program on y' = λy: a partitioned method needs the split.
+            return Ok((method, None, Some(reading), taken));
+        }
         let (method, scalar, what, reading) = if crate::tableau::is_multistep(&text) {
             let m = Multistep::parse(&shown, &stem, &text)?;
             crate::warn::report(m.warnings().to_vec())?;
@@ -333,6 +345,34 @@ fn resolve(arg: &str, oscillator: Oscillator, values: &[(String, Q)]) -> Result<
         return Ok((method, None, None, Vec::new()));
     }
     Ok((method, None, Reading::builtin(arg).transpose()?, Vec::new()))
+}
+
+/// A partitioned pair's or a splitting's program on the oscillator (q = y,
+/// p = v; `poly::advanced::partitioned`), its reading and its warnings.
+/// The damped spring is not separable, so it has none.
+fn partitioned_program(
+    arg: &str,
+    shown: &str,
+    stem: &str,
+    text: &str,
+    damped: bool,
+) -> Result<(String, Reading, Vec<String>), Error> {
+    if damped {
+        return Err(Error::method(format!(
+            "{arg}: a partitioned method integrates q' = f(p), p' = g(q); the damped spring \
+             (p' depends on p) is not of that form"
+        )));
+    }
+    use poly::advanced::partitioned::{partitioned_zm, splitting_zm};
+    if crate::partitioned::is_partitioned(text) {
+        let p = crate::partitioned::Partitioned::parse(shown, stem, text)?;
+        let src = partitioned_zm(&p.name, shown, &p.q, &p.p);
+        Ok((src, Reading::of_partitioned(&p), p.warnings))
+    } else {
+        let s = crate::partitioned::Splitting::parse(shown, stem, text)?;
+        let src = splitting_zm(&s.name, shown, &s.drift, &s.kick);
+        Ok((src, Reading::of_splitting(&s), s.warnings))
+    }
 }
 
 /// The `--param NAME=VALUE` values as the loaders bind a tableau's

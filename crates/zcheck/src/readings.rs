@@ -325,6 +325,18 @@ impl Reading {
         Reading::new(t.exact().name().to_owned(), form, t.decimal_digits())
     }
 
+    /// A partitioned pair's reading.
+    pub(crate) fn of_partitioned(p: &crate::partitioned::Partitioned) -> Reading {
+        let form = Form::Partitioned { q: p.q.clone(), p: p.p.clone() };
+        Reading::new(p.name.clone(), form, p.decimal_digits)
+    }
+
+    /// A splitting's reading.
+    pub(crate) fn of_splitting(s: &crate::partitioned::Splitting) -> Reading {
+        let form = Form::Splitting { drift: s.drift.clone(), kick: s.kick.clone() };
+        Reading::new(s.name.clone(), form, s.decimal_digits)
+    }
+
     /// A multistep file's reading.
     pub(crate) fn of_multistep(m: &Multistep) -> Reading {
         Reading::new(

@@ -182,8 +182,9 @@ class Method:
     @classmethod
     def from_file(cls, path):
         """A method from a file: ``.zm`` source, or ``.toml`` holding a
-        Butcher tableau (``A``, ``b``, ``c``) or multistep coefficients
-        (``alpha``, ``beta``), read as ``zcheck`` reads it."""
+        Butcher tableau (``A``, ``b``, ``c``), multistep coefficients
+        (``alpha``, ``beta``), a partitioned pair (``[q]``, ``[p]``) or a
+        splitting (``drift``, ``kick``), read as ``zcheck`` reads it."""
         path = _os.fspath(path)
         if not path.endswith((".zm", ".toml")):
             raise Error(f"{path}: expected a .zm or .toml file (a built-in: Method.builtin)")

@@ -620,3 +620,50 @@ fn library_route_and_cli_agree_on_every_file() {
         }
     }
 }
+
+/// A splitting or a partitioned pair is a method on the oscillator too
+/// (q = y, p = v): every command reads it. Its χ is the built-in's that it
+/// spells out: Strang and the Lobatto IIIA–IIIB pair are Verlet's, the
+/// Forest–Ruth coefficients are `forest_ruth`'s; `stability` and `verify`
+/// agree with the built-in; the damped spring (not separable) is refused.
+#[test]
+fn partitioned_methods_on_the_oscillator() {
+    let run = |args: &[&str]| -> Value {
+        let out = zcheck(args);
+        assert!(out.status.success(), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
+        serde_json::from_slice(&out.stdout).expect("json")
+    };
+    let d = dir("osc");
+    let strang = write(&d, "strang.toml", "drift = [\"1/2\", \"1/2\"]\nkick = [1, 0]\n");
+    let pair = write(
+        &d,
+        "sv.toml",
+        "name = \"stormer_verlet\"\n[q]\nA = [[0, 0], [\"1/2\", \"1/2\"]]\nb = [\"1/2\", \"1/2\"]\n\
+         [p]\nA = [[\"1/2\", 0], [\"1/2\", 0]]\nb = [\"1/2\", \"1/2\"]\n",
+    );
+    let fr = write(
+        &d,
+        "fr.toml",
+        "drift = [\"1/(2*(2 - cbrt(2)))\", \"(1 - cbrt(2))/(2*(2 - cbrt(2)))\", \
+         \"(1 - cbrt(2))/(2*(2 - cbrt(2)))\", \"1/(2*(2 - cbrt(2)))\"]\n\
+         kick = [\"1/(2 - cbrt(2))\", \"-cbrt(2)/(2 - cbrt(2))\", \"1/(2 - cbrt(2))\", 0]\n",
+    );
+    let chi = |m: &str| run(&["derive", m, "--format", "json"])["charpoly"].clone();
+    assert_eq!(chi(&strang), chi("verlet"));
+    assert_eq!(chi(&pair), chi("verlet"));
+    assert_eq!(chi(&fr), chi("forest_ruth"));
+    let phi_max = |m: &str| run(&["stability", m, "--format", "json"])["phi_max_exact"].clone();
+    assert_eq!(phi_max("verlet"), "2");
+    assert_eq!(phi_max(&strang), phi_max("verlet"));
+    assert_eq!(phi_max(&fr), phi_max("forest_ruth"));
+    let out = zcheck(&["verify", &pair, "--phi", "1.9"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    // The order report still reads the file.
+    assert_eq!(json(&[&fr])["order"], 4);
+    // The whole-scene advisor's damped spring is not of the form q' = f(p), p' = g(q).
+    let scene = write(&d, "s.toml", "tick_hz = 60\n[[mode]]\nhz = 2\n");
+    let out = zcheck(&["advise", "--scene", &scene, "--methods", &strang]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("the damped spring (p' depends on p) is not of that form"), "{err}");
+}
