@@ -55,11 +55,14 @@ pub(crate) fn solves(s: &Setup, e: &Eval, point: &[(Sym, Algebraic)]) -> Vec<Str
         Score::Infinite => out.push("there the method is stable for every step".to_owned()),
         Score::Finite(v) if v.sign().is_eq() => out.push("there no step > 0 is stable".to_owned()),
         Score::Finite(v) => {
-            let eq = match v.as_rational() {
-                Some(q) => format!("{var} = {q}"),
-                None => format!("{} = 0", v.defining_poly().to_string_in(var)),
-            };
-            out.push(format!("the optimum solves {eq} ({} = {})", var, v.describe(var)));
+            out.push(match v.as_rational() {
+                Some(q) => format!("the optimum is {var} = {q}, rational"),
+                None => format!(
+                    "the optimum solves {} = 0 ({var} = {})",
+                    v.defining_poly().to_string_in(var),
+                    v.describe(var)
+                ),
+            });
             let rational: HashMap<Sym, Q> = point
                 .iter()
                 .filter_map(|(s, a)| a.as_rational().map(|q| (*s, q.clone())))
