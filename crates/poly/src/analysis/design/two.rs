@@ -73,44 +73,67 @@ fn may_vanish(g: &Poly, point: &[(Sym, Algebraic)]) -> bool {
 }
 
 fn systems(sys: &SignSystem, polys: &[Breakpoints], a: Sym, b: Sym) -> Result<Vec<System2>, Error> {
-    let x = sys.x;
     let mut out = Vec::new();
     let curves: Vec<&Breakpoints> = polys.iter().collect();
     for (i, c) in curves.iter().enumerate() {
-        for d in &curves[i + 1..] {
-            out.push(System2 {
-                g1: c.poly.clone(),
-                g2: d.poly.clone(),
-                label: format!("{} meets {}", c.label, d.label),
-            });
-        }
-        for (s, what) in [(b, "vertical"), (a, "horizontal")] {
-            let d = c.poly.derivative(s);
-            out.push(System2 {
-                g1: c.poly.clone(),
-                g2: d,
-                label: format!("{} has a {what} tangent or a singular point", c.label),
-            });
-        }
+        out.extend(curve_systems(sys, &c.poly, &c.label, &curves[i + 1..], a, b)?);
     }
     for f in &sys.factors {
-        if f.poly.degree_in(x) == 0 {
+        if f.poly.degree_in(sys.x) == 0 {
             continue;
         }
+        let x = sys.x;
         let (fa, fb, fx) = (f.poly.derivative(a), f.poly.derivative(b), f.poly.derivative(x));
-        for c in &curves {
-            let j = &(&fa * &c.poly.derivative(b)) - &(&fb * &c.poly.derivative(a));
-            out.push(System2 {
-                g1: c.poly.clone(),
-                g2: eliminate(&f.poly, &j, x)?,
-                label: format!("a root of {} is stationary along {}", f.label, c.label),
-            });
-        }
         let k = &(&fa * &fx.derivative(b)) - &(&fb * &fx.derivative(a));
         out.push(System2 {
             g1: eliminate(&f.poly, &fx, x)?,
             g2: eliminate(&f.poly, &k, x)?,
             label: format!("a double root of {} is stationary along its tangency curve", f.label),
+        });
+    }
+    Ok(out)
+}
+
+/// The systems of one curve C (a breakpoint curve, or a component two
+/// conditions share): C meeting each of `others`, C's vertical and
+/// horizontal tangents and singular points, and each factor's root
+/// stationary along C (F = C = F_a C_b − F_b C_a = 0, x eliminated). The
+/// objective along C is piecewise smooth in the curve's parameter, so its
+/// maximum on C is at one of these or on the box's edge.
+fn curve_systems(
+    sys: &SignSystem,
+    c: &Poly,
+    label: &str,
+    others: &[&Breakpoints],
+    a: Sym,
+    b: Sym,
+) -> Result<Vec<System2>, Error> {
+    let x = sys.x;
+    let mut out = Vec::new();
+    for d in others {
+        out.push(System2 {
+            g1: c.clone(),
+            g2: d.poly.clone(),
+            label: format!("{label} meets {}", d.label),
+        });
+    }
+    for (s, what) in [(b, "vertical"), (a, "horizontal")] {
+        out.push(System2 {
+            g1: c.clone(),
+            g2: c.derivative(s),
+            label: format!("{label} has a {what} tangent or a singular point"),
+        });
+    }
+    for f in &sys.factors {
+        if f.poly.degree_in(x) == 0 {
+            continue;
+        }
+        let (fa, fb) = (f.poly.derivative(a), f.poly.derivative(b));
+        let j = &(&fa * &c.derivative(b)) - &(&fb * &c.derivative(a));
+        out.push(System2 {
+            g1: c.clone(),
+            g2: eliminate(&f.poly, &j, x)?,
+            label: format!("a root of {} is stationary along {label}", f.label),
         });
     }
     Ok(out)
@@ -123,7 +146,7 @@ fn solve(
     b: Sym,
     (alo, ahi): (&Q, &Q),
     (blo, bhi): (&Q, &Q),
-    degenerate: &mut usize,
+    shared: &mut Vec<Poly>,
 ) -> Result<Vec<Vec<(Sym, Algebraic)>>, Error> {
     let (mut g1, mut g2) = (s2.g1.clone(), s2.g2.clone());
     if g1.is_zero() || g2.is_zero() || g1.as_constant().is_some() || g2.as_constant().is_some() {
@@ -131,7 +154,9 @@ fn solve(
     }
     let g = g1.gcd(&g2);
     if g.as_constant().is_none() {
-        *degenerate += 1;
+        if !shared.contains(&g) {
+            shared.push(g.clone());
+        }
         g1 = g1.div_exact(&g).unwrap_or(g1);
         g2 = g2.div_exact(&g).unwrap_or(g2);
         if g1.as_constant().is_some() || g2.as_constant().is_some() {
@@ -216,18 +241,44 @@ pub(crate) fn search_box(
             consider(pt, v.eval, why);
         }
     }
-    // The interior.
-    let mut degenerate = 0usize;
-    let list = systems(sys, polys, a, b)?;
+    // The interior: the systems of the breakpoint curves, then those of
+    // every component two of their equations share (a curve of solutions,
+    // searched as a breakpoint curve is).
+    let mut shared: Vec<Poly> = Vec::new();
+    let mut list = systems(sys, polys, a, b)?;
     let mut points: Vec<(Point, Vec<String>)> = Vec::new();
-    for s2 in &list {
-        for pt in solve(s2, a, b, (&fa.lo, &fa.hi), (&fb.lo, &fb.hi), &mut degenerate)? {
-            match points.iter_mut().find(|(p, _)| *p == pt) {
-                Some((_, why)) => why.push(s2.label.clone()),
-                None => points.push((pt, vec![s2.label.clone()])),
+    let mut solve_all = |list: &[System2], shared: &mut Vec<Poly>| -> Result<(), Error> {
+        for s2 in list {
+            for pt in solve(s2, a, b, (&fa.lo, &fa.hi), (&fb.lo, &fb.hi), shared)? {
+                match points.iter_mut().find(|(p, _)| *p == pt) {
+                    Some((_, why)) => why.push(s2.label.clone()),
+                    None => points.push((pt, vec![s2.label.clone()])),
+                }
             }
         }
+        Ok(())
+    };
+    solve_all(&list, &mut shared)?;
+    let curves: Vec<&Breakpoints> = polys.iter().collect();
+    let mut second = Vec::new();
+    for (k, g) in shared.iter().enumerate() {
+        let label = format!("the shared component {}", g);
+        let mut more = curve_systems(sys, g, &label, &curves, a, b)?;
+        // And the shared components meeting each other.
+        for h in &shared[k + 1..] {
+            more.push(System2 {
+                g1: g.clone(),
+                g2: h.clone(),
+                label: format!("{label} meets {h}"),
+            });
+        }
+        second.extend(more);
     }
+    let mut unresolved: Vec<Poly> = Vec::new();
+    solve_all(&second, &mut unresolved)?;
+    unresolved.retain(|g| !shared.contains(g));
+    let components = shared.len();
+    list.extend(second);
     for (pt, why) in points {
         evaluated += 1;
         let e = sys.evaluate(&pt)?;
@@ -245,15 +296,23 @@ pub(crate) fn search_box(
         a.name(),
         b.name(),
         polys.len(),
-        if degenerate > 0 {
+        if components > 0 {
             format!(
-                "; {degenerate} systems shared a component, divided out (not a \
-                 zero-dimensional system there)"
+                "; {components} curves where two equations share a component were searched as \
+                 breakpoint curves are"
             )
         } else {
             String::new()
         }
     ));
+    if !unresolved.is_empty() {
+        let list: Vec<String> = unresolved.iter().map(|g| g.to_string()).collect();
+        cert.push(format!(
+            "not certified along {}: the systems on those curves share a component again, and \
+             the search does not go a level deeper",
+            list.join(", ")
+        ));
+    }
     let names: Vec<String> =
         at.iter().map(|(s, v)| format!("{} = {}", s.name(), v.describe(s.name()))).collect();
     cert.push(format!("optimum {score} at {}, attained", names.join(", ")));
