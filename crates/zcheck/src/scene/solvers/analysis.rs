@@ -393,14 +393,22 @@ pub(crate) fn analyse(
         ns_per_tick = Some(kernel::ns_per_tick(&sub, s, std::time::Duration::from_millis(3)));
         // ‖T^k‖^(1/k) ≥ ρ(T): no power can bring the bound below
         // 1 − 10⁻⁹ when ρ itself is not, so the products are not tried.
+        // The tick map P^S of a small state, computed once: the simulation
+        // check applies it, and without rigid modes (D = P) it is the
+        // certificate's T too.
+        let tick_map = (p.nrows() <= TICK_MAP_MAX_STATE).then(|| dense::power(&p, s));
         if !certified && rho_nr < 1.0 - CERTIFY_MARGIN {
-            norm_bound = certify(&d, s);
+            let t = match (&q, &tick_map) {
+                (None, Some(t)) => t.clone(),
+                _ => dense::power(&d, s),
+            };
+            norm_bound = certify(t);
             certified = norm_bound.is_some();
         }
         let len = p.nrows() as f64;
         let affordable = (CHECK_FLOPS / (2.0 * len * len * s as f64)) as u64;
         let ticks = (prep.ticks().min(120.0) as u64).min(affordable.max(MIN_CHECK_TICKS));
-        simulation = Some(simulation_check(&sub, &p, &scale, s, ticks));
+        simulation = Some(simulation_check(&sub, &p, tick_map.as_ref(), &scale, s, ticks));
     }
     Ok(ConfigAdvice {
         solver: config.solver,
@@ -431,34 +439,34 @@ pub(crate) fn analyse(
 
 /// A norm bound on the deflated tick map T = D^S: the smallest
 /// ‖T^{2^j}‖_∞^{1/2^j} over j ≤ 8 when it is below 1 − 10⁻⁹ (far above the
-/// rounding of the products), else `None`. The matrix products are capped
-/// at about [`CERTIFY_FLOPS`] of work, so a large map tries fewer powers and
+/// rounding of the products), else `None`. The squarings are capped at
+/// about [`CERTIFY_FLOPS`] of work, so a large map tries fewer powers and
 /// stays uncertified sooner.
-fn certify(d: &Mat<f64>, s: u64) -> Option<f64> {
-    let n = d.nrows().max(1) as f64;
-    let budget = ((CERTIFY_FLOPS / (2.0 * n * n * n)) as u64).max(4);
-    // D^S by squaring costs about 2·log2 S products.
-    let mut products = 2 * u64::from(64 - s.leading_zeros());
-    let mut t = dense::power(d, s);
-    for j in 0..=8 {
+fn certify(mut t: Mat<f64>) -> Option<f64> {
+    let n = t.nrows().max(1) as f64;
+    let squarings = ((CERTIFY_FLOPS / (2.0 * n * n * n)) as u32).min(8);
+    for j in 0..=squarings {
         let b = dense::norm_inf(&t).powf(1.0 / f64::from(1u32 << j));
         if b < 1.0 - CERTIFY_MARGIN {
             return Some(b);
         }
-        products += 1;
-        if products > budget {
-            return None;
+        if j < squarings {
+            t = &t * &t;
         }
-        t = &t * &t;
     }
     None
 }
 
+/// The largest state whose tick map P^S is formed (by squaring) for the
+/// simulation check and the certificate; past it the check steps the map
+/// S times per tick.
+const TICK_MAP_MAX_STATE: usize = 600;
+
 /// How far below 1 a norm bound must be to certify.
 const CERTIFY_MARGIN: f64 = 1e-9;
 
-/// The work [`certify`] may spend on matrix products, flops.
-const CERTIFY_FLOPS: f64 = 6e10;
+/// The work [`certify`] may spend on squarings, flops.
+const CERTIFY_FLOPS: f64 = 5e8;
 
 /// The work the simulation check may spend on products of the substep map
 /// with a state, flops: a large state is compared over fewer ticks (at
@@ -489,6 +497,7 @@ fn scaling(sub: &Substep<f64>) -> Vec<f64> {
 fn simulation_check(
     sub: &Substep<f64>,
     p: &Mat<f64>,
+    tick_map: Option<&Mat<f64>>,
     scale: &[f64],
     s: u64,
     ticks: u64,
@@ -503,12 +512,11 @@ fn simulation_check(
             (seed >> 11) as f64 / (1u64 << 53) as f64 - 0.5
         })
         .collect();
-    let t = (len <= 600).then(|| dense::power(p, s));
     let mut via_map: Vec<f64> = state.iter().zip(scale).map(|(x, d)| x / d).collect();
     let mut worst = 0.0f64;
     for _ in 0..ticks {
         kernel::simulate(sub, s, 1, &mut state);
-        via_map = match &t {
+        via_map = match tick_map {
             Some(t) => dense::mat_vec(t, &via_map),
             None => (0..s).fold(via_map, |x, _| dense::mat_vec(p, &x)),
         };
