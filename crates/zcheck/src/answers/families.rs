@@ -50,6 +50,24 @@ pub(crate) struct FamilyRow {
     pub reason: Option<String>,
 }
 
+impl FamilyRow {
+    /// A family's row before its configuration is known.
+    fn empty(family: &str) -> FamilyRow {
+        FamilyRow {
+            family: family.to_owned(),
+            rank: None,
+            method: None,
+            substeps: None,
+            iterations: None,
+            ops_per_tick: None,
+            ns_per_tick: None,
+            phase_error_rad: None,
+            amplitude_error: None,
+            reason: None,
+        }
+    }
+}
+
 /// The table `--solvers` prints.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub(crate) struct FamilyTable {
@@ -143,18 +161,7 @@ fn rank(scene: &SceneFile, mut rows: Vec<FamilyRow>) -> FamilyTable {
 
 fn paper_row(scene: &SceneFile, methods: &[String], options: Options) -> Result<FamilyRow, Error> {
     let a = scene_advice(scene, methods, options)?;
-    let mut row = FamilyRow {
-        family: "paper".to_owned(),
-        rank: None,
-        method: None,
-        substeps: None,
-        iterations: None,
-        ops_per_tick: None,
-        ns_per_tick: None,
-        phase_error_rad: None,
-        amplitude_error: None,
-        reason: None,
-    };
+    let mut row = FamilyRow::empty("paper");
     let chosen = a
         .recommended
         .as_ref()
@@ -175,18 +182,7 @@ fn paper_row(scene: &SceneFile, methods: &[String], options: Options) -> Result<
 
 fn solver_row(scene: &SceneFile, solver: Solver) -> Result<FamilyRow, Error> {
     let advice = solver_advice(scene, solver, None)?;
-    let mut row = FamilyRow {
-        family: solver.name().to_owned(),
-        rank: None,
-        method: None,
-        substeps: None,
-        iterations: None,
-        ops_per_tick: None,
-        ns_per_tick: None,
-        phase_error_rad: None,
-        amplitude_error: None,
-        reason: None,
-    };
+    let mut row = FamilyRow::empty(solver.name());
     let Answer::Search(s) = advice.answer else {
         return Err(Error::numeric("the solver search gave one configuration"));
     };

@@ -67,6 +67,8 @@ use serde::Serialize;
 use self::analysed::Analysed;
 use self::candidate::advise_one;
 pub(crate) use self::candidate::CandidateAdvice;
+#[cfg(test)]
+pub(crate) use self::simulate::fit_root;
 use self::simulate::simulate_candidate;
 pub(crate) use self::simulate::AGREE_FRACTION;
 use self::sweep::{sweep_report, SweepReport};

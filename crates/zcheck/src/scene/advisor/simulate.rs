@@ -236,7 +236,7 @@ fn close(sim: f64, pred: f64, tol: f64) -> bool {
 /// (Ψ, ln r) of the sequence's two-term recurrence q_{k+1} = a q_k + b q_{k−1},
 /// fitted by least squares; `None` when the sequence is too short or its
 /// roots are real.
-fn fit_root(q: &[f64]) -> Option<(f64, f64)> {
+pub(crate) fn fit_root(q: &[f64]) -> Option<(f64, f64)> {
     if q.len() < 4 {
         return None;
     }

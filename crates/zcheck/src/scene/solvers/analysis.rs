@@ -563,26 +563,6 @@ mod tests {
         }
     }
 
-    /// (Ψ, ln r) per substep of a sequence obeying q_{k+1} = a q_k + b q_{k−1}
-    /// (least squares), for a complex pair.
-    fn fit(q: &[f64]) -> Option<C64> {
-        let scale = q.iter().fold(0.0f64, |m, x| m.max(x.abs()));
-        let (mut s11, mut s12, mut s22, mut r1, mut r2) = (0.0, 0.0, 0.0, 0.0, 0.0);
-        for k in 1..q.len() - 1 {
-            let (x1, x2, y) = (q[k] / scale, q[k - 1] / scale, q[k + 1] / scale);
-            s11 += x1 * x1;
-            s12 += x1 * x2;
-            s22 += x2 * x2;
-            r1 += x1 * y;
-            r2 += x2 * y;
-        }
-        let det = s11 * s22 - s12 * s12;
-        let a = (r1 * s22 - r2 * s12) / det;
-        let b = (s11 * r2 - s12 * r1) / det;
-        let disc = -b - a * a / 4.0;
-        (disc > 0.0).then(|| C64::new(a / 2.0, disc.sqrt()))
-    }
-
     /// The 1000:1 mass-ratio chain (ground, 1000 kg, 1 kg, 1000 kg, 1 kg;
     /// 1000 N/m springs): the stated spectral radius against the decay of
     /// a simulated state (‖s_2K‖/‖s_K‖)^(1/K), and every stated effective
@@ -633,13 +613,10 @@ mod tests {
                     }
                     seq.push(st[i]);
                 }
-                if let Some(m) = fit(&seq) {
-                    let m = C64::from_polar(
-                        m.norm().powf(1.0 / stride as f64),
-                        m.arg() / stride as f64,
-                    );
-                    let theta = substeps as f64 * m.arg().abs();
-                    let ln_r = substeps as f64 * m.norm().ln();
+                // The advisor's least-squares fit of the two-term recurrence.
+                if let Some((psi, ln_r)) = crate::scene::advisor::fit_root(&seq) {
+                    let theta = substeps as f64 * psi / stride as f64;
+                    let ln_r = substeps as f64 * ln_r / stride as f64;
                     fitted.push((
                         theta / (2.0 * std::f64::consts::PI) * 60.0,
                         -ln_r / (ln_r * ln_r + theta * theta).sqrt(),
