@@ -8,7 +8,7 @@
 //! An argument is a built-in's name, a `.zm` file (`check::load` tells the
 //! two apart, and reads the file), or a `.toml` file of coefficients: a
 //! Butcher tableau ([`crate::tableau`]) or a linear multistep method
-//! ([`crate::multistep`], told apart by its `alpha` and `beta`), turned into
+//! (`multistep`, told apart by its `alpha` and `beta`), turned into
 //! its `.zm` program.
 //!
 //! The whole-scene advisor asks for the method on the damped spring
@@ -81,7 +81,7 @@ impl LoadedMethod {
 
     /// The method `arg` names, for the w-plane only: a tableau or multistep
     /// file as its program on y' = λy alone (its oscillator program is not
-    /// generated), anything else as [`LoadedMethod::load`] reads it.
+    /// generated), anything else as `LoadedMethod::load` reads it.
     pub fn load_for_plane(arg: &str) -> Result<LoadedMethod, Error> {
         LoadedMethod::load_for_plane_with(arg, &[])
     }

@@ -18,7 +18,7 @@
 //!   `$XDG_CACHE_HOME/zcheck/native`, else `$HOME/.cache/zcheck/native`,
 //!   named by a hash of its source and of `rustc -V`: a second run loads it
 //!   in a millisecond. Several steps compile in one `rustc` call
-//!   ([`prepare`]).
+//!   (`prepare`).
 //! - **Fallback.** Without a `rustc` (or when it fails), callers time the
 //!   specialised interpreter ([`check::kernel::Kernel`]) and say so.
 
@@ -348,7 +348,7 @@ pub(crate) fn prepare(steps: &[(&Method, &Params)]) -> Result<(), Error> {
 }
 
 /// The native step of `method` at `params` (compiled now unless
-/// [`prepare`] did it), with `params`' values as its arguments.
+/// `prepare` did it), with `params`' values as its arguments.
 pub fn native_step(method: &Method, params: &Params) -> Result<NativeStep, Error> {
     let (k, u) = key_of(method, params)?;
     if let Some(s) = loaded().lock().unwrap_or_else(std::sync::PoisonError::into_inner).get(&k) {

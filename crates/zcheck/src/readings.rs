@@ -9,7 +9,7 @@
 //! A coefficient file says which by its keys: `[q]` and `[p]` (a pair),
 //! `drift` and `kick` (a splitting), `alpha` and `beta` (multistep), else
 //! `A` and `b` (a tableau). A built-in has a reading where its program is
-//! one of these methods on the oscillator, written in [`BUILTIN_READINGS`]
+//! one of these methods on the oscillator, written in `BUILTIN_READINGS`
 //! as the TOML a user would write; its `_matrix` twin shares it. The
 //! paper's methods on the separable system y' = f(v), v' = g(y) (position
 //! y is q, velocity v is p), each derived from its program:
@@ -21,12 +21,12 @@
 //! - Verlet's two-step y₊ = 2y − y₋ + h² g(y) is Störmer–Verlet,
 //!   drift(h/2) kick(h) drift(h/2).
 //! - Semi-False Heun evaluates g at y₀ and at Y₂ = y₀ + h f(v₀), and f at
-//!   v₀ and at V₂ = v₀ + h g(Y₂): the pair [q] A = [[0, 0], [1, 0]],
-//!   [p] A = [[0, 0], [0, 1]], b = b̂ = (1/2, 1/2), stage i evaluating f and
+//!   v₀ and at V₂ = v₀ + h g(Y₂): the pair `[q]` A = [[0, 0], [1, 0]],
+//!   `[p]` A = [[0, 0], [0, 1]], b = b̂ = (1/2, 1/2), stage i evaluating f and
 //!   g at one point (Yᵢ, Vᵢ).
 //! - False Heun evaluates g at y₀ and at Y₂ = y₀ + h f(V₁), and f at
 //!   V₁ = v₀ + h g(y₀) and at V₂ = v₀ + h g(Y₂): the pair with the same
-//!   [q] and [p] A = [[1, 0], [0, 1]].
+//!   `[q]` and `[p]` A = [[1, 0], [0, 1]].
 //!
 //! The damped-spring built-ins (a free D), Newmark's methods (defined for
 //! y'' = g(y), whose velocity update is not a Runge–Kutta stage of a

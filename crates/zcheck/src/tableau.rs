@@ -561,7 +561,7 @@ impl Tableau {
 
     /// Parses the text of a tableau file; `stem` names the method when the
     /// file has no `name`. A file that declares parameters (`params`) needs
-    /// their values: [`Tableau::parse_bound`].
+    /// their values: `Tableau::parse_bound`.
     pub fn parse(path: &str, stem: &str, text: &str) -> Result<Tableau, Error> {
         Tableau::parse_bound(path, stem, text, &[])
     }

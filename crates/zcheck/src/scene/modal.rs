@@ -16,7 +16,7 @@
 //!
 //! Modes with ω = 0 (a free body, or a chain not tied to the ground) move
 //! rigidly: Φ = 0 for every step, so they limit nothing and are dropped
-//! (counted in [`Modal::rigid`]).
+//! (counted in `Modal::rigid`).
 //!
 //! Particles (every mass with `pos`, 2 or 3 degrees of freedom each): a
 //! spring between masses i and j is linearised about the rest positions

@@ -178,7 +178,7 @@ pub struct Options {
     /// Simulate to check the prediction.
     pub simulate: bool,
     /// Simulate every candidate that meets the target, not only those
-    /// within [`SIM_COST_FACTOR`] of the recommended's cost.
+    /// within `SIM_COST_FACTOR` of the recommended's cost.
     pub simulate_all: bool,
     /// Analyse the Gauss–Seidel sweep too.
     pub gauss_seidel: bool,
