@@ -30,7 +30,7 @@ pub use crate::lang::{builtins, multistep, partitioned, tableau};
 pub use crate::multivariate::constants as field;
 pub use crate::multivariate::matrix::SparsePolyMatrix;
 pub use crate::multivariate::poly::Monomial;
-pub use crate::multivariate::resultant::resultant;
+pub use crate::multivariate::resultant::{circle_conditions, resultant, CircleConditions};
 /// Sturm sequences, root counts and real-root isolation over Q.
 pub mod sturm {
     pub use crate::univariate::roots::isolate_real_roots;

@@ -43,7 +43,7 @@ use std::fmt;
 use num_traits::{One, Signed, Zero};
 
 use crate::analysis::stability::{self, ClassAt, Stability};
-use crate::multivariate::resultant::resultant;
+use crate::multivariate::resultant::{circle_conditions, resultant};
 use crate::Error as StabilityError;
 use crate::{Algebraic, Poly, Sym, UPoly, Q};
 use crate::{Derivation, Params};
@@ -176,31 +176,13 @@ fn region(derivation: &Derivation, param: Sym, bound: &Params) -> Result<Region,
     // z, Φ and `param` is reported by it.
     stability::class_at(&substitute(chi, param, &Q::one()), &Q::one())?;
     let (z, phi) = (Sym::z(), Sym::phi());
-    let a = chi.coeffs_in(z);
-    let n = a.len() - 1;
-    let mut at_one = Poly::zero();
-    let mut at_minus_one = Poly::zero();
-    for (k, c) in a.iter().enumerate() {
-        at_one += c;
-        if k % 2 == 0 {
-            at_minus_one += c;
-        } else {
-            at_minus_one -= c;
-        }
-    }
-    let unit = if n == 2 {
-        &a[2] - &a[0]
-    } else {
-        // z^n χ(1/z) has the coefficients of χ reversed.
-        let rev: Vec<Poly> = a.iter().rev().cloned().collect();
-        resultant(&a, &rev)
-    };
+    let c = circle_conditions(&chi.coeffs_in(z));
     let mut curves = Vec::new();
     for (kind, p) in [
-        (CurveKind::Leading, a[n].clone()),
-        (CurveKind::ChiAtOne, at_one),
-        (CurveKind::ChiAtMinusOne, at_minus_one),
-        (CurveKind::UnitCircle, unit),
+        (CurveKind::Leading, c.leading),
+        (CurveKind::ChiAtOne, c.at_one),
+        (CurveKind::ChiAtMinusOne, c.at_minus_one),
+        (CurveKind::UnitCircle, c.unit_circle),
     ] {
         let (monomial, poly) = split_monomial(&p, &[phi, param]);
         curves.push(Curve { kind, poly: primitive(&poly), monomial });

@@ -25,7 +25,7 @@ use super::system::{Eval, Factor};
 use super::tableau::ParamTableau;
 use crate::analysis::stability::Stability;
 use crate::error::Error;
-use crate::multivariate::resultant::resultant;
+use crate::multivariate::resultant::{circle_conditions, resultant};
 use crate::{Algebraic, Derivation, Params, Poly, Sym, UPoly, Q};
 
 /// Where the values at rational points come from.
@@ -50,30 +50,15 @@ impl<'a> Oscillator<'a> {
     pub(crate) fn new(source: Source<'a>, chi: &Poly) -> Oscillator<'a> {
         let (z, phi) = (Sym::z(), Sym::phi());
         let a = chi.coeffs_in(z);
-        let n = a.len() - 1;
-        let (mut at_one, mut at_minus_one) = (Poly::zero(), Poly::zero());
-        for (k, c) in a.iter().enumerate() {
-            at_one += c;
-            if k % 2 == 0 {
-                at_minus_one += c;
-            } else {
-                at_minus_one -= c;
-            }
-        }
-        let unit = if n == 2 {
-            &a[2] - &a[0]
-        } else {
-            let rev: Vec<Poly> = a.iter().rev().cloned().collect();
-            resultant(&a, &rev)
-        };
+        let c = circle_conditions(&a);
         let disc = resultant(&a, &chi.derivative(z).coeffs_in(z));
         let mut factors: Vec<Factor> = Vec::new();
         for (poly, label) in [
-            (a[n].clone(), "the leading coefficient of chi (a root from infinity)"),
-            (a[0].clone(), "the constant coefficient of chi (a root through 0)"),
-            (at_one, "chi(1) (a root through +1)"),
-            (at_minus_one, "chi(-1) (a root through -1)"),
-            (unit, "the unit-circle condition (two roots with z_i z_j = 1)"),
+            (c.leading, "the leading coefficient of chi (a root from infinity)"),
+            (c.constant, "the constant coefficient of chi (a root through 0)"),
+            (c.at_one, "chi(1) (a root through +1)"),
+            (c.at_minus_one, "chi(-1) (a root through -1)"),
+            (c.unit_circle, "the unit-circle condition (two roots with z_i z_j = 1)"),
             (disc, "the discriminant of chi in z (a repeated root)"),
         ] {
             let p = strip_power(&poly, phi);

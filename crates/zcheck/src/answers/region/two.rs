@@ -173,24 +173,11 @@ fn limit_conditions(chi: &Poly) -> (Poly, Vec<(&'static str, Poly)>) {
         return (l, Vec::new());
     }
     let n = a.len() - 1;
-    let (mut at_one, mut at_minus_one) = (Poly::zero(), Poly::zero());
-    for (k, c) in a.iter().enumerate() {
-        at_one += c;
-        if k % 2 == 0 {
-            at_minus_one += c;
-        } else {
-            at_minus_one -= c;
-        }
-    }
+    let c = poly::advanced::circle_conditions(&a);
     let mut conditions =
-        vec![("leading", a[n].clone()), ("chi(1)", at_one), ("chi(-1)", at_minus_one)];
-    match n {
-        1 => {}
-        2 => conditions.push(("unit_circle", &a[2] - &a[0])),
-        _ => {
-            let rev: Vec<Poly> = a.iter().rev().cloned().collect();
-            conditions.push(("unit_circle", poly::advanced::resultant(&a, &rev)));
-        }
+        vec![("leading", c.leading), ("chi(1)", c.at_one), ("chi(-1)", c.at_minus_one)];
+    if n >= 2 {
+        conditions.push(("unit_circle", c.unit_circle));
     }
     let mut out: Vec<(&'static str, Poly)> = Vec::new();
     for (kind, p) in conditions {
