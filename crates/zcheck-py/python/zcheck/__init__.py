@@ -295,7 +295,8 @@ class Method:
         ``ssp_coefficient``, the ``embedded_order`` of a pair, the
         ``failed_conditions`` of the next order with exact residuals, and
         with ``modified=N`` the modified equation up to h^N. ``tolerance``
-        (exact, as entries are) adds ``order_within_tolerance``; it defaults
+        (exact, as entries are) adds ``order_within_tolerance`` (and, for a
+        pair, ``embedded_order_within_tolerance``); it defaults
         to 1e-12 when an entry is a decimal of 10 or more significant
         digits. A method from ``.zm`` text has no nonlinear reading: an
         :class:`Error`."""

@@ -177,7 +177,7 @@ pub(crate) fn to_json(reading: &Reading, r: &OrderReport) -> Value {
             })
             .collect::<Vec<_>>()
     }));
-    v["order_within_tolerance"] = match &r.order_within_tolerance {
+    let tolerance_order = |t: &Option<poly::advanced::order::ToleranceOrder>| match t {
         None => Value::Null,
         Some(t) => {
             let mut w =
@@ -186,6 +186,8 @@ pub(crate) fn to_json(reading: &Reading, r: &OrderReport) -> Value {
             w
         }
     };
+    v["order_within_tolerance"] = tolerance_order(&r.order_within_tolerance);
+    v["embedded_order_within_tolerance"] = tolerance_order(&r.embedded_order_within_tolerance);
     v["notes"] = json!(r.notes);
     v
 }
@@ -270,6 +272,9 @@ pub(crate) fn to_text(shown: &str, reading: &Reading, r: &OrderReport) -> String
     }
     if let Some(e) = r.embedded_linear_order {
         row(&mut s, "embedded linear order", show_order(e));
+    }
+    if let Some(t) = &r.embedded_order_within_tolerance {
+        row(&mut s, "embedded within tol.", show_order(t.order));
     }
     if let Some(failed) = r.failed_conditions.as_ref().filter(|f| !f.is_empty()) {
         let _ =

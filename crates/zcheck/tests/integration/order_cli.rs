@@ -209,6 +209,7 @@ fn json_shapes() {
         "failed_conditions",
         "modified_equation",
         "order_within_tolerance",
+        "embedded_order_within_tolerance",
         "notes",
     ];
     let all = json(&["rk4", "verlet", "ab3", "false_heun"]);
@@ -276,6 +277,29 @@ fn tolerance_for_long_decimals() {
     let v = json(&[tsit5, "--tolerance", "1e-14"]);
     assert_eq!(v["order_within_tolerance"]["order"], 4);
     let d = dir("tol");
+    // Bogacki–Shampine 3(2) from 16-digit decimals: the pair within 1e-12 is
+    // 3 and its estimator 2, as with the exact fractions.
+    let bs3 = write(
+        &d,
+        "bs3.toml",
+        "A = [[0, 0, 0, 0], [0.5, 0, 0, 0], [0, 0.75, 0, 0], \
+         [0.2222222222222222, 0.3333333333333333, 0.4444444444444444, 0]]\n\
+         b = [0.2222222222222222, 0.3333333333333333, 0.4444444444444444, 0]\n\
+         bhat = [0.2916666666666667, 0.25, 0.3333333333333333, 0.125]\n",
+    );
+    let v = json(&[&bs3]);
+    assert_eq!(v["kind"], "embedded_pair");
+    assert_eq!(v["order_within_tolerance"]["order"], 3, "{v}");
+    assert_eq!(v["embedded_order_within_tolerance"]["order"], 2, "{v}");
+    let exact = write(
+        &d,
+        "bs3_exact.toml",
+        "A = [[0, 0, 0, 0], [\"1/2\", 0, 0, 0], [0, \"3/4\", 0, 0], [\"2/9\", \"1/3\", \"4/9\", 0]]\n\
+         b = [\"2/9\", \"1/3\", \"4/9\", 0]\nbhat = [\"7/24\", \"1/4\", \"1/3\", \"1/8\"]\n",
+    );
+    let e = json(&[&exact]);
+    assert_eq!((&e["order"], &e["embedded_order"]), (&3.into(), &2.into()), "{e}");
+    assert!(e["embedded_order_within_tolerance"].is_null(), "{e}");
     let f = write(&d, "heun.toml", "A = [[0, 0], [1, 0]]\nb = [0.5, 0.5]\n");
     let v = json(&[&f]);
     assert_eq!(v["order"], 2);

@@ -141,6 +141,7 @@ pub fn runge_kutta(
         let (p, failing) = we.order();
         r.embedded_order = Some(bounded(p, &failing, "embedded rooted-tree", &mut notes));
         r.embedded_linear_order = Some(Order::Exact(rk::linear_order(&rk.a, bh)));
+        r.embedded_order_within_tolerance = within(&mut we, options, "embedded rooted-tree");
     }
     if let Some(n) = options.modified {
         r.modified_equation = Some(modified::equation(&mut w, n)?);

@@ -164,6 +164,9 @@ pub struct OrderReport {
     pub modified_equation: Option<Vec<ModifiedTerm>>,
     /// The order within the tolerance, when one was given.
     pub order_within_tolerance: Option<ToleranceOrder>,
+    /// The embedded estimator's order within the tolerance, for an
+    /// embedded pair when one was given.
+    pub embedded_order_within_tolerance: Option<ToleranceOrder>,
     /// What the numbers mean where it is not obvious: caps, reducibility,
     /// c differing from the row sums, undecided questions.
     pub notes: Vec<String>,
@@ -186,6 +189,7 @@ impl OrderReport {
             failed_conditions: None,
             modified_equation: None,
             order_within_tolerance: None,
+            embedded_order_within_tolerance: None,
             notes: Vec::new(),
         }
     }
