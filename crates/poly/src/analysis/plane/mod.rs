@@ -478,22 +478,3 @@ impl Derivation {
         Ok(())
     }
 }
-
-/// p at x = i·y, split into real and imaginary parts (each a polynomial in
-/// y): the term a_k x^k becomes a_k i^k y^k.
-pub(crate) fn at_imaginary(p: &Poly, x: Sym, y: Sym) -> (Poly, Poly) {
-    let (mut re, mut im) = (Poly::zero(), Poly::zero());
-    for (k, c) in p.coeffs_in(x).iter().enumerate() {
-        if c.is_zero() {
-            continue;
-        }
-        let t = c * &Poly::sym(y).pow(k as u32);
-        match k % 4 {
-            0 => re += &t,
-            1 => im += &t,
-            2 => re -= &t,
-            _ => im -= &t,
-        }
-    }
-    (re, im)
-}

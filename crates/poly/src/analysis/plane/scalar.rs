@@ -160,9 +160,23 @@ impl Derivation {
 }
 
 /// p(Φ) at Φ = iw, split into real and imaginary parts (each a polynomial
-/// in w).
+/// in w): the term a_k Φ^k becomes a_k i^k w^k.
 fn at_i_w(p: &Poly) -> (Poly, Poly) {
-    super::at_imaginary(p, Sym::phi(), Sym::w())
+    let (phi, w) = (Sym::phi(), Sym::w());
+    let (mut re, mut im) = (Poly::zero(), Poly::zero());
+    for (k, c) in p.coeffs_in(phi).iter().enumerate() {
+        if c.is_zero() {
+            continue;
+        }
+        let t = c * &Poly::sym(w).pow(k as u32);
+        match k % 4 {
+            0 => re += &t,
+            1 => im += &t,
+            2 => re -= &t,
+            _ => im -= &t,
+        }
+    }
+    (re, im)
 }
 
 /// Polynomials in w over F, lowest power first, for Euclid's algorithm.
