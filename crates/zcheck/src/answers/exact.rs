@@ -34,6 +34,9 @@ pub(crate) fn number(a: &Algebraic, var: &str) -> Value {
 
 /// A constant of the method's field (rational, or with radicals) as JSON.
 pub(crate) fn constant(c: &Poly) -> Value {
+    if let Some(q) = c.as_constant() {
+        return json!({ "exact": c.to_string(), "value": q.to_f64() });
+    }
     let v = poly::advanced::field::approx(c, &fine());
     json!({ "exact": c.to_string(), "value": v.to_f64() })
 }

@@ -15,7 +15,7 @@
 
 use num_bigint::BigInt;
 use num_integer::Integer;
-use num_traits::{One, Zero};
+use num_traits::{One, Signed, Zero};
 
 use super::trees::Forest;
 use super::value::{all_rational, inverse_int, Matrix, Value};
@@ -124,11 +124,11 @@ impl<R: Ring> Engine<R> {
 }
 
 enum Route {
-    /// A = Â/d, b = b̂/db.
+    /// A = Â/d, b = b̂/d_b; `scales[e]` = d_b·d^e, as far as asked.
     Integer {
         engine: Engine<BigInt>,
         d: BigInt,
-        db: BigInt,
+        scales: Vec<BigInt>,
     },
     Field(Engine<Value>),
 }
@@ -145,6 +145,15 @@ fn scale(values: &[&Value]) -> (BigInt, Vec<BigInt>) {
     let d = qs.iter().fold(<BigInt as One>::one(), |l, q| l.lcm(q.denom()));
     let ints = qs.iter().map(|q| q.numer() * (&d / q.denom())).collect();
     (d, ints)
+}
+
+/// d_b·d^e, from the powers kept so far.
+fn scale_of<'a>(scales: &'a mut Vec<BigInt>, d: &BigInt, e: usize) -> &'a BigInt {
+    while scales.len() <= e {
+        let next = scales.last().expect("db") * d;
+        scales.push(next);
+    }
+    &scales[e]
 }
 
 impl Weights {
@@ -164,7 +173,7 @@ impl Weights {
                 .collect();
             let mut it = flat_b.into_iter();
             let mb: Vec<Vec<BigInt>> = b.iter().map(|_| it.by_ref().take(s).collect()).collect();
-            Route::Integer { engine: Engine::new(ma, mb), d, db }
+            Route::Integer { engine: Engine::new(ma, mb), scales: vec![db], d }
         } else {
             Route::Field(Engine::new(a.to_vec(), b.to_vec()))
         };
@@ -195,9 +204,9 @@ impl Weights {
     pub(crate) fn phi(&mut self, t: usize) -> Value {
         self.ensure(t);
         let edges = self.forest.trees[t].order() - 1;
-        match &self.route {
-            Route::Integer { engine, d, db } => {
-                Value::from(Q::new(engine.raw[t].clone(), db * num_traits::pow(d.clone(), edges)))
+        match &mut self.route {
+            Route::Integer { engine, d, scales } => {
+                Value::from(Q::new(engine.raw[t].clone(), scale_of(scales, d, edges).clone()))
             }
             Route::Field(engine) => engine.raw[t].clone(),
         }
@@ -213,12 +222,29 @@ impl Weights {
     pub(crate) fn holds(&mut self, t: usize) -> bool {
         self.ensure(t);
         let tree = &self.forest.trees[t];
-        match &self.route {
-            Route::Integer { engine, d, db } => {
-                &engine.raw[t] * BigInt::from(tree.density())
-                    == db * num_traits::pow(d.clone(), tree.order() - 1)
+        match &mut self.route {
+            Route::Integer { engine, d, scales, .. } => {
+                let scale = scale_of(scales, d, tree.order() - 1);
+                &engine.raw[t] * BigInt::from(tree.density()) == *scale
             }
             Route::Field(_) => self.residual(t).is_zero(),
+        }
+    }
+
+    /// Whether |Φ(t) − 1/γ(t)| ≤ `tolerance`: on the integer route, the one
+    /// identity q·|b̂·ĝ_t·γ − d_b·d^(|t|−1)| ≤ p·γ·d_b·d^(|t|−1) for
+    /// tolerance = p/q, so no rational is reduced.
+    pub(crate) fn holds_within(&mut self, t: usize, tolerance: &Q) -> bool {
+        self.ensure(t);
+        let tree = &self.forest.trees[t];
+        match &mut self.route {
+            Route::Integer { engine, d, scales, .. } => {
+                let scale = scale_of(scales, d, tree.order() - 1);
+                let gamma = BigInt::from(tree.density());
+                let gap = (&engine.raw[t] * &gamma - &*scale).abs();
+                gap * tolerance.denom() <= tolerance.numer() * gamma * &*scale
+            }
+            Route::Field(_) => self.residual(t).within(tolerance),
         }
     }
 
@@ -234,7 +260,7 @@ impl Weights {
     /// The order whose conditions hold to within `tolerance`:
     /// |Φ(t) − 1/γ(t)| ≤ tolerance.
     pub(crate) fn order_within(&mut self, tolerance: &Q) -> (usize, Vec<usize>) {
-        self.order_by(|w, t| w.holds(t) || w.residual(t).within(tolerance))
+        self.order_by(|w, t| w.holds_within(t, tolerance))
     }
 
     fn order_by(&mut self, mut ok: impl FnMut(&mut Weights, usize) -> bool) -> (usize, Vec<usize>) {

@@ -87,22 +87,24 @@ impl Rk {
         2 * self.stages() + 1
     }
 
+    /// M_ij = b_i a_ij + b_j a_ji − b_i b_j.
+    fn m_entry(&self, i: usize, j: usize) -> Value {
+        let (a, b) = (&self.a, &self.b);
+        b[i].mul(&a[i][j]).add(&b[j].mul(&a[j][i])).sub(&b[i].mul(&b[j]))
+    }
+
     /// M = BA + AᵀB − bbᵀ.
     pub(crate) fn m_matrix(&self) -> Matrix {
         let s = self.stages();
-        let (a, b) = (&self.a, &self.b);
-        (0..s)
-            .map(|i| {
-                (0..s)
-                    .map(|j| b[i].mul(&a[i][j]).add(&b[j].mul(&a[j][i])).sub(&b[i].mul(&b[j])))
-                    .collect()
-            })
-            .collect()
+        (0..s).map(|i| (0..s).map(|j| self.m_entry(i, j)).collect()).collect()
     }
 
-    /// b ≥ 0 and M positive semidefinite, decided exactly.
+    /// b ≥ 0 and M positive semidefinite, decided exactly. A negative
+    /// diagonal entry of M (M_ii = −b_i² on an explicit tableau) decides it
+    /// before M is formed.
     pub(crate) fn algebraically_stable(&self) -> bool {
         self.b.iter().all(|x| x.sign() != Ordering::Less)
+            && (0..self.stages()).all(|i| self.m_entry(i, i).sign() != Ordering::Less)
             && positive_semidefinite(&self.m_matrix()).expect("square")
     }
 
@@ -192,7 +194,8 @@ impl Rk {
 
     /// M = 0 (asked of the reduced tableau by the caller).
     pub(crate) fn m_is_zero(&self) -> bool {
-        self.m_matrix().iter().flatten().all(Value::is_zero)
+        let s = self.stages();
+        (0..s).all(|i| (i..s).all(|j| self.m_entry(i, j).is_zero()))
     }
 
     /// The adjoint: a*_ij = b_(s+1−j) − a_(s+1−i, s+1−j), b*_i = b_(s+1−i).

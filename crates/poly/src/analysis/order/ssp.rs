@@ -25,7 +25,9 @@
 
 use std::cmp::Ordering;
 
-use num_traits::{One, Zero};
+use num_bigint::BigInt;
+use num_integer::Integer;
+use num_traits::{One, Signed, Zero};
 
 use super::report::Ssp;
 use super::rk::{dot, mat_vec};
@@ -138,6 +140,9 @@ pub(crate) fn coefficient(a: &Matrix, b: &[Value]) -> Result<Ssp, Error> {
     if a.iter().flatten().chain(b).any(|x| x.sign() == Ordering::Less) {
         return Ok(Ssp::Radius(Algebraic::zero()));
     }
+    if explicit && rational {
+        return Ok(explicit_rational(a, b));
+    }
     let (polys, d) = if explicit {
         (explicit_conditions(a, b), None)
     } else if rational {
@@ -163,6 +168,181 @@ pub(crate) fn coefficient(a: &Matrix, b: &[Value]) -> Result<Ssp, Error> {
         }
     }
     Ok(best.map_or(Ssp::Unbounded, Ssp::Radius))
+}
+
+/// An explicit tableau over Q, on integers: with A = Â/d and b = b̂/d_b,
+/// every condition polynomial is a positive multiple of one with integer
+/// coefficients built from the powers of Â (no rational is reduced). The
+/// polynomials are taken once each (duplicates dropped), and one whose
+/// coefficients never change sign, or whose Descartes count on (0, u) is 0
+/// for u above the least first-negative point found so far, is passed over:
+/// it cannot lower the radius.
+fn explicit_rational(a: &Matrix, b: &[Value]) -> Ssp {
+    let s = b.len();
+    let q = |v: &Value| v.as_rational().expect("rational").clone();
+    let d = a.iter().flatten().fold(BigInt::one(), |l, x| l.lcm(q(x).denom()));
+    let db = b.iter().fold(BigInt::one(), |l, x| l.lcm(q(x).denom()));
+    let ai: Vec<Vec<BigInt>> =
+        a.iter().map(|r| r.iter().map(|x| scaled(&q(x), &d)).collect()).collect();
+    let bi: Vec<BigInt> = b.iter().map(|x| scaled(&q(x), &db)).collect();
+    // powers[k] = Â^k, up to the last nonzero one (Â is nilpotent).
+    let identity = (0..s)
+        .map(|i| (0..s).map(|j| BigInt::from(u8::from(i == j))).collect())
+        .collect::<Vec<Vec<BigInt>>>();
+    let mut powers = vec![identity];
+    loop {
+        let last = powers.last().expect("one");
+        let next: Vec<Vec<BigInt>> = (0..s)
+            .map(|i| {
+                (0..s)
+                    .map(|j| {
+                        let mut acc = BigInt::zero();
+                        for l in 0..s {
+                            if !ai[i][l].is_zero() && !last[l][j].is_zero() {
+                                acc += &ai[i][l] * &last[l][j];
+                            }
+                        }
+                        acc
+                    })
+                    .collect()
+            })
+            .collect();
+        if next.iter().flatten().all(Zero::is_zero) {
+            break;
+        }
+        powers.push(next);
+    }
+    let m = powers.len();
+    let alt = |k: usize, x: BigInt| if k % 2 == 1 { -x } else { x };
+    // Numerators n_k of c_k = n_k/(base·d^k); the polynomial kept is
+    // Σ n_k d^(deg−k) r^k, base·d^deg times the condition.
+    let mut numerators: Vec<Vec<BigInt>> = Vec::new();
+    for i in 0..s {
+        for j in 0..s {
+            // (A·X)_ij = Σ_k (−r)^k (A^(k+1))_ij: base d.
+            numerators.push((0..m).map(|k| match powers.get(k + 1) {
+                Some(p) => alt(k, p[i][j].clone()),
+                None => BigInt::zero(),
+            }).collect());
+        }
+    }
+    let mut bpow: Vec<Vec<BigInt>> = Vec::with_capacity(m);
+    for p in &powers {
+        bpow.push((0..s).map(|j| (0..s).map(|l| &bi[l] * &p[l][j]).sum()).collect());
+    }
+    for j in 0..s {
+        // (bᵀX)_j = Σ_k (−r)^k (bᵀA^k)_j: base d_b.
+        numerators.push((0..m).map(|k| alt(k, bpow[k][j].clone())).collect());
+    }
+    let pe: Vec<Vec<BigInt>> = powers.iter().map(|p| p.iter().map(|r| r.iter().sum()).collect()).collect();
+    for i in 0..s {
+        // (X·e)_i = Σ_k (−r)^k (A^k e)_i: base 1.
+        numerators.push((0..m).map(|k| alt(k, pe[k][i].clone())).collect());
+    }
+    // 1 − r bᵀXe = 1 + Σ_k (−1)^(k+1) r^(k+1) bᵀA^k e: base d_b, n_0 = d_b,
+    // n_(k+1) = (−1)^(k+1) d·b̂ᵀÂ^k e.
+    let mut last = vec![db.clone()];
+    for k in 0..m {
+        let bake: BigInt = bpow[k].iter().sum();
+        last.push(alt(k + 1, &d * bake));
+    }
+    numerators.push(last);
+    let mut polys: Vec<Vec<BigInt>> = numerators
+        .into_iter()
+        .filter_map(|n| {
+            let deg = n.iter().rposition(|x| !x.is_zero())?;
+            Some((0..=deg).map(|k| &n[k] * num_traits::pow(d.clone(), deg - k)).collect())
+        })
+        .collect();
+    polys.sort();
+    polys.dedup();
+    let mut best: Option<Algebraic> = None;
+    for p in &polys {
+        let low = p.iter().find(|x| !x.is_zero()).expect("nonzero");
+        if low.is_negative() {
+            return Ssp::Radius(Algebraic::zero());
+        }
+        if p.iter().all(|x| !x.is_negative()) {
+            continue;
+        }
+        if let Some(u) = best.as_ref().map(|b| b.interval().1) {
+            if variations_below(p, &u) == 0 {
+                continue;
+            }
+        }
+        let up = UPoly::new(p.iter().cloned().map(Q::from_integer).collect());
+        if let Some(r) = first_negative_int(p, &up) {
+            if best.as_ref().is_none_or(|b| r < *b) {
+                best = Some(r);
+            }
+        }
+    }
+    best.map_or(Ssp::Unbounded, Ssp::Radius)
+}
+
+/// x·den for a rational x whose denominator divides den.
+fn scaled(x: &Q, den: &BigInt) -> BigInt {
+    x.numer() * (den / x.denom())
+}
+
+/// The sign variations of (1 + x)^n P(u/(1 + x)), Descartes' bound on P's
+/// roots in (0, u) (0 means none).
+fn variations_below(p: &[BigInt], u: &Q) -> usize {
+    let n = p.len() - 1;
+    let (un, ud) = (u.numer(), u.denom());
+    // q^n P(p/(q(1+x)))(1+x)^n = Σ_k n_k p^k q^(n−k) (1+x)^(n−k).
+    let mut out = vec![BigInt::zero(); n + 1];
+    let mut pk = BigInt::one();
+    for (k, c) in p.iter().enumerate() {
+        if !c.is_zero() {
+            let w = c * &pk * num_traits::pow(ud.clone(), n - k);
+            // (1+x)^(n−k): binomial coefficients.
+            let mut binom = BigInt::one();
+            for (i, o) in out.iter_mut().enumerate().take(n - k + 1) {
+                *o += &w * &binom;
+                binom = binom * BigInt::from(n - k - i) / BigInt::from(i + 1);
+            }
+        }
+        pk *= un;
+    }
+    let signs: Vec<bool> = out.iter().filter(|x| !x.is_zero()).map(|x| x.is_negative()).collect();
+    signs.windows(2).filter(|w| w[0] != w[1]).count()
+}
+
+/// The sign of an integer polynomial at a rational point.
+fn sign_at(p: &[BigInt], x: &Q) -> Ordering {
+    let (xn, xd) = (x.numer(), x.denom());
+    // Σ c_k xn^k xd^(n−k), Horner in (xn, xd).
+    let mut acc = BigInt::zero();
+    let mut dpow = BigInt::one();
+    for c in p.iter().rev() {
+        acc = acc * xn + c * &dpow;
+        dpow *= xd;
+    }
+    acc.cmp(&BigInt::zero())
+}
+
+/// [`first_negative`] for an integer polynomial.
+fn first_negative_int(p: &[BigInt], up: &UPoly) -> Option<Algebraic> {
+    let candidates = Algebraic::positive_roots(up);
+    let negative_at = |x: &Q| sign_at(p, x) == Ordering::Less;
+    let first = match candidates.first() {
+        Some(c) => Algebraic::rational_between(&Algebraic::zero(), c),
+        None => Q::one(),
+    };
+    if negative_at(&first) {
+        return Some(Algebraic::zero());
+    }
+    for (k, c) in candidates.iter().enumerate() {
+        let x = match candidates.get(k + 1) {
+            Some(next) => Algebraic::rational_between(c, next),
+            None => c.interval().1 + Q::one(),
+        };
+        if negative_at(&x) {
+            return Some(c.clone());
+        }
+    }
+    None
 }
 
 /// Explicit: X = Σ_k (−r)^k A^k; the polynomials A·X, bᵀX, X·e and
