@@ -382,7 +382,7 @@ fn split_monomial(p: &Poly, syms: &[Sym]) -> (Poly, Poly) {
 
 /// `p` divided by its rational content, with a positive leading term (in
 /// the canonical order): the same zero set, smaller numbers.
-fn primitive(p: &Poly) -> Poly {
+pub(crate) fn primitive(p: &Poly) -> Poly {
     let Some((_, first)) = p.terms().last() else { return Poly::zero() };
     // The gcd of numerators over the lcm of denominators.
     let mut num = num_bigint::BigInt::zero();

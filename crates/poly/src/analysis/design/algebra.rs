@@ -11,30 +11,15 @@
 use std::cmp::Ordering;
 use std::collections::HashMap;
 
-use num_traits::{One, Signed, Zero};
+use num_traits::{One, Zero};
 
 use super::report::{bound_error, MAX_BREAKPOINT_DEGREE};
 use crate::error::Error;
 use crate::multivariate::resultant::resultant as sylvester;
 use crate::{Algebraic, Poly, Sym, UPoly, Q};
 
-/// `p` divided by its rational content, with a positive leading term: the
-/// same zero set and the same sign up to one positive factor... or one
-/// negative one; callers that read signs keep the original.
-pub(crate) fn primitive(p: &Poly) -> Poly {
-    let Some((_, first)) = p.terms().last() else { return Poly::zero() };
-    let mut num = num_bigint::BigInt::zero();
-    let mut den = num_bigint::BigInt::one();
-    for (_, c) in p.terms() {
-        num = num_integer::Integer::gcd(&num, c.numer());
-        den = num_integer::Integer::lcm(&den, c.denom());
-    }
-    let mut content = Q::new(num, den);
-    if first.is_negative() {
-        content = -content;
-    }
-    p.scale(&content.recip())
-}
+/// `p` divided by its rational content (the one in `region`).
+pub(crate) use crate::analysis::region::primitive;
 
 /// `p` divided by the largest power of `x` that divides it.
 pub(crate) fn strip_power(p: &Poly, x: Sym) -> Poly {

@@ -226,19 +226,7 @@ fn axis_system(objective: Objective, c1: &Poly, c0: &Poly) -> SignSystem {
         return s;
     }
     let y = Sym::new("y_design");
-    let split = |f: &Poly| -> (Poly, Poly) {
-        let (mut re, mut im) = (Poly::zero(), Poly::zero());
-        for (k, c) in f.coeffs_in(w).iter().enumerate() {
-            let t = c * &Poly::sym(y).pow(k as u32);
-            match k % 4 {
-                0 => re += &t,
-                1 => im += &t,
-                2 => re -= &t,
-                _ => im -= &t,
-            }
-        }
-        (re, im)
-    };
+    let split = |f: &Poly| crate::analysis::plane::at_imaginary(f, w, y);
     let ((ar, ai), (br, bi)) = (split(c1), split(c0));
     let margin = &(&(&ar * &ar) + &(&ai * &ai)) - &(&(&br * &br) + &(&bi * &bi));
     let mut s = SignSystem { x: y, factors: Vec::new(), conditions: Vec::new() };

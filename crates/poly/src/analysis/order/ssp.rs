@@ -220,10 +220,14 @@ fn explicit_rational(a: &Matrix, b: &[Value]) -> Ssp {
     for i in 0..s {
         for j in 0..s {
             // (A·X)_ij = Σ_k (−r)^k (A^(k+1))_ij: base d.
-            numerators.push((0..m).map(|k| match powers.get(k + 1) {
-                Some(p) => alt(k, p[i][j].clone()),
-                None => BigInt::zero(),
-            }).collect());
+            numerators.push(
+                (0..m)
+                    .map(|k| match powers.get(k + 1) {
+                        Some(p) => alt(k, p[i][j].clone()),
+                        None => BigInt::zero(),
+                    })
+                    .collect(),
+            );
         }
     }
     let mut bpow: Vec<Vec<BigInt>> = Vec::with_capacity(m);
@@ -234,7 +238,8 @@ fn explicit_rational(a: &Matrix, b: &[Value]) -> Ssp {
         // (bᵀX)_j = Σ_k (−r)^k (bᵀA^k)_j: base d_b.
         numerators.push((0..m).map(|k| alt(k, bpow[k][j].clone())).collect());
     }
-    let pe: Vec<Vec<BigInt>> = powers.iter().map(|p| p.iter().map(|r| r.iter().sum()).collect()).collect();
+    let pe: Vec<Vec<BigInt>> =
+        powers.iter().map(|p| p.iter().map(|r| r.iter().sum()).collect()).collect();
     for i in 0..s {
         // (X·e)_i = Σ_k (−r)^k (A^k e)_i: base 1.
         numerators.push((0..m).map(|k| alt(k, pe[k][i].clone())).collect());

@@ -27,6 +27,7 @@ use crate::error::{Error, ErrorKind};
 use crate::multivariate::constants as field;
 use crate::{Algebraic, Derivation, Params, Poly, Sym, UPoly, Q};
 use principal::{inverse_factorial, Branch, NoBranch, C};
+pub(crate) use scalar::at_imaginary;
 
 /// The most terms of a series searched for its first nonzero one.
 pub const MAX_SERIES_TERMS: usize = 40;
@@ -478,3 +479,4 @@ impl Derivation {
         Ok(())
     }
 }
+

@@ -160,15 +160,20 @@ impl Derivation {
 }
 
 /// p(Φ) at Φ = iw, split into real and imaginary parts (each a polynomial
-/// in w): the term a_k Φ^k becomes a_k i^k w^k.
+/// in w).
 fn at_i_w(p: &Poly) -> (Poly, Poly) {
-    let (phi, w) = (Sym::phi(), Sym::w());
+    at_imaginary(p, Sym::phi(), Sym::w())
+}
+
+/// p at x = i·y, split into real and imaginary parts (each a polynomial in
+/// y): the term a_k x^k becomes a_k i^k y^k.
+pub(crate) fn at_imaginary(p: &Poly, x: Sym, y: Sym) -> (Poly, Poly) {
     let (mut re, mut im) = (Poly::zero(), Poly::zero());
-    for (k, c) in p.coeffs_in(phi).iter().enumerate() {
+    for (k, c) in p.coeffs_in(x).iter().enumerate() {
         if c.is_zero() {
             continue;
         }
-        let t = c * &Poly::sym(w).pow(k as u32);
+        let t = c * &Poly::sym(y).pow(k as u32);
         match k % 4 {
             0 => re += &t,
             1 => im += &t,
