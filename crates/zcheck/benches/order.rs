@@ -11,24 +11,14 @@
 //! NodePy's side of the same job, in the same run:
 //! `python crates/zcheck-py/bench/order_vs_nodepy.py`.
 
-use std::path::Path;
+mod common;
 
+use common::nodepy_files as files;
 use criterion::{criterion_group, criterion_main, Criterion};
 
 /// The `zcheck` binary's allocator, so the figures are the command's.
 #[global_allocator]
 static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
-
-fn files() -> Vec<String> {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/nodepy/rk");
-    let mut v: Vec<String> = std::fs::read_dir(dir)
-        .expect("catalogue")
-        .map(|e| e.expect("entry").path().display().to_string())
-        .filter(|p| p.ends_with(".toml"))
-        .collect();
-    v.sort();
-    v
-}
 
 /// Load one method and write its whole order report.
 fn order(path: &str) {
@@ -42,7 +32,7 @@ fn report(m: &zcheck::load::LoadedMethod) {
 }
 
 fn bench(c: &mut Criterion) {
-    let all = files();
+    let all = files("rk");
     // Each method's best of five, slowest first: the per-method figures.
     let loaded: Vec<_> = all.iter().map(|p| zcheck::api::load(p).expect("loads")).collect();
     let best = |f: &dyn Fn()| {

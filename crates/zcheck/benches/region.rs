@@ -9,25 +9,17 @@
 //! NodePy's side of the same job, in the same run:
 //! `python crates/zcheck/benches/peers/region_vs_nodepy.py`.
 
+mod common;
+
 use std::path::Path;
 
+use common::nodepy_files as files;
 use criterion::{criterion_group, criterion_main, Criterion};
 use zcheck::load::LoadedMethod;
 
 /// The `zcheck` binary's allocator, so the figures are the command's.
 #[global_allocator]
 static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
-
-fn files(kind: &str) -> Vec<String> {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/nodepy").join(kind);
-    let mut v: Vec<String> = std::fs::read_dir(dir)
-        .expect("catalogue")
-        .map(|e| e.expect("entry").path().display().to_string())
-        .filter(|p| p.ends_with(".toml"))
-        .collect();
-    v.sort();
-    v
-}
 
 /// Load, derive and analyse one method from scratch.
 fn region(arg: &str) {

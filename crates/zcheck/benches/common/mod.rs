@@ -1,11 +1,13 @@
-//! What the step-cost benches (`native`, `jit`, `tradeoff`) share: the step
-//! counts, the built-ins they run, and the hand-written baseline
-//! (`zcheck::tradeoff::kernels`) on one state and on a batch.
+//! What the benches share: for the step-cost benches (`native`, `jit`,
+//! `tradeoff`), the step counts, the built-ins they run, and the hand-written
+//! baseline (`zcheck::tradeoff::kernels`) on one state and on a batch; for
+//! `region` and `order`, NodePy's catalogues as exported to `tests/data`.
 
 // Each bench is its own crate and uses only part of this module.
 #![allow(dead_code)]
 
 use std::hint::black_box;
+use std::path::Path;
 
 use criterion::measurement::WallTime;
 use criterion::{BenchmarkGroup, BenchmarkId};
@@ -56,4 +58,17 @@ pub fn hand_batch(g: &mut BenchmarkGroup<'_, WallTime>, name: &'static str) {
             })
         });
     }
+}
+
+/// The exported NodePy catalogue `kind` (`rk` or `lmm`): its `.toml`
+/// files under `tests/data/nodepy`, sorted.
+pub fn nodepy_files(kind: &str) -> Vec<String> {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/nodepy").join(kind);
+    let mut v: Vec<String> = std::fs::read_dir(dir)
+        .expect("catalogue")
+        .map(|e| e.expect("entry").path().display().to_string())
+        .filter(|p| p.ends_with(".toml"))
+        .collect();
+    v.sort();
+    v
 }

@@ -241,8 +241,8 @@ impl Weights {
             Route::Integer { engine, d, scales, .. } => {
                 let scale = scale_of(scales, d, tree.order() - 1);
                 let gamma = BigInt::from(tree.density());
-                let gap = (&engine.raw[t] * &gamma - &*scale).abs();
-                gap * tolerance.denom() <= tolerance.numer() * gamma * &*scale
+                let gap = (&engine.raw[t] * &gamma - scale).abs();
+                gap * tolerance.denom() <= tolerance.numer() * gamma * scale
             }
             Route::Field(_) => self.residual(t).within(tolerance),
         }

@@ -234,21 +234,17 @@ fn explicit_rational(a: &Matrix, b: &[Value]) -> Ssp {
     for p in &powers {
         bpow.push((0..s).map(|j| (0..s).map(|l| &bi[l] * &p[l][j]).sum()).collect());
     }
-    for j in 0..s {
-        // (bᵀX)_j = Σ_k (−r)^k (bᵀA^k)_j: base d_b.
-        numerators.push((0..m).map(|k| alt(k, bpow[k][j].clone())).collect());
-    }
+    // (bᵀX)_j = Σ_k (−r)^k (bᵀA^k)_j: base d_b.
+    numerators.extend((0..s).map(|j| (0..m).map(|k| alt(k, bpow[k][j].clone())).collect()));
     let pe: Vec<Vec<BigInt>> =
         powers.iter().map(|p| p.iter().map(|r| r.iter().sum()).collect()).collect();
-    for i in 0..s {
-        // (X·e)_i = Σ_k (−r)^k (A^k e)_i: base 1.
-        numerators.push((0..m).map(|k| alt(k, pe[k][i].clone())).collect());
-    }
+    // (X·e)_i = Σ_k (−r)^k (A^k e)_i: base 1.
+    numerators.extend((0..s).map(|i| (0..m).map(|k| alt(k, pe[k][i].clone())).collect()));
     // 1 − r bᵀXe = 1 + Σ_k (−1)^(k+1) r^(k+1) bᵀA^k e: base d_b, n_0 = d_b,
     // n_(k+1) = (−1)^(k+1) d·b̂ᵀÂ^k e.
     let mut last = vec![db.clone()];
-    for k in 0..m {
-        let bake: BigInt = bpow[k].iter().sum();
+    for (k, row) in bpow.iter().enumerate() {
+        let bake: BigInt = row.iter().sum();
         last.push(alt(k + 1, &d * bake));
     }
     numerators.push(last);
@@ -329,8 +325,16 @@ fn sign_at(p: &[BigInt], x: &Q) -> Ordering {
 
 /// [`first_negative`] for an integer polynomial.
 fn first_negative_int(p: &[BigInt], up: &UPoly) -> Option<Algebraic> {
-    let candidates = Algebraic::positive_roots(up);
-    let negative_at = |x: &Q| sign_at(p, x) == Ordering::Less;
+    first_sign_change(&Algebraic::positive_roots(up), |x| sign_at(p, x) == Ordering::Less)
+}
+
+/// Given a polynomial's positive roots in order (`candidates`) and its
+/// sign test at a rational point, the first root after which it is
+/// negative (0 when it is negative just after 0); `None` when it never is.
+fn first_sign_change(
+    candidates: &[Algebraic],
+    negative_at: impl Fn(&Q) -> bool,
+) -> Option<Algebraic> {
     let first = match candidates.first() {
         Some(c) => Algebraic::rational_between(&Algebraic::zero(), c),
         None => Q::one(),
@@ -533,22 +537,5 @@ fn first_negative(p: &RPoly) -> Option<Algebraic> {
         let norm = field::norm(&poly).to_upoly(r).expect("a polynomial in r");
         Algebraic::positive_roots(&norm)
     };
-    let negative_at = |x: &Q| eval(p, x).sign() == Ordering::Less;
-    let first = match candidates.first() {
-        Some(c) => Algebraic::rational_between(&Algebraic::zero(), c),
-        None => Q::one(),
-    };
-    if negative_at(&first) {
-        return Some(Algebraic::zero());
-    }
-    for (k, c) in candidates.iter().enumerate() {
-        let x = match candidates.get(k + 1) {
-            Some(next) => Algebraic::rational_between(c, next),
-            None => c.interval().1 + Q::one(),
-        };
-        if negative_at(&x) {
-            return Some(c.clone());
-        }
-    }
-    None
+    first_sign_change(&candidates, |x| eval(p, x).sign() == Ordering::Less)
 }

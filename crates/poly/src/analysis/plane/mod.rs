@@ -479,4 +479,3 @@ impl Derivation {
         Ok(())
     }
 }
-
