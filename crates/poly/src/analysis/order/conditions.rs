@@ -17,58 +17,172 @@ use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
 
+use std::collections::BTreeMap;
+
 use super::trees::Forest;
 use super::value::{all_rational, inverse_int, Matrix, Value};
-use crate::Q;
+use crate::multivariate::constants::generator_of;
+use crate::multivariate::poly::Monomial;
+use crate::{Poly, Sym, Q};
 
-/// What the element type needs: a commutative ring.
+/// The largest field basis the dense route takes (its table has the square
+/// of this many entries); past it, the field route.
+const MAX_DENSE_BASIS: usize = 64;
+
+/// What the element type needs: a commutative ring, with whatever its
+/// arithmetic reads (`Ctx`: the multiplication table of a number field's
+/// basis, or nothing).
 trait Ring: Clone {
-    fn zero() -> Self;
-    fn one() -> Self;
-    fn is_zero(&self) -> bool;
-    fn add_mul(&mut self, a: &Self, b: &Self);
-    fn mul(&self, o: &Self) -> Self;
+    type Ctx;
+    fn zero_in(ctx: &Self::Ctx) -> Self;
+    fn one_in(ctx: &Self::Ctx) -> Self;
+    fn vanishes(&self) -> bool;
+    fn add_mul(&mut self, a: &Self, b: &Self, ctx: &Self::Ctx);
+    fn times(&self, o: &Self, ctx: &Self::Ctx) -> Self;
 }
 
 impl Ring for BigInt {
-    fn zero() -> Self {
+    type Ctx = ();
+    fn zero_in(_: &()) -> Self {
         Zero::zero()
     }
-    fn one() -> Self {
+    fn one_in(_: &()) -> Self {
         One::one()
     }
-    fn is_zero(&self) -> bool {
+    fn vanishes(&self) -> bool {
         Zero::is_zero(self)
     }
-    fn add_mul(&mut self, a: &Self, b: &Self) {
+    fn add_mul(&mut self, a: &Self, b: &Self, _: &()) {
         *self += a * b;
     }
-    fn mul(&self, o: &Self) -> Self {
+    fn times(&self, o: &Self, _: &()) -> Self {
         self * o
     }
 }
 
 impl Ring for Value {
-    fn zero() -> Self {
+    type Ctx = ();
+    fn zero_in(_: &()) -> Self {
         Value::zero()
     }
-    fn one() -> Self {
+    fn one_in(_: &()) -> Self {
         Value::one()
     }
-    fn is_zero(&self) -> bool {
+    fn vanishes(&self) -> bool {
         Value::is_zero(self)
     }
-    fn add_mul(&mut self, a: &Self, b: &Self) {
+    fn add_mul(&mut self, a: &Self, b: &Self, _: &()) {
         *self = self.add(&Value::mul(a, b));
     }
-    fn mul(&self, o: &Self) -> Self {
+    fn times(&self, o: &Self, _: &()) -> Self {
         Value::mul(self, o)
+    }
+}
+
+/// The basis ∏ β_p^(j_p), 0 ≤ j_p < L_p, of the field the entries' radicals
+/// span (`crate::multivariate::constants`), and its multiplication table:
+/// basis_i · basis_j = factor · basis_k, the factor a product of the primes
+/// whose exponents wrapped (β_p^(L_p) = p).
+struct Basis {
+    monomials: Vec<Monomial>,
+    index: BTreeMap<Monomial, usize>,
+    table: Vec<Vec<(usize, BigInt)>>,
+}
+
+impl Basis {
+    fn new(gens: &[(Sym, u64, u32)]) -> Basis {
+        // Exponent vectors, the first generator varying slowest.
+        let mut exps: Vec<Vec<u32>> = vec![Vec::new()];
+        for &(_, _, l) in gens {
+            exps = exps
+                .iter()
+                .flat_map(|e| {
+                    (0..l).map(move |j| {
+                        let mut e = e.clone();
+                        e.push(j);
+                        e
+                    })
+                })
+                .collect();
+        }
+        let monomial = |e: &[u32]| {
+            Monomial::from_factors(
+                gens.iter().zip(e).filter(|(_, &j)| j > 0).map(|(g, &j)| (g.0, j)).collect(),
+            )
+        };
+        let monomials: Vec<Monomial> = exps.iter().map(|e| monomial(e)).collect();
+        let index = monomials.iter().cloned().enumerate().map(|(i, m)| (m, i)).collect();
+        let position = |e: &[u32]| {
+            e.iter().zip(gens).fold(0usize, |acc, (&j, g)| acc * g.2 as usize + j as usize)
+        };
+        let table = exps
+            .iter()
+            .map(|ei| {
+                exps.iter()
+                    .map(|ej| {
+                        let mut factor = BigInt::one();
+                        let sum: Vec<u32> = ei
+                            .iter()
+                            .zip(ej)
+                            .zip(gens)
+                            .map(|((&a, &b), g)| {
+                                if a + b >= g.2 {
+                                    factor *= BigInt::from(g.1);
+                                    a + b - g.2
+                                } else {
+                                    a + b
+                                }
+                            })
+                            .collect();
+                        (position(&sum), factor)
+                    })
+                    .collect()
+            })
+            .collect();
+        Basis { monomials, index, table }
+    }
+}
+
+/// An element of the number field with integer coordinates on [`Basis`].
+#[derive(Clone)]
+struct Dense(Vec<BigInt>);
+
+impl Ring for Dense {
+    type Ctx = Basis;
+    fn zero_in(ctx: &Basis) -> Self {
+        Dense(vec![BigInt::zero(); ctx.monomials.len()])
+    }
+    fn one_in(ctx: &Basis) -> Self {
+        let mut v = Dense::zero_in(ctx);
+        v.0[0] = BigInt::one();
+        v
+    }
+    fn vanishes(&self) -> bool {
+        self.0.iter().all(Zero::is_zero)
+    }
+    fn add_mul(&mut self, a: &Self, b: &Self, ctx: &Basis) {
+        for (i, x) in a.0.iter().enumerate().filter(|(_, x)| !x.is_zero()) {
+            for (j, y) in b.0.iter().enumerate().filter(|(_, y)| !y.is_zero()) {
+                let (k, f) = &ctx.table[i][j];
+                if f.is_one() {
+                    self.0[*k] += x * y;
+                } else {
+                    self.0[*k] += x * y * f;
+                }
+            }
+        }
+    }
+    fn times(&self, o: &Self, ctx: &Basis) -> Self {
+        let mut out = Dense::zero_in(ctx);
+        out.add_mul(self, o, ctx);
+        out
     }
 }
 
 /// The recursion on one ring: per colour, A's nonzero entries row by row
 /// and b; per tree computed, M·g and b·g.
-struct Engine<R> {
+struct Engine<R: Ring> {
+    ctx: R::Ctx,
     rows: Vec<Vec<Vec<(usize, R)>>>,
     b: Vec<Vec<R>>,
     mg: Vec<Vec<R>>,
@@ -76,43 +190,44 @@ struct Engine<R> {
 }
 
 impl<R: Ring> Engine<R> {
-    fn new(a: Vec<Vec<Vec<R>>>, b: Vec<Vec<R>>) -> Engine<R> {
+    fn new(ctx: R::Ctx, a: Vec<Vec<Vec<R>>>, b: Vec<Vec<R>>) -> Engine<R> {
         let rows = a
             .into_iter()
             .map(|m| {
                 m.into_iter()
-                    .map(|row| row.into_iter().enumerate().filter(|(_, x)| !x.is_zero()).collect())
+                    .map(|row| row.into_iter().enumerate().filter(|(_, x)| !x.vanishes()).collect())
                     .collect()
             })
             .collect();
-        Engine { rows, b, mg: Vec::new(), raw: Vec::new() }
+        Engine { ctx, rows, b, mg: Vec::new(), raw: Vec::new() }
     }
 
     /// Computes every tree of the forest up to index `end`.
     fn extend(&mut self, forest: &Forest, end: usize) {
         let s = self.b[0].len();
+        let ctx = &self.ctx;
         for t in self.raw.len()..end {
             let tree = &forest.trees[t];
-            let mut g = vec![R::one(); s];
+            let mut g = vec![R::one_in(ctx); s];
             for &c in tree.children() {
                 let mc = &self.mg[c as usize];
                 for (gi, x) in g.iter_mut().zip(mc) {
-                    *gi = gi.mul(x);
+                    *gi = gi.times(x, ctx);
                 }
             }
             let colour = tree.colour() as usize;
-            let mut raw = R::zero();
+            let mut raw = R::zero_in(ctx);
             for (bi, gi) in self.b[colour].iter().zip(&g) {
-                if !bi.is_zero() {
-                    raw.add_mul(bi, gi);
+                if !bi.vanishes() {
+                    raw.add_mul(bi, gi, ctx);
                 }
             }
             let mg = self.rows[colour]
                 .iter()
                 .map(|row| {
-                    let mut acc = R::zero();
+                    let mut acc = R::zero_in(ctx);
                     for (j, a) in row {
-                        acc.add_mul(a, &g[*j]);
+                        acc.add_mul(a, &g[*j], ctx);
                     }
                     acc
                 })
@@ -130,7 +245,59 @@ enum Route {
         d: BigInt,
         scales: Vec<BigInt>,
     },
+    /// Entries with radicals, on integer coordinates: A = Â/d, b = b̂/d_b
+    /// with Â, b̂ over Z[β] (the field's basis), `scales` as above.
+    Dense {
+        engine: Engine<Dense>,
+        d: BigInt,
+        scales: Vec<BigInt>,
+    },
     Field(Engine<Value>),
+}
+
+/// The dense route's engine for these entries, with d and d_b; `None` when
+/// the field's basis is past [`MAX_DENSE_BASIS`].
+fn dense(a: &[Matrix], b: &[Vec<Value>]) -> Option<(Engine<Dense>, BigInt, BigInt)> {
+    let mut gens: BTreeMap<Sym, (u64, u32)> = BTreeMap::new();
+    for v in a.iter().flatten().flatten().chain(b.iter().flatten()) {
+        if v.as_rational().is_none() {
+            for sym in v.to_poly().symbols() {
+                gens.insert(sym, generator_of(sym)?);
+            }
+        }
+    }
+    let gens: Vec<(Sym, u64, u32)> = gens.into_iter().map(|(s, (p, l))| (s, p, l)).collect();
+    let size = gens.iter().try_fold(1usize, |n, g| n.checked_mul(g.2 as usize))?;
+    if size > MAX_DENSE_BASIS {
+        return None;
+    }
+    let basis = Basis::new(&gens);
+    // Each entry's rational coordinates, then scaled to integers.
+    let coords = |v: &Value| -> Option<Vec<Q>> {
+        let mut c = vec![Q::zero(); size];
+        for (m, q) in v.to_poly().terms() {
+            c[*basis.index.get(m)?] = q.clone();
+        }
+        Some(c)
+    };
+    let scaled = |vs: Vec<&Value>| -> Option<(BigInt, Vec<Dense>)> {
+        let cs: Vec<Vec<Q>> = vs.into_iter().map(coords).collect::<Option<_>>()?;
+        let d = cs.iter().flatten().fold(<BigInt as One>::one(), |l, q| l.lcm(q.denom()));
+        let ints = cs
+            .iter()
+            .map(|c| Dense(c.iter().map(|q| q.numer() * (&d / q.denom())).collect()))
+            .collect();
+        Some((d, ints))
+    };
+    let s = b[0].len();
+    let (d, flat_a) = scaled(a.iter().flatten().flatten().collect())?;
+    let (db, flat_b) = scaled(b.iter().flatten().collect())?;
+    let mut it = flat_a.into_iter();
+    let ma: Vec<Vec<Vec<Dense>>> =
+        a.iter().map(|m| m.iter().map(|_| it.by_ref().take(s).collect()).collect()).collect();
+    let mut it = flat_b.into_iter();
+    let mb: Vec<Vec<Dense>> = b.iter().map(|_| it.by_ref().take(s).collect()).collect();
+    Some((Engine::new(basis, ma, mb), d, db))
 }
 
 /// The elementary weights of one method on one forest, computed lazily.
@@ -173,9 +340,11 @@ impl Weights {
                 .collect();
             let mut it = flat_b.into_iter();
             let mb: Vec<Vec<BigInt>> = b.iter().map(|_| it.by_ref().take(s).collect()).collect();
-            Route::Integer { engine: Engine::new(ma, mb), scales: vec![db], d }
+            Route::Integer { engine: Engine::new((), ma, mb), scales: vec![db], d }
+        } else if let Some((engine, d, db)) = dense(a, b) {
+            Route::Dense { engine, d, scales: vec![db] }
         } else {
-            Route::Field(Engine::new(a.to_vec(), b.to_vec()))
+            Route::Field(Engine::new((), a.to_vec(), b.to_vec()))
         };
         Weights { forest, route }
     }
@@ -188,6 +357,11 @@ impl Weights {
         let end = t + 1;
         match &mut self.route {
             Route::Integer { engine, .. } => {
+                if engine.raw.len() < end {
+                    engine.extend(self.forest, end)
+                }
+            }
+            Route::Dense { engine, .. } => {
                 if engine.raw.len() < end {
                     engine.extend(self.forest, end)
                 }
@@ -208,6 +382,18 @@ impl Weights {
             Route::Integer { engine, d, scales } => {
                 Value::from(Q::new(engine.raw[t].clone(), scale_of(scales, d, edges).clone()))
             }
+            Route::Dense { engine, d, scales } => {
+                let scale = scale_of(scales, d, edges);
+                let basis = &engine.ctx;
+                Value::from_poly(&Poly::from_terms(
+                    engine.raw[t]
+                        .0
+                        .iter()
+                        .zip(&basis.monomials)
+                        .filter(|(c, _)| !c.is_zero())
+                        .map(|(c, m)| (Q::new(c.clone(), scale.clone()), m.clone())),
+                ))
+            }
             Route::Field(engine) => engine.raw[t].clone(),
         }
     }
@@ -227,6 +413,12 @@ impl Weights {
                 let scale = scale_of(scales, d, tree.order() - 1);
                 &engine.raw[t] * BigInt::from(tree.density()) == *scale
             }
+            Route::Dense { engine, d, scales } => {
+                let scale = scale_of(scales, d, tree.order() - 1);
+                let raw = &engine.raw[t].0;
+                &raw[0] * BigInt::from(tree.density()) == *scale
+                    && raw[1..].iter().all(Zero::is_zero)
+            }
             Route::Field(_) => self.residual(t).is_zero(),
         }
     }
@@ -244,6 +436,7 @@ impl Weights {
                 let gap = (&engine.raw[t] * &gamma - scale).abs();
                 gap * tolerance.denom() <= tolerance.numer() * gamma * scale
             }
+            Route::Dense { .. } => self.holds(t) || self.residual(t).within(tolerance),
             Route::Field(_) => self.residual(t).within(tolerance),
         }
     }
@@ -304,5 +497,45 @@ mod tests {
         assert_eq!(names, ["[[][]]"]);
         assert_eq!(w.residual(failing[0]), v(7, 144));
         assert_eq!(w.order_within(&crate::q(7, 144)).0, 3);
+    }
+
+    /// The dense route (integer coordinates on the field's basis) gives the
+    /// field route's Φ(t) on every tree to order 7, for a tableau with √3
+    /// and √5 (Gauss-type entries) and one with ∛2 (Yoshida's weights),
+    /// and the same order.
+    #[test]
+    fn dense_route_agrees_with_field_route() {
+        use crate::lang::tableau::Exact;
+        let read = |xs: &[&str]| -> Vec<Value> {
+            let e: Vec<Exact> = xs.iter().map(|x| Exact::parse(x).unwrap()).collect();
+            Value::read(&e).unwrap()
+        };
+        let cases: [(Vec<&str>, Vec<&str>); 2] = [
+            (
+                vec!["1/4", "1/4 - sqrt(3)/6", "1/4 + sqrt(3)/6", "1/4"],
+                vec!["1/2 + sqrt(5)/10", "1/2 - sqrt(5)/10"],
+            ),
+            (
+                vec!["0", "0", "1/(2 - cbrt(2))", "cbrt(4)/3"],
+                vec!["1/(2 - cbrt(2))", "-cbrt(2)/(2 - cbrt(2))"],
+            ),
+        ];
+        let f = forest(Kind::Mono);
+        for (a, b) in cases {
+            let mut all = a.clone();
+            all.extend(&b);
+            let v = read(&all);
+            let a = vec![vec![v[0].clone(), v[1].clone()], vec![v[2].clone(), v[3].clone()]];
+            let b = vec![v[4].clone(), v[5].clone()];
+            let mut dense = Weights::new(f, std::slice::from_ref(&a), std::slice::from_ref(&b));
+            assert!(matches!(dense.route, Route::Dense { .. }));
+            let mut field =
+                Weights { forest: f, route: Route::Field(Engine::new((), vec![a], vec![b])) };
+            for t in (1..=7).flat_map(|n| f.range(n)) {
+                assert_eq!(dense.phi(t), field.phi(t), "tree {}", f.trees[t].notation());
+                assert_eq!(dense.holds(t), field.holds(t));
+            }
+            assert_eq!(dense.order(), field.order());
+        }
     }
 }
