@@ -537,3 +537,98 @@ fn equiv_tradeoff_and_advise_parameter_errors() {
         assert!(!err.contains("panicked"), "{args:?}: {err}");
     }
 }
+
+/// Two free parameters under `--min-order` (cubic.zm, R = 1 + w + a₂w² +
+/// a₃w³): order 3 leaves the one point (1/2, 1/6), whose real limit is the
+/// real root of x³ − 3x² + 6x − 12 (≈ 2.512745); order 2 the line
+/// a₂ = 1/2, best at a₃ = 1/16 with the real root of x³ − 8x² + 16x − 32
+/// (≈ 6.260791): both checked by hand and by a float scan (poly's
+/// `tests/integration/design.rs`), the line also against the one-parameter
+/// design with a₂ bound (the oracle).
+#[test]
+fn min_order_with_two_free_parameters() {
+    let cubic = design_file("cubic.zm");
+    let args = |order: &'static str| {
+        vec![
+            "design".to_owned(),
+            cubic.clone(),
+            "--maximize".into(),
+            "real_limit".into(),
+            "--param".into(),
+            "a2=0..1/2".into(),
+            "--param".into(),
+            "a3=0..1/6".into(),
+            "--min-order".into(),
+            order.into(),
+        ]
+    };
+    let run = |a: Vec<String>| json(&a.iter().map(String::as_str).collect::<Vec<_>>());
+    let d = run(args("3"));
+    check_document(&d, 2, 1);
+    assert_eq!(d["grid_check"]["points"], 1);
+    assert_eq!(d["optimum"]["defining_poly"], "x^3 - 3*x^2 + 6*x - 12", "{d}");
+    assert!((d["optimum"]["value"].as_f64().unwrap() - 2.512745).abs() < 1e-6, "{d}");
+    assert_eq!(at(&d), pairs(&[("a2", "1/2"), ("a3", "1/6")]));
+    let d = run(args("2"));
+    check_document(&d, 2, 200);
+    assert_eq!(d["optimum"]["defining_poly"], "x^3 - 8*x^2 + 16*x - 32", "{d}");
+    assert!((d["optimum"]["value"].as_f64().unwrap() - 6.260791).abs() < 1e-6, "{d}");
+    assert_eq!(at(&d), pairs(&[("a2", "1/2"), ("a3", "1/16")]));
+    let cert = d["certificate"].to_string();
+    assert!(cert.contains("on the line a2 = 1/2 with a3 in [0, 1/6]"), "{cert}");
+    let one = json(&[
+        "design",
+        &cubic,
+        "--maximize",
+        "real_limit",
+        "--param",
+        "a2=1/2",
+        "--param",
+        "a3=0..1/6",
+    ]);
+    assert_eq!(one["optimum"], d["optimum"]);
+    assert_eq!(one["at"]["a3"], d["at"]["a3"]);
+    // A tableau whose order-2 condition c*d = 1/2 is not affine.
+    let cd = temp_file(
+        "rk2cd_order.toml",
+        "params = [\"c\", \"d\"]\nA = [[0, 0], [\"c\", 0]]\nb = [\"1 - d\", \"d\"]\n",
+    );
+    let (code, out, err) = zcheck(&[
+        "design",
+        cd.to_str().unwrap(),
+        "--maximize",
+        "ssp_coefficient",
+        "--param",
+        "c=0..1",
+        "--param",
+        "d=0..1",
+        "--min-order",
+        "2",
+    ]);
+    assert_eq!(code, 2, "{err}");
+    assert!(out.is_empty() && err.contains("no order condition is affine in (c, d)"), "{err}");
+}
+
+/// The one-parameter `--min-order` grid at irrational allowed points: R =
+/// 1 + w + a²w² has order 2 at a = ±√2/2, both with real limit 2; the grid
+/// check evaluates both exactly (it once had none).
+#[test]
+fn min_order_grid_at_irrational_points() {
+    let half = temp_file("half.zm", "method half\nparam a\nstate y\ny = y + w*y + a^2*w^2*y\n");
+    let d = json(&[
+        "design",
+        half.to_str().unwrap(),
+        "--maximize",
+        "real_limit",
+        "--param",
+        "a=-1..1",
+        "--min-order",
+        "2",
+    ]);
+    check_document(&d, 1, 2);
+    assert_eq!(d["grid_check"]["points"], 2);
+    assert_eq!(exact(&d["optimum"]), "2");
+    assert_eq!(exact(&d["grid_check"]["max"]), "2");
+    assert_eq!(exact(&d["grid_check"]["at"]["a"]), "-sqrt(2)/2");
+    assert_eq!(at(&d), pairs(&[("a", "-sqrt(2)/2")]));
+}
