@@ -475,3 +475,21 @@ fn min_order_on_a_tableau_with_two_parameters() {
     let e = maximize(&p).unwrap_err().to_string();
     assert!(e.contains("no order condition is affine in (c, d)"), "{e}");
 }
+
+/// Φ_max over a box of two parameters stays a clean error that says why
+/// (Newmark's β and γ both free); on a line cut by `min_order` it is
+/// searched (`min_order_on_a_tableau_with_two_parameters`).
+#[test]
+fn phi_max_over_a_box_is_refused() {
+    let d = derive(NEWMARK);
+    let p = problem(
+        &d,
+        Objective::PhiMax,
+        vec![FreeParam::new("beta", q(0, 1), q(1, 2)), FreeParam::new("gamma", q(1, 2), q(1, 1))],
+    );
+    let e = maximize(&p).unwrap_err().to_string();
+    assert!(
+        e.contains("phi_max over two parameters") && e.contains("not upper semicontinuous"),
+        "{e}"
+    );
+}
