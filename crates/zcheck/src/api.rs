@@ -202,7 +202,7 @@ fn advise(
             return Err(Error::usage("solvers= compares families: give it without solver="));
         }
         let families = crate::answers::families::parse_families(families)?;
-        let table = crate::answers::families::family_table(scene, &families, &[], options)?;
+        let table = crate::answers::families::family_table(scene, &families, &[], &[], options)?;
         return Ok(serde_json::to_value(table)?);
     }
     match solver {
@@ -213,9 +213,12 @@ fn advise(
         None if config.is_some() => {
             Err(Error::usage("substeps= and iterations= configure a solver: give solver= too"))
         }
-        None => {
-            Ok(serde_json::to_value(crate::answers::advice::scene_advice(scene, &[], options)?)?)
-        }
+        None => Ok(serde_json::to_value(crate::answers::advice::scene_advice(
+            scene,
+            &[],
+            &[],
+            options,
+        )?)?),
     }
 }
 

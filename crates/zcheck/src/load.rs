@@ -127,12 +127,16 @@ impl LoadedMethod {
     /// whole-scene advisor: a built-in's damped twin, shown by its base
     /// name and with its system kernel; a tableau's program on the damped
     /// oscillator; anything else as [`LoadedMethod::load`] reads it.
-    pub(crate) fn load_damped(arg: &str) -> Result<LoadedMethod, Error> {
+    /// A tableau's parameters are bound to `values`, as
+    /// [`LoadedMethod::load_with`] binds them.
+    pub(crate) fn load_damped(arg: &str, values: &[(String, Q)]) -> Result<LoadedMethod, Error> {
         match damped_twin(arg) {
             Some(name) => LoadedMethod::builtin(name),
             None => {
-                let (method, _, _, _) = resolve(arg, Oscillator::Damped, &[])?;
-                Ok(LoadedMethod::new(method, arg.to_owned(), None, None))
+                let (method, _, _, taken) = resolve(arg, Oscillator::Damped, values)?;
+                let mut loaded = LoadedMethod::new(method, arg.to_owned(), None, None);
+                loaded.tableau_params = taken;
+                Ok(loaded)
             }
         }
     }
@@ -453,11 +457,11 @@ mod tests {
             ("false_euler_damped", "false_euler_damped", "false_euler"),
             ("verlet", "verlet_damped", "verlet"),
         ] {
-            let m = LoadedMethod::load_damped(arg).unwrap();
+            let m = LoadedMethod::load_damped(arg, &[]).unwrap();
             assert_eq!((m.method().name(), m.display()), (name, shown), "{arg}");
             assert!(m.system_kernel().is_some() && m.hand_kernel().is_some(), "{arg}");
         }
-        let m = LoadedMethod::load_damped("gauss_legendre_2").unwrap();
+        let m = LoadedMethod::load_damped("gauss_legendre_2", &[]).unwrap();
         assert_eq!((m.method().name(), m.display()), ("gauss_legendre_2", "gauss_legendre_2"));
         assert_eq!((m.hand_kernel(), m.system_kernel()), (None, None));
         let d = LoadedMethod::builtin("damped_euler_d").unwrap();

@@ -169,6 +169,16 @@ pub(crate) fn check_taken<'a>(
     params: &[ParamArg],
     taken: impl IntoIterator<Item = &'a String>,
 ) -> Result<(), Error> {
+    check_taken_then(params, taken, "; a program's parameters stay symbolic in this command")
+}
+
+/// [`check_taken`], with `then` after the list of declared names in the
+/// error (what the command does with a program's parameters).
+pub(crate) fn check_taken_then<'a>(
+    params: &[ParamArg],
+    taken: impl IntoIterator<Item = &'a String>,
+    then: &str,
+) -> Result<(), Error> {
     let taken: Vec<&String> = taken.into_iter().collect();
     for (k, p) in params.iter().enumerate() {
         if params[..k].iter().any(|q| q.name == p.name) {
@@ -179,7 +189,7 @@ pub(crate) fn check_taken<'a>(
             let listed = if listed.is_empty() { "none".to_owned() } else { listed.join(", ") };
             return Err(Error::usage(format!(
                 "--param {}={}: no tableau here declares a parameter {} (declared in `params`: \
-                 {listed}); a program's parameters stay symbolic in this command",
+                 {listed}){then}",
                 p.name, p.value, p.name
             )));
         }

@@ -303,3 +303,193 @@ fn bound_values_enter_a_tableau() {
     .unwrap();
     assert_eq!(d.optimum.to_string(), "1");
 }
+
+/// The optimum's value as an algebraic number, with its defining
+/// polynomial in x (for a finite optimum).
+fn defining(s: &Score) -> String {
+    s.finite().expect("a finite optimum").defining_poly().to_string_in("x")
+}
+
+fn two_free<'a>(d: &'a Derivation, a: (&str, Q, Q), b: (&str, Q, Q), order: usize) -> Problem<'a> {
+    let mut p = problem(
+        d,
+        Objective::RealLimit,
+        vec![FreeParam::new(a.0, a.1, a.2), FreeParam::new(b.0, b.1, b.2)],
+    );
+    p.min_order = Some(order);
+    p
+}
+
+/// Two free coefficients, order ≥ 3: R − e^w = O(w⁴) forces a₂ = 1/2 and
+/// a₃ = 1/6, one point, where R(−x) = 1 − x + x²/2 − x³/6 never exceeds 1
+/// (x(x² − 3x + 6) > 0) and reaches −1 at the real root of
+/// x³ − 3x² + 6x − 12 (≈ 2.512745; SymPy's nroots, and a float scan). The
+/// grid is that point.
+#[test]
+fn min_order_cuts_two_parameters_to_a_point() {
+    let d = derive(CUBIC);
+    let p = two_free(&d, ("a2", q(0, 1), q(1, 2)), ("a3", q(0, 1), q(1, 6)), 3);
+    let r = solve(&p);
+    assert_eq!(defining(&r.optimum), "x^3 - 3*x^2 + 6*x - 12", "{:#?}", r.certificate);
+    let x = r.optimum.finite().unwrap();
+    assert!(x.cmp_rational(&q(2512, 1000)).is_gt() && x.cmp_rational(&q(2513, 1000)).is_lt());
+    assert_eq!((r.at[0].1.to_string(), r.at[1].1.to_string()), ("1/2".into(), "1/6".into()));
+    assert!(r.attained);
+    assert_eq!((r.grid_check.points, &r.grid_check.max), (1, &r.optimum));
+    // The oracle: the engine at that rational point, with no order asked.
+    let mut free = p.clone();
+    free.min_order = None;
+    assert_eq!(objective_at(&free, &[("a2", q(1, 2)), ("a3", q(1, 6))]).unwrap(), r.optimum);
+    // A box that misses the point: no allowed point, a clean error.
+    let p = two_free(&d, ("a2", q(0, 1), q(1, 4)), ("a3", q(0, 1), q(1, 6)), 3);
+    assert!(maximize(&p).unwrap_err().to_string().contains("no (a2, a3) in the box has order 3"));
+}
+
+/// Order ≥ 2 forces only a₂ = 1/2: the line a₂ = 1/2, searched along a₃.
+/// By hand: R(−x) − 1 = −x(1 − x/2 + a₃x²) has a double root (x = 4) at
+/// a₃ = 1/16, where the exit moves on to R = −1, the real root of
+/// x³ − 8x² + 16x − 32 (≈ 6.260791; below 1/16 R exceeds 1 before x = 4,
+/// above it the exit at R = −1 comes earlier; a float scan agrees). The
+/// oracle: the one-parameter problem with a₂ bound to 1/2.
+#[test]
+fn min_order_cuts_two_parameters_to_a_line() {
+    let d = derive(CUBIC);
+    let p = two_free(&d, ("a2", q(0, 1), q(1, 2)), ("a3", q(0, 1), q(1, 6)), 2);
+    let r = solve(&p);
+    assert_eq!(defining(&r.optimum), "x^3 - 8*x^2 + 16*x - 32", "{:#?}", r.certificate);
+    assert_eq!((r.at[0].1.to_string(), r.at[1].1.to_string()), ("1/2".into(), "1/16".into()));
+    assert!(r.grid_check.points >= 200 && r.grid_check.max <= r.optimum);
+    let text = r.certificate.join("\n");
+    assert!(text.contains("on the line a2 = 1/2 with a3 in [0, 1/6]"), "{text}");
+    let mut bound = problem(&d, Objective::RealLimit, vec![FreeParam::new("a3", q(0, 1), q(1, 6))]);
+    bound.bound = Params::new().bind("a2", q(1, 2));
+    let b = solve(&bound);
+    assert_eq!((&b.optimum, b.at[0].1.to_string()), (&r.optimum, "1/16".into()));
+    bisect_around(&bound, "a3", &q(1, 16), &q(0, 1), &q(1, 6), &r.optimum);
+}
+
+/// A slanted line: R = 1 + (a + b)w + (b/2)w², order ≥ 1 asks a + b = 1,
+/// so b = 1 − a and R = 1 + w + ((1 − a)/2)w², Chebyshev's family: 8
+/// where (1 − a)/2 = 1/8, at (a, b) = (3/4, 1/4). The box b ≤ 1/2 cuts the
+/// line to a ∈ [1/2, 1].
+#[test]
+fn min_order_on_a_slanted_line() {
+    let d =
+        derive("method slant\nparam a\nparam b\nstate y\ny = y + (a + b)*w*y + (1/2)*b*w^2*y\n");
+    let p = two_free(&d, ("a", q(0, 1), q(1, 1)), ("b", q(0, 1), q(1, 2)), 1);
+    let r = solve(&p);
+    assert_eq!(finite(&r.optimum), "8", "{:#?}", r.certificate);
+    assert_eq!((r.at[0].1.to_string(), r.at[1].1.to_string()), ("3/4".into(), "1/4".into()));
+    let text = r.certificate.join("\n");
+    assert!(text.contains("b = 1 - a with a in [1/2, 1]"), "{text}");
+    assert_eq!(r.grid_check.points, 201);
+    assert!(r.grid_check.at.iter().all(|(_, v)| v.is_rational()));
+    // Every grid point is on the line.
+    let sum = r.grid_check.at.iter().map(|(_, v)| v.as_rational().unwrap().clone());
+    assert_eq!(sum.fold(q(0, 1), |s, v| s + v), q(1, 1));
+}
+
+/// An order condition that is not affine: on the line a₂ = 1/2 order 3
+/// asks b² = 1/6, so the allowed set is the point (1/2, 1/√6), irrational,
+/// where R is the same cubic as above: the real root of x³ − 3x² + 6x − 12.
+/// The grid is that point, evaluated exactly.
+#[test]
+fn min_order_line_with_an_irrational_point() {
+    let d = derive("method sq\nparam a2\nparam b\nstate y\ny = y + w*y + a2*w^2*y + b^2*w^3*y\n");
+    let p = two_free(&d, ("a2", q(0, 1), q(1, 1)), ("b", q(0, 1), q(1, 1)), 3);
+    let r = solve(&p);
+    assert_eq!(defining(&r.optimum), "x^3 - 3*x^2 + 6*x - 12", "{:#?}", r.certificate);
+    assert_eq!(r.at[0].1.to_string(), "1/2");
+    let b = &r.at[1].1;
+    assert!(!b.is_rational() && b.is_root_of(&poly::UPoly::new(vec![q(-1, 1), q(0, 1), q(6, 1)])));
+    assert!(b.sign().is_gt());
+    assert_eq!((r.grid_check.points, &r.grid_check.max), (1, &r.optimum));
+}
+
+/// One parameter whose allowed points are irrational: R = 1 + w + a²w²
+/// has order 2 at a = ±1/√2, both with R = 1 + w + w²/2 (real limit 2).
+/// The grid is those two points, evaluated exactly (never empty).
+#[test]
+fn min_order_grid_at_irrational_points() {
+    let d = derive("method half\nparam a\nstate y\ny = y + w*y + a^2*w^2*y\n");
+    let mut p = problem(&d, Objective::RealLimit, vec![FreeParam::new("a", q(-1, 1), q(1, 1))]);
+    p.min_order = Some(2);
+    let r = solve(&p);
+    assert_eq!(finite(&r.optimum), "2", "{:#?}", r.certificate);
+    assert_eq!(r.at[0].1.closed_form().as_deref(), Some("-sqrt(2)/2"));
+    assert_eq!(r.grid_check.points, 2);
+    assert_eq!(r.grid_check.max, r.optimum);
+    assert_eq!(r.grid_check.at[0].1, r.at[0].1);
+}
+
+/// A tableau's classical conditions, affine in its weights b₁, b₂ (A =
+/// [[0, 0], [1, 0]]): order 2 asks b₁ + b₂ = 1 and b₂ = 1/2, Heun's
+/// method, whose SSP coefficient is 1 (the oracle: order::ssp_coefficient
+/// at that point). Order 1 leaves the line b₂ = 1 − b₁, R = 1 + w +
+/// (1 − b₁)w²; on the oscillator |R(iΦ)|² = 1 + (1 − 2β)Φ² + β²Φ⁴ with
+/// β = 1 − b₁, so Φ_max = √(2β − 1)/β for β > 1/2, largest (1) at β = 1.
+/// With A's entry c and b = (1 − d, d) order 2 asks c·d = 1/2, not
+/// affine: a clean error.
+#[test]
+fn min_order_on_a_tableau_with_two_parameters() {
+    let t =
+        ParamTableau::new("rk2b", &["b1", "b2"], &[vec!["0", "0"], vec!["1", "0"]], &["b1", "b2"])
+            .unwrap();
+    let box2 = vec![FreeParam::new("b1", q(0, 1), q(1, 1)), FreeParam::new("b2", q(0, 1), q(1, 1))];
+    let mut p = Problem {
+        subject: Subject::Tableau(&t),
+        objective: Objective::SspCoefficient,
+        free: box2,
+        bound: Params::new(),
+        min_order: Some(2),
+    };
+    let r = solve(&p);
+    assert_eq!((r.at[0].1.to_string(), r.at[1].1.to_string()), ("1/2".into(), "1/2".into()));
+    let heun = t.at(&[(poly::Sym::new("b1"), q(1, 2)), (poly::Sym::new("b2"), q(1, 2))]).unwrap();
+    match poly::advanced::order::ssp_coefficient(&heun).unwrap() {
+        poly::advanced::order::Ssp::Radius(c) => assert_eq!(r.optimum, Score::Finite(c)),
+        other => panic!("{other:?}"),
+    }
+    assert_eq!(finite(&r.optimum), "1");
+    p.objective = Objective::PhiMax;
+    p.min_order = Some(1);
+    let r = solve(&p);
+    assert_eq!(finite(&r.optimum), "1", "{:#?}", r.certificate);
+    assert_eq!((r.at[0].1.to_string(), r.at[1].1.to_string()), ("0".into(), "1".into()));
+    assert!(r.attained && r.grid_check.points >= 200);
+    // β = 2/3 (b₁ = 1/3): √(1/3)/(2/3) = √3/2, the engine at that point.
+    let mut free = p.clone();
+    free.min_order = None;
+    let v = objective_at(&free, &[("b1", q(1, 3)), ("b2", q(2, 3))]).unwrap();
+    assert_eq!(finite(&v), "sqrt(3)/2");
+    let cd =
+        ParamTableau::new("rk2cd", &["c", "d"], &[vec!["0", "0"], vec!["c", "0"]], &["1 - d", "d"])
+            .unwrap();
+    let p = Problem {
+        subject: Subject::Tableau(&cd),
+        objective: Objective::SspCoefficient,
+        free: vec![FreeParam::new("c", q(0, 1), q(1, 1)), FreeParam::new("d", q(0, 1), q(1, 1))],
+        bound: Params::new(),
+        min_order: Some(2),
+    };
+    let e = maximize(&p).unwrap_err().to_string();
+    assert!(e.contains("no order condition is affine in (c, d)"), "{e}");
+}
+
+/// Φ_max over a box of two parameters stays a clean error that says why
+/// (Newmark's β and γ both free); on a line cut by `min_order` it is
+/// searched (`min_order_on_a_tableau_with_two_parameters`).
+#[test]
+fn phi_max_over_a_box_is_refused() {
+    let d = derive(NEWMARK);
+    let p = problem(
+        &d,
+        Objective::PhiMax,
+        vec![FreeParam::new("beta", q(0, 1), q(1, 2)), FreeParam::new("gamma", q(1, 2), q(1, 1))],
+    );
+    let e = maximize(&p).unwrap_err().to_string();
+    assert!(
+        e.contains("phi_max over two parameters") && e.contains("not upper semicontinuous"),
+        "{e}"
+    );
+}

@@ -8,6 +8,7 @@ use crate::scene::advisor::{self, Options};
 use crate::scene::file::SceneFile;
 use crate::scene::modal::{self, Modal, Shapes};
 use crate::tradeoff::spring_advisor::SpringAdvice;
+use crate::values::ParamArg;
 
 /// "1 degree of freedom", "n degrees of freedom".
 pub(crate) fn dof_phrase(n: usize) -> String {
@@ -144,18 +145,22 @@ pub(crate) fn text(a: &SpringAdvice) -> String {
 }
 
 /// The advice of `zcheck advise --scene` on a scene read: for `methods`
-/// (built-in names or `.zm` files; none: the seven direct methods).
+/// (built-in names, `.zm` files or tableaux, a tableau's parameters bound
+/// to their `params` values; none: the seven direct methods).
 pub(crate) fn scene_advice(
     scene: &SceneFile,
     methods: &[String],
+    params: &[ParamArg],
     options: Options,
 ) -> Result<advisor::SceneAdvice, Error> {
-    let modal = modal_of(scene, options.simulate, options.route)?;
-    let specs = if methods.is_empty() {
+    let values = crate::load::values_of_args(params);
+    let specs: Vec<LoadedMethod> = if methods.is_empty() {
         LoadedMethod::damped_builtins()?
     } else {
-        methods.iter().map(|m| LoadedMethod::load_damped(m)).collect::<Result<_, _>>()?
+        methods.iter().map(|m| LoadedMethod::load_damped(m, &values)).collect::<Result<_, _>>()?
     };
+    crate::values::check_taken_then(params, specs.iter().flat_map(|s| s.tableau_params()), "")?;
+    let modal = modal_of(scene, options.simulate, options.route)?;
     advisor::advise(scene, &modal, specs, options)
 }
 

@@ -335,8 +335,12 @@ pub(crate) fn to_json(a: &Answer) -> Value {
         at.insert(n.clone(), number(x, n));
     }
     let mut grid_at = Map::new();
-    for (n, q) in &d.grid_check.at {
-        grid_at.insert(n.clone(), rational_json(q));
+    for (n, x) in &d.grid_check.at {
+        let value = match x.as_rational() {
+            Some(q) => rational_json(q),
+            None => number(x, n),
+        };
+        grid_at.insert(n.clone(), value);
     }
     json!({
         "method": a.method,
@@ -400,7 +404,8 @@ pub(crate) fn to_text(a: &Answer) -> String {
     let at: Vec<String> = d.at.iter().map(|(n, x)| format!("{n} = {}", shown_at(n, x))).collect();
     let how = if d.attained { "attained" } else { "approached, not attained (the limit point)" };
     let _ = writeln!(out, "  at          {} ({how})", at.join(", "));
-    let grid_at: Vec<String> = d.grid_check.at.iter().map(|(n, q)| format!("{n} = {q}")).collect();
+    let grid_at: Vec<String> =
+        d.grid_check.at.iter().map(|(n, x)| format!("{n} = {}", shown_at(n, x))).collect();
     let _ = writeln!(
         out,
         "  grid check  {} points evaluated exactly: largest {} at {}, not above the optimum",

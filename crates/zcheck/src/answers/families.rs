@@ -17,6 +17,7 @@ use crate::error::Error;
 use crate::scene::advisor::Options;
 use crate::scene::file::SceneFile;
 use crate::scene::solvers::{solver_advice, Answer, Solver};
+use crate::values::ParamArg;
 
 /// What each family's operation count counts.
 pub(crate) const OPS_NOTE: &str = "paper: the method's arithmetic per step of one degree of \
@@ -121,12 +122,20 @@ pub(crate) fn family_table(
     scene: &SceneFile,
     families: &[String],
     methods: &[String],
+    params: &[ParamArg],
     options: Options,
 ) -> Result<FamilyTable, Error> {
+    if let Some(p) = params.first().filter(|_| !families.iter().any(|f| f == "paper")) {
+        return Err(Error::usage(format!(
+            "--param {}={}: binds a parameter of a tableau among the paper family's --methods; \
+             expected paper among --solvers",
+            p.name, p.value
+        )));
+    }
     let mut rows = Vec::with_capacity(families.len());
     for family in families {
         rows.push(if family == "paper" {
-            paper_row(scene, methods, options)?
+            paper_row(scene, methods, params, options)?
         } else {
             solver_row(scene, Solver::parse(family)?)?
         });
@@ -159,8 +168,13 @@ fn rank(scene: &SceneFile, mut rows: Vec<FamilyRow>) -> FamilyTable {
     }
 }
 
-fn paper_row(scene: &SceneFile, methods: &[String], options: Options) -> Result<FamilyRow, Error> {
-    let a = scene_advice(scene, methods, options)?;
+fn paper_row(
+    scene: &SceneFile,
+    methods: &[String],
+    params: &[ParamArg],
+    options: Options,
+) -> Result<FamilyRow, Error> {
+    let a = scene_advice(scene, methods, params, options)?;
     let mut row = FamilyRow::empty("paper");
     let chosen = a
         .recommended

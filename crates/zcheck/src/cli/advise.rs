@@ -26,10 +26,19 @@ pub(crate) struct Args {
     /// A scene file (TOML: masses and springs, or modes; see the README).
     #[arg(long, conflicts_with_all = ["freq", "tick", "damping"])]
     pub scene: Option<std::path::PathBuf>,
-    /// Candidate methods for a scene (with --scene only): built-in names or `.zm` files
-    /// (comma-separated or repeated); default: the seven direct methods.
+    /// Candidate methods for a scene (with --scene only): built-in names, `.zm` files or
+    /// `.toml` tableaux (comma-separated or repeated); default: the seven direct methods.
     #[arg(long, value_delimiter = ',', requires = "scene")]
     pub methods: Vec<String>,
+    /// A value for a parameter a tableau among --methods declares (`params
+    /// = ["c"]`), `NAME=VALUE` (exact); repeatable.
+    #[arg(
+        long = "param",
+        value_name = "NAME=VALUE",
+        allow_hyphen_values = true,
+        conflicts_with = "solver"
+    )]
+    pub params: Vec<crate::values::ParamArg>,
     /// Also analyse body-by-body (Gauss-Seidel) updates of the scene.
     #[arg(long, value_enum, requires = "scene")]
     pub sweep: Option<SweepArg>,
@@ -117,6 +126,14 @@ pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
              of your own",
             args.methods.join(","),
             args.methods[0]
+        )));
+    }
+    if let Some(p) = args.params.first() {
+        return Err(Error::usage(format!(
+            "--param {}={}: binds a parameter of a tableau among the candidates of a scene \
+             (--scene FILE --methods FILE.toml); with --freq and --tick zcheck advise compares \
+             the seven direct methods",
+            p.name, p.value
         )));
     }
     let scene = SpringScene {
@@ -231,8 +248,13 @@ fn run_scene(path: &std::path::Path, args: &Args) -> Result<ExitCode, Error> {
             rank: Rank::Exact,
         };
         crate::interrupt::install();
-        let table =
-            crate::answers::families::family_table(&scene, &families, &args.methods, options)?;
+        let table = crate::answers::families::family_table(
+            &scene,
+            &families,
+            &args.methods,
+            &args.params,
+            options,
+        )?;
         match args.format {
             Format::Json => super::output::emitln(&serde_json::to_string_pretty(&table)?)?,
             _ => super::output::emit(&crate::answers::families::family_text(
@@ -268,7 +290,7 @@ fn run_scene(path: &std::path::Path, args: &Args) -> Result<ExitCode, Error> {
         rank: Rank::parse(&args.rank).unwrap_or_default(),
     };
     crate::interrupt::install();
-    let advice = scene_advice(&scene, &args.methods, options)?;
+    let advice = scene_advice(&scene, &args.methods, &args.params, options)?;
     match args.format {
         Format::Json => super::output::emitln(&serde_json::to_string_pretty(&advice)?)?,
         _ => super::output::emit(&scene_text(&path.display().to_string(), &advice))?,

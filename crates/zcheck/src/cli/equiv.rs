@@ -12,17 +12,24 @@ use std::process::ExitCode;
 /// Arguments of `zcheck equiv`.
 #[derive(clap::Args)]
 pub(crate) struct Args {
-    /// The first method: a built-in name or a `.zm` path.
+    /// The first method: a built-in name, a `.zm` path or a `.toml` file.
     pub a: String,
-    /// The second method: a built-in name or a `.zm` path.
+    /// The second method: a built-in name, a `.zm` path or a `.toml` file.
     pub b: String,
+    /// A value for a parameter a tableau declares (`params = ["c"]`),
+    /// `NAME=VALUE` (exact); repeatable. A program's parameters stay
+    /// symbolic.
+    #[arg(long = "param", value_name = "NAME=VALUE", allow_hyphen_values = true)]
+    pub params: Vec<crate::values::ParamArg>,
     #[arg(long, value_parser = Format::parser(TEXT_JSON), default_value = "text")]
     pub format: Format,
 }
 
 pub(crate) fn run(args: Args) -> Result<ExitCode, Error> {
-    let a = LoadedMethod::load(&args.a)?;
-    let b = LoadedMethod::load(&args.b)?;
+    let values = crate::load::values_of_args(&args.params);
+    let a = LoadedMethod::load_with(&args.a, &values)?;
+    let b = LoadedMethod::load_with(&args.b, &values)?;
+    crate::values::check_taken(&args.params, a.tableau_params().iter().chain(b.tableau_params()))?;
     let (da, db) = (a.derivation()?, b.derivation()?);
     let (ma, mb) = (&da.method(), &db.method());
     let relation = equiv::relate(da, db);

@@ -89,7 +89,7 @@ enum Command {
     /// Cost, accuracy and admissible step of every method, side by side.
     Tradeoff(tradeoff::Args),
     /// Advise a method and substeps for a spring in a game scene.
-    Advise(advise::Args),
+    Advise(Box<advise::Args>),
     /// Run an appendix scene (three bodies, aircraft).
     Scene(scene::Args),
     /// The strongest identity between two methods (equal, permuted, scaled, same chi).
@@ -126,7 +126,7 @@ impl Cli {
             Command::Stability(a) => stability::run(a),
             Command::Paper(a) => paper::run(a),
             Command::Tradeoff(a) => tradeoff::run(a),
-            Command::Advise(a) => advise::run(a),
+            Command::Advise(a) => advise::run(*a),
             Command::Scene(a) => scene::run(a),
             Command::Equiv(a) => equiv::run(a),
             Command::Map(a) => map::run(a),

@@ -13,6 +13,7 @@ use crate::tradeoff::family::{self, Candidate};
 use crate::tradeoff::measure::measure_ns_per_step_within;
 use crate::tradeoff::rank::{trade, TradeRow};
 use crate::tradeoff::{figure, kernels};
+use crate::values::ParamArg;
 use check::numeric::{q_to_f64, Params, ParamsF64};
 
 /// Arguments of `zcheck tradeoff`.
@@ -32,14 +33,15 @@ pub(crate) struct Args {
     /// Time budget per method for the in-process ns/step measurement, ms.
     #[arg(long, default_value_t = 3)]
     pub budget_ms: u64,
-    /// Also rank this method: a built-in name or a path to a `.zm` file
-    /// (repeatable). Its compiled step is timed like every other.
+    /// Also rank this method: a built-in name, a path to a `.zm` file or a
+    /// `.toml` tableau (repeatable). Its compiled step is timed like every other.
     #[arg(long = "method", value_name = "METHOD")]
     pub methods: Vec<String>,
-    /// A value for a parameter of a `--method` other than Phi, `NAME=VALUE`
-    /// (exact: integer, fraction or decimal); repeatable.
-    #[arg(long = "param", value_name = "NAME=VALUE")]
-    pub params: Vec<String>,
+    /// A value for a parameter of a `--method` other than Phi (a program's
+    /// `param`, or a tableau's `params`), `NAME=VALUE` (exact: integer,
+    /// fraction or decimal); repeatable.
+    #[arg(long = "param", value_name = "NAME=VALUE", allow_hyphen_values = true)]
+    pub params: Vec<ParamArg>,
     /// Also rank every implicit and algebraic built-in whose χ is of
     /// second order (all but BDF2): trapezoidal, backward Euler, Newmark,
     /// Gauss-Legendre, Radau IIA, SDIRK, Forest-Ruth, soft spring.
@@ -144,39 +146,41 @@ pub(crate) fn timing_params(c: &Candidate) -> Params {
 }
 
 /// The `--method` candidates: each shown by its argument (a path or a
-/// built-in name), with the `--param` values it declares.
+/// built-in name), with the `--param` values it declares; a tableau's
+/// parameters are bound as it is read. A `--param` that no candidate
+/// declares is refused.
 fn user_candidates(
     methods: &[String],
-    params: &[String],
+    params: &[ParamArg],
     family: &[Candidate],
 ) -> Result<Vec<Candidate>, Error> {
-    let parsed: Vec<(String, poly::Q)> =
-        params.iter().map(|p| crate::values::parse_param(p)).collect::<Result<_, _>>()?;
-    if let Some((name, _)) = parsed.iter().find(|(n, _)| n == "Phi") {
-        return Err(Error::usage(format!(
-            "--param {name}=...: Phi is the step size the trade chooses; it cannot be fixed"
-        )));
-    }
-    let mut out: Vec<Candidate> = Vec::new();
+    let values = crate::load::values_of_args(params);
+    let mut loaded: Vec<LoadedMethod> = Vec::new();
     for arg in methods {
-        if family.iter().chain(&out).any(|c| &c.display == arg) {
+        if family.iter().any(|c| &c.display == arg) || loaded.iter().any(|m| m.display() == arg) {
             return Err(Error::usage(format!("--method {arg}: already in the comparison")));
         }
-        let method = LoadedMethod::load(arg)?;
+        loaded.push(LoadedMethod::load_with(arg, &values)?);
+    }
+    let left = crate::load::unclaimed(params, |p| &p.name, &loaded.iter().collect::<Vec<_>>());
+    crate::values::check_declared(
+        &left,
+        &loaded.iter().map(LoadedMethod::method).collect::<Vec<_>>(),
+    )?;
+    let mut out: Vec<Candidate> = Vec::new();
+    for (arg, method) in methods.iter().zip(&loaded) {
         let mut values = Vec::new();
         for sym in method.method().params().iter().filter(|s| s.name() != "Phi") {
-            let Some((_, q)) = parsed.iter().find(|(n, _)| n == sym.name()) else {
+            let Some(p) = left.iter().find(|p| p.name == sym.name()) else {
                 return Err(Error::usage(format!(
                     "--method {arg}: parameter {} has no value: expected --param {}=VALUE",
                     sym.name(),
                     sym.name()
                 )));
             };
-            values.push((*sym, q.clone()));
+            values.push((*sym, p.value.value.clone()));
         }
-        out.push(
-            Candidate::new(&method, values).map_err(|e| e.context(format!("--method {arg}")))?,
-        );
+        out.push(Candidate::new(method, values).map_err(|e| e.context(format!("--method {arg}")))?);
     }
     Ok(out)
 }

@@ -439,3 +439,196 @@ fn parameterised_tableau_errors() {
         assert!(!err.contains("panicked"), "{args:?}: {err}");
     }
 }
+
+/// `zcheck equiv`, `tradeoff` and `advise --scene` read the tableau with
+/// `--param c=1` as Heun's tableau written with numbers (the oracle): the
+/// same relation, the same ranked row, the same scene candidate. Every
+/// c ≠ 0 gives R = 1 + w + w²/2 (b₂c = 1/2), so `equiv` finds the family
+/// members equal to Heun's.
+#[test]
+fn equiv_tradeoff_and_advise_bind_a_tableau() {
+    let family = design_file("rk2_family.toml");
+    let numbers = temp_file(
+        "heun_numbers.toml",
+        "name = \"rk2_family\"\nA = [[0, 0], [1, 0]]\nb = [\"1/2\", \"1/2\"]\n",
+    );
+    let numbers = numbers.to_str().unwrap();
+    for c in ["1", "2", "1/2"] {
+        let d = json(&["equiv", &family, numbers, "--param", &format!("c={c}")]);
+        assert_eq!(d["relation"], "equal", "c = {c}: {d}");
+        assert_eq!(d["charpoly_a"], d["charpoly_b"], "c = {c}");
+    }
+    // The rows of `tradeoff`, timing aside.
+    let row = |args: &[&str], shown: &str| -> Value {
+        let mut all = vec!["tradeoff", "--budget-ms", "1"];
+        all.extend(args);
+        let v = json(&all);
+        let rows = v["methods"].as_array().unwrap();
+        let mut r = rows.iter().find(|r| r["method"] == shown).expect("the row").clone();
+        for k in ["method", "ns_per_step", "ns_per_step_hand", "cost_per_period"] {
+            r.as_object_mut().unwrap().remove(k);
+        }
+        r
+    };
+    let bound = row(&["--method", &family, "--param", "c=1"], &family);
+    assert_eq!(bound, row(&["--method", numbers], numbers));
+    assert_eq!(bound["phi_max_exact"], "none", "{bound}");
+    // A damped mode (RK2 is unstable on the undamped oscillator).
+    let scene = temp_file("mode.toml", "tick_hz = 60\n[[mode]]\nhz = 5\nratio = 0.3\n");
+    let scene = scene.to_str().unwrap();
+    let candidate = |args: &[&str]| -> Value {
+        let mut all = vec!["advise", "--scene", scene, "--no-simulate"];
+        all.extend(args);
+        let v = json(&all);
+        let mut c = v["candidates"][0].clone();
+        for k in ["method", "ns_per_step", "ns_per_tick"] {
+            c.as_object_mut().unwrap().remove(k);
+        }
+        c
+    };
+    let bound = candidate(&["--methods", &family, "--param", "c=1"]);
+    assert_eq!(bound, candidate(&["--methods", numbers]));
+    assert!(bound["substeps_stable"].as_u64().is_some_and(|n| n >= 1), "{bound}");
+}
+
+/// The same three commands: a tableau's parameter without a value, or a
+/// value nothing declares, is a clean error (exit 2) naming it.
+#[test]
+fn equiv_tradeoff_and_advise_parameter_errors() {
+    let family = design_file("rk2_family.toml");
+    let scene = temp_file("mode_errors.toml", "tick_hz = 60\n[[mode]]\nhz = 5\nratio = 0.3\n");
+    let scene = scene.to_str().unwrap();
+    let advise = |more: &[&'static str]| -> Vec<String> {
+        let mut a: Vec<String> =
+            ["advise", "--scene", scene, "--no-simulate", "--methods", &family]
+                .iter()
+                .map(|s| s.to_string())
+                .collect();
+        a.extend(more.iter().map(|s| s.to_string()));
+        a
+    };
+    let owned = |args: &[&str]| args.iter().map(|s| s.to_string()).collect::<Vec<_>>();
+    for (args, wanted) in [
+        (
+            owned(&["equiv", &family, "verlet"]),
+            "parameter c has no value: give it one with --param c=VALUE",
+        ),
+        (
+            owned(&["equiv", &family, "verlet", "--param", "c=1", "--param", "d=2"]),
+            "no tableau here declares a parameter d",
+        ),
+        (owned(&["tradeoff", "--method", &family]), "parameter c has no value"),
+        (
+            owned(&["tradeoff", "--method", &family, "--param", "c=1", "--param", "d=2"]),
+            "has no parameter d",
+        ),
+        (owned(&["tradeoff", "--param", "d=2"]), "none of the methods declares a parameter d"),
+        (advise(&[]), "parameter c has no value"),
+        (advise(&["--param", "c=1", "--param", "d=2"]), "no tableau here declares a parameter d"),
+        (
+            owned(&["advise", "--freq", "5", "--tick", "60", "--param", "c=1"]),
+            "--param c=1: binds a parameter of a tableau",
+        ),
+    ] {
+        let (code, out, err) = zcheck(&args.iter().map(String::as_str).collect::<Vec<_>>());
+        assert_eq!(code, 2, "{args:?}: {err}");
+        assert!(out.is_empty(), "{args:?}: {out}");
+        assert!(err.contains(wanted), "{args:?}: {err}");
+        assert!(!err.contains("panicked"), "{args:?}: {err}");
+    }
+}
+
+/// Two free parameters under `--min-order` (cubic.zm, R = 1 + w + a₂w² +
+/// a₃w³): order 3 leaves the one point (1/2, 1/6), whose real limit is the
+/// real root of x³ − 3x² + 6x − 12 (≈ 2.512745); order 2 the line
+/// a₂ = 1/2, best at a₃ = 1/16 with the real root of x³ − 8x² + 16x − 32
+/// (≈ 6.260791): both checked by hand and by a float scan (poly's
+/// `tests/integration/design.rs`), the line also against the one-parameter
+/// design with a₂ bound (the oracle).
+#[test]
+fn min_order_with_two_free_parameters() {
+    let cubic = design_file("cubic.zm");
+    let args = |order: &'static str| {
+        vec![
+            "design".to_owned(),
+            cubic.clone(),
+            "--maximize".into(),
+            "real_limit".into(),
+            "--param".into(),
+            "a2=0..1/2".into(),
+            "--param".into(),
+            "a3=0..1/6".into(),
+            "--min-order".into(),
+            order.into(),
+        ]
+    };
+    let run = |a: Vec<String>| json(&a.iter().map(String::as_str).collect::<Vec<_>>());
+    let d = run(args("3"));
+    check_document(&d, 2, 1);
+    assert_eq!(d["grid_check"]["points"], 1);
+    assert_eq!(d["optimum"]["defining_poly"], "x^3 - 3*x^2 + 6*x - 12", "{d}");
+    assert!((d["optimum"]["value"].as_f64().unwrap() - 2.512745).abs() < 1e-6, "{d}");
+    assert_eq!(at(&d), pairs(&[("a2", "1/2"), ("a3", "1/6")]));
+    let d = run(args("2"));
+    check_document(&d, 2, 200);
+    assert_eq!(d["optimum"]["defining_poly"], "x^3 - 8*x^2 + 16*x - 32", "{d}");
+    assert!((d["optimum"]["value"].as_f64().unwrap() - 6.260791).abs() < 1e-6, "{d}");
+    assert_eq!(at(&d), pairs(&[("a2", "1/2"), ("a3", "1/16")]));
+    let cert = d["certificate"].to_string();
+    assert!(cert.contains("on the line a2 = 1/2 with a3 in [0, 1/6]"), "{cert}");
+    let one = json(&[
+        "design",
+        &cubic,
+        "--maximize",
+        "real_limit",
+        "--param",
+        "a2=1/2",
+        "--param",
+        "a3=0..1/6",
+    ]);
+    assert_eq!(one["optimum"], d["optimum"]);
+    assert_eq!(one["at"]["a3"], d["at"]["a3"]);
+    // A tableau whose order-2 condition c*d = 1/2 is not affine.
+    let cd = temp_file(
+        "rk2cd_order.toml",
+        "params = [\"c\", \"d\"]\nA = [[0, 0], [\"c\", 0]]\nb = [\"1 - d\", \"d\"]\n",
+    );
+    let (code, out, err) = zcheck(&[
+        "design",
+        cd.to_str().unwrap(),
+        "--maximize",
+        "ssp_coefficient",
+        "--param",
+        "c=0..1",
+        "--param",
+        "d=0..1",
+        "--min-order",
+        "2",
+    ]);
+    assert_eq!(code, 2, "{err}");
+    assert!(out.is_empty() && err.contains("no order condition is affine in (c, d)"), "{err}");
+}
+
+/// The one-parameter `--min-order` grid at irrational allowed points: R =
+/// 1 + w + a²w² has order 2 at a = ±√2/2, both with real limit 2; the grid
+/// check evaluates both exactly (it once had none).
+#[test]
+fn min_order_grid_at_irrational_points() {
+    let half = temp_file("half.zm", "method half\nparam a\nstate y\ny = y + w*y + a^2*w^2*y\n");
+    let d = json(&[
+        "design",
+        half.to_str().unwrap(),
+        "--maximize",
+        "real_limit",
+        "--param",
+        "a=-1..1",
+        "--min-order",
+        "2",
+    ]);
+    check_document(&d, 1, 2);
+    assert_eq!(d["grid_check"]["points"], 2);
+    assert_eq!(exact(&d["optimum"]), "2");
+    assert_eq!(exact(&d["grid_check"]["max"]), "2");
+    assert_eq!(exact(&d["grid_check"]["at"]["a"]), "-sqrt(2)/2");
+    assert_eq!(at(&d), pairs(&[("a", "-sqrt(2)/2")]));
+}

@@ -18,7 +18,9 @@
 //! - `system.rs`: objectives read from signs (the axes of one-step methods,
 //!   the SSP coefficient), exact at algebraic points; `oscillator.rs`: Φ_max.
 //! - `algebra.rs`: elimination, roots in a range, signs at algebraic points.
-//! - `one.rs`: the search along one parameter; `two.rs`: over a box of two.
+//! - `one.rs`: the search along one parameter; `two.rs`: over a box of two;
+//!   `order_set.rs`: two parameters under `min_order`, cut to a point or
+//!   a line (then searched as one parameter).
 //! - here: the entry, the grid check and the certificate.
 //!
 //! ```
@@ -40,6 +42,7 @@
 mod algebra;
 mod certify;
 mod one;
+mod order_set;
 mod oscillator;
 mod problem;
 mod report;
@@ -52,6 +55,7 @@ use crate::{Algebraic, Poly, Sym, Q};
 
 use certify::{evaluate, header, solves};
 use one::{search_line, LineResult, Visit};
+use order_set::{Line, OrderSet};
 use problem::{setup, Engine, Setup};
 pub use problem::{Problem, Subject};
 pub use report::{
@@ -86,32 +90,27 @@ fn bound_tableau(problem: &Problem) -> Result<Option<ParamTableau>, Error> {
 /// [`maximize`] once a tableau's bound values are in its entries.
 fn maximize_bound(problem: &Problem) -> Result<Design, Error> {
     let s = setup(problem)?;
-    let polys = match &s.engine {
-        Engine::Signs(sys) => sys.breakpoints(&s.syms)?,
-        Engine::Oscillator(o) => system::arrangement(&o.factors, Sym::phi(), &s.syms)?,
-    };
-    let (optimum, attained, at, certificate, candidates) = if s.syms.len() == 1 {
-        let f = &problem.free[0];
-        let p = s.syms[0];
-        if s.order_conditions.is_empty() {
-            let line = search_line(&s.engine, &polys, &[], p, &f.lo, &f.hi)?;
-            let cert = certificate_one(problem, &s, &line);
-            (line.best.clone(), line.attained, vec![line.at.clone()], cert, line.visited.len())
-        } else {
-            let pts = allowed_points(&s, &f.lo, &f.hi)?;
-            finite_set(problem, &s, pts)?
-        }
+    let ((optimum, attained, at, certificate, candidates), grid_check) = if s.syms.len() == 2
+        && !s.order_conditions.is_empty()
+    {
+        on_order_set(problem, &s)?
     } else {
-        if !s.order_conditions.is_empty() {
-            return Err(report::input_error(format!(
-                "min_order with two free parameters restricts the box to a curve or points ({} \
-                 conditions); the exact search over such a set is not implemented",
-                s.order_conditions.len()
-            )));
-        }
-        two::search_box(problem, &s, &polys)?
+        let polys = breakpoints(&s)?;
+        let found = if s.syms.len() == 1 {
+            let f = &problem.free[0];
+            if s.order_conditions.is_empty() {
+                let line = search_line(&s.engine, &polys, &[], s.syms[0], &f.lo, &f.hi)?;
+                let cert = certificate_one(problem, &s, &line);
+                (line.best.clone(), line.attained, vec![line.at.clone()], cert, line.visited.len())
+            } else {
+                let pts = allowed_points(&s, &f.lo, &f.hi)?;
+                finite_set(problem, &s, &pts, None)?
+            }
+        } else {
+            two::search_box(problem, &s, &polys)?
+        };
+        (found, grid(problem, &s)?)
     };
-    let grid_check = grid(problem, &s)?;
     if grid_check.max > optimum {
         return Err(Error::analysis(
             ErrorKind::Undecided,
@@ -141,6 +140,77 @@ fn maximize_bound(problem: &Problem) -> Result<Design, Error> {
         grid_check,
         candidates,
     })
+}
+
+/// The breakpoint polynomials of the setup's engine.
+fn breakpoints(s: &Setup) -> Result<Vec<system::Breakpoints>, Error> {
+    match &s.engine {
+        Engine::Signs(sys) => sys.breakpoints(&s.syms),
+        Engine::Oscillator(o) => system::arrangement(&o.factors, Sym::phi(), &s.syms),
+    }
+}
+
+/// Two free parameters under `min_order`: the order conditions solved
+/// (`order_set.rs`), then the objective at the one allowed point, or the
+/// one-parameter search along the allowed line (or at its allowed points).
+fn on_order_set(problem: &Problem, s: &Setup) -> Result<(Found, GridCheck), Error> {
+    let ranges: Vec<(Q, Q)> = problem.free.iter().map(|f| (f.lo.clone(), f.hi.clone())).collect();
+    let order = problem.min_order.unwrap_or(0);
+    let (a, b) = (s.syms[0], s.syms[1]);
+    match order_set::solve(s, &ranges, order)? {
+        OrderSet::Point(pt) => {
+            let point: Vec<(Sym, Algebraic)> =
+                pt.iter().map(|(s, q)| (*s, Algebraic::from_rational(q.clone()))).collect();
+            let e = evaluate(s, &point)?;
+            let shown: Vec<String> = pt.iter().map(|(s, q)| format!("{s} = {q}")).collect();
+            let shown = shown.join(", ");
+            let mut cert = vec![header(problem)];
+            cert.push(format!(
+                "min_order {order}: the order conditions are affine in ({a}, {b}) and hold at \
+                 one point only, {shown}, inside the box: the allowed set is that point"
+            ));
+            cert.push(format!("optimum {} at {shown}, attained", e.score));
+            cert.extend(solves(s, &e, &point));
+            let grid = GridCheck { points: 1, max: e.score.clone(), at: named(&point) };
+            let at = point.into_iter().map(|(_, v)| v).collect();
+            Ok(((e.score, true, at, cert, 1), grid))
+        }
+        OrderSet::Line(line) => {
+            let r = order_set::restrict(s, &line);
+            let t = line.t;
+            let set = format!(
+                "min_order {order}: the order conditions affine in ({a}, {b}) hold exactly on the \
+                 line {} (its part inside the box); the search runs along it in {t}",
+                line.describe()
+            );
+            let (found, points) = if r.order_conditions.is_empty() {
+                let polys = breakpoints(&r)?;
+                let res = search_line(&r.engine, &polys, &[], t, &line.lo, &line.hi)?;
+                let mut cert = certificate_one(problem, &r, &res);
+                cert.insert(1, set);
+                if let Some(k) = cert.iter().position(|l| l.starts_with("optimum ")) {
+                    let d = line.dependent_at(&res.at);
+                    let there =
+                        format!("there {} = {}", line.dependent, d.describe(line.dependent.name()));
+                    cert.insert(k + 1, there);
+                }
+                let points = axis(&line.lo, &line.hi, GRID_ONE)
+                    .into_iter()
+                    .map(|q| vec![(t, Algebraic::from_rational(q))])
+                    .collect();
+                let at = line.point(&s.syms, &res.at).into_iter().map(|(_, v)| v).collect();
+                ((res.best, res.attained, at, cert, res.visited.len()), points)
+            } else {
+                let pts = allowed_points(&r, &line.lo, &line.hi)?;
+                let mut found = finite_set(problem, &r, &pts, Some((&line, &s.syms)))?;
+                found.3.insert(1, set);
+                let points = pts.into_iter().map(|v| vec![(t, v)]).collect();
+                (found, points)
+            };
+            let grid = grid_over(&r, points, |pt| line.point(&s.syms, &pt[0].1))?;
+            Ok((found, grid))
+        }
+    }
 }
 
 /// The objective at one rational point of the free parameters, by the
@@ -192,27 +262,50 @@ fn allowed_points(s: &Setup, lo: &Q, hi: &Q) -> Result<Vec<Algebraic>, Error> {
 
 type Found = (Score, bool, Vec<Algebraic>, Vec<String>, usize);
 
-/// The optimum over a finite allowed set.
-fn finite_set(problem: &Problem, s: &Setup, pts: Vec<Algebraic>) -> Result<Found, Error> {
+/// The optimum over a finite allowed set of one parameter (on a line of
+/// the box, with the line and the problem's symbols to name the points).
+fn finite_set(
+    problem: &Problem,
+    s: &Setup,
+    pts: &[Algebraic],
+    line: Option<(&Line, &[Sym])>,
+) -> Result<Found, Error> {
     let p = s.syms[0];
     let mut best: Option<(Score, Algebraic, Eval)> = None;
-    for a in &pts {
+    for a in pts {
         let e = evaluate(s, &[(p, a.clone())])?;
         if best.as_ref().is_none_or(|b| e.score > b.0) {
             best = Some((e.score.clone(), a.clone(), e));
         }
     }
     let (score, at, e) = best.expect("a nonempty set");
+    let full = |v: &Algebraic| match line {
+        Some((l, syms)) => l.point(syms, v),
+        None => vec![(p, v.clone())],
+    };
+    let shown = |v: &Algebraic| {
+        full(v)
+            .iter()
+            .map(|(s, a)| format!("{s} = {}", a.describe(s.name())))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let set = match line {
+        Some(_) => pts.iter().map(|a| format!("({})", shown(a))).collect::<Vec<_>>().join(", "),
+        None => format!(
+            "{p} = {}",
+            pts.iter().map(|a| a.describe(p.name())).collect::<Vec<_>>().join(", ")
+        ),
+    };
     let mut cert = vec![header(problem)];
     cert.push(format!(
-        "min_order {}: the order conditions hold only at {} = {} in the range",
+        "min_order {}: the order conditions hold only at {set} in the range",
         problem.min_order.unwrap_or(0),
-        p.name(),
-        pts.iter().map(|a| a.describe(p.name())).collect::<Vec<_>>().join(", ")
     ));
-    cert.push(format!("optimum {score} at {} = {}, attained", p.name(), at.describe(p.name())));
+    cert.push(format!("optimum {score} at {}, attained", shown(&at)));
     cert.extend(solves(s, &e, &[(p, at.clone())]));
-    Ok((score, true, vec![at], cert, pts.len()))
+    let at = full(&at).into_iter().map(|(_, v)| v).collect();
+    Ok((score, true, at, cert, pts.len()))
 }
 
 fn certificate_one(problem: &Problem, s: &Setup, line: &LineResult) -> Vec<String> {
@@ -299,43 +392,62 @@ fn problem_objective(problem: &Problem) -> &'static str {
     problem.objective.name()
 }
 
-/// The objective on a grid of the box (or the allowed set's rational
-/// points), exactly.
+/// `n` equally spaced points of [lo, hi] (one when the range is a point).
+fn axis(lo: &Q, hi: &Q, n: usize) -> Vec<Q> {
+    if lo == hi || n < 2 {
+        return vec![lo.clone()];
+    }
+    let step = (hi - lo) / Q::from_integer(((n - 1) as i64).into());
+    (0..n).map(|k| lo + &step * Q::from_integer((k as i64).into())).collect()
+}
+
+/// The objective on a grid of the box, or at every point of a finite
+/// allowed set (algebraic ones too), exactly.
 fn grid(problem: &Problem, s: &Setup) -> Result<GridCheck, Error> {
-    let axis = |f: &FreeParam, n: usize| -> Vec<Q> {
-        if f.lo == f.hi || n < 2 {
-            return vec![f.lo.clone()];
-        }
-        let step = (&f.hi - &f.lo) / Q::from_integer(((n - 1) as i64).into());
-        (0..n).map(|k| &f.lo + &step * Q::from_integer((k as i64).into())).collect()
+    let rational = |pt: Vec<(Sym, Q)>| -> Vec<(Sym, Algebraic)> {
+        pt.into_iter().map(|(s, q)| (s, Algebraic::from_rational(q))).collect()
     };
-    let mut points: Vec<Vec<(Sym, Q)>> = Vec::new();
+    let mut points: Vec<Vec<(Sym, Algebraic)>> = Vec::new();
     if !s.order_conditions.is_empty() {
         let f = &problem.free[0];
         for a in allowed_points(s, &f.lo, &f.hi)? {
-            if let Some(q) = a.as_rational() {
-                points.push(vec![(s.syms[0], q.clone())]);
-            }
+            points.push(vec![(s.syms[0], a)]);
         }
     } else if s.syms.len() == 1 {
-        for q in axis(&problem.free[0], GRID_ONE) {
-            points.push(vec![(s.syms[0], q)]);
+        let f = &problem.free[0];
+        for q in axis(&f.lo, &f.hi, GRID_ONE) {
+            points.push(rational(vec![(s.syms[0], q)]));
         }
     } else {
-        for a in axis(&problem.free[0], GRID_TWO) {
-            for b in axis(&problem.free[1], GRID_TWO) {
-                points.push(vec![(s.syms[0], a.clone()), (s.syms[1], b)]);
+        let (f, g) = (&problem.free[0], &problem.free[1]);
+        for a in axis(&f.lo, &f.hi, GRID_TWO) {
+            for b in axis(&g.lo, &g.hi, GRID_TWO) {
+                points.push(rational(vec![(s.syms[0], a.clone()), (s.syms[1], b)]));
             }
         }
     }
+    grid_over(s, points, |pt| pt.to_vec())
+}
+
+/// The objective at each point of the setup, exactly: the largest value,
+/// and the first point reaching it, in the problem's coordinates (`full`).
+fn grid_over(
+    s: &Setup,
+    points: Vec<Vec<(Sym, Algebraic)>>,
+    full: impl Fn(&[(Sym, Algebraic)]) -> Vec<(Sym, Algebraic)>,
+) -> Result<GridCheck, Error> {
     let mut max = Score::zero();
     let mut at = Vec::new();
     for pt in &points {
-        let e = evaluate_rational(s, pt)?;
+        let e = evaluate(s, pt)?;
         if at.is_empty() || e.score > max {
             max = e.score;
-            at = pt.iter().map(|(s, q)| (s.name().to_owned(), q.clone())).collect();
+            at = named(&full(pt));
         }
     }
     Ok(GridCheck { points: points.len(), max, at })
+}
+
+fn named(point: &[(Sym, Algebraic)]) -> Vec<(String, Algebraic)> {
+    point.iter().map(|(s, a)| (s.name().to_owned(), a.clone())).collect()
 }

@@ -43,6 +43,10 @@ pub(crate) struct Oscillator<'a> {
     pub source: Source<'a>,
     /// The critical conditions, in Φ and the free parameters.
     pub factors: Vec<Factor>,
+    /// Parameters fixed as polynomials in the free ones (a search along a
+    /// line of the box, `order_set.rs`): each is given its value at a
+    /// point before the source reads it.
+    pub along: Vec<(Sym, Poly)>,
 }
 
 impl<'a> Oscillator<'a> {
@@ -70,11 +74,20 @@ impl<'a> Oscillator<'a> {
                 factors.push(Factor { poly: p, label: label.to_owned() });
             }
         }
-        Oscillator { source, factors }
+        Oscillator { source, factors, along: Vec::new() }
     }
 
     /// Φ_max at a rational point.
     pub(crate) fn at(&self, point: &[(Sym, Q)]) -> Result<Score, Error> {
+        let mut full = point.to_vec();
+        let map: HashMap<Sym, Q> = point.iter().cloned().collect();
+        for (s, expr) in &self.along {
+            let v = expr.eval(&map).ok_or_else(|| {
+                input_error(format!("{s} = {expr} needs a value of every free parameter"))
+            })?;
+            full.push((*s, v));
+        }
+        let point = &full[..];
         let report = match &self.source {
             Source::Program(d, bound) => {
                 let mut params = bound.clone();

@@ -144,8 +144,9 @@ pub struct GridCheck {
     pub points: usize,
     /// The largest value found (never above the optimum).
     pub max: Score,
-    /// The first grid point where it was found.
-    pub at: Vec<(String, Q)>,
+    /// The first grid point where it was found (a point of a finite
+    /// allowed set may be irrational).
+    pub at: Vec<(String, Algebraic)>,
 }
 
 /// The exact optimum of an objective over a box of parameters.

@@ -201,9 +201,11 @@ pub(crate) fn search_box(
 ) -> Result<Found, Error> {
     let Engine::Signs(sys) = &s.engine else {
         return Err(input_error(
-            "phi_max over two parameters: the exact search over a box is implemented for the \
-             objectives read from signs (real_limit, imag_limit, ssp_coefficient); search one \
-             parameter at a time"
+            "phi_max over two parameters: Phi_max may jump where the class of chi's roots \
+             changes (it is not upper semicontinuous), so its supremum over a box can be a limit \
+             along a curve, which the exact search does not follow (it does for real_limit, \
+             imag_limit, ssp_coefficient); bind one parameter, or let min_order cut the box to \
+             a line"
                 .to_owned(),
         ));
     };
