@@ -113,8 +113,14 @@ pub fn runge_kutta(
     }
     r.stage_order = Some(rk.stage_order(&c));
     r.algebraically_stable = Some(rk.algebraically_stable());
-    let (reduced, reducible) = rk.reduced();
-    r.symplectic = Some(reduced.m_is_zero());
+    // Reduction, M = 0 and symmetry are scale-free: a rational tableau is
+    // asked on integers.
+    let (symplectic, symmetric, reduced_stages) = match rk::scaled(&rk) {
+        Some(int) => reduced_questions(&int),
+        None => reduced_questions(&rk),
+    };
+    let reducible = reduced_stages < rk.stages();
+    r.symplectic = Some(symplectic);
     r.reducible = Some(reducible);
     if reducible {
         notes.push(format!(
@@ -122,11 +128,10 @@ pub fn runge_kutta(
              on the reduced tableau (M = 0 there; M = 0 on a reducible tableau is sufficient, \
              not necessary)",
             rk.stages(),
-            reduced.stages()
+            reduced_stages
         ));
     }
-    r.symmetric =
-        Some(rk::equal_up_to_permutation(std::slice::from_ref(&reduced), &[reduced.adjoint()]));
+    r.symmetric = Some(symmetric);
     match ssp::coefficient(&rk.a, &rk.b) {
         Ok(x) => r.ssp_coefficient = Some(x),
         Err(e) if e.kind() == ErrorKind::Unsupported => notes.push(e.message().to_owned()),
@@ -149,6 +154,14 @@ pub fn runge_kutta(
     r.order_within_tolerance = within(&mut w, options, "rooted-tree");
     r.notes = notes;
     Ok(r)
+}
+
+/// M = 0 and symmetry, asked of the reduced tableau, and its stage count.
+fn reduced_questions<T: rk::Entry>(rk: &Rk<T>) -> (bool, bool, usize) {
+    let (reduced, _) = rk.reduced();
+    let symmetric =
+        rk::equal_up_to_permutation(std::slice::from_ref(&reduced), &[reduced.adjoint()]);
+    (reduced.m_is_zero(), symmetric, reduced.stages())
 }
 
 /// Φ(t) for every monocolored tree of order 1 to `max_order`, in the order
