@@ -32,7 +32,14 @@ fn report(m: &zcheck::load::LoadedMethod) {
 }
 
 fn bench(c: &mut Criterion) {
-    let all = files("rk");
+    // ZCHECK_ORDER_BENCH=SSP63,PD8 keeps only those files (for profiling).
+    let only = std::env::var("ZCHECK_ORDER_BENCH").ok();
+    let all: Vec<String> = files("rk")
+        .into_iter()
+        .filter(|p| {
+            only.as_ref().is_none_or(|o| o.split(',').any(|k| p.ends_with(&format!("/{k}.toml"))))
+        })
+        .collect();
     // Each method's best of five, slowest first: the per-method figures.
     let loaded: Vec<_> = all.iter().map(|p| zcheck::api::load(p).expect("loads")).collect();
     let best = |f: &dyn Fn()| {

@@ -7,9 +7,12 @@ use num_traits::ToPrimitive;
 use poly::{Algebraic, Poly, Q};
 use serde_json::{json, Value};
 
-/// Width to which exact numbers are narrowed before they become floats.
+/// Width to which exact numbers are narrowed before they become floats:
+/// 1e-20, made once.
 pub(crate) fn fine() -> Q {
-    Q::from_integer(1.into()) / num_traits::pow(Q::from_integer(10.into()), 20)
+    static FINE: std::sync::LazyLock<Q> =
+        std::sync::LazyLock::new(|| Q::new(1.into(), num_traits::pow(10.into(), 20)));
+    FINE.clone()
 }
 
 /// The f64 nearest an algebraic number, from its 17-digit expansion.
