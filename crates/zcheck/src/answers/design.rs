@@ -225,7 +225,8 @@ pub(crate) fn design(subject: &Subject, request: &Request) -> Result<Answer, Err
 
 /// The divisor of `--per`: the stage count, or the multiplications of one
 /// step (the program on the objective's test equation; a tableau's at a
-/// generic point of the box, where no entry is accidentally 0 or ±1).
+/// generic point of the box, once no entry that varies is 0 or ±1 anywhere
+/// in it, so the count is the same at every point).
 fn divisor(subject: &Subject, request: &Request, per: Per) -> Result<(u32, String), Error> {
     let name = subject.name();
     let k = match (per, subject) {
@@ -249,6 +250,31 @@ fn divisor(subject: &Subject, request: &Request, per: Per) -> Result<(u32, Strin
             (poly::advanced::cost::step_cost(m.method()).program.mul, String::new())
         }
         (Per::Cost, Subject::Tableau(t)) => {
+            let bound: Vec<(poly::Sym, Q)> =
+                request.bound.iter().map(|(n, v)| (poly::Sym::new(n), v.clone())).collect();
+            // The count is one number only where no entry that varies is 0
+            // or ±1: there a multiplication drops, and dividing by the
+            // generic count would understate the objective per cost.
+            if request.free.len() > 1 {
+                return Err(Error::unsupported(format!(
+                    "--per cost: with two free parameters, the multiply count of `{name}`'s step \
+                     changes along the curves where an entry is 0 or ±1, which the search does \
+                     not follow; bind one parameter, or divide by stages with --per stage"
+                )));
+            }
+            for f in &request.free {
+                let breaks = t.cost_breaks(&bound, poly::Sym::new(&f.name), &f.lo, &f.hi);
+                if let Some((entry, v, x)) = breaks.first() {
+                    return Err(Error::unsupported(format!(
+                        "--per cost: the multiply count of `{name}`'s step is not one number \
+                         over the box: {entry} = {v} at {} = {} (a multiplication drops there), \
+                         so the objective per cost is not one division of it; search a box \
+                         without such a point, or divide by stages with --per stage",
+                        f.name,
+                        x.describe(&f.name)
+                    )));
+                }
+            }
             let generic = |f: &FreeParam| &f.lo + &((&f.hi - &f.lo) * Q::new(7.into(), 17.into()));
             let values: Vec<(poly::Sym, Q)> = request
                 .free

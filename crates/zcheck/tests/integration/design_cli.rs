@@ -216,6 +216,33 @@ fn two_stage_family_ssp_coefficient() {
     check_document(&d, 1, 200);
     assert_eq!(exact(&d["optimum"]), "1/2");
     assert_eq!(at(&d), pairs(&[("c", "1")]));
+    // Per multiplication: at c = 1 the entry A[2][1] = c is 1 and its
+    // multiplication drops, so no one count divides over [1/4, 2]: refused.
+    let per_cost = |range: &str| {
+        zcheck(&[
+            "design",
+            &rk2,
+            "--maximize",
+            "ssp_coefficient",
+            "--param",
+            range,
+            "--per",
+            "cost",
+            "--format",
+            "json",
+        ])
+    };
+    let (code, _, err) = per_cost("c=1/4..2");
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("A[2][1] = 1 at c = 1"), "{err}");
+    // Over [9/8, 2] no entry is 0 or ±1, the step takes 5 multiplications
+    // (w·y, c·k1, w·(y + c·k1), b1·k1, b2·k2) everywhere, and the SSP
+    // coefficient min(2 − 1/c, 1/c) = 1/c is best at 9/8: 8/9 / 5 = 8/45.
+    let (code, out, err) = per_cost("c=9/8..2");
+    assert_eq!(code, 0, "{err}");
+    let d: Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(exact(&d["optimum"]), "8/45");
+    assert_eq!(at(&d), pairs(&[("c", "9/8")]));
 }
 
 /// Two parameters: 1 + w + a₂w² + a₃w³ over [0, 1/2] × [0, 1/6] with order

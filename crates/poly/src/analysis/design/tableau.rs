@@ -299,6 +299,56 @@ impl ParamTableau {
         Tableau::new(&crate::lang::tableau::method_ident(&self.name), a, b, None)
     }
 
+    /// Where, in `[lo, hi]`, an entry of A or b that varies with `free`
+    /// (the other parameters bound to `values`) equals 0, 1 or −1: the
+    /// points where a step's multiply count can change, as (the entry,
+    /// named `A[i][j]` or `b[i]` from 1, its value there, the point).
+    ///
+    /// ```
+    /// use poly::advanced::design::ParamTableau;
+    /// let t = ParamTableau::new("rk2", &["c"], &[vec!["0", "0"], vec!["c", "0"]], &["1 - 1/(2*c)", "1/(2*c)"])?;
+    /// let c = poly::Sym::new("c");
+    /// let breaks = t.cost_breaks(&[], c, &poly::q(1, 4), &poly::q(2, 1));
+    /// let shown: Vec<String> = breaks.iter().map(|(e, v, x)| format!("{e} = {v} at {}", x.describe("c"))).collect();
+    /// assert_eq!(shown, ["A[2][1] = 1 at 1", "b[1] = 0 at 1/2", "b[1] = -1 at 1/4", "b[2] = 1 at 1/2"]);
+    /// # Ok::<(), poly::Error>(())
+    /// ```
+    pub fn cost_breaks(
+        &self,
+        values: &[(Sym, Q)],
+        free: Sym,
+        lo: &Q,
+        hi: &Q,
+    ) -> Vec<(String, i64, crate::Algebraic)> {
+        let map: std::collections::HashMap<Sym, Q> = values.iter().cloned().collect();
+        let named = self
+            .a
+            .iter()
+            .enumerate()
+            .flat_map(|(i, row)| {
+                row.iter().enumerate().map(move |(j, r)| (format!("A[{}][{}]", i + 1, j + 1), r))
+            })
+            .chain(self.b.iter().enumerate().map(|(i, r)| (format!("b[{}]", i + 1), r)));
+        let mut out = Vec::new();
+        for (name, r) in named {
+            let (num, den) = (r.num.eval_partial(&map), r.den.eval_partial(&map));
+            for v in [0i64, 1, -1] {
+                let p = &num - &den.scale(&Q::from_integer(v.into()));
+                let Some(u) = p.to_upoly(free).filter(|u| u.degree().is_some_and(|d| d > 0)) else {
+                    continue;
+                };
+                for x in crate::Algebraic::real_roots(&u) {
+                    if x.cmp_rational(lo) != std::cmp::Ordering::Less
+                        && x.cmp_rational(hi) != std::cmp::Ordering::Greater
+                    {
+                        out.push((name.clone(), v, x));
+                    }
+                }
+            }
+        }
+        out
+    }
+
     /// Ã, b̃ and δ: A = Ã/δ and b = b̃/δ, δ the product of the distinct
     /// denominators.
     pub(crate) fn common(&self) -> (Vec<Vec<Poly>>, Vec<Poly>, Poly) {
