@@ -224,9 +224,9 @@ pub(crate) fn design(subject: &Subject, request: &Request) -> Result<Answer, Err
 }
 
 /// The divisor of `--per`: the stage count, or the multiplications of one
-/// step (the program on the objective's test equation; a tableau's at a
-/// generic point of the box, once no entry that varies is 0 or ±1 anywhere
-/// in it, so the count is the same at every point).
+/// step (the program on the objective's test equation; a tableau's counted
+/// at a generic point of the box and at every point where it could change,
+/// and refused unless all agree).
 fn divisor(subject: &Subject, request: &Request, per: Per) -> Result<(u32, String), Error> {
     let name = subject.name();
     let k = match (per, subject) {
@@ -252,46 +252,58 @@ fn divisor(subject: &Subject, request: &Request, per: Per) -> Result<(u32, Strin
         (Per::Cost, Subject::Tableau(t)) => {
             let bound: Vec<(poly::Sym, Q)> =
                 request.bound.iter().map(|(n, v)| (poly::Sym::new(n), v.clone())).collect();
-            // The count is one number only where no entry that varies is 0
-            // or ±1: there a multiplication drops, and dividing by the
-            // generic count would understate the objective per cost.
+            // The multiplications of one step at a point of the box.
+            let count_at = |free: &[(poly::Sym, Q)]| -> Result<u32, Error> {
+                let values: Vec<(poly::Sym, Q)> = free.iter().chain(&bound).cloned().collect();
+                let tab = t.at(&values)?;
+                let program = if request.objective == Objective::PhiMax {
+                    tab.method(false)?
+                } else {
+                    tab.scalar_method()?
+                };
+                Ok(poly::advanced::cost::step_cost(&program).program.mul)
+            };
             if request.free.len() > 1 {
                 return Err(Error::unsupported(format!(
                     "--per cost: with two free parameters, the multiply count of `{name}`'s step \
-                     changes along the curves where an entry is 0 or ±1, which the search does \
-                     not follow; bind one parameter, or divide by stages with --per stage"
+                     changes along the curves where an entry is 0 or ±1 or two entries agree, \
+                     which the search does not follow; bind one parameter, or divide by stages \
+                     with --per stage"
                 )));
             }
-            for f in &request.free {
-                let breaks = t.cost_breaks(&bound, poly::Sym::new(&f.name), &f.lo, &f.hi);
-                if let Some((entry, v, x)) = breaks.first() {
+            let f = &request.free[0];
+            let sym = poly::Sym::new(&f.name);
+            let generic = &f.lo + &((&f.hi - &f.lo) * Q::new(7.into(), 17.into()));
+            let mul = count_at(&[(sym, generic.clone())])?;
+            // The count is one number over the box unless it changes at a
+            // point where an entry that varies is 0 or ±1 or meets another:
+            // each such point is counted, and a change is refused (dividing
+            // by the other count would misstate the objective per cost).
+            for (x, why) in t.cost_breaks(&bound, sym, &f.lo, &f.hi) {
+                let shown = x.describe(&f.name);
+                let Some(q) = x.as_rational() else {
                     return Err(Error::unsupported(format!(
-                        "--per cost: the multiply count of `{name}`'s step is not one number \
-                         over the box: {entry} = {v} at {} = {} (a multiplication drops there), \
-                         so the objective per cost is not one division of it; search a box \
-                         without such a point, or divide by stages with --per stage",
-                        f.name,
-                        x.describe(&f.name)
+                        "--per cost: the multiply count of `{name}`'s step may change at {} = \
+                         {shown} ({why}), an irrational point where no program is written; \
+                         search a box without it, or divide by stages with --per stage",
+                        f.name
+                    )));
+                };
+                let there = count_at(&[(sym, q.clone())])?;
+                if there != mul {
+                    return Err(Error::unsupported(format!(
+                        "--per cost: the multiply count of `{name}`'s step is not one number over \
+                         the box: {there} at {} = {shown} ({why}), {mul} elsewhere, so the \
+                         objective per cost is not one division of it; search a box without \
+                         that point, or divide by stages with --per stage",
+                        f.name
                     )));
                 }
             }
-            let generic = |f: &FreeParam| &f.lo + &((&f.hi - &f.lo) * Q::new(7.into(), 17.into()));
-            let values: Vec<(poly::Sym, Q)> = request
-                .free
-                .iter()
-                .map(|f| (poly::Sym::new(&f.name), generic(f)))
-                .chain(request.bound.iter().map(|(n, v)| (poly::Sym::new(n), v.clone())))
-                .collect();
-            let tab = t.at(&values)?;
-            let program = if request.objective == Objective::PhiMax {
-                tab.method(false)?
-            } else {
-                tab.scalar_method()?
-            };
-            let shown: Vec<String> =
-                values.iter().map(|(s, v)| format!("{} = {v}", s.name())).collect();
-            let mul = poly::advanced::cost::step_cost(&program).program.mul;
-            (mul, format!(" (its program at {}, a generic point of the box)", shown.join(", ")))
+            (
+                mul,
+                format!(" (the same at every point of the box; counted at {} = {generic})", f.name),
+            )
         }
     };
     let (mul, note) = k;

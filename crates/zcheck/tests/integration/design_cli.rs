@@ -216,8 +216,10 @@ fn two_stage_family_ssp_coefficient() {
     check_document(&d, 1, 200);
     assert_eq!(exact(&d["optimum"]), "1/2");
     assert_eq!(at(&d), pairs(&[("c", "1")]));
-    // Per multiplication: at c = 1 the entry A[2][1] = c is 1 and its
-    // multiplication drops, so no one count divides over [1/4, 2]: refused.
+    // Per multiplication: at c = 1 (A[2][1] = 1, b₁ = b₂ = 1/2 sharing one
+    // multiplication) the step takes 3, not 5, so no one count divides over
+    // [3/4, 2]: refused, naming the point; over [1/4, 2] the first such point
+    // is c = 1/4, where b₁ = −1 needs no multiplication.
     let per_cost = |range: &str| {
         zcheck(&[
             "design",
@@ -232,9 +234,12 @@ fn two_stage_family_ssp_coefficient() {
             "json",
         ])
     };
+    let (code, _, err) = per_cost("c=3/4..2");
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("3 at c = 1 (A[2][1] = 1), 5 elsewhere"), "{err}");
     let (code, _, err) = per_cost("c=1/4..2");
     assert_eq!(code, 2, "{err}");
-    assert!(err.contains("A[2][1] = 1 at c = 1"), "{err}");
+    assert!(err.contains("4 at c = 1/4 (b[1] = -1), 5 elsewhere"), "{err}");
     // Over [9/8, 2] no entry is 0 or ±1, the step takes 5 multiplications
     // (w·y, c·k1, w·(y + c·k1), b1·k1, b2·k2) everywhere, and the SSP
     // coefficient min(2 − 1/c, 1/c) = 1/c is best at 9/8: 8/9 / 5 = 8/45.

@@ -299,18 +299,26 @@ impl ParamTableau {
         Tableau::new(&crate::lang::tableau::method_ident(&self.name), a, b, None)
     }
 
-    /// Where, in `[lo, hi]`, an entry of A or b that varies with `free`
-    /// (the other parameters bound to `values`) equals 0, 1 or −1: the
-    /// points where a step's multiply count can change, as (the entry,
-    /// named `A[i][j]` or `b[i]` from 1, its value there, the point).
+    /// The points of `[lo, hi]` where a step's multiply count can differ
+    /// from its count elsewhere, with `free` the one parameter left (the
+    /// others bound to `values`): where an entry of A or b that varies is 0
+    /// or ±1, or equals another entry of its combination (a row of A, or b)
+    /// up to sign, as equal coefficients share a multiplication. Each point comes once, in
+    /// increasing order, with the first reason found (`A[2][1] = 1`, `b[1] =
+    /// b[2]`; entries named from 1).
     ///
     /// ```
     /// use poly::advanced::design::ParamTableau;
     /// let t = ParamTableau::new("rk2", &["c"], &[vec!["0", "0"], vec!["c", "0"]], &["1 - 1/(2*c)", "1/(2*c)"])?;
     /// let c = poly::Sym::new("c");
-    /// let breaks = t.cost_breaks(&[], c, &poly::q(1, 4), &poly::q(2, 1));
-    /// let shown: Vec<String> = breaks.iter().map(|(e, v, x)| format!("{e} = {v} at {}", x.describe("c"))).collect();
-    /// assert_eq!(shown, ["A[2][1] = 1 at 1", "b[1] = 0 at 1/2", "b[1] = -1 at 1/4", "b[2] = 1 at 1/2"]);
+    /// let points = t.cost_breaks(&[], c, &poly::q(1, 4), &poly::q(2, 1));
+    /// let shown: Vec<String> = points.iter().map(|(x, why)| format!("{} ({why})", x.describe("c"))).collect();
+    /// assert_eq!(shown, ["1/4 (b[1] = -1)", "1/2 (b[1] = 0)", "1 (A[2][1] = 1)"]);
+    /// // With A[2][1] fixed, the point c = 1 comes from b₁ = b₂ alone.
+    /// let u = ParamTableau::new("u", &["c"], &[vec!["0", "0"], vec!["2/3", "0"]], &["1 - 1/(2*c)", "1/(2*c)"])?;
+    /// let points = u.cost_breaks(&[], c, &poly::q(3, 4), &poly::q(2, 1));
+    /// let shown: Vec<String> = points.iter().map(|(x, why)| format!("{} ({why})", x.describe("c"))).collect();
+    /// assert_eq!(shown, ["1 (b[1] = b[2])"]);
     /// # Ok::<(), poly::Error>(())
     /// ```
     pub fn cost_breaks(
@@ -319,33 +327,49 @@ impl ParamTableau {
         free: Sym,
         lo: &Q,
         hi: &Q,
-    ) -> Vec<(String, i64, crate::Algebraic)> {
+    ) -> Vec<(crate::Algebraic, String)> {
         let map: std::collections::HashMap<Sym, Q> = values.iter().cloned().collect();
-        let named = self
+        let entries: Vec<(String, Poly, Poly)> = self
             .a
             .iter()
             .enumerate()
             .flat_map(|(i, row)| {
                 row.iter().enumerate().map(move |(j, r)| (format!("A[{}][{}]", i + 1, j + 1), r))
             })
-            .chain(self.b.iter().enumerate().map(|(i, r)| (format!("b[{}]", i + 1), r)));
-        let mut out = Vec::new();
-        for (name, r) in named {
-            let (num, den) = (r.num.eval_partial(&map), r.den.eval_partial(&map));
-            for v in [0i64, 1, -1] {
-                let p = &num - &den.scale(&Q::from_integer(v.into()));
-                let Some(u) = p.to_upoly(free).filter(|u| u.degree().is_some_and(|d| d > 0)) else {
-                    continue;
-                };
-                for x in crate::Algebraic::real_roots(&u) {
-                    if x.cmp_rational(lo) != std::cmp::Ordering::Less
-                        && x.cmp_rational(hi) != std::cmp::Ordering::Greater
-                    {
-                        out.push((name.clone(), v, x));
-                    }
+            .chain(self.b.iter().enumerate().map(|(i, r)| (format!("b[{}]", i + 1), r)))
+            .map(|(n, r)| (n, r.num.eval_partial(&map), r.den.eval_partial(&map)))
+            .filter(|(_, n, d)| n.symbols().contains(&free) || d.symbols().contains(&free))
+            .collect();
+        let mut out: Vec<(crate::Algebraic, String)> = Vec::new();
+        let mut add = |p: Poly, why: String| {
+            let Some(u) = p.to_upoly(free).filter(|u| u.degree().is_some_and(|d| d > 0)) else {
+                return;
+            };
+            for x in crate::Algebraic::real_roots(&u) {
+                let inside = x.cmp_rational(lo) != std::cmp::Ordering::Less
+                    && x.cmp_rational(hi) != std::cmp::Ordering::Greater;
+                if inside && !out.iter().any(|(y, _)| *y == x) {
+                    out.push((x, why.clone()));
                 }
             }
+        };
+        for (k, (name, num, den)) in entries.iter().enumerate() {
+            for v in [0i64, 1, -1] {
+                add(num - &den.scale(&Q::from_integer(v.into())), format!("{name} = {v}"));
+            }
+            // Coefficients share a multiplication within one combination:
+            // a stage's row of A, or the weights b.
+            let group = |n: &str| match n.starts_with('b') {
+                true => "b".to_owned(),
+                false => n.split(']').next().unwrap_or(n).to_owned(),
+            };
+            for (other, n2, d2) in entries[k + 1..].iter().filter(|e| group(&e.0) == group(name)) {
+                // num/den = ±n2/d2: num·d2 ∓ n2·den = 0.
+                add(&(num * d2) - &(n2 * den), format!("{name} = {other}"));
+                add(&(num * d2) + &(n2 * den), format!("{name} = -{other}"));
+            }
         }
+        out.sort_by(|x, y| x.0.cmp(&y.0));
         out
     }
 
