@@ -5,19 +5,9 @@
 //! for which `verify` finds Φ/k bounded. Also: the text output of the README
 //! example, and bad input as an error with exit status 2.
 
-use std::process::Command;
-
+use crate::run::zcheck;
 use poly::RootClass;
 use serde_json::Value;
-
-fn zcheck(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_zcheck")).args(args).output().expect("zcheck runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
 
 #[track_caller]
 fn json(args: &[&str]) -> Value {

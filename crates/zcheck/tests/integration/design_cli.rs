@@ -7,8 +7,8 @@
 //! same tableau written with numbers (the oracle).
 
 use std::path::PathBuf;
-use std::process::Command;
 
+use crate::run::zcheck;
 use serde_json::Value;
 
 fn method(name: &str) -> String {
@@ -17,15 +17,6 @@ fn method(name: &str) -> String {
 
 fn design_file(name: &str) -> String {
     method(&format!("design/{name}"))
-}
-
-fn zcheck(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_zcheck")).args(args).output().expect("zcheck runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
 }
 
 #[track_caller]

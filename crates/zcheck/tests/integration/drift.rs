@@ -1,8 +1,7 @@
 //! `zcheck drift` and its library half (`check::drift`): the round-off model
 //! on short runs, in f64 and f32, and the command's JSON and errors.
 
-use std::process::Command;
-
+use crate::run::zcheck;
 use check::drift::Study;
 use check::kernel::{Kernel, Real};
 use check::numeric::{Params, ParamsF64, Step};
@@ -74,15 +73,6 @@ fn an_interrupted_run_is_partial() {
     assert!(run.interrupted);
     assert!(run.steps_done < 3 * check::drift::CHUNK);
     assert_eq!(run.checkpoints.last().unwrap().steps, run.steps_done);
-}
-
-fn zcheck(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_zcheck")).args(args).output().expect("zcheck runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
 }
 
 /// The command's JSON: the exact form, the model and the verdict.

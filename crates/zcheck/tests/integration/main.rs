@@ -20,6 +20,7 @@ mod order_cli;
 mod params_cli;
 mod plot_cli;
 mod region_cli;
+mod run;
 mod scene_advise;
 mod scene_cli;
 mod solvers_cli;

@@ -3,18 +3,9 @@
 //! the geometry, and every bad mesh refused at its place.
 
 use std::path::PathBuf;
-use std::process::Command;
 
+use crate::run::zcheck;
 use serde_json::Value;
-
-fn zcheck(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_zcheck")).args(args).output().expect("zcheck runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
 
 fn write(name: &str, text: &str) -> String {
     let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("mesh");

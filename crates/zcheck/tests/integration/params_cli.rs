@@ -5,20 +5,10 @@
 //! Phi_max = (gamma/2 - beta)^(-1/2); Newmark's (Phi, beta) map with gamma
 //! bound. `zcheck overview --param`.
 
-use std::process::Command;
-
+use crate::run::zcheck;
 use serde_json::Value;
 
 const NEWMARK: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/methods/newmark.zm");
-
-fn zcheck(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_zcheck")).args(args).output().expect("zcheck runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
 
 #[track_caller]
 fn json(args: &[&str]) -> Value {

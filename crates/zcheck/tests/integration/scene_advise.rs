@@ -5,19 +5,10 @@
 //! example scene, located errors for bad scene files, and the (Φ, D) map.
 
 use std::path::PathBuf;
-use std::process::Command;
 
+use crate::run::zcheck;
 use nalgebra::DMatrix;
 use serde_json::Value;
-
-fn zcheck(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_zcheck")).args(args).output().expect("zcheck runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
 
 #[track_caller]
 fn json(args: &[&str]) -> Value {

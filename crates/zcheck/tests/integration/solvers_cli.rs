@@ -3,18 +3,8 @@
 //! recommendation or reason, and bad flags as clean errors (exit 2, the
 //! flag named, no panic).
 
-use std::process::Command;
-
+use crate::run::zcheck;
 use serde_json::Value;
-
-fn zcheck(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_zcheck")).args(args).output().expect("zcheck runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
 
 fn scene(name: &str) -> String {
     format!("{}/scenes/{name}", env!("CARGO_MANIFEST_DIR"))

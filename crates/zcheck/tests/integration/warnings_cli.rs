@@ -2,8 +2,8 @@
 //! stays silent on one that does not; `--deny-warnings` turns them into an
 //! exit-2 error before any output.
 
+use crate::run::zcheck;
 use std::path::{Path, PathBuf};
-use std::process::Command;
 
 fn write(name: &str, text: &str) -> PathBuf {
     let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("warnings");
@@ -11,16 +11,6 @@ fn write(name: &str, text: &str) -> PathBuf {
     let path = dir.join(name);
     std::fs::write(&path, text).expect("write");
     path
-}
-
-/// (exit code, stdout, stderr) of `zcheck args...`.
-fn zcheck(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_zcheck")).args(args).output().expect("zcheck runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
 }
 
 /// The warnings `stability FILE` prints (it succeeds either way).
