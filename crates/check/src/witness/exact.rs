@@ -5,6 +5,7 @@ use crate::numeric::ParamsF64;
 use std::collections::HashMap;
 
 use nalgebra::DMatrix;
+use num_bigint::BigInt;
 use num_traits::{Signed, Zero};
 use poly::{Method, Poly, RootClass, Sym, Q};
 
@@ -227,18 +228,57 @@ fn with_constants_approximated(p: &Poly) -> Poly {
     }
 }
 
-/// χ and χ′ at the complex point x + iy, exactly (coefficients highest
-/// power first), each rounded once to f64 at the end.
-fn eval_exact_at(coeffs: &[Q], z: C64) -> Option<(C64, C64)> {
+/// χ and χ′ at the complex point z (its f64 parts read as the rationals
+/// they are), exactly, with the coefficients highest power first; each
+/// part rounded once to f64 at the end. `None` when z is not finite.
+///
+/// ```
+/// use check::witness::{exact_value_and_slope, C64};
+/// let chi = [poly::q(1, 1), poly::q(-2, 1), poly::q(5, 4)]; // z² − 2z + 5/4
+/// let (v, d) = exact_value_and_slope(&chi, C64::new(1.0, 0.5)).unwrap();
+/// assert_eq!((v, d), (C64::new(0.0, 0.0), C64::new(0.0, 1.0))); // a root; χ′ = 2z − 2
+/// ```
+pub fn exact_value_and_slope(coeffs: &[Q], z: C64) -> Option<(C64, C64)> {
+    // On integers: the coefficients over one denominator D (a = A/D,
+    // highest degree first) and z = (X + iY)/E over one power of two E,
+    // so p(z) = H/(D·E^n) and p′(z) = H′/(D·E^(n−1)) with H, H′ from a
+    // homogeneous Horner scheme, one reduction at the end instead of one
+    // per operation. The values are the same rationals as term by term.
     let (x, y) = (crate::numeric::f64_to_q(z.re)?, crate::numeric::f64_to_q(z.im)?);
-    let (mut pr, mut pi, mut dr, mut di) = (Q::zero(), Q::zero(), Q::zero(), Q::zero());
-    for a in coeffs {
-        // d ← d·z + p, then p ← p·z + a.
-        let (ndr, ndi) = (&dr * &x - &di * &y + &pr, &dr * &y + &di * &x + &pi);
-        let (npr, npi) = (&pr * &x - &pi * &y + a, &pr * &y + &pi * &x);
-        (dr, di, pr, pi) = (ndr, ndi, npr, npi);
+    let n = coeffs.len().checked_sub(1)?;
+    if n == 0 {
+        return Some((C64::new(q_to_f64(&coeffs[0]), 0.0), C64::new(0.0, 0.0)));
     }
-    Some((C64::new(q_to_f64(&pr), q_to_f64(&pi)), C64::new(q_to_f64(&dr), q_to_f64(&di))))
+    let e = if x.denom() > y.denom() { x.denom().clone() } else { y.denom().clone() };
+    let big_x = x.numer() * (&e / x.denom());
+    let big_y = y.numer() * (&e / y.denom());
+    let d = coeffs.iter().fold(BigInt::from(1), |l, a| num_integer::Integer::lcm(&l, a.denom()));
+    let ints: Vec<BigInt> = coeffs.iter().map(|a| a.numer() * (&d / a.denom())).collect();
+    // H ← H·(X + iY) + A_j·E^k at the k-th step, p's and p′'s together
+    // (p′'s coefficients are j·A_j, one degree lower).
+    let (mut pr, mut pi) = (BigInt::zero(), BigInt::zero());
+    let (mut dr, mut di) = (BigInt::zero(), BigInt::zero());
+    let mut e_pow = BigInt::from(1);
+    for (k, a) in ints.iter().enumerate() {
+        let j = n - k;
+        let (npr, npi) = (&pr * &big_x - &pi * &big_y + a * &e_pow, &pr * &big_y + &pi * &big_x);
+        // p′ = Σ j·a_j z^(j−1): its scheme adds j·A_j·E^k at the same k,
+        // for j ≥ 1 only (one step fewer).
+        if j > 0 {
+            if k > 0 {
+                let (ndr, ndi) = (&dr * &big_x - &di * &big_y, &dr * &big_y + &di * &big_x);
+                (dr, di) = (ndr, ndi);
+            }
+            dr += a * BigInt::from(j) * &e_pow;
+        }
+        (pr, pi) = (npr, npi);
+        e_pow *= &e;
+    }
+    // e_pow = E^(n+1) now.
+    let den_p = &d * (&e_pow / &e);
+    let den_d = &d * (&e_pow / &e / &e);
+    let f = |num: BigInt, den: &BigInt| q_to_f64(&Q::new(num, den.clone()));
+    Some((C64::new(f(pr, &den_p), f(pi, &den_p)), C64::new(f(dr, &den_d), f(di, &den_d))))
 }
 
 /// Newton steps on each root with χ and χ′ evaluated exactly: roots taken
@@ -254,7 +294,7 @@ fn polish_roots(exact: &[Q], roots: &mut [C64]) {
             .map(|j| (roots[j] - roots[k]).norm())
             .fold(f64::INFINITY, f64::min);
         for _ in 0..4 {
-            let Some((v, d)) = eval_exact_at(exact, roots[k]) else { break };
+            let Some((v, d)) = exact_value_and_slope(exact, roots[k]) else { break };
             let step = v / d;
             if !step.re.is_finite() || !step.im.is_finite() || step.norm() > 0.25 * gap {
                 break;

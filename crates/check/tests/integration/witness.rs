@@ -11,7 +11,7 @@ use check::witness::{
     Witnesses, C64,
 };
 use num_complex::Complex;
-use poly::RootClass;
+use poly::{RootClass, Q};
 
 const STEPS: u64 = 20_000;
 
@@ -56,10 +56,12 @@ fn comparison_builtins_agree() {
     }
 }
 
-/// Both sides of every class boundary a sweep reports.
-#[test]
-fn builtins_agree_at_every_class_boundary() {
-    for name in poly::advanced::builtins::builtin_names() {
+/// Both sides of every class boundary a sweep reports, for the built-ins
+/// whose index is `part` mod [`PARTS`] (one test per part, so the harness
+/// runs them side by side; together they cover every built-in).
+fn builtins_agree_at_every_class_boundary(part: usize) {
+    let names = poly::advanced::builtins::builtin_names();
+    for name in names.enumerate().filter(|(i, _)| i % PARTS == part).map(|(_, n)| n) {
         let m = poly::builtin(name).unwrap();
         let s = sweep(&m, &params(), &default_grid()).unwrap();
         for b in &s.boundaries {
@@ -68,6 +70,28 @@ fn builtins_agree_at_every_class_boundary() {
             check_agrees(name, b.above, STEPS);
         }
     }
+}
+
+const PARTS: usize = 4;
+
+#[test]
+fn builtins_agree_at_every_class_boundary_part_0() {
+    builtins_agree_at_every_class_boundary(0);
+}
+
+#[test]
+fn builtins_agree_at_every_class_boundary_part_1() {
+    builtins_agree_at_every_class_boundary(1);
+}
+
+#[test]
+fn builtins_agree_at_every_class_boundary_part_2() {
+    builtins_agree_at_every_class_boundary(2);
+}
+
+#[test]
+fn builtins_agree_at_every_class_boundary_part_3() {
+    builtins_agree_at_every_class_boundary(3);
 }
 
 /// Two real roots of one modulus (χ = z² − r², p = 0): Semi-False Heun on
@@ -304,4 +328,38 @@ fn a_double_root_on_the_circle_is_bounded_where_p_is_semisimple() {
     assert!(at6.agree(), "{:?}", at6.checks);
     let grow6 = at6.sim.as_ref().unwrap().norm_growth_per_step;
     assert!(grow6 > 1e-4, "a Jordan block at 6 grows like n: norm growth {grow6}");
+}
+
+/// The oracle of `exact_value_and_slope`: Horner's scheme term by term in
+/// exact rationals (χ′ alongside), each part rounded to f64 at the end.
+fn value_and_slope_by_rationals(coeffs: &[Q], z: C64) -> (C64, C64) {
+    let (x, y) = (Q::from_float(z.re).unwrap(), Q::from_float(z.im).unwrap());
+    let zero = || Q::from_integer(0.into());
+    let (mut pr, mut pi, mut dr, mut di) = (zero(), zero(), zero(), zero());
+    for a in coeffs {
+        let (ndr, ndi) = (&dr * &x - &di * &y + &pr, &dr * &y + &di * &x + &pi);
+        let (npr, npi) = (&pr * &x - &pi * &y + a, &pr * &y + &pi * &x);
+        (dr, di, pr, pi) = (ndr, ndi, npr, npi);
+    }
+    let f = |q: &Q| check::numeric::q_to_f64(q);
+    (C64::new(f(&pr), f(&pi)), C64::new(f(&dr), f(&di)))
+}
+
+proptest::proptest! {
+    /// χ and χ′ at a point, on integers, equal the term-by-term rational
+    /// evaluation exactly (the same rationals, rounded once), for random
+    /// rational coefficients of degree 0 to 6 and points from tiny to large.
+    #[test]
+    fn exact_value_and_slope_matches_rationals(
+        nums in proptest::collection::vec(-50i64..50, 1..8),
+        dens in proptest::collection::vec(1i64..40, 8),
+        re in -4.0f64..4.0,
+        im in -4.0f64..4.0,
+        scale in -40i32..40,
+    ) {
+        let coeffs: Vec<Q> = nums.iter().zip(&dens).map(|(n, d)| poly::q(*n, *d)).collect();
+        let z = C64::new(re * 2f64.powi(scale), im * 2f64.powi(-scale / 2));
+        let fast = check::witness::exact_value_and_slope(&coeffs, z).unwrap();
+        proptest::prop_assert_eq!(fast, value_and_slope_by_rationals(&coeffs, z));
+    }
 }
