@@ -173,9 +173,9 @@ fn order(chi: &Poly) -> Result<Option<(u32, Poly)>, Error> {
         return Ok(None);
     };
     let nu0 = field::reduce(&-(&a01 * &inv));
-    let mut b = match Branch::new(chi, w, C::real(nu0)) {
-        Ok(b) => b,
-        Err(NoBranch::NotARoot | NoBranch::Repeated) => return Ok(None),
+    let mut b = match Branch::<Poly>::new(chi, w, C::real(nu0)) {
+        Ok(Some(b)) => b,
+        Ok(None) | Err(NoBranch::NotARoot | NoBranch::Repeated) => return Ok(None),
     };
     for n in 1..=MAX_SERIES_TERMS {
         while b.nu.len() < n {
@@ -398,28 +398,48 @@ pub struct PhaseErrors {
 /// interval (decided by the stability engine), which ends the search for a
 /// nonzero dissipation term.
 pub fn phase_errors(chi: &Poly, on_circle: bool) -> Result<PhaseErrors, Error> {
-    let mut b = Branch::new(chi, Sym::phi(), C::i()).map_err(|e| {
+    // Over Q (no generators) the series runs on rationals; else in F.
+    match principal_branch::<Q>(chi)? {
+        Some(b) => series_terms(b, on_circle, |q| Poly::constant(q.clone())),
+        None => {
+            let b = principal_branch::<Poly>(chi)?.expect("every χ is over F");
+            series_terms(b, on_circle, field::reduce)
+        }
+    }
+}
+
+/// The branch z ≈ e^{iΦ}, or `None` where χ's coefficients are not `T`s.
+fn principal_branch<T: principal::Scalar>(chi: &Poly) -> Result<Option<Branch<T>>, Error> {
+    Branch::new(chi, Sym::phi(), C::i()).map_err(|e| {
         series_error(match e {
             NoBranch::NotARoot => "no root of χ leaves z = 1 as e^{iΦ}: the method is not consistent on the oscillator".to_owned(),
             NoBranch::Repeated => "the root leaving z = 1 as e^{iΦ} is repeated: its series does not exist".to_owned(),
         })
-    })?;
+    })
+}
+
+/// The first nonzero terms of Φ − Ψ and 1 − |z| from log z = iΨ + ln|z|.
+fn series_terms<T: principal::Scalar>(
+    mut b: Branch<T>,
+    on_circle: bool,
+    to_poly: impl Fn(&T) -> Poly,
+) -> Result<PhaseErrors, Error> {
     let (mut dispersion, mut dissipation) = (None, None);
     for n in 1..=MAX_SERIES_TERMS {
         while b.nu.len() < n {
             b.grow();
         }
-        let log = b.log_coeffs();
+        let log = b.log_coeff(n).clone();
         if dispersion.is_none() {
-            let expected = if n == 1 { Poly::one() } else { Poly::zero() };
-            let c = field::reduce(&(&expected - &log[n].im));
+            let expected = if n == 1 { T::one() } else { T::zero() };
+            let c = expected.sub(&log.im);
             if !c.is_zero() {
-                dispersion = Some(LeadingTerm { order: n as u32 - 1, constant: c });
+                dispersion = Some(LeadingTerm { order: n as u32 - 1, constant: to_poly(&c) });
             }
         }
-        if dissipation.is_none() && !on_circle && !log[n].re.is_zero() {
-            dissipation =
-                Some(LeadingTerm { order: n as u32 - 1, constant: field::reduce(&-&log[n].re) });
+        if dissipation.is_none() && !on_circle && !log.re.is_zero() {
+            let c = T::zero().sub(&log.re);
+            dissipation = Some(LeadingTerm { order: n as u32 - 1, constant: to_poly(&c) });
         }
         if dispersion.is_some() && (dissipation.is_some() || on_circle) {
             return Ok(PhaseErrors { dispersion, dissipation });
