@@ -97,6 +97,17 @@ fn design(c: &mut Criterion) {
             None,
         ),
         (
+            "newmark_beta_gamma_phi_max (two parameters)",
+            NEWMARK,
+            Objective::PhiMax,
+            vec![
+                FreeParam::new("beta", q(0, 1), q(1, 5)),
+                FreeParam::new("gamma", q(1, 2), q(3, 5)),
+            ],
+            Params::new(),
+            None,
+        ),
+        (
             "shifted_chebyshev_real_limit (two parameters)",
             CUBIC,
             Objective::RealLimit,

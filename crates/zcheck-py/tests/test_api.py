@@ -88,6 +88,12 @@ def test_design_known_optima_and_the_clis_document():
     assert sympy.simplify(d["optimum"]["exact"].to_sympy() - 2 * sympy.sqrt(5)) == 0
     cli = zcheck_cli("design", path, "--maximize", "phi_max", "--param", "beta=0..1/5", "--param", "gamma=1/2")
     assert json.dumps(d, sort_keys=True) == json.dumps(cli, sort_keys=True)
+    # Both free: Hughes' 1/sqrt(gamma/2 - beta) is largest at (1/5, 1/2),
+    # found through the disk bound and checked by the engine there.
+    d = zcheck.design(newmark, maximize="phi_max", beta=(0, "1/5"), gamma=("1/2", "3/5"))
+    assert d["optimum"]["exact"] == "2*sqrt(5)" and d["attained"]
+    assert (d["at"]["beta"]["exact"], d["at"]["gamma"]["exact"]) == ("1/5", "1/2")
+    assert d["grid_check"]["points"] == 2500
     with pytest.raises(zcheck.Error, match="unknown objective"):
         zcheck.design(kg, maximize="speed", a3=(0, 1))
     with pytest.raises(zcheck.Error, match="the range is empty"):

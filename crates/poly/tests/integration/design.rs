@@ -476,20 +476,121 @@ fn min_order_on_a_tableau_with_two_parameters() {
     assert!(e.contains("no order condition is affine in (c, d)"), "{e}");
 }
 
-/// Φ_max over a box of two parameters stays a clean error that says why
-/// (Newmark's β and γ both free); on a line cut by `min_order` it is
-/// searched (`min_order_on_a_tableau_with_two_parameters`).
-#[test]
-fn phi_max_over_a_box_is_refused() {
-    let d = derive(NEWMARK);
-    let p = problem(
-        &d,
+fn two_phi<'a>(d: &'a Derivation, a: (&str, Q, Q), b: (&str, Q, Q)) -> Problem<'a> {
+    problem(
+        d,
         Objective::PhiMax,
-        vec![FreeParam::new("beta", q(0, 1), q(1, 2)), FreeParam::new("gamma", q(1, 2), q(1, 1))],
-    );
+        vec![FreeParam::new(a.0, a.1, a.2), FreeParam::new(b.0, b.1, b.2)],
+    )
+}
+
+/// Φ_max over a box of Newmark's β and γ, through the disk bound. By hand
+/// (Hughes, ch. 9, undamped): Φ_max = 1/√(γ/2 − β) for 2β < γ, γ ≥ 1/2,
+/// and every Φ is stable for 2β ≥ γ ≥ 1/2. So over [0, 1/5] × [1/2, 3/5]
+/// the least γ/2 − β is 1/20 at (1/5, 1/2): 2√5; over [0, 1/10] ×
+/// [3/5, 1] it is 1/5 at (1/10, 3/5): √5; over [0, 1/2] × [1/2, 1] +inf,
+/// whose maximisers' least point is (1/4, 1/2).
+#[test]
+fn phi_max_over_a_box_of_newmark() {
+    let d = derive(NEWMARK);
+    for (b, g, optimum, at) in [
+        ((q(0, 1), q(1, 5)), (q(1, 2), q(3, 5)), "2*sqrt(5)", ("1/5", "1/2")),
+        ((q(0, 1), q(1, 10)), (q(3, 5), q(1, 1)), "sqrt(5)", ("1/10", "3/5")),
+        ((q(0, 1), q(1, 2)), (q(1, 2), q(1, 1)), "inf", ("1/4", "1/2")),
+    ] {
+        let p = two_phi(&d, ("beta", b.0.clone(), b.1.clone()), ("gamma", g.0, g.1));
+        let r = solve(&p);
+        assert_eq!(finite(&r.optimum), optimum, "{:#?}", r.certificate);
+        assert!(r.attained);
+        assert_eq!((r.at[0].1.to_string(), r.at[1].1.to_string()), (at.0.into(), at.1.into()));
+        assert_eq!(r.grid_check.points, 2500);
+        assert!(r.grid_check.max <= r.optimum);
+        let text = r.certificate.join("\n");
+        assert!(
+            text.contains("disk bound") && text.contains("the stability engine gives phi_max"),
+            "{text}"
+        );
+        // The engine at the optimum, and on a finer bisection toward it
+        // along each coordinate, never above.
+        let at_q = (q_of(at.0), q_of(at.1));
+        let v = objective_at(&p, &[("beta", at_q.0.clone()), ("gamma", at_q.1.clone())]).unwrap();
+        assert_eq!(v, r.optimum);
+        let mut h = q(1, 64);
+        for _ in 0..6 {
+            for (x, y) in [(&at_q.0 - &h, at_q.1.clone()), (at_q.0.clone(), &at_q.1 + &h)] {
+                if x >= b.0 && x <= b.1 {
+                    let v = objective_at(&p, &[("beta", x.clone()), ("gamma", y.clone())]).unwrap();
+                    assert!(v <= r.optimum, "({x}, {y}): {v}");
+                }
+            }
+            h = &h / Q::from_integer(4.into());
+        }
+    }
+}
+
+fn q_of(s: &str) -> Q {
+    s.parse().unwrap()
+}
+
+/// A tableau's Φ_max is its imaginary-axis limit (R(±iΦ) are χ's roots,
+/// and R(ΦJ) is normal): the disk search on the tableau R = 1 + a₁w +
+/// a₂w² (A = [[0,0],[1,0]], b = [a₁ − a₂, a₂]) agrees with the sign
+/// search of imag_limit on the same R as a program. By hand: |R(iy)|² =
+/// 1 + (a₁² − 2a₂)y² + a₂²y⁴, so y² ≤ (2a₂ − a₁²)/a₂², at most 1/a₁²
+/// (at a₂ = a₁²): 2 at (1/2, 1/4) over [1/2, 1] × [1/4, 1]; with a₂ ≥
+/// 1/3 the bound falls in a₂, so √15/2 at (1/2, 1/3).
+#[test]
+fn phi_max_of_a_tableau_is_its_imaginary_limit() {
+    let t = ParamTableau::new(
+        "fam2",
+        &["a1", "a2"],
+        &[vec!["0", "0"], vec!["1", "0"]],
+        &["a1 - a2", "a2"],
+    )
+    .unwrap();
+    let d = derive("method fam2\nparam a1\nparam a2\nstate y\ny = y + a1*w*y + a2*w^2*y\n");
+    for (a2lo, optimum, at) in [(q(1, 4), "2", "1/4"), (q(1, 3), "sqrt(15)/2", "1/3")] {
+        let free = vec![
+            FreeParam::new("a1", q(1, 2), q(1, 1)),
+            FreeParam::new("a2", a2lo.clone(), q(1, 1)),
+        ];
+        let on_tableau = Problem {
+            subject: Subject::Tableau(&t),
+            objective: Objective::PhiMax,
+            free: free.clone(),
+            bound: Params::new(),
+            min_order: None,
+        };
+        let r = solve(&on_tableau);
+        let s = solve(&problem(&d, Objective::ImagLimit, free));
+        assert_eq!(finite(&r.optimum), optimum, "{:#?}", r.certificate);
+        assert_eq!(r.optimum, s.optimum);
+        assert_eq!(r.at, s.at);
+        assert_eq!(r.at[1].1.to_string(), at);
+        assert!(r.certificate.join(" ").contains("normal matrix"), "{:#?}", r.certificate);
+    }
+}
+
+/// Where the disk bound's maximiser is a point where χ has a repeated,
+/// unbounded root on the circle below the bound, the search stops rather
+/// than report the bound. P = [[1, Φ], [Φg, 1 + Φ²g]], g = aΦ² − c: det 1,
+/// trace 2 + aΦ⁴ − cΦ². The disk bound is √(c/a) where c² ≤ 16a, largest
+/// at (9/16, 3): 4/√3; there trace = −2 touches at Φ² = 8/3, a Jordan
+/// block, so Φ_max = √(8/3) = 2√6/3. A chi of degree 3 is refused too.
+#[test]
+fn phi_max_over_a_box_refuses_what_it_cannot_certify() {
+    let d = derive("method tangent\nparam a\nparam c\nstate v y\ny' = y + Phi*v\nv' = v + Phi*(a*Phi^2 - c)*y'\n");
+    let p = two_phi(&d, ("a", q(1, 2), q(1, 1)), ("c", q(3, 1), q(4, 1)));
     let e = maximize(&p).unwrap_err().to_string();
     assert!(
-        e.contains("phi_max over two parameters") && e.contains("not upper semicontinuous"),
+        e.contains("at a = 9/16, c = 3") && e.contains("4*sqrt(3)/3") && e.contains("2*sqrt(6)/3"),
         "{e}"
     );
+    let v = objective_at(&p, &[("a", q(9, 16)), ("c", q(3, 1))]).unwrap();
+    assert_eq!(finite(&v), "2*sqrt(6)/3");
+    let d = derive("method three\nparam a\nparam b\nstate u v y\ny' = y + Phi*v\nv' = v - Phi*y' + a*Phi*u\nu' = b*u + Phi*v'\n");
+    let e = maximize(&two_phi(&d, ("a", q(0, 1), q(1, 1)), ("b", q(0, 1), q(1, 2))))
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("degree 3 in z"), "{e}");
 }

@@ -143,6 +143,51 @@ fn theta_method_real_limit() {
     assert_eq!(at(&d), pairs(&[("theta", "1/2")]));
 }
 
+/// Φ_max over Newmark's (β, γ) box, through the disk bound: 2√5 at
+/// (1/5, 1/2) (Hughes: 1/√(γ/2 − β), least γ/2 − β there), the
+/// certificate naming the bound and the engine's value at the optimum; a
+/// box whose bound's maximiser has an unbounded repeated root on the
+/// circle below it is refused in one line, exit 2.
+#[test]
+fn newmark_phi_max_over_beta_and_gamma() {
+    let newmark = method("newmark.zm");
+    let d = json(&[
+        "design",
+        &newmark,
+        "--maximize",
+        "phi_max",
+        "--param",
+        "beta=0..1/5",
+        "--param",
+        "gamma=1/2..3/5",
+    ]);
+    check_document(&d, 2, 2500);
+    assert_eq!((exact(&d["optimum"]), &d["attained"]), ("2*sqrt(5)", &Value::Bool(true)));
+    assert_eq!(at(&d), pairs(&[("beta", "1/5"), ("gamma", "1/2")]));
+    let text = d["certificate"].to_string();
+    assert!(text.contains("disk bound") && text.contains("gives phi_max = 2*sqrt(5)"), "{text}");
+    let tangent = temp_file(
+        "tangent.zm",
+        "method tangent\nparam a\nparam c\nstate v y\ny' = y + Phi*v\n\
+         v' = v + Phi*(a*Phi^2 - c)*y'\n",
+    );
+    let args = [
+        "design",
+        tangent.to_str().unwrap(),
+        "--maximize",
+        "phi_max",
+        "--param",
+        "a=1/2..1",
+        "--param",
+        "c=3..4",
+    ];
+    let (code, out, err) = zcheck(&args);
+    assert_eq!(code, 2, "{err}");
+    assert!(out.is_empty(), "{out}");
+    assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+    assert!(err.contains("phi_max is 2*sqrt(6)/3") && !err.contains("panicked"), "{err}");
+}
+
 /// Newmark with γ = 1/2: χ(−1) = 4 + (4β − 1)Φ², so Φ_max = 2/√(1 − 4β):
 /// 2√5 at β = 1/5. Over [0, 1/2] every β ≥ 1/4 is unconditionally stable:
 /// +inf, at the set's least point 1/4, the set described.

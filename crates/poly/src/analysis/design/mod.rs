@@ -18,7 +18,9 @@
 //! - `system.rs`: objectives read from signs (the axes of one-step methods,
 //!   the SSP coefficient), exact at algebraic points; `oscillator.rs`: Φ_max.
 //! - `algebra.rs`: elimination, roots in a range, signs at algebraic points.
-//! - `one.rs`: the search along one parameter; `two.rs`: over a box of two;
+//! - `one.rs`: the search along one parameter; `two.rs`: over a box of two,
+//!   for the objectives read from signs; `disk.rs`: Φ_max over a box of
+//!   two, through the closed disk's sign conditions (χ of degree 2 in z);
 //!   `order_set.rs`: two parameters under `min_order`, cut to a point or
 //!   a line (then searched as one parameter).
 //! - here: the entry, the grid check and the certificate.
@@ -41,6 +43,7 @@
 
 mod algebra;
 mod certify;
+mod disk;
 mod one;
 mod order_set;
 mod oscillator;
@@ -94,6 +97,8 @@ fn maximize_bound(problem: &Problem) -> Result<Design, Error> {
         && !s.order_conditions.is_empty()
     {
         on_order_set(problem, &s)?
+    } else if s.syms.len() == 2 && matches!(s.engine, Engine::Oscillator(_)) {
+        (disk::search_box(problem, &s)?, grid(problem, &s)?)
     } else {
         let polys = breakpoints(&s)?;
         let found = if s.syms.len() == 1 {

@@ -47,6 +47,8 @@ pub(crate) struct Oscillator<'a> {
     /// line of the box, `order_set.rs`): each is given its value at a
     /// point before the source reads it.
     pub along: Vec<(Sym, Poly)>,
+    /// χ(z; Φ, free parameters) itself (`disk.rs` reads its coefficients).
+    pub chi: Poly,
 }
 
 impl<'a> Oscillator<'a> {
@@ -74,7 +76,7 @@ impl<'a> Oscillator<'a> {
                 factors.push(Factor { poly: p, label: label.to_owned() });
             }
         }
-        Oscillator { source, factors, along: Vec::new() }
+        Oscillator { source, factors, along: Vec::new(), chi: chi.clone() }
     }
 
     /// Φ_max at a rational point.

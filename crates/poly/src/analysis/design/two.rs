@@ -25,7 +25,7 @@ use super::algebra::{eliminate, roots_in, sign_at};
 use super::certify::{header, solves};
 use super::one::search_line;
 use super::problem::{Engine, Problem, Setup};
-use super::report::{input_error, Score};
+use super::report::Score;
 use super::system::{Breakpoints, Eval, SignSystem};
 use crate::error::Error;
 use crate::{Algebraic, Poly, Sym, Q};
@@ -200,14 +200,7 @@ pub(crate) fn search_box(
     polys: &[Breakpoints],
 ) -> Result<Found, Error> {
     let Engine::Signs(sys) = &s.engine else {
-        return Err(input_error(
-            "phi_max over two parameters: Phi_max may jump where the class of chi's roots \
-             changes (it is not upper semicontinuous), so its supremum over a box can be a limit \
-             along a curve, which the exact search does not follow (it does for real_limit, \
-             imag_limit, ssp_coefficient); bind one parameter, or let min_order cut the box to \
-             a line"
-                .to_owned(),
-        ));
+        unreachable!("Φ_max over a box is searched through its disk bound (disk.rs)");
     };
     let (a, b) = (s.syms[0], s.syms[1]);
     let (fa, fb) = (&problem.free[0], &problem.free[1]);

@@ -271,8 +271,7 @@ impl<T: Scalar> Branch<T> {
             }
         }
         let next = C::default().sub(&r.mul(&self.inv_slope));
-        for j in 0..deg {
-            let mut v = std::mem::take(&mut tentative[j]);
+        for (j, mut v) in tentative.into_iter().enumerate() {
             if j > 0 && !next.is_zero() {
                 let d = self.pows[j - 1][0].mul(&next).scale(&Q::from_integer((j as i64).into()));
                 v = v.add(&d);
