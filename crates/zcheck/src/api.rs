@@ -88,6 +88,7 @@ pub fn derive(method: &LoadedMethod) -> Result<Value, Error> {
 
 /// `zcheck stability --format json` with `params` (`NAME=VALUE`) bound.
 pub fn stability(method: &LoadedMethod, params: &[String]) -> Result<Value, Error> {
+    crate::answers::stability::forget_rendered();
     let params = read_params(params)?;
     Ok(crate::answers::stability::Analysis::of(method.derivation()?, &params)?.to_json())
 }

@@ -973,8 +973,10 @@ fn small_primes() -> &'static [u64] {
 /// `q` rounded to `digits` decimals, half away from zero.
 fn round_decimal(q: &Q, digits: usize) -> String {
     let scale = num_traits::pow(BigInt::from(10), digits);
-    let scaled = q.abs() * Q::from_integer(scale.clone());
-    let n = (scaled + Q::new(BigInt::one(), BigInt::from(2))).floor().to_integer();
+    // ⌊|q|·10^digits + 1/2⌋ = ⌊(2|n|·10^digits + d) / 2d⌋ for q = n/d, d > 0,
+    // in integers (no fraction reduced).
+    let two_d = q.denom() * 2;
+    let n: BigInt = (q.numer().abs() * &scale * 2 + q.denom()) / two_d;
     let (int, frac) = n.div_rem(&scale);
     let negative = q.is_negative() && !n.is_zero();
     let mut s = String::new();
@@ -1109,6 +1111,33 @@ impl From<Q> for Algebraic {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The integer rounding against the obvious one on fractions, on
+    /// halves (ties away from zero), negatives and long denominators.
+    #[test]
+    fn round_decimal_matches_fraction_arithmetic() {
+        let slow = |q: &Q, digits: usize| -> String {
+            let scale = num_traits::pow(BigInt::from(10), digits);
+            let scaled = q.abs() * Q::from_integer(scale.clone());
+            let n = (scaled + Q::new(BigInt::one(), BigInt::from(2))).floor().to_integer();
+            let (int, frac) = n.div_rem(&scale);
+            let sign = if q.is_negative() && !n.is_zero() { "-" } else { "" };
+            if digits == 0 {
+                return format!("{sign}{int}");
+            }
+            format!("{sign}{int}.{:0>width$}", frac.to_string(), width = digits)
+        };
+        for num in -60i64..=60 {
+            for den in [1i64, 2, 3, 7, 8, 20, 40, 125, 999, 1024, 3 * 10i64.pow(12) + 7] {
+                let q = Q::new(BigInt::from(num * 37 + 5), BigInt::from(den));
+                for digits in [0, 1, 2, 3, 15, 17] {
+                    assert_eq!(round_decimal(&q, digits), slow(&q, digits), "{q} to {digits}");
+                }
+            }
+        }
+        assert_eq!(round_decimal(&Q::new(BigInt::from(-1), BigInt::from(200)), 2), "-0.01");
+        assert_eq!(round_decimal(&Q::new(BigInt::from(-1), BigInt::from(300)), 2), "0.00");
+    }
     use proptest::prelude::*;
 
     /// The slow, obvious oracle of [`sqrt_parts`]: trial division by every

@@ -252,6 +252,12 @@ thread_local! {
     static RENDERED: std::cell::RefCell<HashMap<String, std::rc::Rc<Rendered>>> =
         std::cell::RefCell::new(HashMap::new());
 }
+/// Empties the cache of rendered numbers: a front end's call starts from
+/// nothing, so its time is the whole work (`api::stability`).
+pub(crate) fn forget_rendered() {
+    RENDERED.with(|c| c.borrow_mut().clear());
+}
+
 pub(crate) fn render(a: &Algebraic) -> std::rc::Rc<Rendered> {
     // A cheap key (Debug would print the closed form, the costly part).
     let (lo, hi) = a.interval();
