@@ -371,6 +371,13 @@ fn errors_are_clean() {
          y = y + w*y + a^64*a^64*a^64*a^64*a^64*a^64*a^64*w^2*y\n",
     );
     let big = big.to_str().unwrap();
+    // R = 1 + w + a2 w^2 + a3 w^3 over a box: a tangency system of degree
+    // 78 in (a2, a3), whose gcd would run for minutes.
+    let cubic_box = temp_file(
+        "cubic_box.zm",
+        "method cubic_box\nparam a2\nparam a3\nstate y\ny = y + w*y + a2*w^2*y + a3*w^3*y\n",
+    );
+    let cubic_box = cubic_box.to_str().unwrap();
     for (args, wanted) in [
         (
             &["design", &kg, "--maximize", "imag_limit", "--param", "a3=1..0"][..],
@@ -425,10 +432,23 @@ fn errors_are_clean() {
             &["design", &method("newmark.zm"), "--maximize", "phi_max", "--param", "beta=0..1"][..],
             "parameter gamma is neither free nor bound",
         ),
-        // The exact search stops at its size bound and names it.
+        // The exact search stops at its size bounds and names them.
         (
             &["design", big, "--maximize", "real_limit", "--param", "a=0..1"][..],
             "past the bound MAX_BREAKPOINT_DEGREE = 400",
+        ),
+        (
+            &[
+                "design",
+                cubic_box,
+                "--maximize",
+                "imag_limit",
+                "--param",
+                "a2=2/5..1/2",
+                "--param",
+                "a3=1/8..1/4",
+            ][..],
+            "past the bound MAX_SYSTEM_DEGREE = 32",
         ),
     ] {
         let (code, out, err) = zcheck(args);

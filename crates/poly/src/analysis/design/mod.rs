@@ -63,6 +63,7 @@ use problem::{setup, Engine, Setup};
 pub use problem::{Problem, Subject};
 pub use report::{
     Design, FreeParam, GridCheck, Objective, Score, GRID_ONE, GRID_TWO, MAX_BREAKPOINT_DEGREE,
+    MAX_SYSTEM_DEGREE,
 };
 use system::Eval;
 pub use tableau::ParamTableau;

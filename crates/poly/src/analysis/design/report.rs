@@ -175,6 +175,12 @@ pub struct Design {
 /// search stops and says so.
 pub const MAX_BREAKPOINT_DEGREE: usize = 400;
 
+/// The largest degree (in the two parameters together) of an equation of
+/// the two-parameter search whose common factors with its partner are
+/// sought: past it the remainder sequence swells for minutes, so the search
+/// stops and names this bound (the examples' systems stay at 30 or less).
+pub const MAX_SYSTEM_DEGREE: usize = 32;
+
 /// The grid's points along one parameter (one parameter: 201 points; two:
 /// 50 × 50).
 pub const GRID_ONE: usize = 201;

@@ -25,7 +25,7 @@ use super::algebra::{eliminate, roots_in, sign_at};
 use super::certify::{header, solves};
 use super::one::search_line;
 use super::problem::{Engine, Problem, Setup};
-use super::report::Score;
+use super::report::{bound_error, Score, MAX_SYSTEM_DEGREE};
 use super::system::{Breakpoints, Eval, SignSystem};
 use crate::error::Error;
 use crate::{Algebraic, Poly, Sym, Q};
@@ -151,6 +151,19 @@ fn solve(
     let (mut g1, mut g2) = (s2.g1.clone(), s2.g2.clone());
     if g1.is_zero() || g2.is_zero() || g1.as_constant().is_some() || g2.as_constant().is_some() {
         return Ok(Vec::new());
+    }
+    for g in [&g1, &g2] {
+        let d = g.degree_in(a) as usize + g.degree_in(b) as usize;
+        if d > MAX_SYSTEM_DEGREE {
+            return Err(bound_error(format!(
+                "{}: an equation of degree {d} in ({}, {}), past the bound MAX_SYSTEM_DEGREE = \
+                 {MAX_SYSTEM_DEGREE}: its common factors with the other are not found in \
+                 reasonable time, so the exact search stops here rather than guess",
+                s2.label.replace("_design", ""),
+                a.name(),
+                b.name()
+            )));
+        }
     }
     let g = g1.gcd(&g2);
     if g.as_constant().is_none() {
