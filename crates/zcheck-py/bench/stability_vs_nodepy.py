@@ -22,19 +22,11 @@ import argparse
 import contextlib
 import io
 import statistics
-import time
 import warnings
 
+from order_vs_nodepy import best  # the same best-of-N timer, one definition
+
 METHODS = ["RK44", "SSP33", "SSP104", "Mid22", "Heun33", "BS5", "DP5", "CK5", "Merson43", "Fehlberg45"]
-
-
-def best(f, repeat):
-    ts = []
-    for _ in range(repeat):
-        t = time.perf_counter()
-        f()
-        ts.append(time.perf_counter() - t)
-    return min(ts)
 
 
 def main():
