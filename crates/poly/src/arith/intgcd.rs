@@ -16,7 +16,7 @@
 //! test.
 
 use num_bigint::{BigInt, BigUint, Sign};
-use num_traits::{Signed, ToPrimitive, Zero};
+use num_traits::{One, Signed, ToPrimitive, Zero};
 
 /// gcd(a, b) ≥ 0 (gcd(0, 0) = 0), as num-integer defines it.
 pub(crate) fn gcd(a: &BigInt, b: &BigInt) -> BigInt {
@@ -27,6 +27,20 @@ pub(crate) fn gcd(a: &BigInt, b: &BigInt) -> BigInt {
         return BigInt::from(gcd_u64(x, y));
     }
     BigInt::from_biguint(Sign::Plus, gcd_nat(ma, mb))
+}
+
+/// The least common multiple of positive integers (denominators), 1 for
+/// none: one division where a denominator already divides the running
+/// multiple (as decimals' powers of ten mostly do), Lehmer's gcd otherwise.
+pub(crate) fn lcm_all<'a>(xs: impl IntoIterator<Item = &'a BigInt>) -> BigInt {
+    let mut l = BigInt::from(1u8);
+    for x in xs {
+        if x.is_one() || (&l % x).is_zero() {
+            continue;
+        }
+        l = lcm(&l, x);
+    }
+    l
 }
 
 /// lcm(a, b) ≥ 0 (zero when either is zero).
@@ -177,6 +191,8 @@ mod tests {
             let (a, b) = (big(&a, sa) * &f, big(&b, sb) * &f);
             prop_assert_eq!(gcd(&a, &b), a.gcd(&b));
             prop_assert_eq!(lcm(&a, &b), a.lcm(&b));
+            let (pa, pb) = (a.abs() + 1, b.abs() + 1);
+            prop_assert_eq!(lcm_all([&pa, &pb, &f, &pa]), pa.lcm(&pb).lcm(&f));
             let m = a.magnitude();
             for shift in [0, 1, 63, 64, 65, 127, 128] {
                 if m.bits() <= shift + 62 {

@@ -15,7 +15,7 @@ use num_bigint::BigInt;
 use num_traits::{One, Zero};
 
 use super::psd::positive_semidefinite;
-use super::value::{Matrix, Value};
+use super::value::{over_common, Matrix, Value};
 use crate::Q;
 
 /// The entries a tableau's scale-free questions (reduction, symmetry,
@@ -90,23 +90,10 @@ pub(crate) struct Rk<T = Value> {
 pub(crate) fn scaled(rk: &Rk) -> Option<Rk<BigInt>> {
     let qs: Vec<&Q> =
         rk.a.iter().flatten().chain(&rk.b).map(Value::as_rational).collect::<Option<_>>()?;
-    let d = qs.iter().fold(BigInt::one(), |l, q| num_integer::Integer::lcm(&l, q.denom()));
-    let int = |v: &Value| {
-        let q = v.as_rational().expect("rational");
-        q.numer() * (&d / q.denom())
-    };
-    Some(Rk {
-        a: rk.a.iter().map(|r| r.iter().map(int).collect()).collect(),
-        b: rk.b.iter().map(int).collect(),
-    })
-}
-
-/// The rational entries as integers over their common denominator:
-/// (D, D·x for each x).
-fn over_common(xs: &[&Q]) -> (BigInt, Vec<BigInt>) {
-    let d = xs.iter().fold(BigInt::one(), |l, q| num_integer::Integer::lcm(&l, q.denom()));
-    let ints = xs.iter().map(|q| q.numer() * (&d / q.denom())).collect();
-    (d, ints)
+    let (_, ints) = over_common(&qs);
+    let s = rk.b.len();
+    let mut it = ints.into_iter();
+    Some(Rk { a: (0..s).map(|_| it.by_ref().take(s).collect()).collect(), b: it.collect() })
 }
 
 /// [`linear_order`] on integers, when A and b are rational: with A = Â/d,

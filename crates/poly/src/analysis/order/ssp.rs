@@ -26,7 +26,6 @@
 use std::cmp::Ordering;
 
 use num_bigint::BigInt;
-use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
 
 use super::report::Ssp;
@@ -180,8 +179,11 @@ pub(crate) fn coefficient(a: &Matrix, b: &[Value]) -> Result<Ssp, Error> {
 fn explicit_rational(a: &Matrix, b: &[Value]) -> Ssp {
     let s = b.len();
     let q = |v: &Value| v.as_rational().expect("rational").clone();
-    let d = a.iter().flatten().fold(BigInt::one(), |l, x| l.lcm(q(x).denom()));
-    let db = b.iter().fold(BigInt::one(), |l, x| l.lcm(q(x).denom()));
+    let d = crate::arith::intgcd::lcm_all(
+        a.iter().flatten().map(|x| x.as_rational().expect("rational").denom()),
+    );
+    let db =
+        crate::arith::intgcd::lcm_all(b.iter().map(|x| x.as_rational().expect("rational").denom()));
     let ai: Vec<Vec<BigInt>> =
         a.iter().map(|r| r.iter().map(|x| scaled(&q(x), &d)).collect()).collect();
     let bi: Vec<BigInt> = b.iter().map(|x| scaled(&q(x), &db)).collect();
@@ -257,28 +259,67 @@ fn explicit_rational(a: &Matrix, b: &[Value]) -> Ssp {
         .collect();
     polys.sort();
     polys.dedup();
-    let mut best: Option<Algebraic> = None;
     for p in &polys {
         let low = p.iter().find(|x| !x.is_zero()).expect("nonzero");
         if low.is_negative() {
             return Ssp::Radius(Algebraic::zero());
         }
-        if p.iter().all(|x| !x.is_negative()) {
+    }
+    // A polynomial with no negative coefficient is positive on r > 0.
+    polys.retain(|p| p.iter().any(|x| x.is_negative()));
+    // The ones already negative at the first trial point 8^k/8 (k = 0..4)
+    // where any is go first: one of them sets the radius, which is then
+    // below that point, and Descartes' test passes over most of the rest.
+    for k in 0..5u32 {
+        let x = Q::new(BigInt::one() << (3 * k), BigInt::from(8u8));
+        let later: Vec<bool> = polys.iter().map(|p| sign_at(p, &x) != Ordering::Less).collect();
+        if later.contains(&false) {
+            let mut keyed: Vec<(bool, Vec<BigInt>)> = later.into_iter().zip(polys).collect();
+            keyed.sort_by_key(|(later, _)| *later);
+            polys = keyed.into_iter().map(|(_, p)| p).collect();
+            break;
+        }
+    }
+    let mut best: Option<Algebraic> = None;
+    let mut below: Option<Q> = None;
+    for p in &polys {
+        if below.as_ref().is_some_and(|u| variations_below(p, u) == 0) {
             continue;
         }
-        if let Some(u) = best.as_ref().map(|b| b.interval().1) {
-            if variations_below(p, &u) == 0 {
-                continue;
-            }
+        if std::env::var("SSPDBG").is_ok() {
+            eprintln!(
+                "isolate deg {} below {:?}",
+                p.len() - 1,
+                below.as_ref().map(|b| b.to_string())
+            );
         }
         let up = UPoly::new(p.iter().cloned().map(Q::from_integer).collect());
         if let Some(r) = first_negative_int(p, &up) {
             if best.as_ref().is_none_or(|b| r < *b) {
+                // Descartes' test is sharper the closer its end is to the
+                // radius: the interval narrowed to a 2⁻³⁰ part of it.
+                let hi = r.interval().1;
+                let r = r.refine(&(hi.abs() / Q::from_integer(BigInt::one() << 30u32)));
+                below = Some(match r.as_rational() {
+                    // (0, R) open: a polynomial whose root is R itself is
+                    // passed over.
+                    Some(q) => q.clone(),
+                    None => dyadic_above(&r.interval().1),
+                });
                 best = Some(r);
             }
         }
     }
     best.map_or(Ssp::Unbounded, Ssp::Radius)
+}
+
+/// A dyadic rational at or above x ≥ 0 within about 2⁻³⁴·x, so that the
+/// Descartes tests on (0, x) run on short numbers.
+fn dyadic_above(x: &Q) -> Q {
+    let bits = x.numer().bits() as i64 - x.denom().bits() as i64;
+    let k = (34 - bits).max(0) as u32;
+    let scaled = num_integer::Integer::div_ceil(&(x.numer() << k), x.denom());
+    Q::new(scaled, BigInt::one() << k)
 }
 
 /// x·den for a rational x whose denominator divides den.

@@ -11,11 +11,14 @@
 use std::cmp::Ordering;
 use std::fmt;
 
+use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
 
+use crate::arith::rational::{add as qadd, mul as qmul};
 use crate::error::Error;
 use crate::lang::tableau::{entry_error, value, Exact};
 use crate::multivariate::constants as field;
+use crate::multivariate::poly::Monomial;
 use crate::{Poly, Q};
 
 /// An exact real number: a rational, or an element of Q(√n, ∛n, …).
@@ -32,8 +35,43 @@ pub struct Value(Repr);
 #[derive(Clone, PartialEq, Eq)]
 enum Repr {
     Rational(Q),
-    /// A reduced polynomial in generator symbols that is not a constant.
+    /// a + b√p (b ≠ 0), p > 1 squarefree and `g` the monomial √p, a
+    /// product of distinct square-root generators (√15 = √3·√5): Gauss',
+    /// Radau's and Lobatto's entries, whose arithmetic needs no polynomial.
+    Quadratic {
+        a: Q,
+        b: Q,
+        p: u64,
+        g: Monomial,
+    },
+    /// A reduced polynomial in generator symbols that is neither a
+    /// constant nor of the quadratic form.
     Field(Poly),
+}
+
+/// The monomial's radicand when it is √p for a squarefree p > 1: distinct
+/// square-root generators to the first power, of pairwise coprime
+/// squarefree radicands.
+fn square_root_radicand(m: &Monomial) -> Option<u64> {
+    let mut p: u64 = 1;
+    for &(g, e) in m.factors() {
+        let (r, 2) = field::generator_of(g)? else { return None };
+        let squarefree = (2..).take_while(|k: &u64| k * k <= r).all(|k| r % (k * k) != 0);
+        if e != 1 || !squarefree || num_integer::gcd(p, r) != 1 {
+            return None;
+        }
+        p = p.checked_mul(r)?;
+    }
+    (p > 1).then_some(p)
+}
+
+/// a + b√p as a value: rational when b = 0.
+fn quadratic(a: Q, b: Q, p: u64, g: Monomial) -> Value {
+    if b.is_zero() {
+        Value(Repr::Rational(a))
+    } else {
+        Value(Repr::Quadratic { a, b, p, g })
+    }
 }
 
 impl Value {
@@ -51,10 +89,23 @@ impl Value {
     /// symbols (`sqrt(3)`, `cbrt(2)`, …), reduced here.
     pub fn from_poly(p: &Poly) -> Value {
         let p = field::reduce(p);
-        match p.as_constant() {
-            Some(q) => Value(Repr::Rational(q)),
-            None => Value(Repr::Field(p)),
+        if let Some(q) = p.as_constant() {
+            return Value(Repr::Rational(q));
         }
+        // a + b·g with g = √p one monomial: the quadratic form.
+        let (mut a, mut root, mut roots) = (Q::zero(), None, 0);
+        for (m, c) in p.terms() {
+            match m.degree() {
+                0 => a = c.clone(),
+                _ => (root, roots) = (Some((m, c)), roots + 1),
+            }
+        }
+        if let (Some((m, b)), 1) = (root, roots) {
+            if let Some(radicand) = square_root_radicand(m) {
+                return quadratic(a, b.clone(), radicand, m.clone());
+            }
+        }
+        Value(Repr::Field(p))
     }
 
     /// Reads exact entries as numbers of one field, each against the
@@ -75,7 +126,7 @@ impl Value {
     pub fn as_rational(&self) -> Option<&Q> {
         match &self.0 {
             Repr::Rational(q) => Some(q),
-            Repr::Field(_) => None,
+            _ => None,
         }
     }
 
@@ -84,6 +135,9 @@ impl Value {
     pub fn to_poly(&self) -> Poly {
         match &self.0 {
             Repr::Rational(q) => Poly::constant(q.clone()),
+            Repr::Quadratic { a, b, g, .. } => {
+                Poly::from_terms([(a.clone(), Monomial::one()), (b.clone(), g.clone())])
+            }
             Repr::Field(p) => p.clone(),
         }
     }
@@ -97,6 +151,17 @@ impl Value {
     pub fn sign(&self) -> Ordering {
         match &self.0 {
             Repr::Rational(q) => q.cmp(&Q::zero()),
+            // b ≠ 0 and √p is irrational, so a² ≠ b²p: the larger term's
+            // sign.
+            Repr::Quadratic { a, b, p, .. } => {
+                let (sa, sb) = (a.cmp(&Q::zero()), b.cmp(&Q::zero()));
+                if sa == sb || sa == Ordering::Equal || a * a < b * b * Q::from_integer((*p).into())
+                {
+                    sb
+                } else {
+                    sa
+                }
+            }
             Repr::Field(p) => field::sign(p),
         }
     }
@@ -105,7 +170,7 @@ impl Value {
     pub fn approx(&self, width: &Q) -> Q {
         match &self.0 {
             Repr::Rational(q) => q.clone(),
-            Repr::Field(p) => field::approx(p, width),
+            _ => field::approx(&self.to_poly(), width),
         }
     }
 
@@ -114,6 +179,11 @@ impl Value {
         match &self.0 {
             Repr::Rational(q) if q.is_zero() => None,
             Repr::Rational(q) => Some(Value(Repr::Rational(q.recip()))),
+            // (a − b√p)/(a² − b²p), the norm nonzero as √p is irrational.
+            Repr::Quadratic { a, b, p, g } => {
+                let norm = a * a - b * b * Q::from_integer((*p).into());
+                Some(quadratic(a / &norm, -(b / &norm), *p, g.clone()))
+            }
             Repr::Field(p) => field::inverse(p).map(|i| Value::from_poly(&i)),
         }
     }
@@ -130,13 +200,25 @@ impl Value {
     pub(crate) fn neg(&self) -> Value {
         match &self.0 {
             Repr::Rational(q) => Value(Repr::Rational(-q.clone())),
+            Repr::Quadratic { a, b, p, g } => {
+                Value(Repr::Quadratic { a: -a.clone(), b: -b.clone(), p: *p, g: g.clone() })
+            }
             Repr::Field(p) => Value(Repr::Field(-p)),
         }
     }
 
     pub(crate) fn add(&self, o: &Value) -> Value {
         match (&self.0, &o.0) {
-            (Repr::Rational(a), Repr::Rational(b)) => Value(Repr::Rational(a + b)),
+            (Repr::Rational(a), Repr::Rational(b)) => Value(Repr::Rational(qadd(a, b))),
+            (Repr::Quadratic { a, b, p, g }, Repr::Rational(q))
+            | (Repr::Rational(q), Repr::Quadratic { a, b, p, g }) => {
+                Value(Repr::Quadratic { a: qadd(a, q), b: b.clone(), p: *p, g: g.clone() })
+            }
+            (Repr::Quadratic { a, b, p, g }, Repr::Quadratic { a: a2, b: b2, g: g2, .. })
+                if g == g2 =>
+            {
+                quadratic(qadd(a, a2), qadd(b, b2), *p, g.clone())
+            }
             _ => Value::from_poly(&(&self.to_poly() + &o.to_poly())),
         }
     }
@@ -147,7 +229,7 @@ impl Value {
 
     pub(crate) fn mul(&self, o: &Value) -> Value {
         match (&self.0, &o.0) {
-            (Repr::Rational(a), Repr::Rational(b)) => Value(Repr::Rational(a * b)),
+            (Repr::Rational(a), Repr::Rational(b)) => Value(Repr::Rational(qmul(a, b))),
             (Repr::Rational(a), Repr::Field(p)) | (Repr::Field(p), Repr::Rational(a)) => {
                 if a.is_zero() {
                     Value::zero()
@@ -155,7 +237,22 @@ impl Value {
                     Value(Repr::Field(p.scale(a)))
                 }
             }
-            (Repr::Field(p), Repr::Field(r)) => Value::from_poly(&(p * r)),
+            (Repr::Rational(q), Repr::Quadratic { a, b, p, g })
+            | (Repr::Quadratic { a, b, p, g }, Repr::Rational(q)) => {
+                quadratic(qmul(a, q), qmul(b, q), *p, g.clone())
+            }
+            (Repr::Quadratic { a, b, p, g }, Repr::Quadratic { a: a2, b: b2, g: g2, .. })
+                if g == g2 =>
+            {
+                let pq = Q::from_integer((*p).into());
+                quadratic(
+                    qadd(&qmul(a, a2), &qmul(&qmul(b, b2), &pq)),
+                    qadd(&qmul(a, b2), &qmul(a2, b)),
+                    *p,
+                    g.clone(),
+                )
+            }
+            _ => Value::from_poly(&(&self.to_poly() * &o.to_poly())),
         }
     }
 
@@ -163,9 +260,7 @@ impl Value {
     pub(crate) fn within(&self, bound: &Q) -> bool {
         match &self.0 {
             Repr::Rational(q) => q.abs() <= *bound,
-            Repr::Field(_) => {
-                self.abs().sub(&Value::from(bound.clone())).sign() != Ordering::Greater
-            }
+            _ => self.abs().sub(&Value::from(bound.clone())).sign() != Ordering::Greater,
         }
     }
 
@@ -185,6 +280,7 @@ impl fmt::Display for Value {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match &self.0 {
             Repr::Rational(q) => write!(f, "{q}"),
+            Repr::Quadratic { .. } => write!(f, "{}", self.to_poly()),
             Repr::Field(p) => write!(f, "{p}"),
         }
     }
@@ -259,6 +355,45 @@ pub(crate) fn inverse_int(n: u64) -> Value {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        /// The quadratic form a + b√p agrees with the polynomial route
+        /// (multiply the polynomials, reduce modulo g² − p, decide the sign
+        /// by refinement) on sums, products, inverses and signs.
+        #[test]
+        fn quadratic_form_agrees_with_polynomial_route(
+            (a1, b1, a2, b2) in (-40i64..40, -40i64..40, -40i64..40, -40i64..40),
+            (d1, d2) in (1i64..30, 1i64..30),
+            ps in prop::sample::select(vec![vec![2u64], vec![3], vec![5], vec![2, 3], vec![3, 5], vec![2, 3, 5]]),
+        ) {
+            let g = Monomial::from_factors(ps.iter().map(|&p| (field::generator(p, 2), 1)).collect());
+            let v = |a: i64, b: i64, d: i64| {
+                Value::from_poly(&Poly::from_terms([
+                    (crate::q(a, d), Monomial::one()),
+                    (crate::q(b, d), g.clone()),
+                ]))
+            };
+            let (x, y) = (v(a1, b1, d1), v(a2, b2, d2));
+            prop_assert_eq!(b1 != 0, matches!(x.0, Repr::Quadratic { .. }));
+            // Two radicals are not of the form.
+            let two = Value::from_poly(&Poly::from_terms([
+                (crate::q(a1, d1), Monomial::power(field::generator(2, 2), 1)),
+                (crate::q(b1, d1), Monomial::power(field::generator(3, 2), 1)),
+            ]));
+            prop_assert_eq!(a1 != 0 && b1 != 0, matches!(two.0, Repr::Field(_)));
+            let (px, py) = (x.to_poly(), y.to_poly());
+            prop_assert_eq!(x.add(&y).to_poly(), field::reduce(&(&px + &py)));
+            prop_assert_eq!(x.mul(&y).to_poly(), field::reduce(&(&px * &py)));
+            prop_assert_eq!(x.sign(), field::sign(&px));
+            prop_assert_eq!(x.sub(&y).sign(), field::sign(&field::reduce(&(&px - &py))));
+            prop_assert_eq!(x.to_string(), px.to_string());
+            if let Some(inv) = x.inverse() {
+                prop_assert_eq!(Some(inv.to_poly()), field::inverse(&px));
+                prop_assert_eq!(inv.mul(&x), Value::one());
+            }
+        }
+    }
 
     #[test]
     fn radicals_share_one_field() {
@@ -273,4 +408,12 @@ mod tests {
         assert!(Value::from(crate::q(-1, 3)).within(&crate::q(1, 3)));
         assert!(!v[0][0].within(&crate::q(141, 100)));
     }
+}
+
+/// Rationals as integers over their common denominator: (d, d·x for each
+/// x).
+pub(crate) fn over_common(xs: &[&Q]) -> (BigInt, Vec<BigInt>) {
+    let d = crate::arith::intgcd::lcm_all(xs.iter().map(|q| q.denom()));
+    let ints = xs.iter().map(|q| q.numer() * (&d / q.denom())).collect();
+    (d, ints)
 }
