@@ -286,13 +286,6 @@ fn explicit_rational(a: &Matrix, b: &[Value]) -> Ssp {
         if below.as_ref().is_some_and(|u| variations_below(p, u) == 0) {
             continue;
         }
-        if std::env::var("SSPDBG").is_ok() {
-            eprintln!(
-                "isolate deg {} below {:?}",
-                p.len() - 1,
-                below.as_ref().map(|b| b.to_string())
-            );
-        }
         let up = UPoly::new(p.iter().cloned().map(Q::from_integer).collect());
         if let Some(r) = first_negative_int(p, &up) {
             if best.as_ref().is_none_or(|b| r < *b) {
