@@ -163,10 +163,10 @@ mod tests {
         !f.is_unknown() && (x - exact(f)).abs() <= unit * Q::from_integer(BigInt::from(f.e))
     }
 
-    /// A product and sum of rationals with denominators up to 10¹⁷ (as
-    /// 17-digit decimals have), chained: the exact value stays within the
-    /// bound at every step.
     proptest! {
+        /// A product and sum of rationals with denominators up to 10¹⁷ (as
+        /// 17-digit decimals have), chained: the exact value stays within
+        /// the bound at every step.
         #[test]
         fn bounds_cover_the_exact_value(
             xs in proptest::collection::vec((-10i64.pow(17)..10i64.pow(17), 1i64..10i64.pow(17)), 2..12)
@@ -192,8 +192,8 @@ mod tests {
         }
     }
 
-    /// `within` settles only what the exact comparison agrees with.
     proptest! {
+        /// `within` settles only what the exact comparison agrees with.
         #[test]
         fn within_agrees_with_the_exact_comparison(
             (xn, xd) in (-10i64.pow(15)..10i64.pow(15), 1i64..10i64.pow(15)),

@@ -217,6 +217,30 @@ pub(crate) fn use_before_declaration(name: &str, used: Span, declared: Span) -> 
     )
 }
 
+/// (K, N) of a radical's constant name: `sqrt_5`, `cbrt_2`, `root_4_2`.
+fn root_of_name(name: &str) -> Option<(u32, u64)> {
+    let n = |s: &str| s.parse::<u64>().ok().filter(|&n| n > 0 && n <= field::MAX_RADICAND);
+    if let Some(r) = name.strip_prefix("sqrt_") {
+        return Some((2, n(r)?));
+    }
+    if let Some(r) = name.strip_prefix("cbrt_") {
+        return Some((3, n(r)?));
+    }
+    let (k, r) = name.strip_prefix("root_")?.split_once('_')?;
+    Some((k.parse().ok().filter(|k| (2..=64).contains(k))?, n(r)?))
+}
+
+/// The generator index L_p of each prime under the named radicals, as a
+/// program declaring them all gets it; `None` for a name not of
+/// the tableau reader's making (`lang::tableau`).
+pub(crate) fn radical_indices(constants: &[(String, String)]) -> Option<BTreeMap<u64, u32>> {
+    let radicals: Vec<field::Radical> = constants
+        .iter()
+        .map(|(name, _)| root_of_name(name).map(|(k, n)| field::Radical::root(k, n)))
+        .collect::<Option<_>>()?;
+    Some(field::generator_indices(&radicals))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -136,6 +136,7 @@ impl Multistep {
             .map(|(j, a)| Exact {
                 expr: format!("{j}*({})", a.expr),
                 number: a.number.as_ref().map(|q| q * crate::Q::from_integer(j.into())),
+                value: a.value.as_ref().map(|p| p.scale(&crate::Q::from_integer(j.into()))),
                 ..a.clone()
             })
             .collect();

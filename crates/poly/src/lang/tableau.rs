@@ -46,6 +46,9 @@ pub struct Exact {
     pub(crate) zero: bool,
     /// The value of a plain number, read once.
     pub(crate) number: Option<crate::Q>,
+    /// The value of an entry with radicals, read once against its own
+    /// radicals (see [`entry_value`] for when a method may use it).
+    pub(crate) value: Option<Poly>,
 }
 
 impl Exact {
@@ -61,12 +64,18 @@ impl Exact {
         if let Ok(q) = crate::lang::syntax::parse_number(digits) {
             let q = if negative { -q } else { q };
             let zero = num_traits::Zero::is_zero(&q);
-            return Ok(Exact { expr: q.to_string(), radicals: Vec::new(), zero, number: Some(q) });
+            return Ok(Exact {
+                expr: q.to_string(),
+                radicals: Vec::new(),
+                zero,
+                number: Some(q),
+                value: None,
+            });
         }
         let mut radicals = Vec::new();
         let expr = replace_radicals(text, &mut radicals).map_err(entry_error)?;
-        let zero = probe(&expr, &radicals).map_err(entry_error)?;
-        Ok(Exact { expr, radicals, zero, number: None })
+        let v = value(&expr, &radicals).map_err(entry_error)?;
+        Ok(Exact { expr, radicals, zero: v.is_zero(), number: None, value: Some(v) })
     }
 
     /// Whether the entry is exactly zero.
@@ -264,10 +273,11 @@ impl Tableau {
     fn compute_stability_function(&self) -> Result<StabilityFunction, Error> {
         let constants = !self.constants.is_empty();
         let fix = |p: Poly| if constants { field::reduce(&p) } else { p };
+        let index = crate::lang::constant::radical_indices(&self.constants);
         let entry = |e: &Exact| -> Result<Poly, Error> {
             match plain(e) {
                 Some(q) => Ok(Poly::constant(q)),
-                None => value(&e.expr, &self.constants).map_err(entry_error),
+                None => entry_value(e, &self.constants, index.as_ref()).map_err(entry_error),
             }
         };
         let a = self
@@ -673,6 +683,27 @@ pub(crate) fn value(expr: &str, constants: &[(String, String)]) -> Result<Poly, 
     writeln!(src, "v = ({expr})*v").expect("string");
     let m = Method::parse("entry", &src).map_err(|e| e.message().to_owned())?;
     Ok(m.assigns().last().and_then(|a| a.terms.first()).map_or_else(Poly::zero, |(_, c)| c.clone()))
+}
+
+/// The value of an entry with radicals in the field of a method whose
+/// radicals are `constants` (with `index`, their [`radical_indices`]): the
+/// value read at parse time when the entry's own generator indices are the
+/// method's (the usual case: then both readings name the same generators),
+/// else by a program declaring all of them (√2 beside root(4, 2) is the
+/// square of the generator 2^(1/4), not a generator of its own).
+pub(crate) fn entry_value(
+    e: &Exact,
+    constants: &[(String, String)],
+    index: Option<&std::collections::BTreeMap<u64, u32>>,
+) -> Result<Poly, String> {
+    if let (Some(v), Some(index)) = (&e.value, index) {
+        if crate::lang::constant::radical_indices(&e.radicals)
+            .is_some_and(|own| own.iter().all(|(p, l)| index.get(p) == Some(l)))
+        {
+            return Ok(v.clone());
+        }
+    }
+    value(&e.expr, constants)
 }
 
 /// The value of an entry that is a plain number (no radicals), without

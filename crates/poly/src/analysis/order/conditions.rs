@@ -21,6 +21,7 @@ use std::collections::BTreeMap;
 use super::trees::Forest;
 use super::value::{all_rational, inverse_int, over_common, Matrix, Value};
 use crate::arith::fixed::Fixed;
+use crate::arith::rational::ratio;
 use crate::multivariate::constants::generator_of;
 use crate::multivariate::poly::Monomial;
 use crate::{Poly, Sym, Q};
@@ -420,7 +421,7 @@ impl Weights {
         let edges = self.forest.trees[t].order() - 1;
         match &mut self.route {
             Route::Integer { engine, d, scales, .. } => {
-                Value::from(Q::new(engine.raw[t].clone(), scale_of(scales, d, edges).clone()))
+                Value::from(ratio(engine.raw[t].clone(), scale_of(scales, d, edges).clone()))
             }
             Route::Dense { engine, d, scales } => {
                 let scale = scale_of(scales, d, edges);
@@ -431,7 +432,7 @@ impl Weights {
                         .iter()
                         .zip(&basis.monomials)
                         .filter(|(c, _)| !c.is_zero())
-                        .map(|(c, m)| (Q::new(c.clone(), scale.clone()), m.clone())),
+                        .map(|(c, m)| (ratio(c.clone(), scale.clone()), m.clone())),
                 ))
             }
             Route::Field(engine) => engine.raw[t].clone(),
@@ -441,6 +442,13 @@ impl Weights {
     /// Φ(t) − 1/γ(t).
     pub(crate) fn residual(&mut self, t: usize) -> Value {
         let gamma = self.forest.trees[t].density();
+        self.ensure(t);
+        if let Route::Integer { engine, d, scales, .. } = &mut self.route {
+            // (b̂·ĝ_t·γ − d_b·d^(|t|−1)) / (γ·d_b·d^(|t|−1)), reduced once.
+            let scale = scale_of(scales, d, self.forest.trees[t].order() - 1);
+            let gamma = BigInt::from(gamma);
+            return Value::from(ratio(&engine.raw[t] * &gamma - scale, gamma * scale));
+        }
         self.phi(t).sub(&inverse_int(gamma))
     }
 

@@ -156,6 +156,17 @@ pub(crate) fn coefficient(a: &Matrix, b: &[Value]) -> Result<Ssp, Error> {
     };
     let mut best: Option<Algebraic> =
         d.and_then(|d| Algebraic::positive_roots(&d).into_iter().next());
+    if rational {
+        // On integers (each polynomial times its denominators' lcm > 0).
+        let ints = polys
+            .iter()
+            .map(|p| {
+                let qs: Vec<&Q> = p.iter().map(|x| x.as_rational().expect("rational")).collect();
+                super::value::over_common(&qs).1
+            })
+            .collect();
+        return Ok(least_first_negative(ints, best).map_or(Ssp::Unbounded, Ssp::Radius));
+    }
     for p in &polys {
         if let Some(r) = first_negative(p) {
             if best.as_ref().is_none_or(|b| r < *b) {
@@ -250,19 +261,34 @@ fn explicit_rational(a: &Matrix, b: &[Value]) -> Ssp {
         last.push(alt(k + 1, &d * bake));
     }
     numerators.push(last);
-    let mut polys: Vec<Vec<BigInt>> = numerators
+    let polys: Vec<Vec<BigInt>> = numerators
         .into_iter()
         .filter_map(|n| {
             let deg = n.iter().rposition(|x| !x.is_zero())?;
             Some((0..=deg).map(|k| &n[k] * num_traits::pow(d.clone(), deg - k)).collect())
         })
         .collect();
+    least_first_negative(polys, None).map_or(Ssp::Unbounded, Ssp::Radius)
+}
+
+/// The least point after which one of the integer polynomials (lowest
+/// degree first) is negative, at most `bound` (the least positive root of
+/// D, for an implicit method): 0 when one is negative just after 0, `None`
+/// when none ever is and there is no bound. Each polynomial is taken once
+/// (duplicates dropped); one whose coefficients never change sign, or whose
+/// Descartes count on (0, u) is 0 for u above the least point found so
+/// far, is passed over: it cannot lower it.
+fn least_first_negative(
+    mut polys: Vec<Vec<BigInt>>,
+    bound: Option<Algebraic>,
+) -> Option<Algebraic> {
+    polys.retain(|p| p.iter().any(|x| !x.is_zero()));
     polys.sort();
     polys.dedup();
     for p in &polys {
         let low = p.iter().find(|x| !x.is_zero()).expect("nonzero");
         if low.is_negative() {
-            return Ssp::Radius(Algebraic::zero());
+            return Some(Algebraic::zero());
         }
     }
     // A polynomial with no negative coefficient is positive on r > 0.
@@ -280,8 +306,13 @@ fn explicit_rational(a: &Matrix, b: &[Value]) -> Ssp {
             break;
         }
     }
-    let mut best: Option<Algebraic> = None;
-    let mut below: Option<Q> = None;
+    let (mut best, mut below) = match bound {
+        Some(r) => {
+            let (r, u) = narrowed(r);
+            (Some(r), Some(u))
+        }
+        None => (None, None),
+    };
     for p in &polys {
         if below.as_ref().is_some_and(|u| variations_below(p, u) == 0) {
             continue;
@@ -289,21 +320,26 @@ fn explicit_rational(a: &Matrix, b: &[Value]) -> Ssp {
         let up = UPoly::new(p.iter().cloned().map(Q::from_integer).collect());
         if let Some(r) = first_negative_int(p, &up) {
             if best.as_ref().is_none_or(|b| r < *b) {
-                // Descartes' test is sharper the closer its end is to the
-                // radius: the interval narrowed to a 2⁻³⁰ part of it.
-                let hi = r.interval().1;
-                let r = r.refine(&(hi.abs() / Q::from_integer(BigInt::one() << 30u32)));
-                below = Some(match r.as_rational() {
-                    // (0, R) open: a polynomial whose root is R itself is
-                    // passed over.
-                    Some(q) => q.clone(),
-                    None => dyadic_above(&r.interval().1),
-                });
-                best = Some(r);
+                let (r, u) = narrowed(r);
+                (best, below) = (Some(r), Some(u));
             }
         }
     }
-    best.map_or(Ssp::Unbounded, Ssp::Radius)
+    best
+}
+
+/// The point with its interval narrowed to a 2⁻³⁰ part of it, and the end
+/// of the Descartes tests that pass over what cannot lower it: the point
+/// itself when rational (on (0, R) open, a polynomial whose root is R
+/// itself is passed over), else a short dyadic just above it.
+fn narrowed(r: Algebraic) -> (Algebraic, Q) {
+    let hi = r.interval().1;
+    let r = r.refine(&(hi.abs() / Q::from_integer(BigInt::one() << 30u32)));
+    let u = match r.as_rational() {
+        Some(q) => q.clone(),
+        None => dyadic_above(&r.interval().1),
+    };
+    (r, u)
 }
 
 /// A dyadic rational at or above x ≥ 0 within about 2⁻³⁴·x, so that the
