@@ -19,6 +19,21 @@ fn design_file(name: &str) -> String {
     method(&format!("design/{name}"))
 }
 
+/// `design FILE --maximize OBJECTIVE --param P...` and then `extra`.
+fn design_args<'a>(
+    file: &'a str,
+    objective: &'a str,
+    params: &[&'a str],
+    extra: &[&'a str],
+) -> Vec<&'a str> {
+    let mut args = vec!["design", file, "--maximize", objective];
+    for p in params {
+        args.extend(["--param", p]);
+    }
+    args.extend(extra);
+    args
+}
+
 #[track_caller]
 fn json(args: &[&str]) -> Value {
     let mut all = args.to_vec();
@@ -77,14 +92,7 @@ fn pairs(p: &[(&str, &str)]) -> Vec<(String, String)> {
 /// 1/8 (R(−8) = 1, and R = −1 only touched at x = 4).
 #[test]
 fn chebyshev_real_limit() {
-    let d = json(&[
-        "design",
-        &design_file("chebyshev2.zm"),
-        "--maximize",
-        "real_limit",
-        "--param",
-        "a2=0..1/2",
-    ]);
+    let d = json(&design_args(&design_file("chebyshev2.zm"), "real_limit", &["a2=0..1/2"], &[]));
     check_document(&d, 1, 200);
     assert_eq!((exact(&d["optimum"]), &d["attained"]), ("8", &Value::Bool(true)));
     assert_eq!(at(&d), pairs(&[("a2", "1/8")]));
@@ -99,20 +107,11 @@ fn chebyshev_real_limit() {
 #[test]
 fn kinnmark_gray_imag_limit() {
     let kg = design_file("kinnmark_gray.zm");
-    let d = json(&["design", &kg, "--maximize", "imag_limit", "--param", "a3=0..1/2"]);
+    let d = json(&design_args(&kg, "imag_limit", &["a3=0..1/2"], &[]));
     check_document(&d, 1, 200);
     assert_eq!((exact(&d["optimum"]), &d["attained"]), ("2", &Value::Bool(true)));
     assert_eq!(at(&d), pairs(&[("a3", "1/4")]));
-    let d = json(&[
-        "design",
-        &kg,
-        "--maximize",
-        "imag_limit",
-        "--param",
-        "a3=0..1/2",
-        "--min-order",
-        "3",
-    ]);
+    let d = json(&design_args(&kg, "imag_limit", &["a3=0..1/2"], &["--min-order", "3"]));
     // The allowed set is the single point a3 = 1/6: the grid is that point.
     check_document(&d, 1, 1);
     assert_eq!((exact(&d["optimum"]), &d["attained"]), ("sqrt(3)", &Value::Bool(true)));
@@ -132,11 +131,11 @@ fn kinnmark_gray_imag_limit() {
 #[test]
 fn theta_method_real_limit() {
     let theta = design_file("theta.zm");
-    let d = json(&["design", &theta, "--maximize", "real_limit", "--param", "theta=0..2/5"]);
+    let d = json(&design_args(&theta, "real_limit", &["theta=0..2/5"], &[]));
     check_document(&d, 1, 200);
     assert_eq!((exact(&d["optimum"]), &d["attained"]), ("10", &Value::Bool(true)));
     assert_eq!(at(&d), pairs(&[("theta", "2/5")]));
-    let d = json(&["design", &theta, "--maximize", "real_limit", "--param", "theta=0..1/2"]);
+    let d = json(&design_args(&theta, "real_limit", &["theta=0..1/2"], &[]));
     check_document(&d, 1, 200);
     assert_eq!(d["optimum"], serde_json::json!({ "exact": "inf", "value": null }));
     assert_eq!(d["attained"], true);
@@ -151,16 +150,7 @@ fn theta_method_real_limit() {
 #[test]
 fn newmark_phi_max_over_beta_and_gamma() {
     let newmark = method("newmark.zm");
-    let d = json(&[
-        "design",
-        &newmark,
-        "--maximize",
-        "phi_max",
-        "--param",
-        "beta=0..1/5",
-        "--param",
-        "gamma=1/2..3/5",
-    ]);
+    let d = json(&design_args(&newmark, "phi_max", &["beta=0..1/5", "gamma=1/2..3/5"], &[]));
     check_document(&d, 2, 2500);
     assert_eq!((exact(&d["optimum"]), &d["attained"]), ("2*sqrt(5)", &Value::Bool(true)));
     assert_eq!(at(&d), pairs(&[("beta", "1/5"), ("gamma", "1/2")]));
@@ -211,16 +201,7 @@ fn newmark_phi_max_with_gamma_bound() {
     assert_eq!(at(&d), pairs(&[("beta", "1/5")]));
     // The bound value is named in the certificate.
     assert!(d["certificate"][0].as_str().unwrap().contains("with gamma=1/2"), "{d}");
-    let d = json(&[
-        "design",
-        &newmark,
-        "--maximize",
-        "phi_max",
-        "--param",
-        "gamma=1/2",
-        "--param",
-        "beta=0..1/2",
-    ]);
+    let d = json(&design_args(&newmark, "phi_max", &["gamma=1/2", "beta=0..1/2"], &[]));
     check_document(&d, 1, 200);
     assert_eq!(exact(&d["optimum"]), "inf");
     assert_eq!(at(&d), pairs(&[("beta", "1/4")]));
@@ -234,21 +215,12 @@ fn newmark_phi_max_with_gamma_bound() {
 #[test]
 fn two_stage_family_ssp_coefficient() {
     let rk2 = design_file("rk2_family.toml");
-    let d = json(&["design", &rk2, "--maximize", "ssp_coefficient", "--param", "c=1/4..2"]);
+    let d = json(&design_args(&rk2, "ssp_coefficient", &["c=1/4..2"], &[]));
     check_document(&d, 1, 200);
     assert_eq!((exact(&d["optimum"]), &d["attained"]), ("1", &Value::Bool(true)));
     assert_eq!(at(&d), pairs(&[("c", "1")]));
     assert_eq!(d["method"], "rk2_family");
-    let d = json(&[
-        "design",
-        &rk2,
-        "--maximize",
-        "ssp_coefficient",
-        "--param",
-        "c=1/4..2",
-        "--per",
-        "stage",
-    ]);
+    let d = json(&design_args(&rk2, "ssp_coefficient", &["c=1/4..2"], &["--per", "stage"]));
     check_document(&d, 1, 200);
     assert_eq!(exact(&d["optimum"]), "1/2");
     assert_eq!(at(&d), pairs(&[("c", "1")]));
@@ -257,18 +229,12 @@ fn two_stage_family_ssp_coefficient() {
     // [3/4, 2]: refused, naming the point; over [1/4, 2] the first such point
     // is c = 1/4, where b₁ = −1 needs no multiplication.
     let per_cost = |range: &str| {
-        zcheck(&[
-            "design",
+        zcheck(&design_args(
             &rk2,
-            "--maximize",
             "ssp_coefficient",
-            "--param",
-            range,
-            "--per",
-            "cost",
-            "--format",
-            "json",
-        ])
+            &[range],
+            &["--per", "cost", "--format", "json"],
+        ))
     };
     let (code, _, err) = per_cost("c=3/4..2");
     assert_eq!(code, 2, "{err}");
@@ -291,18 +257,12 @@ fn two_stage_family_ssp_coefficient() {
 /// point hits the isolated optimum: the grid's best is strictly below.
 #[test]
 fn shifted_chebyshev_two_parameters() {
-    let d = json(&[
-        "design",
+    let d = json(&design_args(
         &design_file("cubic.zm"),
-        "--maximize",
         "real_limit",
-        "--param",
-        "a2=0..1/2",
-        "--param",
-        "a3=0..1/6",
-        "--min-order",
-        "1",
-    ]);
+        &["a2=0..1/2", "a3=0..1/6"],
+        &["--min-order", "1"],
+    ));
     check_document(&d, 2, 2500);
     assert_eq!((exact(&d["optimum"]), &d["attained"]), ("18", &Value::Bool(true)));
     assert_eq!(at(&d), pairs(&[("a2", "4/27"), ("a3", "4/729")]));
@@ -338,16 +298,8 @@ fn tableau_with_a_bound_parameter() {
 /// certificate.
 #[test]
 fn text_report() {
-    let (code, out, err) = zcheck(&[
-        "design",
-        &method("newmark.zm"),
-        "--maximize",
-        "phi_max",
-        "--param",
-        "beta=0..1/5",
-        "--param",
-        "gamma=1/2",
-    ]);
+    let (code, out, err) =
+        zcheck(&design_args(&method("newmark.zm"), "phi_max", &["beta=0..1/5", "gamma=1/2"], &[]));
     assert_eq!(code, 0, "{err}");
     for wanted in [
         "design newmark: maximise phi_max",
@@ -459,14 +411,8 @@ fn errors_are_clean() {
         assert!(!err.contains("panicked"), "{args:?}: {err}");
     }
     // The 1-line check is relaxed for a file error, which shows its line.
-    let (code, _, err) = zcheck(&[
-        "design",
-        &kg.replace(".zm", "_missing.zm"),
-        "--maximize",
-        "imag_limit",
-        "--param",
-        "a3=0..1",
-    ]);
+    let (code, _, err) =
+        zcheck(&design_args(&kg.replace(".zm", "_missing.zm"), "imag_limit", &["a3=0..1"], &[]));
     assert_eq!(code, 2, "{err}");
 }
 
@@ -664,16 +610,7 @@ fn min_order_with_two_free_parameters() {
     assert_eq!(at(&d), pairs(&[("a2", "1/2"), ("a3", "1/16")]));
     let cert = d["certificate"].to_string();
     assert!(cert.contains("on the line a2 = 1/2 with a3 in [0, 1/6]"), "{cert}");
-    let one = json(&[
-        "design",
-        &cubic,
-        "--maximize",
-        "real_limit",
-        "--param",
-        "a2=1/2",
-        "--param",
-        "a3=0..1/6",
-    ]);
+    let one = json(&design_args(&cubic, "real_limit", &["a2=1/2", "a3=0..1/6"], &[]));
     assert_eq!(one["optimum"], d["optimum"]);
     assert_eq!(one["at"]["a3"], d["at"]["a3"]);
     // A tableau whose order-2 condition c*d = 1/2 is not affine.
@@ -681,18 +618,12 @@ fn min_order_with_two_free_parameters() {
         "rk2cd_order.toml",
         "params = [\"c\", \"d\"]\nA = [[0, 0], [\"c\", 0]]\nb = [\"1 - d\", \"d\"]\n",
     );
-    let (code, out, err) = zcheck(&[
-        "design",
-        cd.to_str().unwrap(),
-        "--maximize",
+    let (code, out, err) = zcheck(&design_args(
+        &cd.to_str().unwrap(),
         "ssp_coefficient",
-        "--param",
-        "c=0..1",
-        "--param",
-        "d=0..1",
-        "--min-order",
-        "2",
-    ]);
+        &["c=0..1", "d=0..1"],
+        &["--min-order", "2"],
+    ));
     assert_eq!(code, 2, "{err}");
     assert!(out.is_empty() && err.contains("no order condition is affine in (c, d)"), "{err}");
 }
@@ -703,16 +634,12 @@ fn min_order_with_two_free_parameters() {
 #[test]
 fn min_order_grid_at_irrational_points() {
     let half = temp_file("half.zm", "method half\nparam a\nstate y\ny = y + w*y + a^2*w^2*y\n");
-    let d = json(&[
-        "design",
-        half.to_str().unwrap(),
-        "--maximize",
+    let d = json(&design_args(
+        &half.to_str().unwrap(),
         "real_limit",
-        "--param",
-        "a=-1..1",
-        "--min-order",
-        "2",
-    ]);
+        &["a=-1..1"],
+        &["--min-order", "2"],
+    ));
     check_document(&d, 1, 2);
     assert_eq!(d["grid_check"]["points"], 2);
     assert_eq!(exact(&d["optimum"]), "2");
