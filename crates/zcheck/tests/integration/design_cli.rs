@@ -619,7 +619,7 @@ fn min_order_with_two_free_parameters() {
         "params = [\"c\", \"d\"]\nA = [[0, 0], [\"c\", 0]]\nb = [\"1 - d\", \"d\"]\n",
     );
     let (code, out, err) = zcheck(&design_args(
-        &cd.to_str().unwrap(),
+        cd.to_str().unwrap(),
         "ssp_coefficient",
         &["c=0..1", "d=0..1"],
         &["--min-order", "2"],
@@ -635,7 +635,7 @@ fn min_order_with_two_free_parameters() {
 fn min_order_grid_at_irrational_points() {
     let half = temp_file("half.zm", "method half\nparam a\nstate y\ny = y + w*y + a^2*w^2*y\n");
     let d = json(&design_args(
-        &half.to_str().unwrap(),
+        half.to_str().unwrap(),
         "real_limit",
         &["a=-1..1"],
         &["--min-order", "2"],
