@@ -16,9 +16,9 @@
 //! with radicals, the candidate roots are those of its norm, a polynomial
 //! over Q whose roots include every conjugate's.
 //!
-//! Explicit methods have X = Σ_k (−rA)^k and D = 1. Implicit methods with
-//! rational entries get adj·(·) and D by exact evaluation at s + 1 rational
-//! points and interpolation; implicit methods with radicals are decided
+//! Explicit methods have X = Σ_k (−rA)^k and D = 1. Methods with rational
+//! entries get adj and D on integers, by Faddeev–LeVerrier (explicit ones
+//! as the special case D = 1); implicit methods with radicals are decided
 //! only when some entry of K is negative (R = 0), else the answer is
 //! [`ErrorKind::Unsupported`]. The oracle, [`absolutely_monotone_at`],
 //! inverts I + rK at one rational r.
@@ -139,34 +139,18 @@ pub(crate) fn coefficient(a: &Matrix, b: &[Value]) -> Result<Ssp, Error> {
     if a.iter().flatten().chain(b).any(|x| x.sign() == Ordering::Less) {
         return Ok(Ssp::Radius(Algebraic::zero()));
     }
-    if explicit && rational {
-        return Ok(explicit_rational(a, b));
+    if rational {
+        return Ok(self::rational(a, b));
     }
-    let (polys, d) = if explicit {
-        (explicit_conditions(a, b), None)
-    } else if rational {
-        let (polys, d) = implicit_conditions(a, b);
-        (polys, Some(d))
-    } else {
+    if !explicit {
         return Err(Error::analysis(
             ErrorKind::Unsupported,
             "the SSP coefficient of an implicit tableau with irrational entries and K ≥ 0 is not \
              decided (only rational or explicit tableaux are)",
         ));
-    };
-    let mut best: Option<Algebraic> =
-        d.and_then(|d| Algebraic::positive_roots(&d).into_iter().next());
-    if rational {
-        // On integers (each polynomial times its denominators' lcm > 0).
-        let ints = polys
-            .iter()
-            .map(|p| {
-                let qs: Vec<&Q> = p.iter().map(|x| x.as_rational().expect("rational")).collect();
-                super::value::over_common(&qs).1
-            })
-            .collect();
-        return Ok(least_first_negative(ints, best).map_or(Ssp::Unbounded, Ssp::Radius));
     }
+    let polys = explicit_conditions(a, b);
+    let mut best: Option<Algebraic> = None;
     for p in &polys {
         if let Some(r) = first_negative(p) {
             if best.as_ref().is_none_or(|b| r < *b) {
@@ -180,14 +164,16 @@ pub(crate) fn coefficient(a: &Matrix, b: &[Value]) -> Result<Ssp, Error> {
     Ok(best.map_or(Ssp::Unbounded, Ssp::Radius))
 }
 
-/// An explicit tableau over Q, on integers: with A = Â/d and b = b̂/d_b,
-/// every condition polynomial is a positive multiple of one with integer
-/// coefficients built from the powers of Â (no rational is reduced). The
-/// polynomials are taken once each (duplicates dropped), and one whose
-/// coefficients never change sign, or whose Descartes count on (0, u) is 0
-/// for u above the least first-negative point found so far, is passed over:
-/// it cannot lower the radius.
-fn explicit_rational(a: &Matrix, b: &[Value]) -> Ssp {
+/// A tableau over Q, explicit or implicit, on integers. With A = Â/d and
+/// b = b̂/d_b, Faddeev–LeVerrier on B̂ = −Â gives integer matrices N̂_k and
+/// integers ĉ_k (ĉ_k = −tr(B̂N̂_(k−1))/k divides exactly: the ĉ_k are the
+/// characteristic polynomial's coefficients of an integer matrix) with
+/// adj(I + rA) = Σ_k N̂_k (r/d)^k and D = det(I + rA) = Σ_k ĉ_k (r/d)^k.
+/// An explicit tableau has ĉ_k = 0 and N̂_k = (−Â)^k, so D = 1. Every
+/// condition polynomial is then a positive multiple of one with integer
+/// coefficients (no rational is reduced), and the radius is bounded by D's
+/// least positive root.
+fn rational(a: &Matrix, b: &[Value]) -> Ssp {
     let s = b.len();
     let q = |v: &Value| v.as_rational().expect("rational").clone();
     let d = crate::arith::intgcd::lcm_all(
@@ -195,24 +181,75 @@ fn explicit_rational(a: &Matrix, b: &[Value]) -> Ssp {
     );
     let db =
         crate::arith::intgcd::lcm_all(b.iter().map(|x| x.as_rational().expect("rational").denom()));
-    let ai: Vec<Vec<BigInt>> =
-        a.iter().map(|r| r.iter().map(|x| scaled(&q(x), &d)).collect()).collect();
+    let bm: Vec<Vec<BigInt>> =
+        a.iter().map(|r| r.iter().map(|x| -scaled(&q(x), &d)).collect()).collect();
     let bi: Vec<BigInt> = b.iter().map(|x| scaled(&q(x), &db)).collect();
-    // powers[k] = Â^k, up to the last nonzero one (Â is nilpotent).
+    let (ns, cs) = faddeev_leverrier(&bm);
+    let m = ns.len();
+    // The polynomial kept of numerators n_k over base·d^k is
+    // Σ n_k d^(deg−k) r^k, base·d^deg times the condition.
+    let mut numerators: Vec<Vec<BigInt>> = Vec::new();
+    for i in 0..s {
+        for j in 0..s {
+            // (A·adj)_ij = Σ_k r^k (ÂN̂_k)_ij / d^(k+1): base d.
+            numerators.push(
+                ns.iter().map(|n| -(0..s).map(|l| &bm[i][l] * &n[l][j]).sum::<BigInt>()).collect(),
+            );
+        }
+    }
+    let bn: Vec<Vec<BigInt>> = ns
+        .iter()
+        .map(|n| (0..s).map(|j| (0..s).map(|l| &bi[l] * &n[l][j]).sum()).collect())
+        .collect();
+    // (bᵀadj)_j = Σ_k r^k (b̂ᵀN̂_k)_j / (d_b d^k): base d_b.
+    numerators.extend((0..s).map(|j| bn.iter().map(|row| row[j].clone()).collect()));
+    let ne: Vec<Vec<BigInt>> =
+        ns.iter().map(|n| n.iter().map(|r| r.iter().sum()).collect()).collect();
+    // (adj·e)_i = Σ_k r^k (N̂_k e)_i / d^k: base 1.
+    numerators.extend((0..s).map(|i| ne.iter().map(|v| v[i].clone()).collect()));
+    // D − r bᵀadj e, times d_b: the coefficient of r^k over d^k is
+    // d_b ĉ_k − d·b̂ᵀN̂_(k−1)e.
+    let mut last: Vec<BigInt> = cs.iter().map(|c| &db * c).collect();
+    last.resize(last.len().max(m + 1), BigInt::zero());
+    for (k, row) in bn.iter().enumerate() {
+        last[k + 1] -= &d * row.iter().sum::<BigInt>();
+    }
+    numerators.push(last);
+    let over = |n: Vec<BigInt>| -> Option<Vec<BigInt>> {
+        let deg = n.iter().rposition(|x| !x.is_zero())?;
+        Some((0..=deg).map(|k| &n[k] * num_traits::pow(d.clone(), deg - k)).collect())
+    };
+    let bound = over(cs.clone()).filter(|c| c.len() > 1).and_then(|c| {
+        Algebraic::positive_roots(&UPoly::new(c.into_iter().map(Q::from_integer).collect()))
+            .into_iter()
+            .next()
+    });
+    let polys: Vec<Vec<BigInt>> = numerators.into_iter().filter_map(over).collect();
+    least_first_negative(polys, bound).map_or(Ssp::Unbounded, Ssp::Radius)
+}
+
+/// Faddeev–LeVerrier on an integer matrix B: N_0 = I, c_k = −tr(BN_(k−1))/k
+/// and N_k = BN_(k−1) + c_k I, so that det(λI − B) = Σ_k c_k λ^(s−k) and
+/// adj(λI − B) = Σ_k λ^(s−1−k) N_k. Returns the N_k up to the last nonzero
+/// one (an explicit tableau's B is nilpotent: its N_k = B^k end early) and
+/// c_0..c_s up to the last nonzero one.
+fn faddeev_leverrier(bm: &[Vec<BigInt>]) -> (Vec<Vec<Vec<BigInt>>>, Vec<BigInt>) {
+    let s = bm.len();
     let identity = (0..s)
         .map(|i| (0..s).map(|j| BigInt::from(u8::from(i == j))).collect())
         .collect::<Vec<Vec<BigInt>>>();
-    let mut powers = vec![identity];
-    loop {
-        let last = powers.last().expect("one");
-        let next: Vec<Vec<BigInt>> = (0..s)
+    let mut ns = vec![identity];
+    let mut cs = vec![BigInt::one()];
+    for k in 1..=s {
+        let last = ns.last().expect("one");
+        let mut next: Vec<Vec<BigInt>> = (0..s)
             .map(|i| {
                 (0..s)
                     .map(|j| {
                         let mut acc = BigInt::zero();
                         for l in 0..s {
-                            if !ai[i][l].is_zero() && !last[l][j].is_zero() {
-                                acc += &ai[i][l] * &last[l][j];
+                            if !bm[i][l].is_zero() && !last[l][j].is_zero() {
+                                acc += &bm[i][l] * &last[l][j];
                             }
                         }
                         acc
@@ -220,55 +257,22 @@ fn explicit_rational(a: &Matrix, b: &[Value]) -> Ssp {
                     .collect()
             })
             .collect();
+        let trace: BigInt = (0..s).map(|i| &next[i][i]).sum();
+        let c = -trace / BigInt::from(k);
+        for (i, row) in next.iter_mut().enumerate() {
+            row[i] += &c;
+        }
+        cs.push(c);
         if next.iter().flatten().all(Zero::is_zero) {
             break;
         }
-        powers.push(next);
+        ns.push(next);
     }
-    let m = powers.len();
-    let alt = |k: usize, x: BigInt| if k % 2 == 1 { -x } else { x };
-    // Numerators n_k of c_k = n_k/(base·d^k); the polynomial kept is
-    // Σ n_k d^(deg−k) r^k, base·d^deg times the condition.
-    let mut numerators: Vec<Vec<BigInt>> = Vec::new();
-    for i in 0..s {
-        for j in 0..s {
-            // (A·X)_ij = Σ_k (−r)^k (A^(k+1))_ij: base d.
-            numerators.push(
-                (0..m)
-                    .map(|k| match powers.get(k + 1) {
-                        Some(p) => alt(k, p[i][j].clone()),
-                        None => BigInt::zero(),
-                    })
-                    .collect(),
-            );
-        }
+    // Past the last N_k, every later c is 0 (N = 0 stays 0).
+    while cs.len() > 1 && cs.last().is_some_and(Zero::is_zero) {
+        cs.pop();
     }
-    let mut bpow: Vec<Vec<BigInt>> = Vec::with_capacity(m);
-    for p in &powers {
-        bpow.push((0..s).map(|j| (0..s).map(|l| &bi[l] * &p[l][j]).sum()).collect());
-    }
-    // (bᵀX)_j = Σ_k (−r)^k (bᵀA^k)_j: base d_b.
-    numerators.extend((0..s).map(|j| (0..m).map(|k| alt(k, bpow[k][j].clone())).collect()));
-    let pe: Vec<Vec<BigInt>> =
-        powers.iter().map(|p| p.iter().map(|r| r.iter().sum()).collect()).collect();
-    // (X·e)_i = Σ_k (−r)^k (A^k e)_i: base 1.
-    numerators.extend((0..s).map(|i| (0..m).map(|k| alt(k, pe[k][i].clone())).collect()));
-    // 1 − r bᵀXe = 1 + Σ_k (−1)^(k+1) r^(k+1) bᵀA^k e: base d_b, n_0 = d_b,
-    // n_(k+1) = (−1)^(k+1) d·b̂ᵀÂ^k e.
-    let mut last = vec![db.clone()];
-    for (k, row) in bpow.iter().enumerate() {
-        let bake: BigInt = row.iter().sum();
-        last.push(alt(k + 1, &d * bake));
-    }
-    numerators.push(last);
-    let polys: Vec<Vec<BigInt>> = numerators
-        .into_iter()
-        .filter_map(|n| {
-            let deg = n.iter().rposition(|x| !x.is_zero())?;
-            Some((0..=deg).map(|k| &n[k] * num_traits::pow(d.clone(), deg - k)).collect())
-        })
-        .collect();
-    least_first_negative(polys, None).map_or(Ssp::Unbounded, Ssp::Radius)
+    (ns, cs)
 }
 
 /// The least point after which one of the integer polynomials (lowest
@@ -476,110 +480,6 @@ fn explicit_conditions(a: &Matrix, b: &[Value]) -> Vec<RPoly> {
     }
     out.push(last);
     out
-}
-
-/// Implicit over Q: the same polynomials times D = det(I + rA), and D,
-/// interpolated from exact values at s + 1 rational points where I + rA is
-/// invertible.
-fn implicit_conditions(a: &Matrix, b: &[Value]) -> (Vec<RPoly>, UPoly) {
-    let s = b.len();
-    let aq: Vec<Vec<Q>> = a
-        .iter()
-        .map(|r| r.iter().map(|x| x.as_rational().expect("rational").clone()).collect())
-        .collect();
-    let bq: Vec<Q> = b.iter().map(|x| x.as_rational().expect("rational").clone()).collect();
-    let mut xs = Vec::new();
-    let mut values: Vec<Vec<Q>> = Vec::new();
-    let mut point = 0i64;
-    while xs.len() < s + 1 {
-        let r = Q::from_integer(point.into());
-        point += 1;
-        let m: Vec<Vec<Q>> = (0..s)
-            .map(|i| {
-                (0..s).map(|j| &r * &aq[i][j] + if i == j { Q::one() } else { Q::zero() }).collect()
-            })
-            .collect();
-        let Some((d, inv)) = det_inverse(m) else { continue };
-        let adj: Vec<Vec<Q>> = inv.iter().map(|row| row.iter().map(|x| x * &d).collect()).collect();
-        let mut v = Vec::new();
-        let column = |j: usize| adj.iter().map(move |row| &row[j]);
-        for row in &aq {
-            for j in 0..s {
-                v.push(row.iter().zip(column(j)).map(|(x, y)| x * y).sum());
-            }
-        }
-        for j in 0..s {
-            v.push(bq.iter().zip(column(j)).map(|(x, y)| x * y).sum());
-        }
-        let adj_e: Vec<Q> = adj.iter().map(|row| row.iter().sum()).collect();
-        v.extend(adj_e.iter().cloned());
-        let bxe: Q = bq.iter().zip(&adj_e).map(|(x, y)| x * y).sum();
-        v.push(&d - &r * bxe);
-        v.push(d);
-        xs.push(r);
-        values.push(v);
-    }
-    let count = values[0].len();
-    let mut polys: Vec<RPoly> = (0..count)
-        .map(|k| {
-            let ys: Vec<Q> = values.iter().map(|v| v[k].clone()).collect();
-            interpolate(&xs, &ys).coeffs().iter().cloned().map(Value::from).collect()
-        })
-        .collect();
-    let d = polys.pop().expect("D");
-    let d = UPoly::new(d.iter().map(|x| x.as_rational().expect("rational").clone()).collect());
-    (polys, d)
-}
-
-/// det(m) and m⁻¹ by Gauss–Jordan over Q; `None` when m is singular.
-fn det_inverse(mut m: Vec<Vec<Q>>) -> Option<(Q, Vec<Vec<Q>>)> {
-    let n = m.len();
-    for (i, row) in m.iter_mut().enumerate() {
-        row.extend((0..n).map(|j| if i == j { Q::one() } else { Q::zero() }));
-    }
-    let mut det = Q::one();
-    for col in 0..n {
-        let p = (col..n).find(|&i| !m[i][col].is_zero())?;
-        if p != col {
-            m.swap(col, p);
-            det = -det;
-        }
-        let piv = m[col][col].clone();
-        det *= &piv;
-        let inv = piv.recip();
-        for x in m[col].iter_mut() {
-            *x *= &inv;
-        }
-        for i in 0..n {
-            if i != col && !m[i][col].is_zero() {
-                let f = m[i][col].clone();
-                let pivot = m[col].clone();
-                for (x, y) in m[i].iter_mut().zip(&pivot) {
-                    *x -= &f * y;
-                }
-            }
-        }
-    }
-    Some((det, m.into_iter().map(|row| row[n..].to_vec()).collect()))
-}
-
-/// The polynomial of degree < n through the n points, by Newton's divided
-/// differences.
-fn interpolate(xs: &[Q], ys: &[Q]) -> UPoly {
-    let n = xs.len();
-    let mut c = ys.to_vec();
-    for k in 1..n {
-        for i in (k..n).rev() {
-            c[i] = (&c[i] - &c[i - 1]) / (&xs[i] - &xs[i - k]);
-        }
-    }
-    let mut p = UPoly::constant(c[n - 1].clone());
-    for i in (0..n - 1).rev() {
-        // p = p·(x − xs[i]) + c[i]
-        let shifted = &p * &UPoly::new(vec![-xs[i].clone(), Q::one()]);
-        p = &shifted + &UPoly::constant(c[i].clone());
-    }
-    p
 }
 
 /// P(x) at a rational x.

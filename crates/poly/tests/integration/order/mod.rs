@@ -647,6 +647,21 @@ proptest! {
         ssp_checked("random", &t);
     }
 
+    /// Random implicit tableaux with nonnegative entries (diagonally
+    /// implicit, and full): the exact radius, whose polynomials and D come
+    /// from Faddeev–LeVerrier on integers, against exact tests at rational
+    /// points, which invert I + rK.
+    #[test]
+    fn ssp_random_implicit(entries in proptest::collection::vec(0i64..4, 9), b in proptest::collection::vec(0i64..4, 3), full in proptest::bool::ANY) {
+        let x = |n: i64| e(&format!("{n}/4"));
+        let a = (0..3)
+            .map(|i| (0..3).map(|j| if full || j <= i { x(entries[3 * i + j]) } else { e("0") }).collect())
+            .collect();
+        let b: Vec<Exact> = b.iter().map(|&n| e(&format!("{n}/5"))).collect();
+        let t = Tableau::new("r", a, b, None).unwrap();
+        ssp_checked("random implicit", &t);
+    }
+
     /// PSD by elimination = PSD by all principal minors.
     #[test]
     fn psd_against_principal_minors(
