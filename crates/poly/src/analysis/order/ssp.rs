@@ -191,9 +191,21 @@ fn rational(a: &Matrix, b: &[Value]) -> Ssp {
     let mut numerators: Vec<Vec<BigInt>> = Vec::new();
     for i in 0..s {
         for j in 0..s {
-            // (A·adj)_ij = Σ_k r^k (ÂN̂_k)_ij / d^(k+1): base d.
+            // (A·adj)_ij = Σ_k r^k (ÂN̂_k)_ij / d^(k+1): base d, with
+            // ÂN̂_k = ĉ_(k+1) I − N̂_(k+1) (no product: N̂_(k+1) = B̂N̂_k + ĉ_(k+1) I).
             numerators.push(
-                ns.iter().map(|n| -(0..s).map(|l| &bm[i][l] * &n[l][j]).sum::<BigInt>()).collect(),
+                (0..m)
+                    .map(|k| {
+                        let c = match (i == j, cs.get(k + 1)) {
+                            (true, Some(c)) => c.clone(),
+                            _ => BigInt::zero(),
+                        };
+                        match ns.get(k + 1) {
+                            Some(n) => c - &n[i][j],
+                            None => c,
+                        }
+                    })
+                    .collect(),
             );
         }
     }
