@@ -5,6 +5,7 @@
 //! Imports nothing from the crate above it.
 
 pub(crate) mod fixed;
+pub(crate) mod int;
 pub(crate) mod intgcd;
 pub(crate) mod rational;
 pub(crate) mod zp;

@@ -21,6 +21,7 @@ use std::collections::BTreeMap;
 use super::trees::Forest;
 use super::value::{all_rational, inverse_int, over_common, Matrix, Value};
 use crate::arith::fixed::Fixed;
+use crate::arith::int::Int;
 use crate::arith::rational::ratio;
 use crate::multivariate::constants::generator_of;
 use crate::multivariate::poly::Monomial;
@@ -42,22 +43,22 @@ trait Ring: Clone {
     fn times(&self, o: &Self, ctx: &Self::Ctx) -> Self;
 }
 
-impl Ring for BigInt {
+impl Ring for Int {
     type Ctx = ();
     fn zero_in(_: &()) -> Self {
-        Zero::zero()
+        Int::ZERO
     }
     fn one_in(_: &()) -> Self {
-        One::one()
+        Int::ONE
     }
     fn vanishes(&self) -> bool {
-        Zero::is_zero(self)
+        self.is_zero()
     }
     fn add_mul(&mut self, a: &Self, b: &Self, _: &()) {
-        *self += a * b;
+        Int::add_mul(self, a, b);
     }
     fn times(&self, o: &Self, _: &()) -> Self {
-        self * o
+        self.mul(o)
     }
 }
 
@@ -283,7 +284,7 @@ enum Route {
     /// `approx`, the same weights in fixed point, made when a tolerance is
     /// first asked.
     Integer {
-        engine: Engine<BigInt>,
+        engine: Engine<Int>,
         d: BigInt,
         scales: Vec<BigInt>,
         approx: Option<Box<Engine<Fixed>>>,
@@ -374,13 +375,13 @@ impl Weights {
             let (d, flat_a) = scale(&a.iter().flatten().flatten().collect::<Vec<_>>());
             let (db, flat_b) = scale(&b.iter().flatten().collect::<Vec<_>>());
             let s = b[0].len();
-            let mut it = flat_a.into_iter();
-            let ma: Vec<Vec<Vec<BigInt>>> = a
+            let mut it = flat_a.into_iter().map(Int::from_big);
+            let ma: Vec<Vec<Vec<Int>>> = a
                 .iter()
                 .map(|m| m.iter().map(|_| it.by_ref().take(s).collect()).collect())
                 .collect();
-            let mut it = flat_b.into_iter();
-            let mb: Vec<Vec<BigInt>> = b.iter().map(|_| it.by_ref().take(s).collect()).collect();
+            let mut it = flat_b.into_iter().map(Int::from_big);
+            let mb: Vec<Vec<Int>> = b.iter().map(|_| it.by_ref().take(s).collect()).collect();
             Route::Integer { engine: Engine::new((), ma, mb), scales: vec![db], d, approx: None }
         } else if let Some((engine, d, db)) = dense(a, b) {
             Route::Dense { engine, d, scales: vec![db] }
@@ -420,9 +421,10 @@ impl Weights {
         self.ensure(t);
         let edges = self.forest.trees[t].order() - 1;
         match &mut self.route {
-            Route::Integer { engine, d, scales, .. } => {
-                Value::from(ratio(engine.raw[t].clone(), scale_of(scales, d, edges).clone()))
-            }
+            Route::Integer { engine, d, scales, .. } => Value::from(ratio(
+                engine.raw[t].big().into_owned(),
+                scale_of(scales, d, edges).clone(),
+            )),
             Route::Dense { engine, d, scales } => {
                 let scale = scale_of(scales, d, edges);
                 let basis = &engine.ctx;
@@ -447,7 +449,7 @@ impl Weights {
             // (b̂·ĝ_t·γ − d_b·d^(|t|−1)) / (γ·d_b·d^(|t|−1)), reduced once.
             let scale = scale_of(scales, d, self.forest.trees[t].order() - 1);
             let gamma = BigInt::from(gamma);
-            return Value::from(ratio(&engine.raw[t] * &gamma - scale, gamma * scale));
+            return Value::from(ratio(&*engine.raw[t].big() * &gamma - scale, gamma * scale));
         }
         self.phi(t).sub(&inverse_int(gamma))
     }
@@ -459,7 +461,7 @@ impl Weights {
         match &mut self.route {
             Route::Integer { engine, d, scales, .. } => {
                 let scale = scale_of(scales, d, tree.order() - 1);
-                &engine.raw[t] * BigInt::from(tree.density()) == *scale
+                &*engine.raw[t].big() * BigInt::from(tree.density()) == *scale
             }
             Route::Dense { engine, d, scales } => {
                 let scale = scale_of(scales, d, tree.order() - 1);
@@ -485,7 +487,7 @@ impl Weights {
         if let Route::Integer { engine, d, scales, approx } = &mut self.route {
             let approx = approx.get_or_insert_with(|| {
                 let db = &scales[0];
-                Box::new(engine.map(|x, in_a| Fixed::ratio(x, if in_a { d } else { db })))
+                Box::new(engine.map(|x, in_a| Fixed::ratio(&x.big(), if in_a { d } else { db })))
             });
             if approx.raw.len() <= t {
                 approx.extend(self.forest, t + 1);
@@ -507,7 +509,7 @@ impl Weights {
             Route::Integer { engine, d, scales, .. } => {
                 let scale = scale_of(scales, d, tree.order() - 1);
                 let gamma = BigInt::from(tree.density());
-                let gap = (&engine.raw[t] * &gamma - scale).abs();
+                let gap = (&*engine.raw[t].big() * &gamma - scale).abs();
                 gap * tolerance.denom() <= tolerance.numer() * gamma * scale
             }
             Route::Dense { .. } => self.holds(t) || self.residual(t).within(tolerance),
