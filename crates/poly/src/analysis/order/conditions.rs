@@ -11,7 +11,10 @@
 //! Rational entries take an integer route: with A = Â/d and b = b̂/d_b over
 //! common denominators, Φ(t) = b̂·ĝ_t / (d_b·d^(|t|−1)), so the condition is
 //! one integer identity b̂·ĝ_t·γ(t) = d_b·d^(|t|−1) and no rational is
-//! reduced per product. Entries with radicals take the field route.
+//! reduced per product. Entries with radicals take the dense route: the
+//! same, on integer coordinates over the field's basis, and past
+//! [`MAX_DENSE_BASIS`] the field route. The integers are [`Int`]s: machine
+//! words while they fit.
 
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
@@ -107,7 +110,7 @@ impl Ring for Fixed {
 struct Basis {
     monomials: Vec<Monomial>,
     index: BTreeMap<Monomial, usize>,
-    table: Vec<Vec<(usize, BigInt)>>,
+    table: Vec<Vec<(usize, Int)>>,
 }
 
 impl Basis {
@@ -155,7 +158,7 @@ impl Basis {
                                 }
                             })
                             .collect();
-                        (position(&sum), factor)
+                        (position(&sum), Int::from_big(factor))
                     })
                     .collect()
             })
@@ -166,29 +169,29 @@ impl Basis {
 
 /// An element of the number field with integer coordinates on [`Basis`].
 #[derive(Clone)]
-struct Dense(Vec<BigInt>);
+struct Dense(Vec<Int>);
 
 impl Ring for Dense {
     type Ctx = Basis;
     fn zero_in(ctx: &Basis) -> Self {
-        Dense(vec![BigInt::zero(); ctx.monomials.len()])
+        Dense(vec![Int::ZERO; ctx.monomials.len()])
     }
     fn one_in(ctx: &Basis) -> Self {
         let mut v = Dense::zero_in(ctx);
-        v.0[0] = BigInt::one();
+        v.0[0] = Int::ONE;
         v
     }
     fn vanishes(&self) -> bool {
-        self.0.iter().all(Zero::is_zero)
+        self.0.iter().all(Int::is_zero)
     }
     fn add_mul(&mut self, a: &Self, b: &Self, ctx: &Basis) {
         for (i, x) in a.0.iter().enumerate().filter(|(_, x)| !x.is_zero()) {
             for (j, y) in b.0.iter().enumerate().filter(|(_, y)| !y.is_zero()) {
                 let (k, f) = &ctx.table[i][j];
-                if f.is_one() {
-                    self.0[*k] += x * y;
+                if matches!(f, Int::Small(1)) {
+                    self.0[*k].add_mul(x, y);
                 } else {
-                    self.0[*k] += x * y * f;
+                    self.0[*k].add_mul(&x.mul(y), f);
                 }
             }
         }
@@ -329,7 +332,7 @@ fn dense(a: &[Matrix], b: &[Vec<Value>]) -> Option<(Engine<Dense>, BigInt, BigIn
         let d = crate::arith::intgcd::lcm_all(cs.iter().flatten().map(|q| q.denom()));
         let ints = cs
             .iter()
-            .map(|c| Dense(c.iter().map(|q| q.numer() * (&d / q.denom())).collect()))
+            .map(|c| Dense(c.iter().map(|q| Int::from_big(q.numer() * (&d / q.denom()))).collect()))
             .collect();
         Some((d, ints))
     };
@@ -434,7 +437,7 @@ impl Weights {
                         .iter()
                         .zip(&basis.monomials)
                         .filter(|(c, _)| !c.is_zero())
-                        .map(|(c, m)| (ratio(c.clone(), scale.clone()), m.clone())),
+                        .map(|(c, m)| (ratio(c.big().into_owned(), scale.clone()), m.clone())),
                 ))
             }
             Route::Field(engine) => engine.raw[t].clone(),
@@ -466,8 +469,8 @@ impl Weights {
             Route::Dense { engine, d, scales } => {
                 let scale = scale_of(scales, d, tree.order() - 1);
                 let raw = &engine.raw[t].0;
-                &raw[0] * BigInt::from(tree.density()) == *scale
-                    && raw[1..].iter().all(Zero::is_zero)
+                raw[1..].iter().all(Int::is_zero)
+                    && &*raw[0].big() * BigInt::from(tree.density()) == *scale
             }
             Route::Field(_) => self.residual(t).is_zero(),
         }
