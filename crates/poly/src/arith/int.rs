@@ -72,6 +72,33 @@ impl Int {
     }
 }
 
+impl From<usize> for Int {
+    fn from(n: usize) -> Int {
+        Int::Small(n as i128)
+    }
+}
+
+/// Equal values: a big one may hold a value that would fit.
+impl PartialEq for Int {
+    fn eq(&self, o: &Int) -> bool {
+        match (self, o) {
+            (Int::Small(x), Int::Small(y)) => x == y,
+            _ => *self.big() == *o.big(),
+        }
+    }
+}
+
+/// Σ xᵢ·yᵢ.
+pub(crate) fn dot<'a>(xs: impl IntoIterator<Item = (&'a Int, &'a Int)>) -> Int {
+    let mut acc = Int::ZERO;
+    for (x, y) in xs {
+        if !x.is_zero() && !y.is_zero() {
+            acc.add_mul(x, y);
+        }
+    }
+    acc
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -103,6 +130,10 @@ mod tests {
                 prop_assert_eq!(&*p.big(), &(a * b));
                 prop_assert_eq!(matches!(p, Int::Small(_)), (a * b).to_i128().is_some());
                 prop_assert_eq!(acc.is_zero(), oracle.is_zero());
+                // Equality by value, small or big.
+                prop_assert!(acc == Int::from_big(oracle.clone()));
+                prop_assert!(Int::Big(oracle.clone()) == acc);
+                prop_assert_eq!(acc == ia, oracle == *a);
             }
         }
     }

@@ -12,10 +12,11 @@
 use std::cmp::Ordering;
 
 use num_bigint::BigInt;
-use num_traits::{One, Zero};
+use num_traits::Zero;
 
 use super::psd::positive_semidefinite;
 use super::value::{over_common, Matrix, Value};
+use crate::arith::int::{dot as int_dot, Int};
 use crate::Q;
 
 /// The entries a tableau's scale-free questions (reduction, symmetry,
@@ -102,23 +103,28 @@ fn linear_order_int(a: &Matrix, b: &[Value]) -> Option<usize> {
     let qa: Vec<&Q> = a.iter().flatten().map(Value::as_rational).collect::<Option<_>>()?;
     let qb: Vec<&Q> = b.iter().map(Value::as_rational).collect::<Option<_>>()?;
     let s = b.len();
-    let (d, ai) = over_common(&qa);
-    let (db, bi) = over_common(&qb);
-    let rows: Vec<Vec<(usize, &BigInt)>> = (0..s)
+    let (d, ai) = ints(&qa);
+    let (db, bi) = ints(&qb);
+    let rows: Vec<Vec<(usize, &Int)>> = (0..s)
         .map(|i| (0..s).map(|j| (j, &ai[i * s + j])).filter(|(_, x)| !x.is_zero()).collect())
         .collect();
-    let mut v = vec![BigInt::one(); s];
-    let (mut fact, mut scale) = (BigInt::one(), db);
+    let mut v = vec![Int::ONE; s];
+    let (mut fact, mut scale) = (Int::ONE, db);
     for k in 1..=2 * s + 2 {
-        fact *= BigInt::from(k);
-        let bv: BigInt = bi.iter().zip(&v).filter(|(x, _)| !x.is_zero()).map(|(x, y)| x * y).sum();
-        if &fact * bv != scale {
+        fact = fact.mul(&Int::from(k));
+        if fact.mul(&int_dot(bi.iter().zip(&v))) != scale {
             return Some(k - 1);
         }
-        v = rows.iter().map(|r| r.iter().map(|(j, x)| *x * &v[*j]).sum()).collect();
-        scale *= &d;
+        v = rows.iter().map(|r| int_dot(r.iter().map(|(j, x)| (*x, &v[*j])))).collect();
+        scale = scale.mul(&d);
     }
     Some(2 * s + 2)
+}
+
+/// [`over_common`] as [`Int`]s.
+fn ints(xs: &[&Q]) -> (Int, Vec<Int>) {
+    let (d, v) = over_common(xs);
+    (Int::from_big(d), v.into_iter().map(Int::from_big).collect())
 }
 
 /// 1/k! as a value.
@@ -203,26 +209,26 @@ impl Rk {
         let qb: Vec<&Q> = self.b.iter().map(Value::as_rational).collect::<Option<_>>()?;
         let qc: Vec<&Q> = c.iter().map(Value::as_rational).collect::<Option<_>>()?;
         let s = self.stages();
-        let (d, ai) = over_common(&qa);
-        let (db, bi) = over_common(&qb);
-        let (dc, ci) = over_common(&qc);
-        let mut ck1 = vec![BigInt::one(); s];
-        let mut dck1 = BigInt::one();
+        let (d, ai) = ints(&qa);
+        let (db, bi) = ints(&qb);
+        let (dc, ci) = ints(&qc);
+        let mut ck1 = vec![Int::ONE; s];
+        let mut dck1 = Int::ONE;
         for k in 1..=2 * s + 1 {
-            let kk = BigInt::from(k);
-            let ck: Vec<BigInt> = ck1.iter().zip(&ci).map(|(x, y)| x * y).collect();
-            let bc: BigInt = bi.iter().zip(&ck1).map(|(x, y)| x * y).sum();
-            let weights = &kk * bc == &db * &dck1;
+            let kk = Int::from(k);
+            let ck: Vec<Int> = ck1.iter().zip(&ci).map(|(x, y)| x.mul(y)).collect();
+            let weights = kk.mul(&int_dot(bi.iter().zip(&ck1))) == db.mul(&dck1);
+            let kdc = kk.mul(&dc);
             let stage = weights
                 && (0..s).all(|i| {
-                    let row: BigInt = (0..s).map(|j| &ai[i * s + j] * &ck1[j]).sum();
-                    &kk * &dc * row == &d * &ck[i]
+                    let row = int_dot((0..s).map(|j| (&ai[i * s + j], &ck1[j])));
+                    kdc.mul(&row) == d.mul(&ck[i])
                 });
             if !stage {
                 return Some(k - 1);
             }
             ck1 = ck;
-            dck1 *= &dc;
+            dck1 = dck1.mul(&dc);
         }
         Some(2 * s + 1)
     }
@@ -486,6 +492,24 @@ mod tests {
         let rk = Rk { a: a.clone(), b: b.clone() };
         let c = rk.row_sums();
         assert_eq!((linear_order_int(&a, &b), linear_order_values(&a, &b)), (Some(4), 4));
+        assert_eq!((rk.stage_order_int(&c), rk.stage_order_values(&c)), (Some(1), 1));
+    }
+
+    /// A two-stage order-2 pair with 21-digit entries (c₂ = p/q, b₂ =
+    /// 1/(2c₂)): past i128 at the first products, the integer route goes on
+    /// in big integers and agrees with the values.
+    #[test]
+    fn big_entries_on_both_routes() {
+        let c2 = Value::from(Q::new(
+            "123456789012345678901".parse().unwrap(),
+            "987654321098765432109".parse().unwrap(),
+        ));
+        let b2 = Value::one().mul(&c2.add(&c2).inverse().unwrap());
+        let a = vec![vec![Value::zero(), Value::zero()], vec![c2.clone(), Value::zero()]];
+        let b = vec![Value::one().sub(&b2), b2];
+        let rk = Rk { a: a.clone(), b: b.clone() };
+        let c = rk.row_sums();
+        assert_eq!((linear_order_int(&a, &b), linear_order_values(&a, &b)), (Some(2), 2));
         assert_eq!((rk.stage_order_int(&c), rk.stage_order_values(&c)), (Some(1), 1));
     }
 }
