@@ -134,7 +134,9 @@ impl NativeMethod {
         modified: Option<usize>,
         tolerance: Option<String>,
     ) -> PyResult<String> {
-        run(py, || json(api::order(&self.inner, modified, tolerance.as_deref())))
+        run(py, || {
+            api::order_text(&self.inner, modified, tolerance.as_deref()).map_err(|e| message(&e))
+        })
     }
 
     /// `zcheck map --format json`.

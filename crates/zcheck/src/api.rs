@@ -61,6 +61,17 @@ pub fn multistep(name: &str, alpha: &[&str], beta: &[&str]) -> Result<LoadedMeth
     Ok(LoadedMethod::with_reading(method, reading))
 }
 
+/// A method's nonlinear reading, or the error that says it has none.
+fn reading_of(method: &LoadedMethod) -> Result<&crate::readings::Reading, Error> {
+    method.reading().ok_or_else(|| {
+        Error::method(format!(
+            "{}: no nonlinear reading (a tableau, pair, splitting or multistep method): a .zm \
+             program is the method on the oscillator or on y' = λy only",
+            method.method().name()
+        ))
+    })
+}
+
 /// `zcheck order --format json` of one method: the classical order and what
 /// follows it, with `--modified N` and `--tolerance T` (exact text).
 pub fn order(
@@ -70,14 +81,21 @@ pub fn order(
 ) -> Result<Value, Error> {
     use crate::answers::order::{report, to_json, Request};
     let request = Request::parse(modified, tolerance)?;
-    let reading = method.reading().ok_or_else(|| {
-        Error::method(format!(
-            "{}: no nonlinear reading (a tableau, pair, splitting or multistep method): a .zm \
-             program is the method on the oscillator or on y' = λy only",
-            method.method().name()
-        ))
-    })?;
+    let reading = reading_of(method)?;
     Ok(to_json(reading, &report(reading, &request)?))
+}
+
+/// [`order`]'s document as compact JSON text, written straight from the
+/// report (the same text as [`order`]'s tree printed by `serde_json`).
+pub fn order_text(
+    method: &LoadedMethod,
+    modified: Option<usize>,
+    tolerance: Option<&str>,
+) -> Result<String, Error> {
+    use crate::answers::order::{report, to_json_text, Request};
+    let request = Request::parse(modified, tolerance)?;
+    let reading = reading_of(method)?;
+    Ok(to_json_text(reading, &report(reading, &request)?))
 }
 
 /// `zcheck derive --format json`: M(z), P, χ(z) and, for an implicit

@@ -18,8 +18,10 @@
 
 use std::fmt::Write as _;
 
+use num_traits::ToPrimitive;
 use poly::advanced::order::{self, Kind, Options, Order, OrderReport, Ssp};
 use poly::Q;
+use serde::Serialize;
 use serde_json::{json, Value};
 
 use super::exact::{constant, infinity, number};
@@ -125,71 +127,163 @@ pub(crate) fn order_json(o: Option<Order>) -> (Value, Value) {
     }
 }
 
-fn set_order(v: &mut Value, key: &str, o: Option<Order>) {
-    let (exact, at_least) = order_json(o);
-    v[key] = exact;
-    v[format!("{key}_at_least")] = at_least;
+/// The JSON object of `zcheck order` for one method, as a tree.
+pub(crate) fn to_json(reading: &Reading, r: &OrderReport) -> Value {
+    serde_json::to_value(Document::of(reading, r)).expect("a document serializes")
 }
 
-/// The JSON object of `zcheck order` for one method.
-pub(crate) fn to_json(reading: &Reading, r: &OrderReport) -> Value {
-    let value = |x: &order::Value| constant(&x.to_poly());
-    let mut v = json!({
-        "method": reading.name,
-        "kind": r.kind.name(),
-        "reading": reading.about,
-    });
-    set_order(&mut v, "order", Some(r.order));
-    set_order(&mut v, "linear_order", Some(r.linear_order));
-    v["stage_order"] = json!(r.stage_order);
-    v["algebraically_stable"] = json!(r.algebraically_stable);
-    v["symplectic"] = json!(r.symplectic);
-    v["reducible"] = json!(r.reducible);
-    v["symmetric"] = json!(r.symmetric);
-    v["ssp_coefficient"] = match &r.ssp_coefficient {
-        None => Value::Null,
-        Some(Ssp::Unbounded) => infinity(),
-        Some(Ssp::Radius(a)) => number(a, "r"),
-    };
-    set_order(&mut v, "embedded_order", r.embedded_order);
-    set_order(&mut v, "embedded_linear_order", r.embedded_linear_order);
-    v["failed_conditions"] = json!(r.failed_conditions.as_ref().map(|f| {
-        f.iter()
-            .map(|c| {
-                json!({
-                    "tree": c.tree,
-                    "differential": c.differential,
-                    "residual": value(&c.residual),
-                })
-            })
-            .collect::<Vec<_>>()
-    }));
-    v["modified_equation"] = json!(r.modified_equation.as_ref().map(|terms| {
-        terms
-            .iter()
-            .map(|t| {
-                json!({
-                    "power": t.power,
-                    "tree": t.tree,
-                    "differential": t.differential,
-                    "coefficient": value(&t.coefficient),
-                })
-            })
-            .collect::<Vec<_>>()
-    }));
-    let tolerance_order = |t: &Option<poly::advanced::order::ToleranceOrder>| match t {
-        None => Value::Null,
-        Some(t) => {
-            let mut w =
-                json!({ "tolerance": constant(&poly::Poly::constant(t.tolerance.clone())) });
-            set_order(&mut w, "order", Some(t.order));
-            w
+/// The JSON text of `zcheck order` for one method, compact: the same as
+/// [`to_json`]'s tree printed, written straight from the report (no tree is
+/// built; the keys are serialized in the tree's sorted order).
+pub(crate) fn to_json_text(reading: &Reading, r: &OrderReport) -> String {
+    serde_json::to_string(&Document::of(reading, r)).expect("a document serializes")
+}
+
+/// The document, field by field, in the sorted order of a JSON object's
+/// keys (a test holds it to the tree built key by key).
+#[derive(Serialize)]
+struct Document<'a> {
+    algebraically_stable: Option<bool>,
+    embedded_linear_order: Option<usize>,
+    embedded_linear_order_at_least: Option<usize>,
+    embedded_order: Option<usize>,
+    embedded_order_at_least: Option<usize>,
+    embedded_order_within_tolerance: Option<Within>,
+    failed_conditions: Option<Vec<Failed<'a>>>,
+    kind: &'static str,
+    linear_order: Option<usize>,
+    linear_order_at_least: Option<usize>,
+    method: &'a str,
+    modified_equation: Option<Vec<Term<'a>>>,
+    notes: &'a [String],
+    order: Option<usize>,
+    order_at_least: Option<usize>,
+    order_within_tolerance: Option<Within>,
+    reading: Option<&'static str>,
+    reducible: Option<bool>,
+    ssp_coefficient: Value,
+    stage_order: Option<usize>,
+    symmetric: Option<bool>,
+    symplectic: Option<bool>,
+}
+
+#[derive(Serialize)]
+struct Failed<'a> {
+    differential: &'a str,
+    residual: Constant,
+    tree: &'a str,
+}
+
+#[derive(Serialize)]
+struct Term<'a> {
+    coefficient: Constant,
+    differential: &'a str,
+    power: usize,
+    tree: &'a str,
+}
+
+#[derive(Serialize)]
+struct Within {
+    order: Option<usize>,
+    order_at_least: Option<usize>,
+    tolerance: Constant,
+}
+
+/// `{"exact", "value"}` of a constant of the method's field.
+#[derive(Serialize)]
+struct Constant {
+    exact: String,
+    value: Option<f64>,
+}
+
+impl Constant {
+    fn of(x: &order::Value) -> Constant {
+        match x.as_rational() {
+            Some(q) => Constant::rational(q),
+            None => {
+                let v = constant(&x.to_poly());
+                Constant {
+                    exact: v["exact"].as_str().expect("text").to_owned(),
+                    value: v["value"].as_f64(),
+                }
+            }
         }
-    };
-    v["order_within_tolerance"] = tolerance_order(&r.order_within_tolerance);
-    v["embedded_order_within_tolerance"] = tolerance_order(&r.embedded_order_within_tolerance);
-    v["notes"] = json!(r.notes);
-    v
+    }
+
+    fn rational(q: &Q) -> Constant {
+        Constant { exact: q.to_string(), value: q.to_f64() }
+    }
+}
+
+/// An order as `(number, at_least)`, one of them `None`.
+fn split(o: Option<Order>) -> (Option<usize>, Option<usize>) {
+    match o {
+        Some(Order::Exact(p)) => (Some(p), None),
+        Some(Order::AtLeast(p)) => (None, Some(p)),
+        None => (None, None),
+    }
+}
+
+impl<'a> Document<'a> {
+    fn of(reading: &'a Reading, r: &'a OrderReport) -> Document<'a> {
+        let (order, order_at_least) = split(Some(r.order));
+        let (linear_order, linear_order_at_least) = split(Some(r.linear_order));
+        let (embedded_order, embedded_order_at_least) = split(r.embedded_order);
+        let (embedded_linear_order, embedded_linear_order_at_least) =
+            split(r.embedded_linear_order);
+        let within = |t: &Option<poly::advanced::order::ToleranceOrder>| {
+            t.as_ref().map(|t| {
+                let (order, order_at_least) = split(Some(t.order));
+                Within { order, order_at_least, tolerance: Constant::rational(&t.tolerance) }
+            })
+        };
+        Document {
+            algebraically_stable: r.algebraically_stable,
+            embedded_linear_order,
+            embedded_linear_order_at_least,
+            embedded_order,
+            embedded_order_at_least,
+            embedded_order_within_tolerance: within(&r.embedded_order_within_tolerance),
+            failed_conditions: r.failed_conditions.as_ref().map(|f| {
+                f.iter()
+                    .map(|c| Failed {
+                        differential: &c.differential,
+                        residual: Constant::of(&c.residual),
+                        tree: &c.tree,
+                    })
+                    .collect()
+            }),
+            kind: r.kind.name(),
+            linear_order,
+            linear_order_at_least,
+            method: &reading.name,
+            modified_equation: r.modified_equation.as_ref().map(|terms| {
+                terms
+                    .iter()
+                    .map(|t| Term {
+                        coefficient: Constant::of(&t.coefficient),
+                        differential: &t.differential,
+                        power: t.power,
+                        tree: &t.tree,
+                    })
+                    .collect()
+            }),
+            notes: &r.notes,
+            order,
+            order_at_least,
+            order_within_tolerance: within(&r.order_within_tolerance),
+            reading: reading.about,
+            reducible: r.reducible,
+            ssp_coefficient: match &r.ssp_coefficient {
+                None => Value::Null,
+                Some(Ssp::Unbounded) => infinity(),
+                Some(Ssp::Radius(a)) => number(a, "r"),
+            },
+            stage_order: r.stage_order,
+            symmetric: r.symmetric,
+            symplectic: r.symplectic,
+        }
+    }
 }
 
 fn show_order(o: Order) -> String {
@@ -307,5 +401,112 @@ pub(crate) fn document(readings: &[(String, Reading, OrderReport)]) -> Value {
         docs.into_iter().next().expect("one document")
     } else {
         Value::Array(docs)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn set_order(v: &mut Value, key: &str, o: Option<Order>) {
+        let (exact, at_least) = order_json(o);
+        v[key] = exact;
+        v[format!("{key}_at_least")] = at_least;
+    }
+
+    /// The document built key by key as a tree: the oracle of [`Document`].
+    pub(crate) fn to_json_by_keys(reading: &Reading, r: &OrderReport) -> Value {
+        let value = |x: &order::Value| constant(&x.to_poly());
+        let mut v = json!({
+            "method": reading.name,
+            "kind": r.kind.name(),
+            "reading": reading.about,
+        });
+        set_order(&mut v, "order", Some(r.order));
+        set_order(&mut v, "linear_order", Some(r.linear_order));
+        v["stage_order"] = json!(r.stage_order);
+        v["algebraically_stable"] = json!(r.algebraically_stable);
+        v["symplectic"] = json!(r.symplectic);
+        v["reducible"] = json!(r.reducible);
+        v["symmetric"] = json!(r.symmetric);
+        v["ssp_coefficient"] = match &r.ssp_coefficient {
+            None => Value::Null,
+            Some(Ssp::Unbounded) => infinity(),
+            Some(Ssp::Radius(a)) => number(a, "r"),
+        };
+        set_order(&mut v, "embedded_order", r.embedded_order);
+        set_order(&mut v, "embedded_linear_order", r.embedded_linear_order);
+        v["failed_conditions"] = json!(r.failed_conditions.as_ref().map(|f| {
+            f.iter()
+                .map(|c| {
+                    json!({
+                        "tree": c.tree,
+                        "differential": c.differential,
+                        "residual": value(&c.residual),
+                    })
+                })
+                .collect::<Vec<_>>()
+        }));
+        v["modified_equation"] = json!(r.modified_equation.as_ref().map(|terms| {
+            terms
+                .iter()
+                .map(|t| {
+                    json!({
+                        "power": t.power,
+                        "tree": t.tree,
+                        "differential": t.differential,
+                        "coefficient": value(&t.coefficient),
+                    })
+                })
+                .collect::<Vec<_>>()
+        }));
+        let tolerance_order = |t: &Option<poly::advanced::order::ToleranceOrder>| match t {
+            None => Value::Null,
+            Some(t) => {
+                let mut w =
+                    json!({ "tolerance": constant(&poly::Poly::constant(t.tolerance.clone())) });
+                set_order(&mut w, "order", Some(t.order));
+                w
+            }
+        };
+        v["order_within_tolerance"] = tolerance_order(&r.order_within_tolerance);
+        v["embedded_order_within_tolerance"] = tolerance_order(&r.embedded_order_within_tolerance);
+        v["notes"] = json!(r.notes);
+        v
+    }
+
+    /// The document written straight from the report is the tree built key
+    /// by key, printed: on NodePy's 50 RK methods and every built-in reading
+    /// (tableaux, pairs, partitioned pairs, splittings, multistep), with
+    /// and without a modified equation and a tolerance.
+    #[test]
+    fn document_is_the_tree_built_key_by_key() {
+        let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/nodepy/rk");
+        let mut readings: Vec<Reading> = std::fs::read_dir(dir)
+            .expect("the catalogue")
+            .map(|e| e.expect("an entry").path())
+            .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+            .map(|p| {
+                let (shown, stem, text) = crate::tableau::read_file(&p).expect("reads");
+                Reading::parse_bound(&shown, &stem, &text, &[]).expect("parses").0
+            })
+            .collect();
+        readings.extend(
+            crate::readings::BUILTIN_READINGS
+                .iter()
+                .map(|(name, _, _)| Reading::builtin(name).expect("a built-in").expect("reads")),
+        );
+        let asks = [Request::default(), Request::parse(Some(3), Some("1e-10")).expect("a request")];
+        let mut compared = 0;
+        for g in &readings {
+            for ask in &asks {
+                let r = report(g, ask).expect("a report");
+                let tree = serde_json::to_string(&to_json_by_keys(g, &r)).expect("prints");
+                assert_eq!(to_json_text(g, &r), tree, "{}", g.name);
+                assert_eq!(serde_json::to_string(&to_json(g, &r)).expect("prints"), tree);
+                compared += 1;
+            }
+        }
+        assert!(compared >= 2 * (50 + crate::readings::BUILTIN_READINGS.len()), "{compared}");
     }
 }
