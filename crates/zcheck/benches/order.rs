@@ -26,9 +26,10 @@ fn order(path: &str) {
     report(&m);
 }
 
-/// The whole order report of a loaded method, as JSON.
+/// The whole order report of a loaded method, as the JSON text Python's
+/// `m.order()` reads.
 fn report(m: &zcheck::load::LoadedMethod) {
-    std::hint::black_box(zcheck::api::order(m, None, None).expect("a report"));
+    std::hint::black_box(zcheck::api::order_text(m, None, None).expect("a report"));
 }
 
 fn bench(c: &mut Criterion) {
