@@ -72,21 +72,10 @@ fn reading_of(method: &LoadedMethod) -> Result<&crate::readings::Reading, Error>
     })
 }
 
-/// `zcheck order --format json` of one method: the classical order and what
-/// follows it, with `--modified N` and `--tolerance T` (exact text).
-pub fn order(
-    method: &LoadedMethod,
-    modified: Option<usize>,
-    tolerance: Option<&str>,
-) -> Result<Value, Error> {
-    use crate::answers::order::{report, to_json, Request};
-    let request = Request::parse(modified, tolerance)?;
-    let reading = reading_of(method)?;
-    Ok(to_json(reading, &report(reading, &request)?))
-}
-
-/// [`order`]'s document as compact JSON text, written straight from the
-/// report (the same text as [`order`]'s tree printed by `serde_json`).
+/// `zcheck order --format json` of one method, as compact JSON text: the
+/// classical order and what follows it, with `--modified N` and
+/// `--tolerance T` (exact text). Written straight from the report: the
+/// same text as the command's tree printed compactly.
 pub fn order_text(
     method: &LoadedMethod,
     modified: Option<usize>,
