@@ -40,7 +40,7 @@ pub fn builtin(name: &str) -> Result<LoadedMethod, Error> {
 
 /// A Runge–Kutta method from its Butcher tableau's exact entries (text),
 /// with `bhat` for an embedded pair: the program, and the tableau kept for
-/// [`order`].
+/// [`order_text`].
 pub fn tableau(
     name: &str,
     a: &[Vec<&str>],
@@ -54,7 +54,7 @@ pub fn tableau(
 }
 
 /// A linear multistep method from α and β (exact text, lowest j first),
-/// the coefficients kept for [`order`].
+/// the coefficients kept for [`order_text`].
 pub fn multistep(name: &str, alpha: &[&str], beta: &[&str]) -> Result<LoadedMethod, Error> {
     let method = poly::Method::from_multistep(name, alpha, beta)?;
     let reading = crate::readings::Reading::of_coefficients(name, alpha, beta)?;
