@@ -235,7 +235,17 @@ impl FarAndNear {
 
 /// 1e-15, the width the issue asks isolating intervals to be narrowed to.
 pub(crate) fn fine() -> Q {
-    Q::from_integer(1.into()) / num_traits::pow(Q::from_integer(10.into()), 15)
+    static FINE: std::sync::LazyLock<Q> =
+        std::sync::LazyLock::new(|| Q::new(1.into(), num_traits::pow(10.into(), 15)));
+    FINE.clone()
+}
+
+/// 1e-19: an interval this narrow rounds to 17 decimals (and to 15) at
+/// once, nearly always, so the two expansions share one refinement.
+fn finer() -> Q {
+    static FINER: std::sync::LazyLock<Q> =
+        std::sync::LazyLock::new(|| Q::new(1.into(), num_traits::pow(10.into(), 19)));
+    FINER.clone()
 }
 
 /// One exact number rendered once: the same critical point stands in a
@@ -266,10 +276,12 @@ pub(crate) fn render(a: &Algebraic) -> std::rc::Rc<Rendered> {
         return r;
     }
     let fine_a = a.refine(&fine());
+    // The expansions are the number's, whatever interval they start from.
+    let finer_a = fine_a.refine(&finer());
     let r = std::rc::Rc::new(Rendered {
-        value: fine_a.to_decimal(17).parse().expect("a decimal expansion parses as f64"),
+        value: finer_a.to_decimal(17).parse().expect("a decimal expansion parses as f64"),
         exact: fine_a.describe("Phi"),
-        decimal: fine_a.to_decimal(15),
+        decimal: finer_a.to_decimal(15),
         interval: fine_a.interval(),
     });
     RENDERED.with(|c| {
