@@ -46,60 +46,58 @@ trait Ring: Clone {
     fn times(&self, o: &Self, ctx: &Self::Ctx) -> Self;
 }
 
-impl Ring for Int {
-    type Ctx = ();
-    fn zero_in(_: &()) -> Self {
-        Int::ZERO
-    }
-    fn one_in(_: &()) -> Self {
-        Int::ONE
-    }
-    fn vanishes(&self) -> bool {
-        self.is_zero()
-    }
-    fn add_mul(&mut self, a: &Self, b: &Self, _: &()) {
-        Int::add_mul(self, a, b);
-    }
-    fn times(&self, o: &Self, _: &()) -> Self {
-        self.mul(o)
-    }
+/// [`Ring`] for element types that need no context, from each type's own
+/// zero, one, zero test, fused a += x·y and product.
+macro_rules! context_free {
+    ($($t:ty => {
+        zero: $zero:expr,
+        one: $one:expr,
+        vanishes: $vanishes:expr,
+        add_mul: $add_mul:expr,
+        times: $times:expr $(,)?
+    })+) => {$(
+        impl Ring for $t {
+            type Ctx = ();
+            fn zero_in(_: &()) -> Self {
+                $zero
+            }
+            fn one_in(_: &()) -> Self {
+                $one
+            }
+            fn vanishes(&self) -> bool {
+                ($vanishes)(self)
+            }
+            fn add_mul(&mut self, a: &Self, b: &Self, _: &()) {
+                ($add_mul)(self, a, b)
+            }
+            fn times(&self, o: &Self, _: &()) -> Self {
+                ($times)(self, o)
+            }
+        }
+    )+};
 }
 
-impl Ring for Value {
-    type Ctx = ();
-    fn zero_in(_: &()) -> Self {
-        Value::zero()
+context_free! {
+    Int => {
+        zero: Int::ZERO,
+        one: Int::ONE,
+        vanishes: Int::is_zero,
+        add_mul: |s: &mut Int, a, b| s.add_mul(a, b),
+        times: Int::mul,
     }
-    fn one_in(_: &()) -> Self {
-        Value::one()
+    Value => {
+        zero: Value::zero(),
+        one: Value::one(),
+        vanishes: Value::is_zero,
+        add_mul: |s: &mut Value, a, b| *s = s.add(&Value::mul(a, b)),
+        times: Value::mul,
     }
-    fn vanishes(&self) -> bool {
-        Value::is_zero(self)
-    }
-    fn add_mul(&mut self, a: &Self, b: &Self, _: &()) {
-        *self = self.add(&Value::mul(a, b));
-    }
-    fn times(&self, o: &Self, _: &()) -> Self {
-        Value::mul(self, o)
-    }
-}
-
-impl Ring for Fixed {
-    type Ctx = ();
-    fn zero_in(_: &()) -> Self {
-        Fixed::ZERO
-    }
-    fn one_in(_: &()) -> Self {
-        Fixed::ONE
-    }
-    fn vanishes(&self) -> bool {
-        self.is_exact_zero()
-    }
-    fn add_mul(&mut self, a: &Self, b: &Self, _: &()) {
-        *self = self.add(&a.mul(b));
-    }
-    fn times(&self, o: &Self, _: &()) -> Self {
-        self.mul(o)
+    Fixed => {
+        zero: Fixed::ZERO,
+        one: Fixed::ONE,
+        vanishes: Fixed::is_exact_zero,
+        add_mul: |s: &mut Fixed, a: &Fixed, b| *s = s.add(&a.mul(b)),
+        times: Fixed::mul,
     }
 }
 
