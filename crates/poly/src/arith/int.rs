@@ -68,6 +68,11 @@ impl Int {
                 return Int::Small(v);
             }
         }
+        // A big factor times zero is the one product of a big value that
+        // fits: keep it small, as `from_big` would.
+        if self.is_zero() || o.is_zero() {
+            return Int::ZERO;
+        }
         Int::Big(&*self.big() * &*o.big())
     }
 }
@@ -111,6 +116,7 @@ mod tests {
             any::<i128>().prop_map(BigInt::from),
             (any::<i128>(), any::<i64>()).prop_map(|(a, b)| BigInt::from(a) * BigInt::from(b)),
             (1u32..64).prop_map(|k| BigInt::from(1u8) << (63 + k)),
+            Just(BigInt::zero()),
         ]
     }
 
