@@ -48,8 +48,11 @@ pub fn tableau(
     c: Option<&[&str]>,
     bhat: Option<&[&str]>,
 ) -> Result<LoadedMethod, Error> {
-    let method = poly::Method::from_tableau(name, a, b, c)?;
-    let reading = crate::readings::Reading::of_entries(name, a, b, c, bhat)?;
+    // Every entry is read once: the method and its nonlinear reading share
+    // the tableau (and its stability function, computed for the method).
+    let tableau = poly::advanced::tableau::Tableau::from_text(name, a, b, c)?;
+    let method = tableau.method(false)?;
+    let reading = crate::readings::Reading::of_parsed_tableau(tableau, a, b, c, bhat)?;
     Ok(LoadedMethod::with_reading(method, reading))
 }
 

@@ -346,35 +346,38 @@ impl Reading {
         )
     }
 
-    /// A tableau's reading from its entries' text (the Python module's
-    /// `Method.from_tableau`): `bhat`, when given, one entry per stage.
-    pub(crate) fn of_entries(
-        name: &str,
+    /// A tableau's reading (the Python module's `Method.from_tableau`):
+    /// the tableau already read from its entries' text, which give the
+    /// decimal digits; `bhat`, when given, is read here, one entry per
+    /// stage.
+    pub(crate) fn of_parsed_tableau(
+        tableau: exact::Tableau,
         a: &[Vec<&str>],
         b: &[&str],
         c: Option<&[&str]>,
         bhat: Option<&[&str]>,
     ) -> Result<Reading, Error> {
-        let mut digits = 0;
-        let mut list = |what: &str, xs: &[&str]| {
-            xs.iter()
-                .enumerate()
-                .map(|(i, x)| {
-                    digits = digits.max(decimal_digits_in(x));
-                    Exact::parse(x).map_err(|e| {
-                        Error::method(format!("{what}[{}] = {x:?}: {}", i + 1, e.message()))
-                    })
-                })
-                .collect::<Result<Vec<_>, _>>()
-        };
-        let rows = a
+        let digits = a
             .iter()
-            .enumerate()
-            .map(|(i, r)| list(&format!("A[{}]", i + 1), r))
-            .collect::<Result<Vec<_>, _>>()?;
-        let b = list("b", b)?;
-        let c = c.map(|c| list("c", c)).transpose()?;
-        let bhat = bhat.map(|x| list("bhat", x)).transpose()?;
+            .flatten()
+            .chain(b)
+            .chain(c.into_iter().flatten())
+            .chain(bhat.into_iter().flatten())
+            .map(|x| decimal_digits_in(x))
+            .max()
+            .unwrap_or(0);
+        let bhat = bhat
+            .map(|xs| {
+                xs.iter()
+                    .enumerate()
+                    .map(|(i, x)| {
+                        Exact::parse(x).map_err(|e| {
+                            Error::method(format!("bhat[{}] = {x:?}: {}", i + 1, e.message()))
+                        })
+                    })
+                    .collect::<Result<Vec<_>, _>>()
+            })
+            .transpose()?;
         if let Some(bh) = &bhat {
             if bh.len() != b.len() {
                 return Err(Error::method(format!(
@@ -384,8 +387,8 @@ impl Reading {
                 )));
             }
         }
-        let tableau = exact::Tableau::new(name, rows, b, c)?;
-        Ok(Reading::new(name.to_owned(), Form::RungeKutta { tableau, bhat }, digits))
+        let name = tableau.name().to_owned();
+        Ok(Reading::new(name, Form::RungeKutta { tableau, bhat }, digits))
     }
 
     /// A multistep method's reading from its coefficients' text (the

@@ -512,6 +512,20 @@ impl Method {
         b: &[&str],
         c: Option<&[&str]>,
     ) -> Result<Method, Error> {
+        Tableau::from_text(name, a, b, c)?.method(false)
+    }
+}
+
+impl Tableau {
+    /// A tableau from its entries as text (`"1/4 - sqrt(3)/6"`), each read
+    /// once; an error names the entry (`A[1][2]`, `b[3]`, `c[1]`, counted
+    /// from 1), then the shape is checked as [`Tableau::new`] does.
+    pub fn from_text(
+        name: &str,
+        a: &[Vec<&str>],
+        b: &[&str],
+        c: Option<&[&str]>,
+    ) -> Result<Tableau, Error> {
         let entry = |text: &str, at: String| {
             Exact::parse(text).map_err(|e| {
                 Error::new(e.kind(), Span::default(), format!("{at}: {}", e.message()))
@@ -540,7 +554,7 @@ impl Method {
                     .collect::<Result<Vec<_>, _>>()
             })
             .transpose()?;
-        Tableau::new(name, a, b, c)?.method(false)
+        Tableau::new(name, a, b, c)
     }
 }
 
