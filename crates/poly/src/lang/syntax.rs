@@ -288,21 +288,48 @@ fn lex_number(chars: &[char]) -> Result<(Tok, usize), String> {
             chars[..=i].iter().collect::<String>()
         ));
     }
-    let mantissa: BigInt = format!("{digits}{frac}").parse().unwrap_or_else(|_| BigInt::zero());
-    // mantissa · 10^scale, in integers and reduced once (by Lehmer's gcd).
-    let scale = exp - frac.len() as i64;
-    let factor = num_traits::pow(BigInt::from(10), scale.unsigned_abs() as usize);
-    let q = if scale >= 0 {
-        Q::from_integer(mantissa * factor)
-    } else {
-        crate::arith::rational::ratio(mantissa, factor)
-    };
     if is_int {
         if let Ok(n) = digits.parse::<u32>() {
             return Ok((Tok::Int(n), i));
         }
     }
+    let scale = exp - frac.len() as i64;
+    let q =
+        small_decimal(&digits, &frac, scale).unwrap_or_else(|| big_decimal(&digits, &frac, scale));
     Ok((Tok::Num(q), i))
+}
+
+/// The decimal with digits `digits` `frac` (ASCII digits) times
+/// 10^`scale`, in `u128` when the digits and the power of ten fit (every
+/// tableau entry but a long one); `None` otherwise.
+fn small_decimal(digits: &str, frac: &str, scale: i64) -> Option<Q> {
+    // 38 digits stay below 10^38 < 2^128.
+    if digits.len() + frac.len() > 38 {
+        return None;
+    }
+    let mut m: u128 = 0;
+    for d in digits.bytes().chain(frac.bytes()) {
+        m = m * 10 + u128::from(d - b'0');
+    }
+    let p = 10u128.checked_pow(u32::try_from(scale.unsigned_abs()).ok()?)?;
+    Some(if scale >= 0 {
+        Q::from_integer(BigInt::from(m.checked_mul(p)?))
+    } else {
+        let g = num_integer::Integer::gcd(&m, &p);
+        Q::new_raw(BigInt::from(m / g), BigInt::from(p / g))
+    })
+}
+
+/// [`small_decimal`] for any length, in big integers: mantissa · 10^scale,
+/// reduced once (by Lehmer's gcd). Its oracle in the tests.
+fn big_decimal(digits: &str, frac: &str, scale: i64) -> Q {
+    let mantissa: BigInt = format!("{digits}{frac}").parse().unwrap_or_else(|_| BigInt::zero());
+    let factor = num_traits::pow(BigInt::from(10), scale.unsigned_abs() as usize);
+    if scale >= 0 {
+        Q::from_integer(mantissa * factor)
+    } else {
+        crate::arith::rational::ratio(mantissa, factor)
+    }
 }
 
 /// Parses an exact number as a user types it outside a `.zm` file (a
@@ -836,5 +863,38 @@ impl Poly {
     /// ```
     pub fn parse(src: &str) -> Result<Poly, crate::Error> {
         parse_poly(src).map_err(|e| e.located("<expression>", src))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        /// The machine-word decimal against the big-integer one, its slow
+        /// oracle: the same reduced rational wherever it answers, and it
+        /// answers for every short literal.
+        #[test]
+        fn small_decimal_is_the_big_one(
+            digits in "[0-9]{0,24}",
+            frac in "[0-9]{0,24}",
+            scale in -45i64..45,
+        ) {
+            prop_assume!(!(digits.is_empty() && frac.is_empty()));
+            let big = big_decimal(&digits, &frac, scale);
+            match small_decimal(&digits, &frac, scale) {
+                Some(q) => {
+                    prop_assert_eq!(q.numer(), big.numer());
+                    prop_assert_eq!(q.denom(), big.denom());
+                }
+                None => prop_assert!(
+                    digits.len() + frac.len() > 38 || scale.abs() > 38 || big.numer().bits() > 127
+                ),
+            }
+            if digits.len() + frac.len() <= 18 && scale.abs() <= 18 {
+                prop_assert!(small_decimal(&digits, &frac, scale).is_some());
+            }
+        }
     }
 }
