@@ -163,6 +163,21 @@ def test_sympy_round_trip_of_a_tableau():
     assert sympy.simplify(chi.subs(z, R)) == 0
 
 
+def test_sympy_rationals_take_the_short_path_to_the_same_text():
+    # The entry reader writes SymPy integers and rationals as p/q itself; the
+    # general SymPy writer is its oracle.
+    from zcheck import _entry
+    from zcheck._entries import sympy_entry
+
+    values = [sympy.Integer(0), sympy.Integer(1), sympy.Integer(-7), sympy.Rational(1, 2), sympy.Rational(-3, 8),
+              sympy.Rational(19372, 6561), sympy.Rational(-(10**40) - 1, 3**30), sympy.Integer(10**50)]
+    for x in values:
+        assert _entry(x, "x") == sympy_entry(x, "x"), x
+    # Not rationals: the general writer, as before.
+    assert _entry(sympy.sqrt(3) / 6, "x") == sympy_entry(sympy.sqrt(3) / 6, "x")
+    assert _entry(sympy.Float("0.25"), "x") == sympy_entry(sympy.Float("0.25"), "x")
+
+
 def test_exact_values_to_sympy():
     s = zcheck.Method.builtin("semi_false_heun").stability()
     e = s["phi_max_exact"]

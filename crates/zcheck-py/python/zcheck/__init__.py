@@ -148,6 +148,10 @@ def _entry(x, where):
     if isinstance(x, bool):
         raise Error(f"{where}: {x!r}: expected a number, not a bool")
     if type(x).__module__.split(".")[0] == "sympy":
+        if getattr(x, "is_Rational", False) is True:
+            # Integer and Rational (NodePy's entries): p/q in lowest terms,
+            # q > 0, without the general writer.
+            return str(x.p) if x.q == 1 else f"{x.p}/{x.q}"
         from ._entries import sympy_entry
 
         return sympy_entry(x, where)
