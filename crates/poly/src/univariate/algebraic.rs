@@ -285,7 +285,14 @@ impl Algebraic {
             Repr::Rational(q) => round_decimal(q, digits),
             Repr::Root { ip, lo, hi, .. } => {
                 // Any interval around the number will do (the rounding is a
-                // property of the number), so refine quadratically.
+                // property of the number, and monotone): the one held
+                // decides when its ends round alike, as they do once it has
+                // been refined for a finer rendering. Else refine
+                // quadratically.
+                let (a, b) = (round_decimal(lo, digits), round_decimal(hi, digits));
+                if a == b {
+                    return a;
+                }
                 let ten = Q::from_integer(10.into());
                 let mut width = Q::one() / num_traits::pow(ten.clone(), digits + 2);
                 loop {

@@ -455,6 +455,10 @@ proptest! {
             let half = Q::new(1.into(), num_bigint::BigInt::from(10).pow(digits as u32) * 2);
             prop_assert!(a.cmp_rational(&(&d - &half)) != Ordering::Less);
             prop_assert!(a.cmp_rational(&(&d + &half)) != Ordering::Greater);
+            // From an interval narrow enough for its ends to decide (no
+            // refinement): the same decimals.
+            let narrow = a.refine(&Q::new(1.into(), num_bigint::BigInt::from(10).pow(digits as u32 + 4)));
+            prop_assert_eq!(narrow.to_decimal(digits), a.to_decimal(digits));
         }
     }
 }
