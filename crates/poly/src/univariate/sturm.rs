@@ -605,16 +605,20 @@ fn bisect_int(ip: &IntPoly, lo: &Q, hi: &Q, k: u64) -> (Q, Q) {
     let a = lo.numer() * (&e / lo.denom());
     let b = hi.numer() * (&e / hi.denom());
     let s_lo = ip.sign_at(lo);
+    let (mut a, mut b, mut e, mut k) = (a, b, e, k);
     // lo = a/e, hi = b/e; after j halvings the points are over e·2^j. From
-    // `i64` ends, 61 doublings stay inside `i128`.
-    if let (Some(c), Some(a), Some(b), Some(e)) = (&ip.small, small(&a), small(&b), small(&e)) {
+    // `i64` ends, 61 doublings stay inside `i128`; an evaluation that
+    // overflows hands the halvings left to `BigInt`, from where it stopped.
+    if let (Some(c), Some(sa), Some(sb), Some(se)) = (&ip.small, small(&a), small(&b), small(&e)) {
         if k <= 61 {
-            if let Some(r) = bisect_small(c, (a, b, e), s_lo, k) {
-                return r;
+            match bisect_small(c, (sa, sb, se), s_lo, k) {
+                Ok(r) => return r,
+                Err((sa, sb, se, left)) => {
+                    (a, b, e, k) = (sa.into(), sb.into(), se.into(), left);
+                }
             }
         }
     }
-    let (mut a, mut b, mut e) = (a, b, e);
     for _ in 0..k {
         let m = &a + &b;
         (a, b, e) = (a << 1u32, b << 1u32, e << 1u32);
@@ -632,20 +636,24 @@ fn bisect_int(ip: &IntPoly, lo: &Q, hi: &Q, k: u64) -> (Q, Q) {
     (Q::new(a, e.clone()), Q::new(b, e))
 }
 
-/// [`bisect_int`] in `i128` (`None` on overflow of an evaluation).
+/// [`bisect_int`] in `i128`: the result, or where it stopped when an
+/// evaluation overflowed, `(a, b, e, halvings left)`.
 fn bisect_small(
     c: &[i64],
     (mut a, mut b, mut e): (i128, i128, i128),
     s_lo: Ordering,
     k: u64,
-) -> Option<(Q, Q)> {
-    for _ in 0..k {
+) -> Result<(Q, Q), (i128, i128, i128, u64)> {
+    for done in 0..k {
         let m = a + b;
+        let Some(v) = homogeneous_small(c, m, 2 * e) else {
+            return Err((a, b, e, k - done));
+        };
         (a, b, e) = (2 * a, 2 * b, 2 * e);
-        let s = homogeneous_small(c, m, e)?.cmp(&0);
+        let s = v.cmp(&0);
         if s == Ordering::Equal {
             let r = Q::new(m.into(), e.into());
-            return Some((r.clone(), r));
+            return Ok((r.clone(), r));
         }
         if s == s_lo {
             a = m;
@@ -653,7 +661,7 @@ fn bisect_small(
             b = m;
         }
     }
-    Some((Q::new(a.into(), e.into()), Q::new(b.into(), e.into())))
+    Ok((Q::new(a.into(), e.into()), Q::new(b.into(), e.into())))
 }
 
 #[cfg(test)]
