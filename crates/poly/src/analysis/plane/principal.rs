@@ -72,17 +72,20 @@ impl Scalar for Q {
     fn is_zero(&self) -> bool {
         Zero::is_zero(self)
     }
+    // Sums and products reduced by Lehmer's gcd after cross-cancelling
+    // (`arith::rational`): the same reduced values as num-rational's
+    // operators, which reduce by the binary gcd.
     fn add(&self, o: &Self) -> Self {
-        self + o
+        crate::arith::rational::add(self, o)
     }
     fn sub(&self, o: &Self) -> Self {
-        self - o
+        crate::arith::rational::add(self, &-o)
     }
     fn mul(&self, o: &Self) -> Self {
-        self * o
+        crate::arith::rational::mul(self, o)
     }
     fn scale(&self, q: &Q) -> Self {
-        self * q
+        crate::arith::rational::mul(self, q)
     }
     fn inv(&self) -> Option<Self> {
         (!Zero::is_zero(self)).then(|| self.recip())
