@@ -20,6 +20,7 @@ use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
 
+use crate::arith::rational::ratio;
 use crate::{UPoly, Q};
 
 /// A polynomial scaled by a positive rational to primitive integer
@@ -556,11 +557,18 @@ pub fn refine_interval(p: &UPoly, lo: &Q, hi: &Q, width: &Q) -> (Q, Q) {
 /// root is located by quadratic refinement to within one cell, and at most
 /// one grid point then needs a sign; the result is identical.
 pub(crate) fn refine_int(ip: &IntPoly, lo: &Q, hi: &Q, width: &Q) -> (Q, Q) {
-    if lo == hi || &(hi - lo) <= width {
+    if lo == hi {
         return (lo.clone(), hi.clone());
     }
-    let ratio = (hi - lo) / width;
-    let ceil_bits = (ratio.ceil().to_integer() - BigInt::one()).bits();
+    // (hi − lo)/width = num/den in integers, nothing reduced: hi − lo is
+    // (hn·ld − ln·hd)/(ld·hd) and width > 0.
+    let num = (hi.numer() * lo.denom() - lo.numer() * hi.denom()) * width.denom();
+    let den = lo.denom() * hi.denom() * width.numer();
+    if num <= den {
+        return (lo.clone(), hi.clone());
+    }
+    // k = ⌈log2((hi − lo)/width)⌉ halvings: the bits of ⌈num/den⌉ − 1.
+    let ceil_bits = ((num + &den - BigInt::one()) / den - BigInt::one()).bits();
     if ceil_bits <= BISECTION_HALVINGS {
         return bisect_int(ip, lo, hi, ceil_bits);
     }
@@ -624,7 +632,7 @@ fn bisect_int(ip: &IntPoly, lo: &Q, hi: &Q, k: u64) -> (Q, Q) {
         (a, b, e) = (a << 1u32, b << 1u32, e << 1u32);
         let s = ip.scaled_value_parts(&m, &e).sign().cmp_zero();
         if s == Ordering::Equal {
-            let r = Q::new(m, e);
+            let r = ratio(m, e);
             return (r.clone(), r);
         }
         if s == s_lo {
@@ -633,7 +641,7 @@ fn bisect_int(ip: &IntPoly, lo: &Q, hi: &Q, k: u64) -> (Q, Q) {
             b = m;
         }
     }
-    (Q::new(a, e.clone()), Q::new(b, e))
+    (ratio(a, e.clone()), ratio(b, e))
 }
 
 /// [`bisect_int`] in `i128`: the result, or where it stopped when an
@@ -652,7 +660,7 @@ fn bisect_small(
         (a, b, e) = (2 * a, 2 * b, 2 * e);
         let s = v.cmp(&0);
         if s == Ordering::Equal {
-            let r = Q::new(m.into(), e.into());
+            let r = small_ratio(m, e);
             return Ok((r.clone(), r));
         }
         if s == s_lo {
@@ -661,7 +669,13 @@ fn bisect_small(
             b = m;
         }
     }
-    Ok((Q::new(a.into(), e.into()), Q::new(b.into(), e.into())))
+    Ok((small_ratio(a, e), small_ratio(b, e)))
+}
+
+/// n/e in lowest terms for e > 0, reduced in machine words.
+fn small_ratio(n: i128, e: i128) -> Q {
+    let g = num_integer::Integer::gcd(&n, &e);
+    Q::new_raw((n / g).into(), (e / g).into())
 }
 
 #[cfg(test)]
