@@ -35,6 +35,12 @@ pub(crate) struct IntPoly {
     small: Option<Box<[i64]>>,
 }
 
+/// t when `q` = 2^t (q > 0).
+fn power_of_two(q: &BigInt) -> Option<u64> {
+    let t = q.trailing_zeros()?;
+    (q.bits() == t + 1).then_some(t)
+}
+
 /// `x` as an `i128` when it fits in an `i64` (so products of two fit).
 fn small(x: &BigInt) -> Option<i128> {
     num_traits::ToPrimitive::to_i64(x).map(i128::from)
@@ -137,6 +143,14 @@ impl IntPoly {
             if let Some(v) = homogeneous_small(c, ps, qs) {
                 return BigInt::from(v);
             }
+        }
+        if let Some(t) = power_of_two(q) {
+            // q = 2^t (bisection of a dyadic interval): q^k is a shift.
+            let mut acc = self.c[n].clone();
+            for (j, c) in self.c[..n].iter().rev().enumerate() {
+                acc = acc * p + (c << (t * (j as u64 + 1)));
+            }
+            return acc;
         }
         let mut acc = self.c[n].clone();
         let mut qk = BigInt::one();
@@ -703,6 +717,34 @@ mod tests {
             prop_assert_eq!(fast.sign_on(&lo, &hi), slow.sign_on(&lo, &hi));
             let (pn, qn) = (BigInt::from(p), BigInt::from(q));
             prop_assert_eq!(fast.scaled_value_parts(&pn, &qn), slow.scaled_value_parts(&pn, &qn));
+        }
+    }
+
+    proptest! {
+        /// Σ c_k p^k q^(n−k) term by term, the slow oracle, against the
+        /// Horner evaluation: at powers of two (shifts) and elsewhere, with
+        /// big coefficients (no small form).
+        #[test]
+        fn scaled_values_are_the_sum(
+            c in proptest::collection::vec(any::<i64>(), 1..9),
+            scale in 0u32..100,
+            p in any::<i64>(),
+            t in 0u64..200,
+            odd in 1i64..1000,
+        ) {
+            prop_assume!(*c.last().unwrap() != 0);
+            let ints: Vec<BigInt> = c.iter().map(|&x| BigInt::from(x) << scale).collect();
+            let ip = IntPoly { c: ints.clone(), small: None };
+            let p = BigInt::from(p);
+            let n = ints.len() - 1;
+            for q in [BigInt::one() << t, (BigInt::one() << t) * (2 * odd + 1)] {
+                let sum: BigInt = ints
+                    .iter()
+                    .enumerate()
+                    .map(|(k, ck)| ck * p.pow(k as u32) * q.pow((n - k) as u32))
+                    .sum();
+                prop_assert_eq!(ip.scaled_value_parts(&p, &q), sum);
+            }
         }
     }
 
