@@ -716,12 +716,19 @@ impl Lin {
         self
     }
     fn scale(self, k: &Poly) -> Lin {
+        // A number (a tableau's entry, mostly) scales term by term, without
+        // a product of polynomials.
+        let number = k.as_constant();
+        let times = |c: &Poly| match &number {
+            Some(q) => c.scale(q),
+            None => c * k,
+        };
         Lin {
-            scalar: &self.scalar * k,
+            scalar: times(&self.scalar),
             terms: self
                 .terms
                 .into_iter()
-                .map(|(op, c)| (op, &c * k))
+                .map(|(op, c)| (op, times(&c)))
                 .filter(|(_, c)| !c.is_zero())
                 .collect(),
         }
