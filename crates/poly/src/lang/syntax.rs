@@ -382,7 +382,9 @@ pub fn parse_number(text: &str) -> Result<Q, Error> {
         if den.is_zero() {
             return Err(err(at + 1, "division by zero: expected a nonzero denominator".into()));
         }
-        q /= den;
+        // Both literals are non-negative, so den > 0; one reduction (by
+        // Lehmer's gcd) of the cross products.
+        q = crate::arith::rational::ratio(q.numer() * den.denom(), q.denom() * den.numer());
         at = end;
     }
     if let Some(&c) = chars.get(at) {
@@ -895,6 +897,15 @@ mod tests {
             if digits.len() + frac.len() <= 18 && scale.abs() <= 18 {
                 prop_assert!(small_decimal(&digits, &frac, scale).is_some());
             }
+        }
+
+        /// A fraction of two literals is the rational num-rational makes of
+        /// them, its oracle.
+        #[test]
+        fn fractions_are_the_ratio(n in 0u128..u128::MAX, d in 1u128..u128::MAX, minus in any::<bool>()) {
+            let text = format!("{}{n}/{d}", if minus { "-" } else { "" });
+            let q = Q::new(BigInt::from(n), BigInt::from(d));
+            prop_assert_eq!(parse_number(&text).unwrap(), if minus { -q } else { q });
         }
     }
 }
