@@ -35,6 +35,36 @@ pub(crate) struct IntPoly {
     small: Option<Box<[i64]>>,
 }
 
+/// The least and the greatest of x·y over x ∈ [l, u], y ∈ [a, b] (l ≤ u,
+/// a ≤ b): two products where the signs of a and b tell which, four
+/// otherwise.
+fn interval_product(l: &BigInt, u: &BigInt, a: &BigInt, b: &BigInt) -> (BigInt, BigInt) {
+    if !a.is_negative() {
+        // y ≥ 0: x·y grows with x, and |y| is largest at b.
+        return if !l.is_negative() {
+            (l * a, u * b)
+        } else if !u.is_positive() {
+            (l * b, u * a)
+        } else {
+            (l * b, u * b)
+        };
+    }
+    if !b.is_positive() {
+        // y ≤ 0: x·y falls as x grows, and |y| is largest at a.
+        return if !l.is_negative() {
+            (u * a, l * b)
+        } else if !u.is_positive() {
+            (u * b, l * a)
+        } else {
+            (u * a, l * a)
+        };
+    }
+    let p = [l * a, l * b, u * a, u * b];
+    let min = p.iter().min().expect("four products").clone();
+    let max = p.iter().max().expect("four products").clone();
+    (min, max)
+}
+
 /// t when `q` = 2^t (q > 0).
 fn power_of_two(q: &BigInt) -> Option<u64> {
     let t = q.trailing_zeros()?;
@@ -188,20 +218,18 @@ impl IntPoly {
         let a = lo.numer() * (&q / lo.denom());
         let b = hi.numer() * (&q / hi.denom());
         let (mut l, mut u) = (self.c[n].clone(), self.c[n].clone());
+        let shift = power_of_two(&q);
         let mut qk = BigInt::one();
-        for c in self.c[..n].iter().rev() {
-            qk *= &q;
-            let p = [&l * &a, &l * &b, &u * &a, &u * &b];
-            let (mut min, mut max) = (&p[0], &p[0]);
-            for x in &p[1..] {
-                if x < min {
-                    min = x;
+        for (j, c) in self.c[..n].iter().rev().enumerate() {
+            let t = match shift {
+                // q = 2^s: c·q^(j+1) is a shift.
+                Some(s) => c << (s * (j as u64 + 1)),
+                None => {
+                    qk *= &q;
+                    c * &qk
                 }
-                if x > max {
-                    max = x;
-                }
-            }
-            let t = c * &qk;
+            };
+            let (min, max) = interval_product(&l, &u, &a, &b);
             (l, u) = (min + &t, max + &t);
         }
         if l.is_positive() {
@@ -745,6 +773,22 @@ mod tests {
                     .sum();
                 prop_assert_eq!(ip.scaled_value_parts(&p, &q), sum);
             }
+        }
+    }
+
+    proptest! {
+        /// The interval product against the least and greatest of the four
+        /// corner products, its oracle, over every sign pattern.
+        #[test]
+        fn interval_products_are_the_corners(
+            x in (-50i64..50, 0i64..50),
+            y in (-50i64..50, 0i64..50),
+        ) {
+            let (l, u) = (BigInt::from(x.0), BigInt::from(x.0 + x.1));
+            let (a, b) = (BigInt::from(y.0), BigInt::from(y.0 + y.1));
+            let corners = [&l * &a, &l * &b, &u * &a, &u * &b];
+            let expected = (corners.iter().min().unwrap().clone(), corners.iter().max().unwrap().clone());
+            prop_assert_eq!(interval_product(&l, &u, &a, &b), expected);
         }
     }
 
