@@ -50,14 +50,9 @@ fn interval_product(l: &BigInt, u: &BigInt, a: &BigInt, b: &BigInt) -> (BigInt, 
         };
     }
     if !b.is_positive() {
-        // y ≤ 0: x·y falls as x grows, and |y| is largest at a.
-        return if !l.is_negative() {
-            (u * a, l * b)
-        } else if !u.is_positive() {
-            (u * b, l * a)
-        } else {
-            (u * a, l * a)
-        };
+        // y ≤ 0: x·y = −(x·(−y)), with −y ∈ [−b, −a] not negative.
+        let (min, max) = interval_product(l, u, &-b, &-a);
+        return (-max, -min);
     }
     let p = [l * a, l * b, u * a, u * b];
     let min = p.iter().min().expect("four products").clone();
