@@ -5,9 +5,11 @@
 //! - [`random_program`]: random linear `.zm` programs for property tests;
 //! - [`programs`]: generated large programs (spring chains, long chains of
 //!   temporaries) for the benches and the tests of large derivations;
+//! - [`oracle`]: slow, obvious answers for the fast paths to be held to;
 //! - [`fuzz`]: the bodies of the fuzz targets, and [`replay`], which runs a
 //!   target's committed corpus through its body as an ordinary test.
 
+pub mod oracle;
 pub mod programs;
 pub mod random_program;
 pub mod replay;

@@ -112,11 +112,7 @@ pub(crate) fn summary_at(
     let (phi_max_exact, phi_max) = match report.phi_max() {
         Some(a) => {
             let exact = a.closed_form().unwrap_or_else(|| a.describe("Phi"));
-            let value: f64 = a
-                .to_decimal(17)
-                .parse()
-                .map_err(|e: std::num::ParseFloatError| Error::numeric(e.to_string()))?;
-            (exact, Some(value))
+            (exact, Some(crate::answers::exact::nearest_f64(a, None)))
         }
         None if report.bounded_for_all() => ("none: bounded for every Phi > 0".to_owned(), None),
         None => ("none: unbounded for every Phi > 0".to_owned(), None),

@@ -78,6 +78,33 @@ pub(crate) fn ratio(num: num_bigint::BigInt, den: num_bigint::BigInt) -> Q {
     Q::new_raw(div_exact(&num, &g), div_exact(&den, &g))
 }
 
+/// `a.cmp(b)` by one cross multiplication (denominators are positive),
+/// where num-rational's `Ord` runs a continued-fraction comparison, a
+/// division per step, to stay within fixed-width integers. The same
+/// result; a property test checks it.
+pub(crate) fn cmp(a: &Q, b: &Q) -> std::cmp::Ordering {
+    use num_traits::Signed;
+    let (sa, sb) = (a.numer().sign(), b.numer().sign());
+    if sa != sb {
+        return sa.cmp(&sb);
+    }
+    if a.denom() == b.denom() {
+        return a.numer().cmp(b.numer());
+    }
+    if a.numer() == b.numer() {
+        // The same numerator (so the same sign): the larger denominator is
+        // the smaller magnitude.
+        let by_den = b.denom().cmp(a.denom());
+        return if a.numer().is_negative() { by_den.reverse() } else { by_den };
+    }
+    (a.numer() * b.denom()).cmp(&(b.numer() * a.denom()))
+}
+
+/// `a == b` by [`cmp`] (num-rational's `PartialEq` is its `Ord`).
+pub(crate) fn eq(a: &Q, b: &Q) -> bool {
+    cmp(a, b) == std::cmp::Ordering::Equal
+}
+
 fn div_exact(x: &num_bigint::BigInt, g: &num_bigint::BigInt) -> num_bigint::BigInt {
     use num_traits::One;
     if g.is_one() {
@@ -113,10 +140,10 @@ mod tests {
 
     proptest! {
         /// The same value and representation as num-rational's own
-        /// product and sum (the slow oracle), on rationals of 0–4 limbs
+        /// product and sum, and the same order (the slow oracles), on rationals of 0–4 limbs
         /// with common factors, integers and zero included.
         #[test]
-        fn fast_mul_and_add_match_num_rational(
+        fn fast_mul_add_and_cmp_match_num_rational(
             an in proptest::collection::vec(any::<u64>(), 0..4),
             ad in proptest::collection::vec(0..4u64, 0..3),
             bn in proptest::collection::vec(any::<u64>(), 0..4),
@@ -134,6 +161,8 @@ mod tests {
                 prop_assert_eq!(m.denom(), om.denom());
                 prop_assert_eq!(s.numer(), os.numer());
                 prop_assert_eq!(s.denom(), os.denom());
+                prop_assert_eq!(cmp(x, y), x.cmp(y));
+                prop_assert_eq!(cmp(x, &s), x.cmp(&s));
             }
             let r = ratio(a.numer() * b.denom(), b.denom().clone());
             let or = Q::new(a.numer() * b.denom(), b.denom().clone());

@@ -19,8 +19,11 @@ use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
 
+use crate::arith::rational::{cmp, eq};
 use crate::univariate::roots::isolate_squarefree;
-use crate::univariate::sturm::{count_real_roots, refine_int, refine_quadratic, sign, IntPoly};
+use crate::univariate::sturm::{
+    count_real_roots, refine_int, refine_int_near, refine_quadratic, sign, IntPoly,
+};
 use crate::{UPoly, Q};
 
 /// The least and the greatest of some real roots.
@@ -101,7 +104,7 @@ impl Algebraic {
                 let rational = intervals
                     .iter()
                     .map(|(lo, hi)| {
-                        if lo == hi {
+                        if eq(lo, hi) {
                             Some(lo.clone())
                         } else {
                             all.iter().find(|r| lo < *r && *r < hi).cloned()
@@ -205,6 +208,21 @@ impl Algebraic {
         }
     }
 
+    /// [`Algebraic::refine`]'s result, found faster from a guess: `(gl, gh)`
+    /// an interval believed to hold the number (from floating point, say).
+    /// The guess is checked by exact signs and never changes the result; a
+    /// wrong one only costs a few evaluations more.
+    pub fn refine_near(&self, width: &Q, gl: &Q, gh: &Q) -> Algebraic {
+        match &self.repr {
+            Repr::Rational(_) => self.clone(),
+            Repr::Root { poly, ip, lo, hi } => {
+                let (lo, hi) = refine_int_near(ip, lo, hi, width, gl, gh);
+                debug_assert!(lo != hi, "an irrational root was hit exactly");
+                Algebraic { repr: Repr::Root { poly: poly.clone(), ip: ip.clone(), lo, hi } }
+            }
+        }
+    }
+
     /// A rational within `width` of the number (the midpoint of a refined
     /// interval); the number itself when it is rational.
     pub fn approx(&self, width: &Q) -> Q {
@@ -222,9 +240,9 @@ impl Algebraic {
         match &self.repr {
             Repr::Rational(q) => q.cmp(r),
             Repr::Root { ip, lo, hi, .. } => {
-                if r <= lo {
+                if cmp(r, lo) != Ordering::Greater {
                     Ordering::Greater
-                } else if r >= hi {
+                } else if cmp(r, hi) != Ordering::Less {
                     Ordering::Less
                 } else if ip.sign_at(r) == ip.sign_at(lo) {
                     // No sign change in (lo, r], so the root lies above r
@@ -289,9 +307,17 @@ impl Algebraic {
                 // decides when its ends round alike, as they do once it has
                 // been refined for a finer rendering. Else refine
                 // quadratically.
-                let (a, b) = (round_decimal(lo, digits), round_decimal(hi, digits));
+                let (a, b) = (rounded_units(lo, digits), rounded_units(hi, digits));
                 if a == b {
-                    return a;
+                    return units_text(&a, digits);
+                }
+                if &b - &a == BigInt::one() {
+                    // One cell boundary inside the interval (as after a
+                    // refinement to 10^−digits): the sign there decides.
+                    let two_scale = num_traits::pow(BigInt::from(10), digits) * 2;
+                    let boundary = Q::new(&a * 2 + 1, two_scale);
+                    let n = if self.cmp_rational(&boundary) == Ordering::Less { a } else { b };
+                    return units_text(&n, digits);
                 }
                 let ten = Q::from_integer(10.into());
                 let mut width = Q::one() / num_traits::pow(ten.clone(), digits + 2);
@@ -531,7 +557,7 @@ fn sign_at_root(
         if let Some(s) = gi.sign_on(&lo, &hi) {
             return s;
         }
-        if lo == hi {
+        if eq(&lo, &hi) {
             return gi.sign_at(&lo);
         }
         let width = (&hi - &lo) / Q::from_integer(BigInt::one() << shift);
@@ -642,7 +668,7 @@ fn numbers_with(
 /// Canonical form of the root of the square-free `f` in the isolating
 /// interval (lo, hi) (or the rational `lo` when `lo == hi`).
 fn reduce(f: UPoly, lo: Q, hi: Q) -> Algebraic {
-    if lo == hi {
+    if eq(&lo, &hi) {
         return Algebraic::from_rational(lo);
     }
     if f.degree() == Some(1) {
@@ -865,7 +891,7 @@ fn rational_root_in(f: &UPoly, ip: &IntPoly, lo: &Q, hi: &Q) -> Option<Q> {
     let lead = integer_leading(f);
     let width = Q::new(BigInt::one(), lead.clone()) / Q::from_integer(2.into());
     let (lo, hi) = refine_quadratic(ip, lo, hi, &width);
-    if lo == hi {
+    if eq(&lo, &hi) {
         return Some(lo);
     }
     let lead_q = Q::from_integer(lead.clone());
@@ -979,15 +1005,29 @@ fn small_primes() -> &'static [u64] {
 
 /// `q` rounded to `digits` decimals, half away from zero.
 fn round_decimal(q: &Q, digits: usize) -> String {
+    units_text(&rounded_units(q, digits), digits)
+}
+
+/// q rounded to `digits` decimals (halves away from zero), in units of
+/// 10^−digits: ±⌊|q|·10^digits + 1/2⌋ = ±⌊(2|n|·10^digits + d) / 2d⌋ for
+/// q = n/d, d > 0, in integers (no fraction reduced). Monotone in q.
+fn rounded_units(q: &Q, digits: usize) -> BigInt {
     let scale = num_traits::pow(BigInt::from(10), digits);
-    // ⌊|q|·10^digits + 1/2⌋ = ⌊(2|n|·10^digits + d) / 2d⌋ for q = n/d, d > 0,
-    // in integers (no fraction reduced).
     let two_d = q.denom() * 2;
     let n: BigInt = (q.numer().abs() * &scale * 2 + q.denom()) / two_d;
-    let (int, frac) = n.div_rem(&scale);
-    let negative = q.is_negative() && !n.is_zero();
+    if q.is_negative() {
+        -n
+    } else {
+        n
+    }
+}
+
+/// A number of units of 10^−digits written as a decimal.
+fn units_text(n: &BigInt, digits: usize) -> String {
+    let scale = num_traits::pow(BigInt::from(10), digits);
+    let (int, frac) = n.abs().div_rem(&scale);
     let mut s = String::new();
-    if negative {
+    if n.is_negative() {
         s.push('-');
     }
     s.push_str(&int.to_string());

@@ -20,7 +20,7 @@ use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
 
-use crate::arith::rational::ratio;
+use crate::arith::rational::{eq, ratio};
 use crate::{UPoly, Q};
 
 /// A polynomial scaled by a positive rational to primitive integer
@@ -488,7 +488,7 @@ fn beside(sf: &IntPoly, seq: &[IntPoly], toward: &Q, r: &Q) -> Q {
 /// rational and every decision a sign. The result is *not* the bisection
 /// result of [`refine_interval`]; use it where only the number matters.
 pub(crate) fn refine_quadratic(ip: &IntPoly, lo: &Q, hi: &Q, width: &Q) -> (Q, Q) {
-    if lo == hi {
+    if eq(lo, hi) {
         return (lo.clone(), hi.clone());
     }
     // Integers throughout: a = A/E, b = B/E over one denominator E > 0, and
@@ -579,10 +579,20 @@ fn n_of(ip: &IntPoly) -> usize {
 /// `isolate_real_roots`) of a square-free `p` by bisection until its width
 /// is at most `width`. A rational root hit exactly becomes `(r, r)`.
 pub fn refine_interval(p: &UPoly, lo: &Q, hi: &Q, width: &Q) -> (Q, Q) {
-    if lo == hi {
+    if eq(lo, hi) {
         return (lo.clone(), hi.clone());
     }
     refine_int(&IntPoly::new(p), lo, hi, width)
+}
+
+/// [`refine_interval`]'s result, found faster when `(gl, gh)` is a good
+/// guess of an interval around the root (see [`refine_int_near`]); the
+/// guess never changes the result.
+pub fn refine_interval_near(p: &UPoly, lo: &Q, hi: &Q, width: &Q, gl: &Q, gh: &Q) -> (Q, Q) {
+    if eq(lo, hi) {
+        return (lo.clone(), hi.clone());
+    }
+    refine_int_near(&IntPoly::new(p), lo, hi, width, gl, gh)
 }
 
 /// [`refine_interval`] with the integer form of the polynomial given: the
@@ -594,7 +604,7 @@ pub fn refine_interval(p: &UPoly, lo: &Q, hi: &Q, width: &Q) -> (Q, Q) {
 /// root is located by quadratic refinement to within one cell, and at most
 /// one grid point then needs a sign; the result is identical.
 pub(crate) fn refine_int(ip: &IntPoly, lo: &Q, hi: &Q, width: &Q) -> (Q, Q) {
-    if lo == hi {
+    if eq(lo, hi) {
         return (lo.clone(), hi.clone());
     }
     // (hi − lo)/width = num/den in integers, nothing reduced: hi − lo is
@@ -638,6 +648,87 @@ pub(crate) fn refine_int(ip: &IntPoly, lo: &Q, hi: &Q, width: &Q) -> (Q, Q) {
     }
 }
 
+/// [`refine_int`]'s result (the bisection result), found from a guess:
+/// `(gl, gh)` is an interval the caller believes holds the root, from
+/// floating point say, and nothing is assumed of it. At the finest level
+/// of bisection's grid whose cells are at least as wide as the guess, the
+/// cell under the guess's midpoint is tested by the signs at its ends,
+/// and a wrong cell is left for its neighbour on the side the signs point
+/// to; a few evaluations, then bisection within the cell for the levels
+/// left. A guess that misses by more than a few cells costs those tests
+/// and then [`refine_int`] itself: the result never depends on the guess.
+pub(crate) fn refine_int_near(ip: &IntPoly, lo: &Q, hi: &Q, width: &Q, gl: &Q, gh: &Q) -> (Q, Q) {
+    if eq(lo, hi) {
+        return (lo.clone(), hi.clone());
+    }
+    // Integers throughout: lo = a/e, hi = b/e, d = b − a > 0.
+    let e = crate::arith::intgcd::lcm(lo.denom(), hi.denom());
+    let a = lo.numer() * (&e / lo.denom());
+    let b = hi.numer() * (&e / hi.denom());
+    let d = &b - &a;
+    // k = ⌈log2((hi − lo)/width)⌉ halvings, (hi − lo)/width = d·w_d/(e·w_n).
+    let (num, den) = (&d * width.denom(), &e * width.numer());
+    if num <= den {
+        return (lo.clone(), hi.clone());
+    }
+    let k = ((num + &den - BigInt::one()) / den - BigInt::one()).bits();
+    // The guess's ends on the finest grid: ⌊(g − lo)·2^k/(hi − lo)⌋ =
+    // ⌊(g_n·e − a·g_d)·2^k/(g_d·d)⌋, clamped to the cells [0, 2^k).
+    let cells = BigInt::one() << k;
+    let at = |g: &Q| {
+        let j = ((g.numer() * &e - &a * g.denom()) << k).div_floor(&(g.denom() * &d));
+        j.clamp(BigInt::zero(), &cells - BigInt::one())
+    };
+    let (jl, jh) = (at(gl), at(gh));
+    if jh < jl {
+        return refine_int(ip, lo, hi, width);
+    }
+    // The finest level kp at which the guess spans at most two cells.
+    let kp = k.saturating_sub((&jh - &jl).bits());
+    if kp < 4 {
+        return refine_int(ip, lo, hi, width);
+    }
+    let shift = k - kp;
+    let mut j = &jl >> shift;
+    let top = BigInt::one() << kp;
+    // Grid point j of level kp: (a·2^kp + j·d)/(e·2^kp).
+    let (base, scale) = (&a << kp, &e << kp);
+    let s_lo = ip.sign_at(lo);
+    let point = |j: &BigInt| &base + j * &d;
+    let sign = |j: &BigInt| -> Ordering {
+        if j.is_zero() {
+            s_lo
+        } else if *j == top {
+            s_lo.reverse()
+        } else {
+            ip.scaled_value_parts(&point(j), &scale).sign().cmp_zero()
+        }
+    };
+    let (mut sl, mut sh) = (sign(&j), sign(&(&j + BigInt::one())));
+    for _ in 0..4 {
+        if sl == Ordering::Equal || sh == Ordering::Equal {
+            let r = ratio(point(&if sl == Ordering::Equal { j } else { j + BigInt::one() }), scale);
+            return (r.clone(), r);
+        }
+        if sl == s_lo && sh != s_lo {
+            // The cell holds the root: bisection passes through it.
+            let (ca, cb) = (point(&j), point(&(&j + BigInt::one())));
+            return bisect_parts(ip, ca, cb, scale, shift, s_lo);
+        }
+        if sl != s_lo {
+            // The root lies below the cell (j > 0, since sign(0) = s_lo).
+            j -= 1;
+            sh = sl;
+            sl = sign(&j);
+        } else {
+            j += 1;
+            sl = sh;
+            sh = sign(&(&j + BigInt::one()));
+        }
+    }
+    refine_int(ip, lo, hi, width)
+}
+
 /// Up to this many halvings [`refine_int`] bisects (one sign each, in
 /// machine integers when they fit); beyond, quadratic refinement.
 const BISECTION_HALVINGS: u64 = 64;
@@ -650,6 +741,12 @@ fn bisect_int(ip: &IntPoly, lo: &Q, hi: &Q, k: u64) -> (Q, Q) {
     let a = lo.numer() * (&e / lo.denom());
     let b = hi.numer() * (&e / hi.denom());
     let s_lo = ip.sign_at(lo);
+    bisect_parts(ip, a, b, e, k, s_lo)
+}
+
+/// [`bisect_int`] on a/e < b/e (e > 0, nothing reduced), `s_lo` the sign
+/// at a/e.
+fn bisect_parts(ip: &IntPoly, a: BigInt, b: BigInt, e: BigInt, k: u64, s_lo: Ordering) -> (Q, Q) {
     let (mut a, mut b, mut e, mut k) = (a, b, e, k);
     // lo = a/e, hi = b/e; after j halvings the points are over e·2^j. From
     // `i64` ends, 61 doublings stay inside `i128`; an evaluation that

@@ -335,6 +335,33 @@ proptest! {
         }
     }
 
+    /// Refinement from a guess returns the bisection result whatever the
+    /// guess: close (a few cells off, as from floating point), wide, on the
+    /// wrong side, or a point.
+    #[test]
+    fn refinement_from_a_guess_equals_bisection(
+        rational in proptest::collection::vec((-30i64..30, 1i64..7), 0..4),
+        squares in proptest::collection::vec(2i64..40, 1..3),
+        bits in 0u32..70,
+        (off, spread) in (-40i64..40, 0u32..12),
+        scale in 20u32..64,
+    ) {
+        let p = mixed_poly(&rational, &squares);
+        let sf = p.squarefree();
+        let width = Q::new(1.into(), num_bigint::BigInt::from(1) << bits);
+        let unit = Q::new(1.into(), num_bigint::BigInt::from(1) << scale);
+        for (lo, hi) in isolate_real_roots(&p) {
+            let near = poly::advanced::sturm::refine_interval(&sf, &lo, &hi, &unit);
+            let centre = (&near.0 + &near.1) / q(2, 1) + &unit * q(off, 1);
+            let half = &unit * Q::from_integer(num_bigint::BigInt::from(1) << spread);
+            let (gl, gh) = (&centre - &half, &centre + &half);
+            let fast = poly::advanced::sturm::refine_interval_near(&sf, &lo, &hi, &width, &gl, &gh);
+            prop_assert_eq!(&fast, &bisect_oracle(&sf, &lo, &hi, &width));
+            let point = poly::advanced::sturm::refine_interval_near(&sf, &lo, &hi, &width, &centre, &centre);
+            prop_assert_eq!(point, fast);
+        }
+    }
+
     /// The same where the roots and the interval ends are large (2^40 and
     /// more): the `i128` bisection overflows part-way and falls back to
     /// `BigInt`, or never fits.
@@ -459,6 +486,10 @@ proptest! {
             // refinement): the same decimals.
             let narrow = a.refine(&Q::new(1.into(), num_bigint::BigInt::from(10).pow(digits as u32 + 4)));
             prop_assert_eq!(narrow.to_decimal(digits), a.to_decimal(digits));
+            // From an interval one decimal cell wide (its ends may round
+            // apart, and one sign then decides): the same decimals.
+            let cell = a.refine(&Q::new(1.into(), num_bigint::BigInt::from(10).pow(digits as u32)));
+            prop_assert_eq!(cell.to_decimal(digits), a.to_decimal(digits));
         }
     }
 }

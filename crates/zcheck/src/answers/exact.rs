@@ -15,21 +15,158 @@ pub(crate) fn fine() -> Q {
     FINE.clone()
 }
 
-/// The f64 nearest an algebraic number, from its 17-digit expansion.
-pub(crate) fn to_f64(a: &Algebraic) -> f64 {
-    a.to_decimal(17).parse().expect("a decimal expansion parses as f64")
+/// An interval believed to hold an irrational algebraic number, from
+/// Newton's method in f64 on its defining polynomial, kept inside the
+/// isolating interval by bisection: a guess for
+/// [`Algebraic::refine_near`], which checks it exactly (so a wrong guess
+/// costs time, never the answer). `None` where f64 cannot tell (a
+/// rational, overflow, no sign change seen).
+pub(crate) fn guess(a: &Algebraic) -> Option<(Q, Q)> {
+    let (lo, hi) = a.interval();
+    let p = a.defining_poly();
+    if p.degree().unwrap_or(0) < 2 {
+        return None;
+    }
+    let c: Vec<f64> = p.coeffs().iter().map(|q| q.to_f64()).collect::<Option<_>>()?;
+    // p and p′ together by Horner's rule.
+    let f = |x: f64| c.iter().rev().fold((0.0, 0.0), |(v, d), &ci| (v * x + ci, d * x + v));
+    let (mut l, mut h) = (lo.to_f64()?, hi.to_f64()?);
+    let (fl, fh) = (f(l).0, f(h).0);
+    if !(fl.is_finite() && fh.is_finite()) || fl == 0.0 || fh == 0.0 || (fl < 0.0) == (fh < 0.0) {
+        return None;
+    }
+    let rising = fl < 0.0;
+    let mut x = 0.5 * (l + h);
+    for _ in 0..100 {
+        let (v, d) = f(x);
+        if v == 0.0 {
+            break;
+        }
+        if (v < 0.0) == rising {
+            l = x;
+        } else {
+            h = x;
+        }
+        // Newton's step where it stays inside the bracket, else bisection.
+        let n = x - v / d;
+        let next = if n > l && n < h { n } else { 0.5 * (l + h) };
+        if next == x || !(l < next && next < h) {
+            break;
+        }
+        x = next;
+    }
+    // Rounding in Horner's rule blurs the sign within a few ulps of a
+    // well-conditioned root: a margin of 8 ulps either side.
+    let m = x.abs() * f64::EPSILON;
+    let spread = 8.0 * if m > 0.0 { m } else { f64::MIN_POSITIVE };
+    Some((dyadic(x - spread)?, dyadic(x + spread)?))
+}
+
+/// A finite f64 as the exact rational it is (num-rational's `from_float`
+/// goes through a general big-integer path).
+pub(crate) fn dyadic(x: f64) -> Option<Q> {
+    let (m, e) = parts(x)?;
+    Some(scaled(m.into(), e))
+}
+
+/// x = m·2^e exactly, for a finite x.
+fn parts(x: f64) -> Option<(i64, i64)> {
+    if !x.is_finite() {
+        return None;
+    }
+    let bits = x.to_bits();
+    let exp = ((bits >> 52) & 0x7ff) as i64;
+    let frac = (bits & ((1u64 << 52) - 1)) as i64;
+    let (m, e) = if exp == 0 { (frac, -1074) } else { (frac | (1i64 << 52), exp - 1075) };
+    Some((if x < 0.0 { -m } else { m }, e))
+}
+
+/// n·2^e as a rational in lowest terms.
+fn scaled(n: i128, e: i64) -> Q {
+    if n == 0 {
+        return Q::default();
+    }
+    let tz = (n.trailing_zeros() as i64).min(if e < 0 { -e } else { 0 });
+    let (n, e) = (n >> tz, e + tz);
+    let n = Q::from_integer(n.into());
+    if e >= 0 {
+        Q::from_integer(n.numer() << e as usize)
+    } else {
+        let one = Q::from_integer(1.into());
+        Q::new_raw(n.numer().clone(), one.numer() << (-e) as usize)
+    }
+}
+
+/// The exact midpoint of two finite f64s.
+fn midpoint(x: f64, y: f64) -> Option<Q> {
+    let ((mx, ex), (my, ey)) = (parts(x)?, parts(y)?);
+    let e = ex.min(ey);
+    let (sx, sy) = ((ex - e) as u32, (ey - e) as u32);
+    if sx > 60 || sy > 60 {
+        return None;
+    }
+    Some(scaled((mx as i128) * (1i128 << sx) + (my as i128) * (1i128 << sy), e - 1))
+}
+
+/// The f64 nearest an algebraic number (correctly rounded): refined
+/// narrower than a quarter of the ulp there (from `guess` when given, see
+/// [`guess`]), the ends of its interval round to one f64, or to two
+/// neighbours whose exact midpoint a sign test places it beside.
+pub(crate) fn nearest_f64(a: &Algebraic, guess: Option<&(Q, Q)>) -> f64 {
+    if let Some(q) = a.as_rational() {
+        return q.to_f64().unwrap_or(f64::NAN);
+    }
+    let mut b = a.clone();
+    for _ in 0..64 {
+        let (lo, hi) = b.interval();
+        let (Some(xl), Some(xh)) = (lo.to_f64(), hi.to_f64()) else { break };
+        if !(xl.is_finite() && xh.is_finite()) {
+            break;
+        }
+        if xl == xh {
+            return xl;
+        }
+        if xl.next_up() == xh {
+            // The midpoint of neighbours, exact: half their sum has one
+            // more bit than either.
+            let Some(mid) = midpoint(xl, xh) else { break };
+            return if b.cmp_rational(&mid) == std::cmp::Ordering::Less { xl } else { xh };
+        }
+        // Narrower than a quarter ulp, the ends round alike or to neighbours.
+        let top = xl.abs().max(xh.abs());
+        let width = dyadic((top.next_up() - top) / 4.0)
+            .filter(|w| w > &Q::default())
+            .unwrap_or_else(|| (&hi - &lo) / Q::from_integer(1024.into()));
+        b = match guess {
+            Some((gl, gh)) => a.refine_near(&width, gl, gh),
+            None => b.refine(&width),
+        };
+    }
+    a.to_decimal(17).parse().unwrap_or(f64::NAN)
+}
+
+/// `a` refined to `width`, from an f64 guess where one is found (the
+/// result is [`Algebraic::refine`]'s either way), and the guess.
+pub(crate) fn refined(a: &Algebraic, width: &Q) -> (Algebraic, Option<(Q, Q)>) {
+    let g = guess(a);
+    let r = match &g {
+        Some((gl, gh)) => a.refine_near(width, gl, gh),
+        None => a.refine(width),
+    };
+    (r, g)
 }
 
 /// A real algebraic number as JSON: its exact form (the closed form, else
 /// the defining polynomial in `var` and an interval), its value, its
 /// defining polynomial and an isolating interval narrower than 1e-20.
 pub(crate) fn number(a: &Algebraic, var: &str) -> Value {
-    // Refined once: the interval and the description read the same number.
-    let fine_a = a.refine(&fine());
+    // Refined once: the interval, the description and the value read the
+    // same number.
+    let (fine_a, g) = refined(a, &fine());
     let (lo, hi) = fine_a.interval();
     json!({
         "exact": fine_a.describe(var),
-        "value": to_f64(a),
+        "value": nearest_f64(&fine_a, g.as_ref()),
         "defining_poly": a.defining_poly().to_string_in(var),
         "interval": [lo.to_string(), hi.to_string()],
     })
@@ -47,4 +184,72 @@ pub(crate) fn constant(c: &Poly) -> Value {
 /// +∞ as JSON: exact text `inf`, no f64 value.
 pub(crate) fn infinity() -> Value {
     json!({ "exact": "inf", "value": null })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use poly::UPoly;
+    use proptest::prelude::*;
+
+    proptest! {
+        /// `dyadic` is num-rational's exact `from_float`, and `midpoint`
+        /// half the exact sum, for every finite f64 (subnormals, zero and
+        /// the binade edges included).
+        #[test]
+        fn floats_are_read_exactly(bits in any::<u64>(), step in 0u32..3) {
+            let x = f64::from_bits(bits);
+            prop_assume!(x.is_finite());
+            prop_assert_eq!(dyadic(x), Q::from_float(x));
+            let mut y = x;
+            for _ in 0..=step {
+                y = y.next_up();
+            }
+            prop_assume!(y.is_finite());
+            let sum = Q::from_float(x).unwrap() + Q::from_float(y).unwrap();
+            prop_assert_eq!(midpoint(x, y), Some(sum / Q::from_integer(2.into())));
+        }
+
+        /// The value is the f64 nearest the number (the slow oracle halves
+        /// until both ends round alike), and the refinement from the f64
+        /// guess is bisection's, for roots of products of x² − k and of
+        /// (d·x − n) scaled so that the roots span tiny to large.
+        #[test]
+        fn values_are_the_nearest_float_and_refinements_bisection(
+            squares in proptest::collection::vec(2i64..5000, 1..3),
+            linear in proptest::collection::vec((-50i64..50, 1i64..9), 0..3),
+            shift in -60i32..40,
+            width_bits in 20u32..80,
+        ) {
+            let mut p = UPoly::from_ints(&[1]);
+            for &k in &squares {
+                p = &p * &UPoly::from_ints(&[-k, 0, 1]);
+            }
+            for &(n, d) in &linear {
+                p = &p * &UPoly::from_ints(&[-n, d]);
+            }
+            // Roots times 2^shift: p(x / 2^shift).
+            let two = poly::q(2, 1);
+            let s = if shift >= 0 {
+                num_traits::pow(two.recip(), shift as usize)
+            } else {
+                num_traits::pow(two.clone(), (-shift) as usize)
+            };
+            let p = UPoly::new(
+                p.coeffs()
+                    .iter()
+                    .enumerate()
+                    .map(|(k, c)| c * num_traits::pow(s.clone(), k))
+                    .collect(),
+            );
+            let width = num_traits::pow(two.recip(), width_bits as usize);
+            for a in Algebraic::real_roots(&p) {
+                let (fast, g) = refined(&a, &width);
+                prop_assert_eq!(fast.interval(), a.refine(&width).interval());
+                let want = testkit::oracle::nearest_f64(&a);
+                prop_assert_eq!(nearest_f64(&fast, g.as_ref()).to_bits(), want.to_bits());
+                prop_assert_eq!(nearest_f64(&a, None).to_bits(), want.to_bits());
+            }
+        }
+    }
 }

@@ -7,7 +7,7 @@
 //! the shaded region, the boundary locus (the w where a root lies on the
 //! unit circle), and the exact axis intervals as thick segments.
 
-use super::exact::{constant, fine, number, to_f64};
+use super::exact::{constant, fine, nearest_f64, number};
 use crate::error::Error;
 use crate::load::LoadedMethod;
 use crate::values::ParamArg;
@@ -211,7 +211,7 @@ fn window(reports: &[(String, PlaneReport)]) -> f64 {
     let mut r: f64 = 3.0;
     for (_, p) in reports {
         for l in [&p.real_limit, &p.imag_limit].into_iter().flatten() {
-            r = r.max(to_f64(l) * 1.25);
+            r = r.max(nearest_f64(l, None) * 1.25);
         }
     }
     r.min(60.0)
@@ -279,9 +279,9 @@ pub(crate) fn figure(reports: &[(String, PlaneReport)], path: &Path) -> Result<(
             chart.draw_series(locus.into_iter().map(|q| Circle::new(q, 1, colour.filled())))?;
             // The exact axis intervals.
             let thick = colour.stroke_width(4);
-            let re = p.real_limit.as_ref().map_or(-x0, to_f64);
+            let re = p.real_limit.as_ref().map_or(-x0, |a| nearest_f64(a, None));
             chart.draw_series(LineSeries::new([(-re.min(-x0), 0.0), (0.0, 0.0)], thick))?;
-            let im = p.imag_limit.as_ref().map_or(y1, to_f64).min(y1);
+            let im = p.imag_limit.as_ref().map_or(y1, |a| nearest_f64(a, None)).min(y1);
             chart.draw_series(LineSeries::new([(0.0, -im), (0.0, im)], colour.stroke_width(4)))?;
         }
         chart

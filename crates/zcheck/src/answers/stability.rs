@@ -240,14 +240,6 @@ pub(crate) fn fine() -> Q {
     FINE.clone()
 }
 
-/// 1e-19: an interval this narrow rounds to 17 decimals (and to 15) at
-/// once, nearly always, so the two expansions share one refinement.
-fn finer() -> Q {
-    static FINER: std::sync::LazyLock<Q> =
-        std::sync::LazyLock::new(|| Q::new(1.into(), num_traits::pow(10.into(), 19)));
-    FINER.clone()
-}
-
 /// One exact number rendered once: the same critical point stands in a
 /// report's class changes, intervals and critical points, and refining a
 /// root of a large polynomial to 1e-15 is the costly part of a document.
@@ -275,13 +267,12 @@ pub(crate) fn render(a: &Algebraic) -> std::rc::Rc<Rendered> {
     if let Some(r) = RENDERED.with(|c| c.borrow().get(&key).cloned()) {
         return r;
     }
-    let fine_a = a.refine(&fine());
-    // The expansions are the number's, whatever interval they start from.
-    let finer_a = fine_a.refine(&finer());
+    let (fine_a, guess) = super::exact::refined(a, &fine());
     let r = std::rc::Rc::new(Rendered {
-        value: finer_a.to_decimal(17).parse().expect("a decimal expansion parses as f64"),
+        value: super::exact::nearest_f64(&fine_a, guess.as_ref()),
         exact: fine_a.describe("Phi"),
-        decimal: finer_a.to_decimal(15),
+        // Width ≤ 1e-15: one sign decides between two neighbouring decimals.
+        decimal: fine_a.to_decimal(15),
         interval: fine_a.interval(),
     });
     RENDERED.with(|c| {
@@ -294,7 +285,7 @@ pub(crate) fn render(a: &Algebraic) -> std::rc::Rc<Rendered> {
     r
 }
 
-/// The f64 nearest the exact number, from its exact 17-digit expansion.
+/// The f64 nearest the exact number (correctly rounded).
 pub(crate) fn to_f64(a: &Algebraic) -> f64 {
     render(a).value
 }
