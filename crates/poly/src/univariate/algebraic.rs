@@ -443,7 +443,7 @@ impl Algebraic {
         };
         let separated = |m: u64| {
             let (ahi, blo) = at(m);
-            ahi < blo
+            cmp(&ahi, &blo) == Ordering::Less
         };
         if separated(0) {
             let (ahi, blo) = at(0);
@@ -480,6 +480,24 @@ impl Algebraic {
         }
         let (lo, hi) = self.interval();
         format!("root of {} in [{lo}, {hi}]", self.defining_poly().to_string_in(var))
+    }
+}
+
+/// The larger of two rationals, by [`cmp`].
+fn larger<'a>(a: &'a Q, b: &'a Q) -> &'a Q {
+    if cmp(a, b) == Ordering::Less {
+        b
+    } else {
+        a
+    }
+}
+
+/// The smaller of two rationals, by [`cmp`].
+fn smaller<'a>(a: &'a Q, b: &'a Q) -> &'a Q {
+    if cmp(a, b) == Ordering::Greater {
+        b
+    } else {
+        a
     }
 }
 
@@ -1047,18 +1065,18 @@ impl PartialEq for Algebraic {
     /// roots of many conditions compares each with every other).
     fn eq(&self, other: &Algebraic) -> bool {
         match (&self.repr, &other.repr) {
-            (Repr::Rational(a), Repr::Rational(b)) => a == b,
+            (Repr::Rational(a), Repr::Rational(b)) => eq(a, b),
             (Repr::Rational(_), _) | (_, Repr::Rational(_)) => false,
             (
                 Repr::Root { poly: p1, lo: lo1, hi: hi1, .. },
                 Repr::Root { poly: p2, lo: lo2, hi: hi2, .. },
             ) => {
-                if hi1 <= lo2 || hi2 <= lo1 {
+                if cmp(hi1, lo2) != Ordering::Greater || cmp(hi2, lo1) != Ordering::Greater {
                     return false;
                 }
                 let g = p1.gcd(p2);
-                let (lo, hi) = (lo1.max(lo2), hi1.min(hi2));
-                if g.degree().unwrap_or(0) == 0 || lo >= hi {
+                let (lo, hi) = (larger(lo1, lo2), smaller(hi1, hi2));
+                if g.degree().unwrap_or(0) == 0 || cmp(lo, hi) != Ordering::Less {
                     return false;
                 }
                 let gi = IntPoly::new(&g);
@@ -1081,27 +1099,27 @@ impl Ord for Algebraic {
     /// polynomials; distinct ones by refining until the intervals separate.
     fn cmp(&self, other: &Algebraic) -> Ordering {
         match (&self.repr, &other.repr) {
-            (Repr::Rational(a), Repr::Rational(b)) => a.cmp(b),
+            (Repr::Rational(a), Repr::Rational(b)) => cmp(a, b),
             (_, Repr::Rational(b)) => self.cmp_rational(b),
             (Repr::Rational(a), _) => other.cmp_rational(a).reverse(),
             (
                 Repr::Root { poly: p1, lo: lo1, hi: hi1, .. },
                 Repr::Root { poly: p2, lo: lo2, hi: hi2, .. },
             ) => {
-                if hi1 <= lo2 {
+                if cmp(hi1, lo2) != Ordering::Greater {
                     return Ordering::Less;
                 }
-                if hi2 <= lo1 {
+                if cmp(hi2, lo1) != Ordering::Greater {
                     return Ordering::Greater;
                 }
                 let g = p1.gcd(p2);
-                let lo = lo1.max(lo2);
-                let hi = hi1.min(hi2);
+                let lo = larger(lo1, lo2);
+                let hi = smaller(hi1, hi2);
                 // g divides both square-free polynomials, so it has at most
                 // one root in (lo, hi), a simple one, and none at lo or hi
                 // (each is an end of an isolating interval of p1 or p2): it
                 // has one exactly when it changes sign.
-                if g.degree().unwrap_or(0) > 0 && lo < hi {
+                if g.degree().unwrap_or(0) > 0 && cmp(lo, hi) == Ordering::Less {
                     let gi = IntPoly::new(&g);
                     if gi.sign_at(lo) != gi.sign_at(hi) {
                         return Ordering::Equal;
@@ -1116,10 +1134,10 @@ impl Ord for Algebraic {
                 let ((mut alo, mut ahi), (mut blo, mut bhi)) = (self.interval(), other.interval());
                 let mut shift = 2u32;
                 loop {
-                    if ahi <= blo {
+                    if cmp(&ahi, &blo) != Ordering::Greater {
                         return Ordering::Less;
                     }
-                    if bhi <= alo {
+                    if cmp(&bhi, &alo) != Ordering::Greater {
                         return Ordering::Greater;
                     }
                     let scale = Q::from_integer(BigInt::one() << shift);

@@ -32,6 +32,7 @@ use std::cmp::Ordering;
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
 
+use crate::arith::rational::cmp;
 use crate::univariate::sturm::{root_bound, sign_changes, taylor_shift_one, CmpZero, IntPoly};
 use crate::{UPoly, Q};
 
@@ -62,7 +63,7 @@ impl Root {
     fn cmp_point(&mut self, x: &Q, located: &Located) -> Ordering {
         // Roots ±√y: compare y with x² on the side of zero that x is on.
         let (t, neg) = match self {
-            Root::Rational(r) => return (*r).cmp(x),
+            Root::Rational(r) => return cmp(r, x),
             Root::Sqrt { neg, .. } | Root::Between { neg, .. } if located.squared => {
                 let neg = *neg;
                 if !neg && !x.is_positive() {
@@ -78,11 +79,11 @@ impl Root {
         };
         let o = match self {
             Root::Rational(_) => unreachable!("returned above"),
-            Root::Sqrt { y, .. } => (*y).cmp(&t),
+            Root::Sqrt { y, .. } => cmp(y, &t),
             Root::Between { lo, hi, s_hi, .. } => {
-                if t <= *lo {
+                if cmp(&t, lo) != Ordering::Greater {
                     Ordering::Greater
-                } else if t >= *hi {
+                } else if cmp(&t, hi) != Ordering::Less {
                     Ordering::Less
                 } else {
                     let s = located.poly.sign_at(&t);

@@ -5,7 +5,7 @@
 use num_traits::Zero;
 
 use crate::univariate::isolate::{budget, descartes_isolate, isolate};
-use crate::univariate::sturm::isolate_squarefree_sturm;
+use crate::univariate::sturm::{isolate_squarefree_sturm, CmpZero};
 use crate::univariate::upoly::int_primitive;
 use crate::{UPoly, Q};
 
@@ -19,6 +19,25 @@ pub(crate) fn no_positive_roots(p: &UPoly, budget: usize) -> bool {
     debug_assert!(!p.coeff(0).is_zero());
     if p.degree().unwrap_or(0) == 0 {
         return false;
+    }
+    // Descartes' rule on (0, ∞) itself: no sign change, no positive root;
+    // exactly one, exactly one root. Read off the rational coefficients,
+    // before any integer form is made.
+    let mut changes = 0;
+    let mut last = std::cmp::Ordering::Equal;
+    for c in p.coeffs() {
+        let s = c.numer().sign().cmp_zero();
+        if s != std::cmp::Ordering::Equal {
+            if last != std::cmp::Ordering::Equal && s != last {
+                changes += 1;
+            }
+            last = s;
+        }
+    }
+    match changes {
+        0 => return true,
+        1 => return false,
+        _ => {}
     }
     // Descartes' bisection starts from Fujiwara's bound (no Cauchy bound).
     descartes_isolate(&int_primitive(p), u64::MAX, true, budget)
