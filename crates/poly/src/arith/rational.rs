@@ -100,6 +100,22 @@ pub(crate) fn cmp(a: &Q, b: &Q) -> std::cmp::Ordering {
     (a.numer() * b.denom()).cmp(&(b.numer() * a.denom()))
 }
 
+/// `q / 2^k` in lowest terms by shifts: the numerator loses the twos it
+/// has, up to k, the denominator gains the rest (no gcd).
+pub(crate) fn shr(q: &Q, k: u64) -> Q {
+    use num_traits::Zero;
+    if q.is_zero() {
+        return Q::zero();
+    }
+    let tz = q.numer().trailing_zeros().unwrap_or(0).min(k);
+    Q::new_raw(q.numer() >> tz, q.denom() << (k - tz))
+}
+
+/// The midpoint (a + b)/2, as [`add`] then [`shr`].
+pub(crate) fn midpoint(a: &Q, b: &Q) -> Q {
+    shr(&add(a, b), 1)
+}
+
 /// `a == b` by [`cmp`] (num-rational's `PartialEq` is its `Ord`).
 pub(crate) fn eq(a: &Q, b: &Q) -> bool {
     cmp(a, b) == std::cmp::Ordering::Equal
@@ -163,6 +179,12 @@ mod tests {
                 prop_assert_eq!(s.denom(), os.denom());
                 prop_assert_eq!(cmp(x, y), x.cmp(y));
                 prop_assert_eq!(cmp(x, &s), x.cmp(&s));
+                let k = (x.numer().bits() % 70) as u64;
+                let two_k = Q::from_integer(BigInt::from(1) << k);
+                let (h, oh) = (shr(x, k), x / &two_k);
+                prop_assert_eq!((h.numer(), h.denom()), (oh.numer(), oh.denom()));
+                let (m, om) = (midpoint(x, y), (x + y) / Q::from_integer(2.into()));
+                prop_assert_eq!((m.numer(), m.denom()), (om.numer(), om.denom()));
             }
             let r = ratio(a.numer() * b.denom(), b.denom().clone());
             let or = Q::new(a.numer() * b.denom(), b.denom().clone());

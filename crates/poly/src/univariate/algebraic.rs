@@ -19,7 +19,7 @@ use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
 
-use crate::arith::rational::{cmp, eq};
+use crate::arith::rational::{cmp, eq, shr};
 use crate::univariate::roots::isolate_squarefree;
 use crate::univariate::sturm::{
     count_real_roots, refine_int, refine_int_near, refine_quadratic, sign, IntPoly,
@@ -436,9 +436,8 @@ impl Algebraic {
     pub fn rational_between(lo: &Algebraic, hi: &Algebraic) -> Q {
         let (wa, wb) = (lo.width(), hi.width());
         let at = |m: u64| -> (Q, Q) {
-            let scale = Q::from_integer(BigInt::one() << (2 * m));
-            let (_, ahi) = lo.refine(&(&wa / &scale)).interval();
-            let (blo, _) = hi.refine(&(&wb / &scale)).interval();
+            let (_, ahi) = lo.refine(&shr(&wa, 2 * m)).interval();
+            let (blo, _) = hi.refine(&shr(&wb, 2 * m)).interval();
             (ahi, blo)
         };
         let separated = |m: u64| {

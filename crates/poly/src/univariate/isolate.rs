@@ -32,7 +32,7 @@ use std::cmp::Ordering;
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
 
-use crate::arith::rational::cmp;
+use crate::arith::rational::{cmp, midpoint};
 use crate::univariate::sturm::{root_bound, sign_changes, taylor_shift_one, CmpZero, IntPoly};
 use crate::{UPoly, Q};
 
@@ -372,7 +372,7 @@ impl Replay<'_> {
                 }
             }
             _ => {
-                let mid = (&lo + &hi) / Q::from_integer(2.into());
+                let mid = midpoint(&lo, &hi);
                 let (left, at_mid) = self.split(roots, &mid);
                 if at_mid {
                     let i = left - 1;

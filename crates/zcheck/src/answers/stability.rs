@@ -251,8 +251,46 @@ pub(crate) struct Rendered {
 }
 
 thread_local! {
-    static RENDERED: std::cell::RefCell<HashMap<String, std::rc::Rc<Rendered>>> =
+    static RENDERED: std::cell::RefCell<HashMap<NumberKey, std::rc::Rc<Rendered>>> =
         std::cell::RefCell::new(HashMap::new());
+}
+
+/// A rendered number's identity: its defining polynomial's coefficients
+/// and its interval's ends, compared and hashed by their reduced numerators
+/// and denominators (num-rational's `Eq` and `Hash` divide, as its `Ord`
+/// does; formatting the key as text cost more than the lookup saved).
+struct NumberKey(Vec<Q>);
+
+impl NumberKey {
+    fn of(a: &Algebraic) -> NumberKey {
+        let (lo, hi) = a.interval();
+        let mut v = a.defining_poly().coeffs().to_vec();
+        v.extend([lo, hi]);
+        NumberKey(v)
+    }
+}
+
+impl PartialEq for NumberKey {
+    fn eq(&self, other: &NumberKey) -> bool {
+        self.0.len() == other.0.len()
+            && self
+                .0
+                .iter()
+                .zip(&other.0)
+                .all(|(a, b)| a.numer() == b.numer() && a.denom() == b.denom())
+    }
+}
+
+impl Eq for NumberKey {}
+
+impl std::hash::Hash for NumberKey {
+    fn hash<H: std::hash::Hasher>(&self, state: &mut H) {
+        self.0.len().hash(state);
+        for q in &self.0 {
+            q.numer().hash(state);
+            q.denom().hash(state);
+        }
+    }
 }
 /// Empties the cache of rendered numbers: a front end's call starts from
 /// nothing, so its time is the whole work (`api::stability`).
@@ -261,9 +299,7 @@ pub(crate) fn forget_rendered() {
 }
 
 pub(crate) fn render(a: &Algebraic) -> std::rc::Rc<Rendered> {
-    // A cheap key (Debug would print the closed form, the costly part).
-    let (lo, hi) = a.interval();
-    let key = format!("{} {lo} {hi}", a.defining_poly().to_string_in("x"));
+    let key = NumberKey::of(a);
     if let Some(r) = RENDERED.with(|c| c.borrow().get(&key).cloned()) {
         return r;
     }
