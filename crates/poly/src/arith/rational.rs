@@ -179,7 +179,7 @@ mod tests {
                 prop_assert_eq!(s.denom(), os.denom());
                 prop_assert_eq!(cmp(x, y), x.cmp(y));
                 prop_assert_eq!(cmp(x, &s), x.cmp(&s));
-                let k = (x.numer().bits() % 70) as u64;
+                let k = x.numer().bits() % 70;
                 let two_k = Q::from_integer(BigInt::from(1) << k);
                 let (h, oh) = (shr(x, k), x / &two_k);
                 prop_assert_eq!((h.numer(), h.denom()), (oh.numer(), oh.denom()));
