@@ -178,6 +178,48 @@ def test_sympy_rationals_take_the_short_path_to_the_same_text():
     assert _entry(sympy.Float("0.25"), "x") == sympy_entry(sympy.Float("0.25"), "x")
 
 
+def test_entry_lists_take_the_fast_path_to_the_same_text():
+    # _texts converts by a class lookup where it can; _entry is its oracle,
+    # and an entry off the fast path is still named in its error.
+    from zcheck import _entry, _texts
+
+    values = [0, 7, -3, "1/3", "sqrt(2)/4", sympy.Integer(5), sympy.Rational(-7, 9), sympy.S.Half,
+              sympy.S.One, sympy.S.Zero, sympy.S.NegativeOne, Fraction(3, 8), 0.1, sympy.sqrt(3) / 6, 10**40]
+    assert _texts(values, lambda i: f"v[{i}]") == [_entry(x, "v") for x in values]
+    with pytest.raises(zcheck.Error, match=r"A\[2\]\[1\]: True: expected a number, not a bool"):
+        zcheck.Method.from_tableau([[0, 0], [True, 0]], [0, 1])
+    with pytest.raises(zcheck.Error, match=r"b\[2\]: nan"):
+        zcheck.Method.from_tableau([[0, 0], [1, 0]], [0.5, float("nan")])
+
+
+def test_the_stability_tags_are_the_general_ones():
+    # stability() tags its exact strings by one set of known keys; the
+    # general hook, which scans every key, is its oracle, on every built-in
+    # and catalogue method.
+    def same(x, y):
+        if type(x) is not type(y):
+            return False
+        if isinstance(x, dict):
+            return x.keys() == y.keys() and all(same(x[k], y[k]) for k in x)
+        if isinstance(x, list):
+            return len(x) == len(y) and all(map(same, x, y))
+        return x == y
+
+    names = sorted(f[:-3] for f in os.listdir(os.path.join(REPO, "crates", "poly", "methods")) if f.endswith(".zm"))
+    methods = [zcheck.Method.builtin(n) for n in names]
+    methods += [zcheck.Method.from_file(os.path.join(RK_DIR, f)) for f in sorted(os.listdir(RK_DIR))]
+    checked = 0
+    for m in methods:
+        params = {p: "1/10" for p in m.params}
+        try:
+            text = m._native.stability(zcheck._params(params))
+        except zcheck.Error:
+            continue
+        assert same(zcheck._parse(text), zcheck._parse(text, hook=zcheck._tag_stability)), m.name
+        checked += 1
+    assert checked > 80
+
+
 def test_exact_values_to_sympy():
     s = zcheck.Method.builtin("semi_false_heun").stability()
     e = s["phi_max_exact"]

@@ -136,8 +136,46 @@ def _tag_number(d):
     return d
 
 
+# Every key of the stability document that holds exact text: `_tag_exact`'s
+# tags found by one set intersection per object, not a scan of its keys (a
+# test compares the two on the documents of every built-in and catalogue
+# method).
+_STABILITY_EXACT_KEYS = _EXACT_KEYS | frozenset(
+    ["phi_exact", "lo_exact", "hi_exact", "phi_max_exact", "practical_phi_max_exact"]
+)
+
+
+def _tag_stability(d):
+    for k in _STABILITY_EXACT_KEYS.intersection(d):
+        v = d[k]
+        if v.__class__ is str:
+            d[k] = Exact(v)
+    return d
+
+
 def _parse(text, exact=True, hook=_tag_exact):
     return _json.loads(text, object_hook=hook if exact else None)
+
+
+def _sympy_rational(x):
+    # Integer and Rational (NodePy's entries): p/q in lowest terms, q > 0,
+    # without the general writer.
+    return str(x.p) if x.q == 1 else f"{x.p}/{x.q}"
+
+
+# Types whose every value converts without a check that can fail: a class
+# lookup, then the converter. SymPy's rational classes join on first sight.
+_FAST = {str: str, int: str}
+
+
+def _texts(xs, label):
+    """The entry texts of a sequence; ``label(i)`` names entry i, and is
+    called only for an entry off the fast path (so only for an error)."""
+    out = []
+    for i, x in enumerate(xs):
+        f = _FAST.get(x.__class__)
+        out.append(f(x) if f is not None else _entry(x, label(i)))
+    return out
 
 
 def _entry(x, where):
@@ -149,9 +187,8 @@ def _entry(x, where):
         raise Error(f"{where}: {x!r}: expected a number, not a bool")
     if type(x).__module__.split(".")[0] == "sympy":
         if getattr(x, "is_Rational", False) is True:
-            # Integer and Rational (NodePy's entries): p/q in lowest terms,
-            # q > 0, without the general writer.
-            return str(x.p) if x.q == 1 else f"{x.p}/{x.q}"
+            _FAST[x.__class__] = _sympy_rational
+            return _sympy_rational(x)
         from ._entries import sympy_entry
 
         return sympy_entry(x, where)
@@ -228,10 +265,10 @@ class Method:
         ``A[1][2]``, ``b[3]``, ``c[1]``.
         """
         rows = [list(row) for row in A]
-        a = [[_entry(x, f"A[{i + 1}][{j + 1}]") for j, x in enumerate(r)] for i, r in enumerate(rows)]
-        bb = [_entry(x, f"b[{i + 1}]") for i, x in enumerate(b)]
-        cc = None if c is None else [_entry(x, f"c[{i + 1}]") for i, x in enumerate(c)]
-        bh = None if bhat is None else [_entry(x, f"bhat[{i + 1}]") for i, x in enumerate(bhat)]
+        a = [_texts(r, lambda j, i=i: f"A[{i + 1}][{j + 1}]") for i, r in enumerate(rows)]
+        bb = _texts(b, lambda i: f"b[{i + 1}]")
+        cc = None if c is None else _texts(c, lambda i: f"c[{i + 1}]")
+        bh = None if bhat is None else _texts(bhat, lambda i: f"bhat[{i + 1}]")
         return cls(_native.from_tableau(name, a, bb, cc, bh))
 
     @classmethod
@@ -240,8 +277,8 @@ class Method:
         f_(n+j), lowest j first (NodePy's order). Entries as in
         :meth:`from_tableau`; errors name them from 0, as j is:
         ``alpha[0]``."""
-        al = [_entry(x, f"alpha[{j}]") for j, x in enumerate(alpha)]
-        be = [_entry(x, f"beta[{j}]") for j, x in enumerate(beta)]
+        al = _texts(alpha, lambda j: f"alpha[{j}]")
+        be = _texts(beta, lambda j: f"beta[{j}]")
         return cls(_native.from_multistep(name, al, be))
 
     @classmethod
@@ -298,7 +335,7 @@ class Method:
         Phi, the boundary, every class change, rho_inf, the dispersion and
         dissipation orders. Keyword arguments bind the method's parameters
         (exact: ``D=Fraction(1, 10)``, ``D="1/10"`` or ``D=0.1``)."""
-        return _parse(self._native.stability(_params(params)))
+        return _parse(self._native.stability(_params(params)), hook=_tag_stability)
 
     def region(self, **params):
         """``zcheck region --format json``: the method on y' = lambda*y in the
