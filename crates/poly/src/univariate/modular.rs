@@ -90,6 +90,13 @@ fn unhalve(h: &UPoly) -> UPoly {
 /// conjugated by diag(1, −1)), so is the determinant: it is computed in
 /// u = Φ², with half the interpolation points, each evaluation half as long.
 pub(crate) fn det(m: &[Vec<UPoly>]) -> UPoly {
+    // Orders 1 and 2 (Jury's inners of a second- and third-order χ) by
+    // their formulas: fewer products than any evaluation at points.
+    match m.len() {
+        1 => return m[0][0].clone(),
+        2 => return &(&m[0][0] * &m[1][1]) - &(&m[0][1] * &m[1][0]),
+        _ => {}
+    }
     if all_even(m.iter().flatten()) && m.iter().flatten().any(|e| e.degree().unwrap_or(0) > 0) {
         let half: Vec<Vec<UPoly>> = m.iter().map(|row| row.iter().map(halve).collect()).collect();
         return unhalve(&det_direct(&half));
