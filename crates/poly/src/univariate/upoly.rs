@@ -507,9 +507,28 @@ pub(crate) fn int_primitive(p: &UPoly) -> Vec<BigInt> {
 pub(crate) fn int_primitive_of(p: &UPoly) -> Vec<BigInt> {
     let mut den = BigInt::one();
     for q in p.coeffs() {
-        den = crate::arith::intgcd::lcm(&den, q.denom());
+        if !q.denom().is_one() {
+            den = crate::arith::intgcd::lcm(&den, q.denom());
+        }
     }
-    primitive(p.coeffs().iter().map(|q| q.numer() * (&den / q.denom())).collect())
+    if den.is_one() {
+        // Integer coefficients (χ's, scaled once, and their combinations).
+        return primitive(p.coeffs().iter().map(|q| q.numer().clone()).collect());
+    }
+    primitive(
+        p.coeffs()
+            .iter()
+            .map(
+                |q| {
+                    if *q.denom() == den {
+                        q.numer().clone()
+                    } else {
+                        q.numer() * (&den / q.denom())
+                    }
+                },
+            )
+            .collect(),
+    )
 }
 
 /// a / b for integer polynomials (lowest power first) when b divides a in
@@ -659,6 +678,17 @@ mod tests {
             prop_assert!(p.monic().ints.get().is_some());
             for u in [p.monic(), p.squarefree(), q.squarefree(), q.gcd(&p), p.monic().shifted_up(k)] {
                 prop_assert_eq!(int_primitive(&u), int_primitive_of(&u));
+            }
+            // The fresh form against the obvious one: times the product of
+            // the denominators, over the gcd of the integers (with integer
+            // coefficients, and without).
+            let ints = UPoly::new(num.iter().map(|&n| Q::from_integer(n.into())).collect());
+            for u in [p, q, ints] {
+                let all: BigInt = u.coeffs().iter().map(|c| c.denom().clone()).product();
+                let scaled: Vec<BigInt> = u.coeffs().iter().map(|c| (c * Q::from_integer(all.clone())).to_integer()).collect();
+                let g = scaled.iter().fold(BigInt::zero(), |g, x| num_integer::Integer::gcd(&g, x));
+                let slow: Vec<BigInt> = scaled.iter().map(|x| x / &g).collect();
+                prop_assert_eq!(int_primitive_of(&u), slow);
             }
         }
     }
