@@ -367,6 +367,10 @@ pub fn sign(a: &Poly) -> Ordering {
 
 /// A rational within `width` of the real value of `a` (generators only).
 pub fn approx(a: &Poly, width: &Q) -> Q {
+    // A rational is its own value (the interval would be the point).
+    if let Some(q) = a.as_constant() {
+        return q;
+    }
     let mut w = width.clone();
     loop {
         let (lo, hi) = value_interval(a, &w);
