@@ -511,24 +511,11 @@ pub(crate) fn int_primitive_of(p: &UPoly) -> Vec<BigInt> {
             den = crate::arith::intgcd::lcm(&den, q.denom());
         }
     }
-    if den.is_one() {
-        // Integer coefficients (χ's, scaled once, and their combinations).
-        return primitive(p.coeffs().iter().map(|q| q.numer().clone()).collect());
-    }
-    primitive(
-        p.coeffs()
-            .iter()
-            .map(
-                |q| {
-                    if *q.denom() == den {
-                        q.numer().clone()
-                    } else {
-                        q.numer() * (&den / q.denom())
-                    }
-                },
-            )
-            .collect(),
-    )
+    // Integer coefficients (χ's, scaled once, and their combinations) are
+    // taken as they are: no division by one.
+    let num =
+        |q: &Q| if *q.denom() == den { q.numer().clone() } else { q.numer() * (&den / q.denom()) };
+    primitive(p.coeffs().iter().map(num).collect())
 }
 
 /// a / b for integer polynomials (lowest power first) when b divides a in
