@@ -586,8 +586,8 @@ pub fn refine_interval(p: &UPoly, lo: &Q, hi: &Q, width: &Q) -> (Q, Q) {
 }
 
 /// [`refine_interval`]'s result, found faster when `(gl, gh)` is a good
-/// guess of an interval around the root (see [`refine_int_near`]); the
-/// guess never changes the result.
+/// guess of an interval around the root (checked by exact signs at the
+/// grid level the guess resolves); the guess never changes the result.
 pub fn refine_interval_near(p: &UPoly, lo: &Q, hi: &Q, width: &Q, gl: &Q, gh: &Q) -> (Q, Q) {
     if eq(lo, hi) {
         return (lo.clone(), hi.clone());
