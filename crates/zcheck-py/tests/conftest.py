@@ -19,6 +19,18 @@ def rk_stems():
     return sorted(f[: -len(".toml")] for f in os.listdir(RK_DIR) if f.endswith(".toml"))
 
 
+def same_document(x, y):
+    """Two parsed documents alike down to the types: a str against an
+    Exact differs (the tagging hooks are compared with it)."""
+    if type(x) is not type(y):
+        return False
+    if isinstance(x, dict):
+        return x.keys() == y.keys() and all(same_document(x[k], y[k]) for k in x)
+    if isinstance(x, list):
+        return len(x) == len(y) and all(map(same_document, x, y))
+    return x == y
+
+
 def inexact(stem):
     """The eleven files the exporter marked INEXACT (NodePy holds binary
     floats, or a value zcheck's entry syntax cannot write)."""

@@ -13,7 +13,7 @@ import pytest
 import sympy
 
 import zcheck
-from conftest import REPO, RK_DIR
+from conftest import REPO, RK_DIR, same_document
 
 GL2 = (
     [["1/4", "1/4 - sqrt(3)/6"], ["1/4 + sqrt(3)/6", "1/4"]],
@@ -196,15 +196,6 @@ def test_the_stability_tags_are_the_general_ones():
     # stability() tags its exact strings by one set of known keys; the
     # general hook, which scans every key, is its oracle, on every built-in
     # and catalogue method.
-    def same(x, y):
-        if type(x) is not type(y):
-            return False
-        if isinstance(x, dict):
-            return x.keys() == y.keys() and all(same(x[k], y[k]) for k in x)
-        if isinstance(x, list):
-            return len(x) == len(y) and all(map(same, x, y))
-        return x == y
-
     names = sorted(f[:-3] for f in os.listdir(os.path.join(REPO, "crates", "poly", "methods")) if f.endswith(".zm"))
     methods = [zcheck.Method.builtin(n) for n in names]
     methods += [zcheck.Method.from_file(os.path.join(RK_DIR, f)) for f in sorted(os.listdir(RK_DIR))]
@@ -215,7 +206,7 @@ def test_the_stability_tags_are_the_general_ones():
             text = m._native.stability(zcheck._params(params))
         except zcheck.Error:
             continue
-        assert same(zcheck._parse(text), zcheck._parse(text, hook=zcheck._tag_stability)), m.name
+        assert same_document(zcheck._parse(text), zcheck._parse(text, hook=zcheck._tag_stability)), m.name
         checked += 1
     assert checked > 80
 

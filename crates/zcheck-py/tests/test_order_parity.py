@@ -32,7 +32,7 @@ import os
 import pytest
 
 import zcheck
-from conftest import RK_DIR, inexact, rk_stems
+from conftest import RK_DIR, inexact, rk_stems, same_document
 
 TOL = 1e-12
 
@@ -140,15 +140,6 @@ def test_order_documents_tag_what_the_general_reader_tags(tmp_path):
     # general one, which every other document uses, scans every key. On
     # every kind of method, with a modified equation and a tolerance, they
     # give the same document, with Exact in the same places.
-    def same(x, y):
-        if type(x) is not type(y):
-            return False
-        if isinstance(x, dict):
-            return x.keys() == y.keys() and all(same(x[k], y[k]) for k in x)
-        if isinstance(x, list):
-            return len(x) == len(y) and all(map(same, x, y))
-        return x == y
-
     def exacts(x):
         if isinstance(x, dict):
             return sum(exacts(v) for v in x.values())
@@ -171,7 +162,7 @@ def test_order_documents_tag_what_the_general_reader_tags(tmp_path):
                 continue  # --modified is for RK kinds only
             general = zcheck._parse(text)
             fast = zcheck._parse(text, hook=zcheck._tag_number)
-            assert same(general, fast), m.name
+            assert same_document(general, fast), m.name
             tagged += exacts(fast)
     assert tagged > 1000
 
