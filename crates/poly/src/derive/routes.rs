@@ -42,8 +42,9 @@ pub struct Derivation {
     method: Method,
     /// M as a polynomial matrix in w = z⁻¹ (see [`w`]); one row and column per
     /// assignment, plus one per state variable the step never assigns.
-    /// Stored by rows: it is mostly zero.
-    z_matrix: SparsePolyMatrix,
+    /// Stored by rows: it is mostly zero. A tableau's derivation (from its
+    /// stability function) builds it on first use.
+    z_matrix: std::sync::OnceLock<SparsePolyMatrix>,
     /// The transition matrix P over the augmented state
     /// ([`Method::slots`] order); for an implicit step, P times
     /// [`Derivation::p_denominator`].
@@ -87,7 +88,7 @@ impl Derivation {
 
     /// The z-domain matrix M, in w = z⁻¹.
     pub fn z_matrix(&self) -> &SparsePolyMatrix {
-        &self.z_matrix
+        self.z_matrix.get_or_init(|| z_matrix(&self.method))
     }
 
     /// χ's coefficients, highest power of z first (the first is 1 for an
@@ -119,9 +120,9 @@ impl Derivation {
     pub fn z_matrix_reduced(&self) -> ReducedZMatrix {
         let m = &self.method;
         let kept = kept_unknowns(m);
-        let (order, matrix) = match reduce_z_matrix(&self.z_matrix, &kept) {
+        let (order, matrix) = match reduce_z_matrix(self.z_matrix(), &kept) {
             Some(reduced) => (kept, reduced),
-            None => eliminate_dense(self.z_matrix.to_dense(), &kept),
+            None => eliminate_dense(self.z_matrix().to_dense(), &kept),
         };
         let n_a = m.assigns().len();
         let carried = carried_unknowns(m);
@@ -620,7 +621,7 @@ fn derive_runge_kutta(method: &Method, p: &Poly, q: &Poly) -> Derivation {
     };
     Derivation {
         method: method.clone(),
-        z_matrix: z_matrix(method),
+        z_matrix: std::sync::OnceLock::new(),
         transition_matrix,
         p_denominator,
         charpoly,
@@ -659,7 +660,7 @@ pub fn derive_both_routes(method: &Method) -> Result<Derivation, Error> {
     }
     Ok(Derivation {
         method: method.clone(),
-        z_matrix,
+        z_matrix: std::sync::OnceLock::from(z_matrix),
         transition_matrix,
         p_denominator,
         charpoly: a,

@@ -33,7 +33,9 @@ use num_traits::Zero;
 
 use crate::error::{Error, ErrorKind, Span, Warning};
 use crate::lang::constant::{self, use_before_declaration, ConstSource};
-use crate::lang::method::{Assign, Equation, GaussSeidelRead, Method, Operand, Target, Unknown};
+use crate::lang::method::{
+    Assign, Body, Equation, GaussSeidelRead, Lowered, Method, Operand, Target, Unknown,
+};
 use crate::lang::syntax::{self, BinOp, Expr, ExprKind, Item};
 use crate::multivariate::constants as field;
 use crate::{Poly, Sym};
@@ -470,18 +472,21 @@ impl Program {
         let (history, finals, gauss_seidel) = (lw.history, lw.latest_state, lw.gauss_seidel);
         Ok(Method {
             scalar,
+            implicit: !unknowns.is_empty(),
             name: self.name,
             state: self.state,
             params: self.params,
-            assigns,
             history,
-            finals,
-            unknowns,
-            equations,
             constants,
-            gauss_seidel,
-            warnings,
             stability_function: Default::default(),
+            body: Body::lowered(Lowered {
+                assigns,
+                finals,
+                unknowns,
+                equations,
+                gauss_seidel,
+                warnings,
+            }),
         })
     }
 }

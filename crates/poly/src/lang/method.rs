@@ -116,28 +116,101 @@ pub struct Assign {
 }
 
 /// A validated, lowered `.zm` method.
-#[derive(Clone, Debug, PartialEq, Eq)]
+///
+/// Its header (name, state, parameters, history depths, constants, whether
+/// it is scalar or implicit) is always at hand; the lowered program itself
+/// ([`Method::assigns`], [`Method::unknowns`], ...) may be generated on
+/// first use. A program generated from a Butcher tableau is lowered only
+/// when something reads its lines: the derivation of a tableau comes from
+/// its stability function, so `zcheck stability` never lowers it. Clones
+/// share the lowered program.
+#[derive(Clone, Debug)]
 pub struct Method {
     pub(crate) name: String,
     pub(crate) state: Vec<String>,
     pub(crate) params: Vec<Sym>,
-    pub(crate) assigns: Vec<Assign>,
     pub(crate) history: Vec<u32>,
+    pub(crate) constants: Vec<Constant>,
+    /// Whether the program is written for the scalar test equation
+    /// y' = λy (it reads `w` = hλ) rather than the oscillator (`Phi`).
+    pub(crate) scalar: bool,
+    /// Whether the step solves a linear system (it has unknowns).
+    pub(crate) implicit: bool,
+    /// For a program generated from a Butcher tableau, its stability
+    /// function: `derive` reads χ and P from it.
+    pub(crate) stability_function: StabilityFunction,
+    pub(crate) body: Body,
+}
+
+/// The lowered lines of a [`Method`].
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub(crate) struct Lowered {
+    pub(crate) assigns: Vec<Assign>,
     /// The last assignment to each state variable, if any.
     pub(crate) finals: Vec<Option<usize>>,
     pub(crate) unknowns: Vec<Unknown>,
     pub(crate) equations: Vec<Equation>,
-    pub(crate) constants: Vec<Constant>,
     pub(crate) gauss_seidel: Vec<GaussSeidelRead>,
-    /// Whether the program is written for the scalar test equation
-    /// y' = λy (it reads `w` = hλ) rather than the oscillator (`Phi`).
-    pub(crate) scalar: bool,
     /// What the program says that it probably does not mean.
     pub(crate) warnings: Vec<Warning>,
-    /// For a program generated from a Butcher tableau, its stability
-    /// function: `derive` reads χ and P from it.
-    pub(crate) stability_function: StabilityFunction,
 }
+
+/// A generator of a program: parses and lowers it, to a method whose header
+/// is the deferred method's.
+type Generate = Box<dyn Fn() -> Result<Method, crate::Error> + Send + Sync>;
+
+/// A method's lowered program, lowered already or on first use (shared by
+/// clones).
+#[derive(Clone)]
+pub(crate) struct Body(std::sync::Arc<BodyCell>);
+
+struct BodyCell {
+    lowered: std::sync::OnceLock<Lowered>,
+    generate: Option<Generate>,
+}
+
+impl Body {
+    /// A program lowered already.
+    pub(crate) fn lowered(lowered: Lowered) -> Body {
+        Body(std::sync::Arc::new(BodyCell {
+            lowered: std::sync::OnceLock::from(lowered),
+            generate: None,
+        }))
+    }
+
+    /// A program lowered on first use by `generate`, which must not fail
+    /// and must give the header it is deferred under (a generator of a
+    /// validated tableau's program; [`Method::lowered`] checks both).
+    pub(crate) fn deferred(generate: Generate) -> Body {
+        Body(std::sync::Arc::new(BodyCell {
+            lowered: std::sync::OnceLock::new(),
+            generate: Some(generate),
+        }))
+    }
+
+    /// Whether the program has been lowered (for the tests of deferral).
+    pub(crate) fn is_lowered(&self) -> bool {
+        self.0.lowered.get().is_some()
+    }
+}
+
+impl fmt::Debug for Body {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self.0.lowered.get() {
+            Some(l) => l.fmt(f),
+            None => f.write_str("Body(deferred)"),
+        }
+    }
+}
+
+impl PartialEq for Method {
+    /// Equal headers and equal lowered programs (lowering both if need be).
+    fn eq(&self, other: &Method) -> bool {
+        self.same_header(other) && self.lowered() == other.lowered()
+    }
+}
+
+impl Eq for Method {}
 
 /// A Runge–Kutta method's stability function R(w) = P(w)/Q(w) with
 /// P = det(I − wA + w·1bᵀ) and Q = det(I − wA), exact polynomials in `w`
@@ -162,11 +235,45 @@ impl Method {
         &self.name
     }
 
+    /// The lowered program, lowering a deferred one now.
+    ///
+    /// # Panics
+    ///
+    /// When a deferred program's generator fails or gives another header:
+    /// a bug in the generator (its input was validated), which the tests of
+    /// `lang::tableau` hold on every catalogue and random tableau.
+    pub(crate) fn lowered(&self) -> &Lowered {
+        let cell = &self.body.0;
+        cell.lowered.get_or_init(|| {
+            let generate = cell.generate.as_ref().expect("a method is lowered or has a generator");
+            let m = generate().unwrap_or_else(|e| {
+                panic!("the program generated for method `{}` does not lower: {e}", self.name)
+            });
+            assert!(
+                self.same_header(&m),
+                "the program generated for method `{}` has another header: {m:?}",
+                self.name
+            );
+            m.lowered().clone()
+        })
+    }
+
+    /// Whether the two methods agree on everything but their lowered lines.
+    fn same_header(&self, other: &Method) -> bool {
+        self.name == other.name
+            && self.state == other.state
+            && self.params == other.params
+            && self.history == other.history
+            && self.constants == other.constants
+            && self.scalar == other.scalar
+            && self.implicit == other.implicit
+    }
+
     /// What the program says that it probably does not mean (a value
     /// assigned and never read, a state variable never assigned), in file
     /// order. A method with warnings derives as written.
     pub fn warnings(&self) -> &[Warning] {
-        &self.warnings
+        &self.lowered().warnings
     }
 
     /// The state variables, in declaration order.
@@ -189,7 +296,7 @@ impl Method {
 
     /// The lowered assignments, in program order.
     pub fn assigns(&self) -> &[Assign] {
-        &self.assigns
+        &self.lowered().assigns
     }
 
     /// The deepest history read per state variable (0 when only the start
@@ -221,12 +328,12 @@ impl Method {
     /// A variable with an equation `x' = ...` ends the step with its
     /// unknown instead: see [`Method::end_value`].
     pub fn final_assign(&self, var: usize) -> Option<usize> {
-        self.finals[var]
+        self.lowered().finals[var]
     }
 
     /// Where state variable `var`'s end-of-step value comes from.
     pub fn end_value(&self, var: usize) -> EndValue {
-        if let Some(u) = self.unknowns.iter().position(|u| u.state == Some(var)) {
+        if let Some(u) = self.unknowns().iter().position(|u| u.state == Some(var)) {
             return EndValue::Unknown(u);
         }
         match self.final_assign(var) {
@@ -238,17 +345,17 @@ impl Method {
     /// The unknowns of the implicit system: primed state variables (in state
     /// order), then declared `unknown`s. Empty for an explicit method.
     pub fn unknowns(&self) -> &[Unknown] {
-        &self.unknowns
+        &self.lowered().unknowns
     }
 
     /// The equations, one per unknown, in [`Method::unknowns`] order.
     pub fn equations(&self) -> &[Equation] {
-        &self.equations
+        &self.lowered().equations
     }
 
     /// Whether the step solves a linear system (it has unknowns).
     pub fn is_implicit(&self) -> bool {
-        !self.unknowns.is_empty()
+        self.implicit
     }
 
     /// The exact constants declared with `const`.
@@ -259,7 +366,7 @@ impl Method {
     /// Every read of a state variable that an earlier line of the same step
     /// has already updated, in program order.
     pub fn gauss_seidel_reads(&self) -> &[GaussSeidelRead] {
-        &self.gauss_seidel
+        &self.lowered().gauss_seidel
     }
 
     /// The name an assignment writes.
@@ -276,7 +383,7 @@ impl Method {
             Operand::Start { var, lag: 0 } => self.state[var].clone(),
             Operand::Start { var, lag } => format!("{}@{lag}", self.state[var]),
             Operand::Stmt(t) => format!("%{t}"),
-            Operand::Unknown(u) => self.unknowns[u].name.clone(),
+            Operand::Unknown(u) => self.unknowns()[u].name.clone(),
         }
     }
 }
@@ -302,19 +409,19 @@ impl fmt::Display for Method {
                 None => writeln!(f, "const {} = {}", c.name, c.value)?,
             }
         }
-        if !self.unknowns.is_empty() {
-            let us: Vec<&str> = self.unknowns.iter().map(|u| u.name.as_str()).collect();
+        if !self.unknowns().is_empty() {
+            let us: Vec<&str> = self.unknowns().iter().map(|u| u.name.as_str()).collect();
             writeln!(f, "unknown {}", us.join(" "))?;
         }
         let lines = self
-            .assigns
+            .assigns()
             .iter()
             .enumerate()
             .map(|(k, a)| (a.line, format!("%{k} ({})", self.target_name(a)), &a.terms))
             .chain(
-                self.equations
+                self.equations()
                     .iter()
-                    .map(|e| (e.line, format!("{} =", self.unknowns[e.unknown].name), &e.terms)),
+                    .map(|e| (e.line, format!("{} =", self.unknowns()[e.unknown].name), &e.terms)),
             );
         let mut lines: Vec<_> = lines.collect();
         lines.sort_by_key(|l| l.0);

@@ -53,26 +53,62 @@ mod stability_function_route {
         })
     }
 
+    /// A plain entry: zero, a fraction or a decimal, of either sign.
+    fn plain_entry() -> impl Strategy<Value = String> {
+        prop_oneof![
+            3 => Just("0".to_owned()),
+            4 => (-99i64..100, 1i64..13).prop_map(|(n, d)| format!("{n}/{d}")),
+            1 => (-999i64..1000).prop_map(|n| format!("{}", n as f64 / 8.0)),
+        ]
+    }
+
+    fn plain_tableau() -> impl Strategy<Value = (Vec<Vec<String>>, Vec<String>, bool)> {
+        (1usize..7).prop_flat_map(|s| {
+            (
+                proptest::collection::vec(proptest::collection::vec(plain_entry(), s), s),
+                proptest::collection::vec(plain_entry(), s),
+                any::<bool>(),
+            )
+        })
+    }
+
+    fn read(a: &[Vec<String>], b: &[String], lower: bool) -> Tableau {
+        let a: Vec<Vec<Exact>> = a
+            .iter()
+            .enumerate()
+            .map(|(i, row)| {
+                row.iter()
+                    .enumerate()
+                    .map(|(j, x)| if lower && j >= i { e("0") } else { e(x) })
+                    .collect()
+            })
+            .collect();
+        let b: Vec<Exact> = b.iter().map(|x| e(x)).collect();
+        Tableau::new("random", a, b, None).unwrap()
+    }
+
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(64))]
+        /// The method of a plain tableau, whose program is lowered on first
+        /// use under a header known in advance, is the program parsed from
+        /// its text (the oracle): the same header and the same lines.
+        #[test]
+        fn deferred_programs_are_the_parsed_ones((a, b, lower) in plain_tableau()) {
+            let t = read(&a, &b, lower);
+            let parsed = poly::Method::parse("random.zm", &t.to_zm("the tableau", false)).unwrap();
+            prop_assert_eq!(&t.method(false).unwrap(), &parsed);
+            prop_assert_eq!(t.method(false).unwrap().is_implicit(), parsed.is_implicit());
+            let scalar = poly::Method::parse("random.zm", &t.to_scalar_zm("the tableau")).unwrap();
+            prop_assert_eq!(&t.scalar_method().unwrap(), &scalar);
+        }
+
         /// On random tableaux (explicit, diagonally and fully implicit,
         /// with radicals; `lower` makes A strictly lower triangular), the
         /// derivation read from R = P/Q is exactly the one of both routes
         /// (the oracle), on the oscillator and on y' = λy: χ, d·P, d, M.
         #[test]
         fn matches_both_routes((a, b, lower) in tableau()) {
-            let a: Vec<Vec<Exact>> = a
-                .iter()
-                .enumerate()
-                .map(|(i, row)| {
-                    row.iter()
-                        .enumerate()
-                        .map(|(j, x)| if lower && j >= i { e("0") } else { e(x) })
-                        .collect()
-                })
-                .collect();
-            let b: Vec<Exact> = b.iter().map(|x| e(x)).collect();
-            let t = Tableau::new("random", a, b, None).unwrap();
+            let t = read(&a, &b, lower);
             for m in [t.method(false), t.scalar_method()] {
                 let m = m.unwrap();
                 // A system singular for every Φ is refused by both.
