@@ -189,6 +189,7 @@ impl Body {
     }
 
     /// Whether the program has been lowered (for the tests of deferral).
+    #[cfg(test)]
     pub(crate) fn is_lowered(&self) -> bool {
         self.0.lowered.get().is_some()
     }

@@ -7,6 +7,7 @@
 
 pub mod builtins;
 pub(crate) mod constant;
+pub(crate) mod generated;
 pub(crate) mod load;
 pub(crate) mod lower;
 pub(crate) mod method;
