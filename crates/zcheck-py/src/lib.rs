@@ -2,8 +2,9 @@
 //!
 //! Every function here is a thin call through a front door, `poly`'s for
 //! making a method and `zcheck::api` for every question, and returns what
-//! the command line would print with `--format json`, as a JSON string the
-//! Python half parses (DESIGN.md, "How does a result cross into Python?").
+//! the command line would print with `--format json`: as a JSON string the
+//! Python half parses, or, for `stability`, as the Python objects of that
+//! text (DESIGN.md, "How does a result cross into Python?").
 //! There is no mathematics here.
 //!
 //! Each call runs with the GIL released and inside `catch_unwind`: a Rust
@@ -16,6 +17,8 @@ use std::path::PathBuf;
 use pyo3::create_exception;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
+use pyo3::types::{PyBool, PyDict, PyFloat, PyFrozenSet, PyList, PyString};
+use serde_json::Value;
 use zcheck::api::{self, LoadedMethod};
 
 /// The allocator of the `zcheck` binary: the exact engine allocates and
@@ -69,6 +72,56 @@ fn json(v: Result<serde_json::Value, zcheck::Error>) -> Answer<String> {
     serde_json::to_string(&v).map_err(|e| e.to_string())
 }
 
+/// Which strings of a document become `zcheck.Exact`: those under the
+/// keys of `keys` (the Python half's tagging hooks, by key).
+struct Tagging<'py> {
+    exact: Bound<'py, PyAny>,
+    keys: Bound<'py, PyFrozenSet>,
+}
+
+/// A JSON document as the Python objects `json.loads` makes of its text
+/// (an integer as `int`, any other number as `float`), with the strings
+/// under `tagging`'s keys made `zcheck.Exact`. serde_json writes every
+/// float with a point or an exponent and reads back the same f64, so the
+/// two agree down to the types (a pytest holds them to it on every
+/// built-in and catalogue method).
+fn to_python<'py>(
+    py: Python<'py>,
+    v: &Value,
+    tagging: &Tagging<'py>,
+) -> PyResult<Bound<'py, PyAny>> {
+    Ok(match v {
+        Value::Null => py.None().into_bound(py),
+        Value::Bool(b) => PyBool::new(py, *b).to_owned().into_any(),
+        Value::Number(n) => match (n.as_i64(), n.as_u64(), n.as_f64()) {
+            (Some(i), _, _) => i.into_pyobject(py)?.into_any(),
+            (None, Some(u), _) => u.into_pyobject(py)?.into_any(),
+            (None, None, Some(f)) => PyFloat::new(py, f).into_any(),
+            (None, None, None) => unreachable!("a JSON number is an i64, a u64 or an f64"),
+        },
+        Value::String(s) => PyString::new(py, s).into_any(),
+        Value::Array(xs) => {
+            let items =
+                xs.iter().map(|x| to_python(py, x, tagging)).collect::<PyResult<Vec<_>>>()?;
+            PyList::new(py, items)?.into_any()
+        }
+        Value::Object(map) => {
+            let d = PyDict::new(py);
+            for (k, x) in map {
+                let key = PyString::new(py, k);
+                let value = match x {
+                    Value::String(s) if tagging.keys.contains(&key)? => {
+                        tagging.exact.call1((s.as_str(),))?
+                    }
+                    _ => to_python(py, x, tagging)?,
+                };
+                d.set_item(key, value)?;
+            }
+            d.into_any()
+        }
+    })
+}
+
 /// A method, derived once and kept: made by `zcheck.Method`'s constructors.
 #[pyclass(frozen, module = "zcheck._native", name = "NativeMethod")]
 struct NativeMethod {
@@ -107,6 +160,21 @@ impl NativeMethod {
     /// `zcheck stability --format json` with `params` (`NAME=VALUE`) bound.
     fn stability(&self, py: Python<'_>, params: Vec<String>) -> PyResult<String> {
         run(py, || json(api::stability(&self.inner, &params)))
+    }
+
+    /// `zcheck stability --format json` with `params` bound, as Python
+    /// objects: what `json.loads` gives of its text, with every string
+    /// under a key in `exact_keys` made an instance of `exact`
+    /// (`zcheck.Exact`), built without the text in between.
+    fn stability_object<'py>(
+        &self,
+        py: Python<'py>,
+        params: Vec<String>,
+        exact: Bound<'py, PyAny>,
+        exact_keys: Bound<'py, PyFrozenSet>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let v = run(py, || api::stability(&self.inner, &params).map_err(|e| message(&e)))?;
+        to_python(py, &v, &Tagging { exact, keys: exact_keys })
     }
 
     /// `zcheck region --format json` with `params` (`NAME=VALUE`) bound.

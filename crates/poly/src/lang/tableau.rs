@@ -332,7 +332,6 @@ impl Tableau {
         };
         Ok(StabilityFunction(Some(Arc::new((p, q)))))
     }
-
 }
 
 impl Method {

@@ -136,21 +136,13 @@ def _tag_number(d):
     return d
 
 
-# Every key of the stability document that holds exact text: `_tag_exact`'s
-# tags found by one set intersection per object, not a scan of its keys (a
-# test compares the two on the documents of every built-in and catalogue
-# method).
+# Every key of the stability document that holds exact text: the native
+# half builds that document as Python objects and makes the strings under
+# these keys Exact (a test compares it with the text parsed by `_tag_exact`,
+# which scans every key, on every built-in and catalogue method).
 _STABILITY_EXACT_KEYS = _EXACT_KEYS | frozenset(
     ["phi_exact", "lo_exact", "hi_exact", "phi_max_exact", "practical_phi_max_exact"]
 )
-
-
-def _tag_stability(d):
-    for k in _STABILITY_EXACT_KEYS.intersection(d):
-        v = d[k]
-        if v.__class__ is str:
-            d[k] = Exact(v)
-    return d
 
 
 def _parse(text, exact=True, hook=_tag_exact):
@@ -335,7 +327,7 @@ class Method:
         Phi, the boundary, every class change, rho_inf, the dispersion and
         dissipation orders. Keyword arguments bind the method's parameters
         (exact: ``D=Fraction(1, 10)``, ``D="1/10"`` or ``D=0.1``)."""
-        return _parse(self._native.stability(_params(params)), hook=_tag_stability)
+        return self._native.stability_object(_params(params), Exact, _STABILITY_EXACT_KEYS)
 
     def region(self, **params):
         """``zcheck region --format json``: the method on y' = lambda*y in the
