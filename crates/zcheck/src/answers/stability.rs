@@ -246,8 +246,9 @@ pub(crate) fn fine() -> Q {
 pub(crate) struct Rendered {
     value: f64,
     exact: String,
-    decimal: String,
-    interval: (Q, Q),
+    /// The number refined to width ≤ 1e-15, for its decimal and interval
+    /// (the limit's detail alone shows them).
+    fine: Algebraic,
 }
 
 thread_local! {
@@ -307,9 +308,7 @@ pub(crate) fn render(a: &Algebraic) -> std::rc::Rc<Rendered> {
     let r = std::rc::Rc::new(Rendered {
         value: super::exact::nearest_f64(&fine_a, guess.as_ref()),
         exact: fine_a.describe("Phi"),
-        // Width ≤ 1e-15: one sign decides between two neighbouring decimals.
-        decimal: fine_a.to_decimal(15),
-        interval: fine_a.interval(),
+        fine: fine_a,
     });
     RENDERED.with(|c| {
         let mut c = c.borrow_mut();
@@ -334,12 +333,14 @@ pub(crate) fn exact(a: &Algebraic) -> String {
 
 pub(crate) fn number_json(a: &Algebraic) -> Value {
     let r = render(a);
+    let (lo, hi) = r.fine.interval();
     json!({
         "value": r.value,
         "exact": r.exact,
-        "decimal": r.decimal,
+        // Width ≤ 1e-15: one sign decides between two neighbouring decimals.
+        "decimal": r.fine.to_decimal(15),
         "defining_poly": a.defining_poly().to_string_in("Phi"),
-        "interval": [r.interval.0.to_string(), r.interval.1.to_string()],
+        "interval": [lo.to_string(), hi.to_string()],
     })
 }
 
