@@ -72,17 +72,12 @@ mod stability_function_route {
         })
     }
 
+    /// The tableau of the entry texts; `lower` zeroes A on and above its
+    /// diagonal (an explicit method).
     fn read(a: &[Vec<String>], b: &[String], lower: bool) -> Tableau {
-        let a: Vec<Vec<Exact>> = a
-            .iter()
-            .enumerate()
-            .map(|(i, row)| {
-                row.iter()
-                    .enumerate()
-                    .map(|(j, x)| if lower && j >= i { e("0") } else { e(x) })
-                    .collect()
-            })
-            .collect();
+        let entry = |i: usize, j: usize| e(if lower && j >= i { "0" } else { &a[i][j] });
+        let s = b.len();
+        let a: Vec<Vec<Exact>> = (0..s).map(|i| (0..s).map(|j| entry(i, j)).collect()).collect();
         let b: Vec<Exact> = b.iter().map(|x| e(x)).collect();
         Tableau::new("random", a, b, None).unwrap()
     }
