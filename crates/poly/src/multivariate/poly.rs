@@ -305,10 +305,15 @@ impl Poly {
     /// This polynomial as a dense univariate polynomial in `sym`, if no other
     /// symbol occurs.
     pub fn to_upoly(&self, sym: Sym) -> Option<UPoly> {
-        let cs = self.coeffs_in(sym);
-        let mut qs = Vec::with_capacity(cs.len());
-        for c in cs {
-            qs.push(c.as_constant()?);
+        // Each monomial is 1 or a power of `sym`, else there is another
+        // symbol: read the terms in place, without grouping them.
+        let mut qs = vec![Q::zero(); self.degree_in(sym) as usize + 1];
+        for (m, c) in &self.terms {
+            match m.factors() {
+                [] => qs[0] = c.clone(),
+                [(s, e)] if *s == sym => qs[*e as usize] = c.clone(),
+                _ => return None,
+            }
         }
         Some(UPoly::new(qs))
     }

@@ -188,6 +188,30 @@ impl Algebraic {
         }
     }
 
+    /// The ends of the isolating interval, borrowed ([`Algebraic::interval`]).
+    pub fn ends(&self) -> (&Q, &Q) {
+        match &self.repr {
+            Repr::Rational(q) => (q, q),
+            Repr::Root { lo, hi, .. } => (lo, hi),
+        }
+    }
+
+    /// Whether `other` is written alike: the same defining polynomial and
+    /// the same interval (a cache's test, with no arithmetic; equal numbers
+    /// written differently are not alike).
+    pub fn same_form(&self, other: &Algebraic) -> bool {
+        match (&self.repr, &other.repr) {
+            (Repr::Rational(a), Repr::Rational(b)) => eq(a, b),
+            (Repr::Root { poly: p, lo: l, hi: h, .. }, Repr::Root { poly: q, lo, hi, .. }) => {
+                eq(l, lo)
+                    && eq(h, hi)
+                    && p.coeffs().len() == q.coeffs().len()
+                    && p.coeffs().iter().zip(q.coeffs()).all(|(a, b)| eq(a, b))
+            }
+            _ => false,
+        }
+    }
+
     /// The isolating interval `(lo, hi)`; `(r, r)` for a rational `r`.
     pub fn interval(&self) -> (Q, Q) {
         match &self.repr {
@@ -1201,6 +1225,25 @@ mod tests {
         }
         assert_eq!(round_decimal(&Q::new(BigInt::from(-1), BigInt::from(200)), 2), "-0.01");
         assert_eq!(round_decimal(&Q::new(BigInt::from(-1), BigInt::from(300)), 2), "0.00");
+    }
+
+    /// Alike means the same polynomial and interval: a clone is, the same
+    /// number refined or isolated by another polynomial is not, and
+    /// rationals are alike when equal.
+    #[test]
+    fn same_form_is_the_written_form() {
+        let p = UPoly::from_ints(&[-6, 0, 1]);
+        let root = Algebraic::positive_roots(&p).remove(0);
+        assert!(root.same_form(&root.clone()));
+        let narrow = root.refine(&Q::new(BigInt::one(), BigInt::from(1 << 20)));
+        assert!(narrow == root && !narrow.same_form(&root));
+        let twice = Algebraic::positive_roots(&UPoly::from_ints(&[-24, 0, 4])).remove(0);
+        assert!(twice.same_form(&root), "the primitive square-free form: {twice:?}");
+        let other = Algebraic::positive_roots(&UPoly::from_ints(&[-6, 0, 0, 0, 1])).remove(0);
+        assert!(!other.same_form(&root));
+        let half = Algebraic::from_rational(Q::new(BigInt::one(), BigInt::from(2)));
+        assert!(half.same_form(&Algebraic::from_rational(Q::new(BigInt::from(2), BigInt::from(4)))));
+        assert!(!half.same_form(&root) && !root.same_form(&half));
     }
     use proptest::prelude::*;
 

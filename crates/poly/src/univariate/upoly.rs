@@ -297,6 +297,15 @@ impl UPoly {
         if let Some(big_f) = self.even_part() {
             return big_f.squarefree().spread();
         }
+        // a·x² + b·x + c is a square exactly when b² = 4ac, then sf = x + b/(2a)
+        // (a second-order χ's discriminant is often minus a square; no gcd).
+        if let [c, b, a] = &self.ints.get_or_init(|| int_primitive_of(self).into())[..] {
+            return if b * b != ((a * c) << 2) {
+                self.monic()
+            } else {
+                UPoly::new(vec![Q::new(b.clone(), a << 1), Q::one()])
+            };
+        }
         let g = self.gcd(&self.derivative());
         if g.degree() == Some(0) {
             return self.monic();

@@ -229,6 +229,27 @@ proptest! {
     }
 }
 
+proptest! {
+    /// A quadratic's square-free part, read from b² = 4ac, is the gcd
+    /// route's (the oracle): p / gcd(p, p′), monic; squares k·(s·x − r)²
+    /// and random quadratics alike.
+    #[test]
+    fn squarefree_of_a_quadratic_is_the_gcd_route(
+        (r, s, k) in (-20i64..21, 1i64..9, (-5i64..6).prop_filter("k ≠ 0", |k| *k != 0)),
+        (a, b, c) in ((-9i64..10).prop_filter("a ≠ 0", |a| *a != 0), -9i64..10, -9i64..10),
+        square in any::<bool>(),
+    ) {
+        let p = if square {
+            let l = UPoly::new(vec![q(-r, 1), q(s, 1)]);
+            (&l * &l).scale(&q(k, 3))
+        } else {
+            UPoly::from_ints(&[c, b, a])
+        };
+        let g = p.gcd(&p.derivative());
+        prop_assert_eq!(p.squarefree(), p.div_rem(&g).0.monic());
+    }
+}
+
 /// A hand-worked case: (x - 1)^2 (x + 2) has square-free part (x - 1)(x + 2).
 #[test]
 fn squarefree_of_a_known_cube() {

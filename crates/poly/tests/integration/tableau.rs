@@ -82,6 +82,23 @@ mod stability_function_route {
         Tableau::new("random", a, b, None).unwrap()
     }
 
+    /// `b` with its last entry replaced by 1 − Σ of the others (plain
+    /// entries: fractions, or decimals in eighths).
+    fn summing_to_one(b: &[String]) -> Vec<String> {
+        let value = |s: &str| -> poly::Q {
+            if let Some((n, d)) = s.split_once('/') {
+                poly::q(n.parse().unwrap(), d.parse().unwrap())
+            } else {
+                poly::q((s.parse::<f64>().unwrap() * 8.0) as i64, 8)
+            }
+        };
+        let rest: poly::Q = b[..b.len() - 1].iter().map(|s| value(s)).sum();
+        let last = poly::Q::from_integer(1.into()) - rest;
+        let mut out = b.to_vec();
+        *out.last_mut().unwrap() = last.to_string();
+        out
+    }
+
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(64))]
         /// The method of a plain tableau, whose program is lowered on first
@@ -95,6 +112,26 @@ mod stability_function_route {
             prop_assert_eq!(t.method(false).unwrap().is_implicit(), parsed.is_implicit());
             let scalar = poly::Method::parse("random.zm", &t.to_scalar_zm("the tableau")).unwrap();
             prop_assert_eq!(&t.scalar_method().unwrap(), &scalar);
+        }
+
+        /// The phase and modulus errors read off a plain tableau's
+        /// stability function R (log R(iΦ)) are those of χ's principal
+        /// branch (the oracle), with |z| ≡ 1 on the first interval said or
+        /// not; `consistent` makes Σb = 1, so that R(iΦ) is the root
+        /// z ≈ e^{iΦ} (otherwise both give χ's error).
+        #[test]
+        fn phase_errors_from_r_are_the_branch_ones(
+            (a, b, lower) in plain_tableau(),
+            consistent in any::<bool>(),
+        ) {
+            let b = if consistent { summing_to_one(&b) } else { b };
+            let t = read(&a, &b, lower);
+            let d = poly::derive(&t.method(false).unwrap()).unwrap();
+            for on_circle in [false, true] {
+                let fast = d.phase_errors_given(&poly::Params::new(), on_circle);
+                let slow = poly::advanced::plane::phase_errors(d.charpoly(), on_circle);
+                prop_assert_eq!(fast, slow);
+            }
         }
 
         /// On random tableaux (explicit, diagonally and fully implicit,

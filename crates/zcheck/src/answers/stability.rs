@@ -54,7 +54,7 @@ impl Analysis {
             .stability(&bound)
             .map_err(|e| Error::from(e).context(format!("method {}", method.name())))?;
         let facts = ImplicitFacts::of(derivation, &chi)?;
-        let far = FarAndNear::of(derivation, &bound, &chi, &report);
+        let far = FarAndNear::of(derivation, &bound, &report);
         Ok(Analysis { name: method.name().to_owned(), shown, chi, report, facts, far })
     }
 
@@ -134,7 +134,6 @@ impl FarAndNear {
     pub(crate) fn of(
         derivation: &poly::Derivation,
         params: &poly::Params,
-        chi: &poly::Poly,
         report: &StabilityReport,
     ) -> FarAndNear {
         let on_circle = report
@@ -143,7 +142,8 @@ impl FarAndNear {
             .is_some_and(|i| i.lo.sign().is_eq() && i.class == poly::RootClass::Harmonic);
         FarAndNear {
             rho_inf: derivation.rho_inf(params).map_err(|e| e.message().to_owned()),
-            phase: poly::advanced::plane::phase_errors(chi, on_circle)
+            phase: derivation
+                .phase_errors_given(params, on_circle)
                 .map_err(|e| e.message().to_owned()),
         }
     }
@@ -252,47 +252,24 @@ pub(crate) struct Rendered {
 }
 
 thread_local! {
-    static RENDERED: std::cell::RefCell<HashMap<NumberKey, std::rc::Rc<Rendered>>> =
+    /// Rendered numbers by [`fingerprint`], each bucket checked by
+    /// [`Algebraic::same_form`].
+    static RENDERED: std::cell::RefCell<HashMap<u64, Vec<(Algebraic, std::rc::Rc<Rendered>)>>> =
         std::cell::RefCell::new(HashMap::new());
 }
 
-/// A rendered number's identity: its defining polynomial's coefficients
-/// and its interval's ends, compared and hashed by their reduced numerators
-/// and denominators (num-rational's `Eq` and `Hash` divide, as its `Ord`
-/// does; formatting the key as text cost more than the lookup saved).
-struct NumberKey(Vec<Q>);
-
-impl NumberKey {
-    fn of(a: &Algebraic) -> NumberKey {
-        let (lo, hi) = a.interval();
-        let mut v = a.defining_poly().coeffs().to_vec();
-        v.extend([lo, hi]);
-        NumberKey(v)
-    }
+/// A cheap hash of a number's form: the lowest words of its interval's
+/// ends (no copy, no hashing of whole big integers; a collision only costs
+/// a comparison in the bucket).
+fn fingerprint(a: &Algebraic) -> u64 {
+    let (lo, hi) = a.ends();
+    [lo.numer(), lo.denom(), hi.numer(), hi.denom()].iter().fold(0u64, |h, x| {
+        let word = x.iter_u64_digits().next().unwrap_or(0)
+            ^ (u64::from(num_traits::Signed::is_negative(*x)) << 63);
+        (h.rotate_left(5) ^ word).wrapping_mul(0x517c_c1b7_2722_0a95)
+    })
 }
 
-impl PartialEq for NumberKey {
-    fn eq(&self, other: &NumberKey) -> bool {
-        self.0.len() == other.0.len()
-            && self
-                .0
-                .iter()
-                .zip(&other.0)
-                .all(|(a, b)| a.numer() == b.numer() && a.denom() == b.denom())
-    }
-}
-
-impl Eq for NumberKey {}
-
-impl std::hash::Hash for NumberKey {
-    fn hash<H: std::hash::Hasher>(&self, state: &mut H) {
-        self.0.len().hash(state);
-        for q in &self.0 {
-            q.numer().hash(state);
-            q.denom().hash(state);
-        }
-    }
-}
 /// Empties the cache of rendered numbers: a front end's call starts from
 /// nothing, so its time is the whole work (`api::stability`).
 pub(crate) fn forget_rendered() {
@@ -300,8 +277,13 @@ pub(crate) fn forget_rendered() {
 }
 
 pub(crate) fn render(a: &Algebraic) -> std::rc::Rc<Rendered> {
-    let key = NumberKey::of(a);
-    if let Some(r) = RENDERED.with(|c| c.borrow().get(&key).cloned()) {
+    let key = fingerprint(a);
+    let hit = RENDERED.with(|c| {
+        c.borrow()
+            .get(&key)
+            .and_then(|bucket| bucket.iter().find(|(b, _)| b.same_form(a)).map(|(_, r)| r.clone()))
+    });
+    if let Some(r) = hit {
         return r;
     }
     let (fine_a, guess) = super::exact::refined(a, &fine());
@@ -315,7 +297,7 @@ pub(crate) fn render(a: &Algebraic) -> std::rc::Rc<Rendered> {
         if c.len() > 4096 {
             c.clear();
         }
-        c.insert(key, r.clone());
+        c.entry(key).or_default().push((a.clone(), r.clone()));
     });
     r
 }

@@ -23,6 +23,7 @@ pub use sector::Sector;
 
 use crate::analysis::stability::point::circle_counts;
 use crate::analysis::stability::{verdict, Stability};
+use crate::arith::rational::{add, mul};
 use crate::error::{Error, ErrorKind};
 use crate::multivariate::constants as field;
 use crate::{Algebraic, Derivation, Params, Poly, Sym, UPoly, Q};
@@ -400,11 +401,92 @@ pub struct PhaseErrors {
 pub fn phase_errors(chi: &Poly, on_circle: bool) -> Result<PhaseErrors, Error> {
     // Over Q (no generators) the series runs on rationals; else in F.
     match principal_branch::<Q>(chi)? {
-        Some(b) => series_terms(b, on_circle, |q| Poly::constant(q.clone())),
+        Some(b) => series_terms(branch_logs(b), on_circle, |q| Poly::constant(q.clone())),
         None => {
             let b = principal_branch::<Poly>(chi)?.expect("every χ is over F");
-            series_terms(b, on_circle, field::reduce)
+            series_terms(branch_logs(b), on_circle, field::reduce)
         }
+    }
+}
+
+/// The coefficients of log z in Φ, from the principal branch's series.
+fn branch_logs<T: principal::Scalar>(mut b: Branch<T>) -> impl FnMut(usize) -> C<T> {
+    move |n| {
+        while b.nu.len() < n {
+            b.grow();
+        }
+        b.log_coeff(n).clone()
+    }
+}
+
+/// The coefficients of log z in Φ for the principal root z = R(iΦ) of a
+/// program generated from a tableau with rational entries, whose χ is
+/// (z − R(iΦ))(z − R(−iΦ)) up to a factor (`derive_runge_kutta`): with
+/// log R(w) = Σ c_n w^n, the coefficient of Φ^n in log z is c_n·iⁿ. The
+/// series of log P and log Q come from (log f)′ = f′/f, a few rational
+/// products a term, where the branch of χ solves for z's series first.
+/// `None` (the branch of χ decides, errors included) unless R(0) = 1 and
+/// R′(0) = 1, so that R(iΦ) is the root z ≈ e^{iΦ}.
+fn stability_function_logs(method: &crate::Method) -> Option<impl FnMut(usize) -> C<Q>> {
+    if method.is_scalar() {
+        return None;
+    }
+    let r = method.stability_function.0.as_ref()?;
+    let (p, q) = (r.0.to_upoly(Sym::w())?, r.1.to_upoly(Sym::w())?);
+    let (p0, q0) = (p.coeff(0), q.coeff(0));
+    if q0.is_zero() || p0 != q0 {
+        return None;
+    }
+    if (&p.coeff(1) - &q.coeff(1)) / &q0 != Q::one() {
+        return None;
+    }
+    let (mut log_p, mut log_q) = (LogSeries::new(&p, &q0), LogSeries::new(&q, &q0));
+    Some(move |n: usize| {
+        // (The crate's product and sum reduce by Lehmer's gcd, several
+        // times faster than num-rational's operators on small numbers.)
+        let c = mul(&add(&log_p.scaled(n), &-log_q.scaled(n)), &Q::new_raw(1.into(), n.into()));
+        match n % 4 {
+            0 => C { re: c, im: Q::zero() },
+            1 => C { re: Q::zero(), im: c },
+            2 => C { re: -c, im: Q::zero() },
+            _ => C { re: Q::zero(), im: -c },
+        }
+    })
+}
+
+/// log f as a power series, for a polynomial f with f(0) = 1 (given over
+/// a common `f0`), as M_k = k·L_k, the coefficients of w·f′/f: from
+/// w·f′ = (w·L′)·f, M_k = k·f_k − Σ_{0<j<k} M_j·f_{k−j}, one product a
+/// nonzero coefficient of f.
+struct LogSeries {
+    f: Vec<Q>,
+    m: Vec<Q>,
+}
+
+impl LogSeries {
+    fn new(f: &UPoly, f0: &Q) -> LogSeries {
+        let f = if f0.is_one() {
+            f.coeffs().to_vec()
+        } else {
+            f.coeffs().iter().map(|c| c / f0).collect()
+        };
+        LogSeries { f, m: vec![Q::zero()] }
+    }
+
+    /// M_n = n·L_n.
+    fn scaled(&mut self, n: usize) -> Q {
+        while self.m.len() <= n {
+            let k = self.m.len();
+            let mut mk = self.f.get(k).map_or_else(Q::zero, |c| mul(c, &Q::from_integer(k.into())));
+            for (j, mj) in self.m.iter().enumerate().skip(1) {
+                match self.f.get(k - j) {
+                    Some(fk) if !fk.is_zero() && !mj.is_zero() => mk = add(&mk, &-mul(mj, fk)),
+                    _ => {}
+                }
+            }
+            self.m.push(mk);
+        }
+        self.m[n].clone()
     }
 }
 
@@ -420,16 +502,13 @@ fn principal_branch<T: principal::Scalar>(chi: &Poly) -> Result<Option<Branch<T>
 
 /// The first nonzero terms of Φ − Ψ and 1 − |z| from log z = iΨ + ln|z|.
 fn series_terms<T: principal::Scalar>(
-    mut b: Branch<T>,
+    mut log_coeff: impl FnMut(usize) -> C<T>,
     on_circle: bool,
     to_poly: impl Fn(&T) -> Poly,
 ) -> Result<PhaseErrors, Error> {
     let (mut dispersion, mut dissipation) = (None, None);
     for n in 1..=MAX_SERIES_TERMS {
-        while b.nu.len() < n {
-            b.grow();
-        }
-        let log = b.log_coeff(n).clone();
+        let log = log_coeff(n);
         if dispersion.is_none() {
             let expected = if n == 1 { T::one() } else { T::zero() };
             let c = expected.sub(&log.im);
@@ -466,8 +545,26 @@ impl Derivation {
             .intervals
             .first()
             .is_some_and(|i| i.lo.sign().is_eq() && i.class == crate::RootClass::Harmonic);
-        let chi = self.charpoly().eval_partial(&self.bind(params)?);
-        phase_errors(&chi, on_circle)
+        self.phase_errors_given(params, on_circle)
+    }
+
+    /// [`Derivation::phase_errors`] with `on_circle` given: whether |z| ≡ 1
+    /// on the first stable interval, which a caller holding the stability
+    /// report already knows ([`phase_errors`] of χ with the parameters
+    /// bound). A program generated from a tableau with rational entries
+    /// reads the series off its stability function R, whose R(iΦ) is the
+    /// principal root: the same terms (tested against χ's branch), without
+    /// solving χ for the root's series.
+    pub fn phase_errors_given(
+        &self,
+        params: &Params,
+        on_circle: bool,
+    ) -> Result<PhaseErrors, Error> {
+        let values = self.bind(params)?;
+        if let Some(logs) = stability_function_logs(self.method()) {
+            return series_terms(logs, on_circle, |q| Poly::constant(q.clone()));
+        }
+        phase_errors(&self.charpoly().eval_partial(&values), on_circle)
     }
 
     /// The limit of the spectral radius on the oscillator as Φ → ∞; `None`

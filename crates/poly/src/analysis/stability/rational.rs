@@ -2,7 +2,7 @@
 //! and boundedness at the points, the stability limit and the stable
 //! intervals.
 
-use num_traits::{One, Signed};
+use num_traits::{One, Signed, Zero};
 
 use crate::error::Error;
 use crate::univariate::algebraic::Algebraic;
@@ -379,7 +379,7 @@ fn run_with(
         other => other,
     };
 
-    let marginal = charpoly.and_then(|c| marginal(chi, c));
+    let marginal = charpoly.and_then(|_| marginal(chi));
     StabilityReport {
         degree: chi.degree(),
         stability,
@@ -495,17 +495,32 @@ fn boundary_at(chi: &Charpoly, point: &CriticalPoint) -> Boundary {
     }
 }
 
+/// The lowest term c·Φ^k of |z|² − 1 = (a0 − a2)/a2 for a second-order χ
+/// (`series::dissipation_order`, the oracle in the tests), read off χ's
+/// coefficients in Φ as the walk holds them, scaled alike so the ratio is
+/// the same; `None` when a2(0) = 0 or |z|² ≡ 1.
+fn modulus_lead(chi: &Charpoly) -> Option<(usize, Q)> {
+    let (a0, a2) = (&chi.a[0], &chi.a[2]);
+    let at_zero = a2.coeff(0);
+    if at_zero.is_zero() {
+        return None;
+    }
+    let diff = a0 - a2;
+    let power = diff.coeffs().iter().position(|x| !x.is_zero())?;
+    Some((power, diff.coeff(power) / at_zero))
+}
+
 /// For a second-order χ whose |z|² − 1 = c·Φ^k + … has 0 < |c| < 10⁻¹²
 /// (a term below the rounding of 16-digit decimal coefficients): the
 /// practical limit for growth per step at most 1 + 10⁻⁹, exactly, as the
 /// stability limit of χ((1 + ε) w).
-fn marginal(chi: &Charpoly, charpoly: &Poly) -> Option<Marginal> {
+fn marginal(chi: &Charpoly) -> Option<Marginal> {
     if chi.degree() != 2 {
         return None;
     }
-    let lead = crate::analysis::series::dissipation_order(charpoly).ok().flatten()?;
+    let (power, coefficient) = modulus_lead(chi)?;
     let tiny = Q::new(1.into(), num_traits::pow(num_bigint::BigInt::from(10), 12));
-    if lead.coeff.abs() >= tiny {
+    if coefficient.abs() >= tiny {
         return None;
     }
     let threshold = Q::new(1.into(), num_traits::pow(num_bigint::BigInt::from(10), 9));
@@ -526,5 +541,37 @@ fn marginal(chi: &Charpoly, charpoly: &Poly) -> Option<Marginal> {
         | Stability::UnstableNearZero
         | Stability::UndecidedAt { .. } => return None,
     };
-    Some(Marginal { coefficient: lead.coeff, power: lead.order, threshold, practical_phi_max })
+    Some(Marginal { coefficient, power, threshold, practical_phi_max })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        /// The lowest term of |z|² − 1 read off the walk's scaled
+        /// coefficients is `series::dissipation_order`'s, from χ itself.
+        #[test]
+        fn modulus_lead_is_the_series_one(
+            c in proptest::collection::vec(proptest::collection::vec((-6i64..7, 1i64..5), 1..5), 3),
+        ) {
+            let coeff = |k: usize| -> UPoly {
+                UPoly::new(c[k].iter().map(|&(n, d)| crate::q(n, d)).collect())
+            };
+            let a: Vec<UPoly> = (0..3).map(coeff).collect();
+            prop_assume!(!a[2].is_zero());
+            let chi = Charpoly::from_coeffs(a.clone());
+            let z = Poly::sym(crate::Sym::z());
+            let phi = crate::Sym::phi();
+            let charpoly = (0..3).fold(Poly::zero(), |acc, k| {
+                &acc + &(&Poly::from_upoly(phi, &a[k]) * &z.pow(k as u32))
+            });
+            let oracle = crate::analysis::series::dissipation_order(&charpoly)
+                .ok()
+                .flatten()
+                .map(|t| (t.order, t.coeff));
+            prop_assert_eq!(modulus_lead(&chi), oracle);
+        }
+    }
 }
