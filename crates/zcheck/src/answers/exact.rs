@@ -116,6 +116,9 @@ pub(crate) fn nearest_f64(a: &Algebraic, guess: Option<&(Q, Q)>) -> f64 {
     if let Some(q) = a.as_rational() {
         return q.to_f64().unwrap_or(f64::NAN);
     }
+    if let Some(x) = nearest_by_midpoints(a) {
+        return x;
+    }
     let mut b = a.clone();
     for _ in 0..64 {
         let (lo, hi) = b.interval();
@@ -143,6 +146,35 @@ pub(crate) fn nearest_f64(a: &Algebraic, guess: Option<&(Q, Q)>) -> f64 {
         };
     }
     a.to_decimal(17).parse().unwrap_or(f64::NAN)
+}
+
+/// The f64 nearest an irrational `a` whose interval spans a few f64s,
+/// with no refinement: the exact midpoints between neighbouring f64s, from
+/// below the interval up, until one lies above `a` (a midpoint outside the
+/// interval is placed without a sign). `None` past 16 steps, or where the
+/// start below `a` cannot be checked.
+fn nearest_by_midpoints(a: &Algebraic) -> Option<f64> {
+    use std::cmp::Ordering;
+    let (lo, hi) = a.ends();
+    let (xl, xh) = (lo.to_f64()?, hi.to_f64()?);
+    if !(xl.is_finite() && xh.is_finite()) || xl > xh {
+        return None;
+    }
+    // Two below where lo rounds (in case that rounding is off by one), with
+    // a above the midpoint under it: then a rounds to x once it lies below
+    // the midpoint over x.
+    let mut x = xl.next_down().next_down();
+    if a.cmp_rational(&midpoint(x.next_down(), x)?) != Ordering::Greater {
+        return None;
+    }
+    for _ in 0..16 {
+        let up = x.next_up();
+        if a.cmp_rational(&midpoint(x, up)?) == Ordering::Less {
+            return Some(x);
+        }
+        x = up;
+    }
+    None
 }
 
 /// `a` refined to `width`, from an f64 guess where one is found (the

@@ -251,10 +251,13 @@ pub(crate) struct Rendered {
     fine: Algebraic,
 }
 
+/// The numbers of one [`fingerprint`], each with its rendering.
+type Bucket = Vec<(Algebraic, std::rc::Rc<Rendered>)>;
+
 thread_local! {
     /// Rendered numbers by [`fingerprint`], each bucket checked by
     /// [`Algebraic::same_form`].
-    static RENDERED: std::cell::RefCell<HashMap<u64, Vec<(Algebraic, std::rc::Rc<Rendered>)>>> =
+    static RENDERED: std::cell::RefCell<HashMap<u64, Bucket>> =
         std::cell::RefCell::new(HashMap::new());
 }
 
