@@ -6,6 +6,7 @@
 //! - [`programs`]: generated large programs (spring chains, long chains of
 //!   temporaries) for the benches and the tests of large derivations;
 //! - [`oracle`]: slow, obvious answers for the fast paths to be held to;
+//! - [`scratch`]: files for the CLI's tests, removed when dropped;
 //! - [`fuzz`]: the bodies of the fuzz targets, and [`replay`], which runs a
 //!   target's committed corpus through its body as an ordinary test.
 
@@ -13,6 +14,7 @@ pub mod oracle;
 pub mod programs;
 pub mod random_program;
 pub mod replay;
+pub mod scratch;
 pub mod snapshot;
 
 /// The bodies of the fuzz targets, one function per target.

@@ -6,10 +6,9 @@
 //! a parameter, read by every command with `--param c=1` exactly as the
 //! same tableau written with numbers (the oracle).
 
-use std::path::PathBuf;
-
 use crate::run::zcheck;
 use serde_json::Value;
+use testkit::scratch::ScratchFile;
 
 fn method(name: &str) -> String {
     format!("{}/methods/{name}", env!("CARGO_MANIFEST_DIR"))
@@ -416,12 +415,8 @@ fn errors_are_clean() {
     assert_eq!(code, 2, "{err}");
 }
 
-fn temp_file(name: &str, text: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("zcheck-design-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    let path = dir.join(name);
-    std::fs::write(&path, text).expect("write");
-    path
+fn temp_file(name: &str, text: &str) -> ScratchFile {
+    ScratchFile::new(name, text)
 }
 
 /// A tableau whose entries name c, read by the other commands with

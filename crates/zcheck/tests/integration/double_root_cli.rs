@@ -7,15 +7,13 @@ use std::process::Command;
 use serde_json::Value;
 
 use testkit::programs::FALSE_EULER_3;
+use testkit::scratch::ScratchFile;
 
 fn json(args: &[&str]) -> Value {
-    let dir = std::env::temp_dir().join(format!("zcheck-double-root-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let file = dir.join("false_euler_3.zm");
-    std::fs::write(&file, FALSE_EULER_3).unwrap();
+    let file = ScratchFile::new("false_euler_3.zm", FALSE_EULER_3);
     let out = Command::new(env!("CARGO_BIN_EXE_zcheck"))
         .args(args)
-        .arg(&file)
+        .arg(&*file)
         .args(["--format", "json"])
         .output()
         .expect("runs");

@@ -3,11 +3,11 @@
 //! cleanly when absent) and run, agree bit for bit with the interpreter on
 //! every built-in, with the constants folded and with Φ as an argument.
 
-use std::path::PathBuf;
 use std::process::Command;
 
 use check::numeric::{Params, ParamsF64, Step};
 use poly::{q, Sym, Q};
+use testkit::scratch::Scratch;
 use zcheck::emit::{emit, Binding, Lang};
 
 const STEPS: u64 = 1000;
@@ -57,10 +57,8 @@ fn args(m: &poly::Method, binding: &Binding) -> String {
     }
 }
 
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("zcheck-emit-{}-{name}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
+fn scratch(name: &str) -> Scratch {
+    Scratch::new(&format!("emit-{name}"))
 }
 
 /// Parses the program's lines `case hex hex ...` and compares each case.
@@ -101,14 +99,13 @@ fn emitted_rust_matches_the_interpreter() {
     let rustc = std::env::var("RUSTC").unwrap_or_else(|_| "rustc".to_owned());
     let out = Command::new(&rustc)
         .args(["--edition", "2021", "-O", "emitted.rs", "-o", "emitted"])
-        .current_dir(&dir)
+        .current_dir(dir.path())
         .output()
         .expect("rustc runs");
     assert!(out.status.success(), "rustc: {}", String::from_utf8_lossy(&out.stderr));
     let run = Command::new(dir.join("emitted")).output().unwrap();
     assert!(run.status.success());
     compare(&String::from_utf8_lossy(&run.stdout), &cases);
-    std::fs::remove_dir_all(&dir).ok();
 }
 
 #[test]
@@ -138,14 +135,13 @@ fn emitted_c_matches_the_interpreter() {
     std::fs::write(dir.join("emitted.c"), &src).unwrap();
     let out = Command::new("cc")
         .args(["-O2", "-ffp-contract=off", "-std=c99", "emitted.c", "-o", "emitted"])
-        .current_dir(&dir)
+        .current_dir(dir.path())
         .output()
         .expect("cc runs");
     assert!(out.status.success(), "cc: {}", String::from_utf8_lossy(&out.stderr));
     let run = Command::new(dir.join("emitted")).output().unwrap();
     assert!(run.status.success());
     compare(&String::from_utf8_lossy(&run.stdout), &cases);
-    std::fs::remove_dir_all(&dir).ok();
 }
 
 /// The folded function's header names Φ_max and the operation count.

@@ -5,10 +5,12 @@
 use std::process::Command;
 
 use serde_json::Value;
+use testkit::scratch::Scratch;
 
 #[test]
 fn tradeoff_ranks_a_user_method_by_measured_cost() {
-    let path = std::env::temp_dir().join(format!("zcheck-user-{}.zm", std::process::id()));
+    let scratch_path = Scratch::new("user");
+    let path = scratch_path.join("user.zm");
     // A False Euler written another way: a user's own method.
     std::fs::write(&path, "method my_false_euler\nstate v y\nv = v - Phi*y\ny = y + Phi*v\n")
         .unwrap();
@@ -28,5 +30,4 @@ fn tradeoff_ranks_a_user_method_by_measured_cost() {
         assert!(r["ns_per_step"].as_f64().is_some_and(|x| x > 0.0), "{r}");
         assert!(r["ns_per_step_hand"].as_f64().is_some_and(|x| x > 0.0), "{r}");
     }
-    std::fs::remove_file(&path).ok();
 }

@@ -11,21 +11,18 @@ use std::process::{Command, Output};
 use poly::advanced::order::{self, Options, Order, Ssp};
 use poly::advanced::tableau::{Exact, Tableau};
 use serde_json::Value;
+use testkit::scratch::Scratch;
 
 fn zcheck(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_zcheck")).args(args).output().expect("run zcheck")
 }
 
-fn dir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("zcheck_order_{name}_{}", std::process::id()));
-    std::fs::create_dir_all(&d).unwrap();
-    d
+fn dir(name: &str) -> Scratch {
+    Scratch::new(&format!("order-{name}"))
 }
 
-fn write(d: &Path, name: &str, text: &str) -> String {
-    let p = d.join(name);
-    std::fs::write(&p, text).unwrap();
-    p.display().to_string()
+fn write(d: &Scratch, name: &str, text: &str) -> String {
+    d.file(name, text).display().to_string()
 }
 
 /// `zcheck order ARGS --format json`, parsed; the command must succeed.
@@ -90,7 +87,6 @@ fn the_issues_example() {
     let r: Value = serde_json::from_slice(&out.stdout).unwrap();
     assert!(r["order"].is_null() && r["order_at_least"].is_null(), "{r}");
     assert_eq!(r["linear_order"], 1);
-    std::fs::remove_dir_all(&d).ok();
 }
 
 /// Strang splitting is order 2 on separable systems, symplectic and
@@ -110,7 +106,6 @@ fn strang_splitting_is_order_2() {
     let f = write(&d, "euler.toml", "drift = [0, 1]\nkick = [1, 0]\n");
     let v = json(&[&f]);
     assert_eq!((&v["order"], &v["symmetric"]), (&1.into(), &false.into()));
-    std::fs::remove_dir_all(&d).ok();
 }
 
 /// Störmer–Verlet as the partitioned pair Lobatto IIIA–IIIB: order 2 on
@@ -128,7 +123,6 @@ fn partitioned_stormer_verlet() {
     assert_eq!((&v["method"], &v["kind"]), (&"stormer_verlet".into(), &"partitioned".into()));
     assert_eq!((&v["order"], &v["linear_order"]), (&2.into(), &2.into()));
     assert_eq!((&v["symplectic"], &v["symmetric"]), (&true.into(), &true.into()));
-    std::fs::remove_dir_all(&d).ok();
 }
 
 /// Merson's estimator: order 3, but order 5 on y' = λy; the built-in and
@@ -147,7 +141,6 @@ fn merson_embedded_order() {
         assert_eq!((&v["kind"], &v["order"]), (&"embedded_pair".into(), &4.into()));
         assert_eq!((&v["embedded_order"], &v["embedded_linear_order"]), (&3.into(), &5.into()));
     }
-    std::fs::remove_dir_all(&d).ok();
 }
 
 /// Gauss–Legendre with 2 stages: order 4, stage order 2, algebraically
@@ -180,7 +173,6 @@ fn ssp_coefficients() {
     assert_eq!(json(&["ssprk104"])["ssp_coefficient"]["exact"], "6");
     let be = json(&["backward_euler"]);
     assert_eq!(be["ssp_coefficient"], serde_json::json!({"exact": "inf", "value": null}));
-    std::fs::remove_dir_all(&d).ok();
 }
 
 /// One method gives an object, several an array in argument order; every
@@ -306,7 +298,6 @@ fn tolerance_for_long_decimals() {
     assert!(v["order_within_tolerance"].is_null(), "{v}");
     let v = json(&[&f, "--tolerance", "1/10"]);
     assert_eq!(v["order_within_tolerance"]["order"], 2);
-    std::fs::remove_dir_all(&d).ok();
 }
 
 /// Bad input: file:line:column, what was expected, exit 2.
@@ -368,7 +359,6 @@ fn bad_input_is_located() {
     let out = zcheck(&["order", &zm]);
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("no nonlinear reading"));
-    std::fs::remove_dir_all(&d).ok();
 }
 
 /// Every built-in with a nonlinear reading: its linear order is the order

@@ -7,6 +7,7 @@
 
 use crate::run::zcheck;
 use serde_json::Value;
+use testkit::scratch::Scratch;
 
 const NEWMARK: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/methods/newmark.zm");
 
@@ -22,7 +23,8 @@ fn json(args: &[&str]) -> Value {
 /// bound the unconditional region are 2 beta = gamma and gamma = 1/2.
 #[test]
 fn newmark_over_beta_and_gamma() {
-    let svg = std::env::temp_dir().join(format!("zcheck-map2-{}.svg", std::process::id()));
+    let scratch_svg = Scratch::new("map2");
+    let svg = scratch_svg.join("map2.svg");
     let v = json(&[
         "map",
         NEWMARK,
@@ -87,7 +89,6 @@ fn newmark_over_beta_and_gamma() {
     for label in ["Phi_max = infinity", "bounds the region", "no Phi_max"] {
         assert!(text.contains(label), "{label} missing from the SVG");
     }
-    let _ = std::fs::remove_file(&svg);
 }
 
 /// The text output states the region as the two inequalities.
@@ -111,7 +112,8 @@ fn phi_beta_map() {
         .replace("param gamma\n", "")
         .replace("gamma", "(1/2)")
         .replace("method newmark", "method newmark_half");
-    let path = std::env::temp_dir().join(format!("zcheck-newmark-half-{}.zm", std::process::id()));
+    let scratch_path = Scratch::new("newmark-half");
+    let path = scratch_path.join("newmark-half.zm");
     std::fs::write(&path, src).unwrap();
     let v = json(&[
         "map",
@@ -138,7 +140,6 @@ fn phi_beta_map() {
     let limits = v["limits"].as_array().unwrap();
     assert_eq!(limits.last().unwrap()["phi_max"], "every", "{limits:?}");
     assert_eq!(limits[0]["phi_max"], "2.000000000000", "{limits:?}");
-    let _ = std::fs::remove_file(&path);
 }
 
 /// Bad input: located (the flag and the text typed), exit 2, no panic.

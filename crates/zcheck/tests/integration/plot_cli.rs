@@ -5,12 +5,14 @@ use check::numeric::ParamsF64;
 use std::process::Command;
 
 use check::numeric::Params;
+use testkit::scratch::Scratch;
 use zcheck::plot::samples;
 
 /// Every figure is written, is SVG, and carries its Φ in the title.
 #[test]
 fn plot_all_writes_svg_files() {
-    let dir = std::env::temp_dir().join(format!("zcheck-plot-{}", std::process::id()));
+    let scratch = Scratch::new("plot");
+    let dir = scratch.path().to_path_buf();
     let out = Command::new(env!("CARGO_BIN_EXE_zcheck"))
         .args(["plot", "all", "--phi", "0.7", "--out"])
         .arg(&dir)
@@ -31,7 +33,6 @@ fn plot_all_writes_svg_files() {
             assert!(text.contains("Phi = 0.7"), "{name} states Phi");
         }
     }
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// Sample k of False Euler is the paper's y1 := y0 + woT*v1 recursion, and
@@ -56,7 +57,8 @@ fn samples_follow_the_recursions() {
 /// `spectral`'s unit tests.
 #[test]
 fn spectral_radius_and_period_figures() {
-    let dir = std::env::temp_dir().join(format!("zcheck-hughes-{}", std::process::id()));
+    let scratch = Scratch::new("hughes");
+    let dir = scratch.path().to_path_buf();
     let newmark = concat!(env!("CARGO_MANIFEST_DIR"), "/methods/newmark.zm");
     let methods = format!("trapezoidal,backward_euler,bdf2,{newmark}");
     for (what, file, titles) in [
@@ -93,5 +95,4 @@ fn spectral_radius_and_period_figures() {
         assert_eq!(out.status.code(), Some(2), "{extra:?}: {err}");
         assert!(err.contains("gamma") || err.contains("delta"), "{extra:?}: {err}");
     }
-    let _ = std::fs::remove_dir_all(&dir);
 }

@@ -8,6 +8,7 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
 use serde_json::Value;
+use testkit::scratch::Scratch;
 
 fn zcheck(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_zcheck")).args(args).output().expect("run zcheck")
@@ -234,8 +235,8 @@ fn every_field_of_the_json() {
 /// double root).
 #[test]
 fn scalar_programs() {
-    let dir = std::env::temp_dir().join(format!("zcheck-region-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let scratch = Scratch::new("region");
+    let dir = scratch.path().to_path_buf();
     let write = |name: &str, text: &str| {
         let p = dir.join(name);
         std::fs::write(&p, text).unwrap();
@@ -262,7 +263,6 @@ fn scalar_programs() {
     let out = zcheck(&["region", "false_euler"]);
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("partitioned"));
-    std::fs::remove_dir_all(&dir).ok();
 }
 
 /// Multistep input is taken by every command that takes a method.
@@ -289,8 +289,8 @@ fn multistep_files_work_in_every_command() {
 
 #[test]
 fn multistep_bad_input_is_located() {
-    let dir = std::env::temp_dir().join(format!("zcheck-lmm-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let scratch = Scratch::new("lmm");
+    let dir = scratch.path().to_path_buf();
     for (name, text, at, says) in [
         (
             "lengths.toml",
@@ -322,18 +322,17 @@ fn multistep_bad_input_is_located() {
     std::fs::write(&p, "alpha = [-1, 1]\nbeta = [0.5, 0.5]\n").unwrap();
     let v = &region(&[&p])[0];
     assert_eq!(v["order"], 2, "the trapezoidal rule from decimals");
-    std::fs::remove_dir_all(&dir).ok();
 }
 
 #[test]
 fn the_figure_overlays_every_method() {
-    let svg = std::env::temp_dir().join(format!("zcheck-region-{}.svg", std::process::id()));
+    let scratch_svg = Scratch::new("region");
+    let svg = scratch_svg.join("region.svg");
     let out = zcheck(&["region", "rk4", "trapezoidal", "--svg", svg.to_str().unwrap()]);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let text = std::fs::read_to_string(&svg).unwrap();
     assert!(text.contains("rk4") && text.contains("trapezoidal"));
     assert!(text.contains("stability regions"));
-    std::fs::remove_file(&svg).ok();
 }
 
 /// Hughes' ρ∞ on the oscillator (The Finite Element Method, ch. 9):

@@ -4,11 +4,10 @@
 //! 2(√(1 + ζ²) − ζ) in closed form), prediction against simulation on every
 //! example scene, located errors for bad scene files, and the (Φ, D) map.
 
-use std::path::PathBuf;
-
 use crate::run::zcheck;
 use nalgebra::DMatrix;
 use serde_json::Value;
+use testkit::scratch::{Scratch, ScratchFile};
 
 #[track_caller]
 fn json(args: &[&str]) -> Value {
@@ -17,11 +16,8 @@ fn json(args: &[&str]) -> Value {
     serde_json::from_str(&out).unwrap_or_else(|e| panic!("zcheck {args:?}: {e}: {out}"))
 }
 
-fn write(name: &str, text: &str) -> PathBuf {
-    let path =
-        std::env::temp_dir().join(format!("zcheck-scene-{}-{name}.toml", std::process::id()));
-    std::fs::write(&path, text).unwrap();
-    path
+fn write(name: &str, text: &str) -> ScratchFile {
+    ScratchFile::new(&format!("{name}.toml"), text)
 }
 
 fn candidate<'a>(v: &'a Value, method: &str) -> &'a Value {
@@ -268,7 +264,8 @@ fn gauss_seidel_report() {
 /// `zcheck map`: exact curves, every grid point witnessed, an SVG.
 #[test]
 fn map_of_false_euler() {
-    let svg = std::env::temp_dir().join(format!("zcheck-map-{}.svg", std::process::id()));
+    let scratch = Scratch::new("map");
+    let svg = scratch.join("map.svg");
     let v = json(&[
         "map",
         "false_euler_damped",

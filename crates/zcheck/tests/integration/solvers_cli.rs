@@ -5,6 +5,7 @@
 
 use crate::run::zcheck;
 use serde_json::Value;
+use testkit::scratch::Scratch;
 
 fn scene(name: &str) -> String {
     format!("{}/scenes/{name}", env!("CARGO_MANIFEST_DIR"))
@@ -121,7 +122,8 @@ fn families_side_by_side() {
     let text = std::fs::read_to_string(scene("rope2d.toml"))
         .unwrap()
         .replace("amplitude = 0.05", "amplitude = 0.5");
-    let path = std::env::temp_dir().join(format!("zcheck-families-{}.toml", std::process::id()));
+    let scratch_path = Scratch::new("families");
+    let path = scratch_path.join("families.toml");
     std::fs::write(&path, text).unwrap();
     let p = path.to_str().unwrap();
     let (code, out, err) =
@@ -159,7 +161,6 @@ fn families_side_by_side() {
     let (code, out, _) = zcheck(&["advise", "--scene", p, "--solvers", "paper,xpbd"]);
     assert_eq!(code, 0);
     assert!(out.contains("ops/tick") && out.contains("recommended: "), "{out}");
-    std::fs::remove_file(&path).ok();
     for (list, want) in [
         ("paper,nope", "--solvers nope: unknown family"),
         ("xpbd,xpbd", "--solvers: xpbd is listed twice"),
@@ -178,7 +179,8 @@ fn families_side_by_side() {
 /// amplitude error and then the damping-ratio gap.
 #[test]
 fn plot_solvers_and_the_small_steps_verdicts() {
-    let dir = std::env::temp_dir().join(format!("zcheck-plot-solvers-{}", std::process::id()));
+    let scratch = Scratch::new("plot-solvers");
+    let dir = scratch.path().to_path_buf();
     let d = dir.to_str().unwrap();
     let quarter = scene("quarter_car.toml");
     let (code, out, err) =
@@ -234,7 +236,6 @@ fn plot_solvers_and_the_small_steps_verdicts() {
         checked += 1;
     }
     assert_eq!(checked, 4);
-    let _ = std::fs::remove_dir_all(&dir);
     let (code, _, err) = zcheck(&["plot", "solvers", "--out", d]);
     assert_eq!(code, 2);
     assert!(err.contains("expected --scene FILE"), "{err}");

@@ -3,10 +3,10 @@
 //! against the dense one (every mode, faer's dense eigensolver) on every
 //! example scene and on scenes built here.
 
-use std::path::PathBuf;
 use std::process::Command;
 
 use serde_json::Value;
+use testkit::scratch::ScratchFile;
 
 fn example(name: &str) -> String {
     format!("{}/scenes/{name}.toml", env!("CARGO_MANIFEST_DIR"))
@@ -22,11 +22,8 @@ fn advise(path: &str, route: &str) -> Value {
     serde_json::from_slice(&out.stdout).expect("json")
 }
 
-fn write(name: &str, text: &str) -> PathBuf {
-    let path =
-        std::env::temp_dir().join(format!("zcheck-sparse-{}-{name}.toml", std::process::id()));
-    std::fs::write(&path, text).unwrap();
-    path
+fn write(name: &str, text: &str) -> ScratchFile {
+    ScratchFile::new(&format!("{name}.toml"), text)
 }
 
 /// An n×n cloth like the examples' (top row fixed, structural and shear
