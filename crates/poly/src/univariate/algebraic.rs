@@ -458,42 +458,43 @@ impl Algebraic {
     /// (separation only improves with m), with the same result as walking
     /// m = 0, 1, 2, … .
     pub fn rational_between(lo: &Algebraic, hi: &Algebraic) -> Q {
+        // m = 0: the intervals as they stand (refining to its own width
+        // leaves an interval as it is).
+        let ((_, ahi), (blo, _)) = (lo.ends(), hi.ends());
+        if cmp(ahi, blo) == Ordering::Less {
+            return simplest_between(ahi, blo);
+        }
         let (wa, wb) = (lo.width(), hi.width());
         let at = |m: u64| -> (Q, Q) {
             let (_, ahi) = lo.refine(&shr(&wa, 2 * m)).interval();
             let (blo, _) = hi.refine(&shr(&wb, 2 * m)).interval();
             (ahi, blo)
         };
-        let separated = |m: u64| {
-            let (ahi, blo) = at(m);
-            cmp(&ahi, &blo) == Ordering::Less
-        };
-        if separated(0) {
-            let (ahi, blo) = at(0);
-            return simplest_between(&ahi, &blo);
-        }
-        // separated(bad) is false, separated(good) true.
+        let separated = |(ahi, blo): &(Q, Q)| cmp(ahi, blo) == Ordering::Less;
+        // separated at `bad` is false, at `good` true; `found` is at(good).
         let (mut bad, mut good) = (0u64, 1u64);
-        while !separated(good) {
+        let mut found = at(good);
+        while !separated(&found) {
             bad = good;
             good *= 2;
+            found = at(good);
         }
         while good - bad > 1 {
             let mid = bad + (good - bad) / 2;
-            if separated(mid) {
-                good = mid;
+            let ends = at(mid);
+            if separated(&ends) {
+                (good, found) = (mid, ends);
             } else {
                 bad = mid;
             }
         }
-        let (ahi, blo) = at(good);
-        simplest_between(&ahi, &blo)
+        simplest_between(&found.0, &found.1)
     }
 
     /// The width of the isolating interval (zero for a rational).
     fn width(&self) -> Q {
-        let (lo, hi) = self.interval();
-        hi - lo
+        let (lo, hi) = self.ends();
+        crate::arith::rational::add(hi, &-lo)
     }
 
     /// Like `Display`, but writes a defining polynomial in the variable `var`.
