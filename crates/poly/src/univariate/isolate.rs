@@ -33,7 +33,7 @@ use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
 
 use crate::arith::rational::{cmp, midpoint};
-use crate::univariate::sturm::{root_bound, sign_changes, taylor_shift_one, CmpZero, IntPoly};
+use crate::univariate::sturm::{root_bound, CmpZero, IntPoly};
 use crate::{UPoly, Q};
 
 /// A real root of f as the replay sees it.
@@ -223,6 +223,7 @@ fn exact_sqrt(y: &Q) -> Option<Q> {
 }
 
 /// A root in (0, 2^e) found by Descartes' bisection.
+#[derive(Debug, PartialEq)]
 pub(crate) enum Found {
     /// A root at a halving point.
     At(Q),
@@ -233,25 +234,120 @@ pub(crate) enum Found {
 
 /// The roots of `g` (g(0) ≠ 0) in (0, 2^e), increasing. With `first_only`,
 /// stops after the first. `None` past `budget` parts.
+///
+/// The bisection runs on `i128` coefficients while every shift and sum
+/// fits (the stability conditions of small methods stay far inside), and
+/// on `BigInt` from the start when one does not: the same steps, so the
+/// same answer (a property test holds the two together).
 pub(crate) fn descartes_isolate(
     g: &[BigInt],
     e: u64,
     first_only: bool,
     budget: usize,
 ) -> Option<Vec<Found>> {
+    use num_traits::ToPrimitive;
+    if let Some(small) = g.iter().map(BigInt::to_i128).collect::<Option<Vec<i128>>>() {
+        if let Ok(found) = bisect(&small, e, first_only, budget) {
+            return found;
+        }
+    }
+    bisect(g, e, first_only, budget).unwrap_or_else(|Overflow| unreachable!("BigInt overflowed"))
+}
+
+/// An `i128` step of the bisection that would overflow.
+#[derive(Debug)]
+pub(crate) struct Overflow;
+
+/// A coefficient of Descartes' bisection: a `BigInt`, whose operations
+/// never fail, or an `i128`, whose every shift and sum is checked.
+pub(crate) trait Coef: Clone {
+    fn vanishes(&self) -> bool;
+    fn sign_of(&self) -> Ordering;
+    /// The bits of the magnitude (0 for zero).
+    fn bit_len(&self) -> u64;
+    fn shifted(&self, k: u64) -> Result<Self, Overflow>;
+    fn add_checked(&mut self, other: &Self) -> Result<(), Overflow>;
+    fn twos(&self) -> Option<u64>;
+    fn halve_by(&mut self, k: u64);
+}
+
+impl Coef for BigInt {
+    fn vanishes(&self) -> bool {
+        Zero::is_zero(self)
+    }
+    fn sign_of(&self) -> Ordering {
+        self.sign().cmp_zero()
+    }
+    fn bit_len(&self) -> u64 {
+        BigInt::bits(self)
+    }
+    fn shifted(&self, k: u64) -> Result<Self, Overflow> {
+        Ok(self << k)
+    }
+    fn add_checked(&mut self, other: &Self) -> Result<(), Overflow> {
+        *self += other;
+        Ok(())
+    }
+    fn twos(&self) -> Option<u64> {
+        BigInt::trailing_zeros(self)
+    }
+    fn halve_by(&mut self, k: u64) {
+        *self >>= k;
+    }
+}
+
+impl Coef for i128 {
+    fn vanishes(&self) -> bool {
+        *self == 0
+    }
+    fn sign_of(&self) -> Ordering {
+        self.cmp(&0)
+    }
+    fn bit_len(&self) -> u64 {
+        u64::from(128 - self.unsigned_abs().leading_zeros())
+    }
+    fn shifted(&self, k: u64) -> Result<Self, Overflow> {
+        // Fits when shifting back gives the number again (sign kept).
+        let k = u32::try_from(k).ok().filter(|&k| k < 128).ok_or(Overflow);
+        match k {
+            _ if *self == 0 => Ok(0),
+            Ok(k) if (self << k) >> k == *self => Ok(self << k),
+            _ => Err(Overflow),
+        }
+    }
+    fn add_checked(&mut self, other: &Self) -> Result<(), Overflow> {
+        *self = self.checked_add(*other).ok_or(Overflow)?;
+        Ok(())
+    }
+    fn twos(&self) -> Option<u64> {
+        (*self != 0).then(|| u64::from(i128::trailing_zeros(*self)))
+    }
+    fn halve_by(&mut self, k: u64) {
+        *self >>= k;
+    }
+}
+
+/// [`descartes_isolate`] on one kind of coefficient: `Err` at the first
+/// `i128` overflow.
+pub(crate) fn bisect<C: Coef>(
+    g: &[C],
+    e: u64,
+    first_only: bool,
+    budget: usize,
+) -> Result<Option<Vec<Found>>, Overflow> {
     let n = g.len() - 1;
     let mut out = Vec::new();
     // No sign change: no positive root at all.
-    if sign_changes(g) == 0 {
-        return Some(out);
+    if changes(g) == 0 {
+        return Ok(Some(out));
     }
     // Cauchy's bound (Sturm's) can be far above the roots; bisect from
     // Fujiwara's, which is as safe and often much smaller.
     let e = e.min(fujiwara_exponent(g));
     // h(x) = g(2^e·x) on (0, 1); a part (h, k, d) stands for the interval
     // 2^e·(k, k + 1)/2^d, and a point k for 2^e·k/2^d.
-    enum Item {
-        Part(Vec<BigInt>, BigInt, u64),
+    enum Item<C> {
+        Part(Vec<C>, BigInt, u64),
         Point(BigInt, u64),
     }
     let at = |j: BigInt, d: u64| {
@@ -261,7 +357,8 @@ pub(crate) fn descartes_isolate(
             Q::from_integer(j << (e - d))
         }
     };
-    let top: Vec<BigInt> = g.iter().enumerate().map(|(k, x)| x << (e as usize * k)).collect();
+    let top =
+        g.iter().enumerate().map(|(k, x)| x.shifted(e * k as u64)).collect::<Result<_, _>>()?;
     let mut stack = vec![Item::Part(strip_twos(top), BigInt::zero(), 0u64)];
     let mut parts = 0;
     while let Some(item) = stack.pop() {
@@ -277,19 +374,19 @@ pub(crate) fn descartes_isolate(
         };
         parts += 1;
         if parts > budget {
-            return None;
+            return Ok(None);
         }
         // Its sign changes bound the roots in (0, 1); zero coefficients
         // (roots of h at 0 or 1, met as halving points) are skipped.
-        let mut rev: Vec<BigInt> = h.iter().rev().cloned().collect();
-        taylor_shift_one(&mut rev);
-        match sign_changes(&rev) {
+        let mut rev: Vec<C> = h.iter().rev().cloned().collect();
+        shift_by_one(&mut rev)?;
+        match changes(&rev) {
             0 => continue,
             1 => {
                 // Near x = 1⁻ (y = 0⁺ in rev(1 + y)) and x = 0⁺, h has the
                 // sign of its lowest non-zero coefficient there.
-                let lowest_sign = |c: &[BigInt]| {
-                    c.iter().find(|x| !x.is_zero()).map_or(Ordering::Equal, |x| x.sign().cmp_zero())
+                let lowest_sign = |c: &[C]| {
+                    c.iter().find(|x| !x.vanishes()).map_or(Ordering::Equal, Coef::sign_of)
                 };
                 out.push(Found::Between {
                     lo: at(k.clone(), d),
@@ -306,34 +403,64 @@ pub(crate) fn descartes_isolate(
         }
         // Halves: 2^n·h(x/2) on the left, that shifted by one on the right;
         // left(1) = 2^n·h(1/2) tells a root at the halving point.
-        let left: Vec<BigInt> = h.iter().enumerate().map(|(j, x)| x << (n - j)).collect();
+        let left: Vec<C> = h
+            .iter()
+            .enumerate()
+            .map(|(j, x)| x.shifted((n - j) as u64))
+            .collect::<Result<_, _>>()?;
         let mut right = left.clone();
-        taylor_shift_one(&mut right);
+        shift_by_one(&mut right)?;
         let k2: BigInt = k << 1;
-        let mid_is_root = right[0].is_zero();
+        let mid_is_root = right[0].vanishes();
         stack.push(Item::Part(strip_twos(right), &k2 + 1, d + 1));
         if mid_is_root {
             stack.push(Item::Point(&k2 + 1, d + 1));
         }
         stack.push(Item::Part(strip_twos(left), k2, d + 1));
     }
-    Some(out)
+    Ok(Some(out))
+}
+
+/// Sign changes of a coefficient sequence, zeros skipped.
+fn changes<C: Coef>(c: &[C]) -> usize {
+    let mut last = Ordering::Equal;
+    let mut count = 0;
+    for s in c.iter().map(Coef::sign_of).filter(|s| *s != Ordering::Equal) {
+        if last != Ordering::Equal && s != last {
+            count += 1;
+        }
+        last = s;
+    }
+    count
+}
+
+/// g(x) ↦ g(x + 1) in place (coefficients lowest first), by repeated
+/// synthetic division: n(n+1)/2 additions.
+pub(crate) fn shift_by_one<C: Coef>(c: &mut [C]) -> Result<(), Overflow> {
+    let n = c.len();
+    for i in 0..n {
+        for j in (i..n - 1).rev() {
+            let (lo, hi) = c.split_at_mut(j + 1);
+            lo[j].add_checked(&hi[0])?;
+        }
+    }
+    Ok(())
 }
 
 /// An e with every root of `g` (degree ≥ 1) below 2^e in modulus, by
 /// Fujiwara's bound 2·max_k |a_{n−k}/a_n|^{1/k} (the last term halved),
 /// each ratio bounded by bit lengths: |a| < 2^bits(a), |a_n| ≥ 2^(bits(a_n) − 1).
-fn fujiwara_exponent(g: &[BigInt]) -> u64 {
+fn fujiwara_exponent<C: Coef>(g: &[C]) -> u64 {
     let n = g.len() - 1;
-    let lead = g[n].bits() as i64;
+    let lead = g[n].bit_len() as i64;
     let mut e = i64::MIN;
     for k in 1..=n {
         let a = &g[n - k];
-        if a.is_zero() {
+        if a.vanishes() {
             continue;
         }
         // |a_{n−k}/a_n| < 2^t, so its k-th root is below 2^⌈t/k⌉.
-        let t = a.bits() as i64 - lead + 1 - i64::from(k == n);
+        let t = a.bit_len() as i64 - lead + 1 - i64::from(k == n);
         e = e.max(t.div_euclid(k as i64) + i64::from(t.rem_euclid(k as i64) != 0));
     }
     // The factor 2, and at least 2^0 (a part of (0, 1) is the least).
@@ -341,11 +468,11 @@ fn fujiwara_exponent(g: &[BigInt]) -> u64 {
 }
 
 /// Divides out the largest power of two common to the coefficients.
-fn strip_twos(mut c: Vec<BigInt>) -> Vec<BigInt> {
-    let t = c.iter().filter_map(|x| x.trailing_zeros()).min().unwrap_or(0);
+fn strip_twos<C: Coef>(mut c: Vec<C>) -> Vec<C> {
+    let t = c.iter().filter_map(Coef::twos).min().unwrap_or(0);
     if t > 0 {
         for x in &mut c {
-            *x >>= t;
+            x.halve_by(t);
         }
     }
     c
@@ -477,6 +604,25 @@ mod tests {
     }
 
     proptest! {
+        /// The bisection on i128 against the same on BigInt: the same
+        /// roots, intervals and signs, or an overflow. Coefficients shifted
+        /// by up to 90 bits overflow often, at the start or deep in it.
+        #[test]
+        fn machine_integers_agree_with_big_ones(
+            c in proptest::collection::vec((-20i64..20, prop_oneof![3 => 0u32..4, 1 => 0u32..90]), 2..10),
+            e in prop_oneof![Just(u64::MAX), 0u64..8],
+            first_only in any::<bool>(),
+            budget in 1usize..40,
+        ) {
+            prop_assume!(c[0].0 != 0 && c.last().unwrap().0 != 0);
+            let big: Vec<BigInt> = c.iter().map(|&(x, s)| BigInt::from(x) << s).collect();
+            let want = bisect(&big, e, first_only, budget).unwrap();
+            let small: Vec<i128> = c.iter().map(|&(x, s)| i128::from(x) << s).collect();
+            if let Ok(got) = bisect(&small, e, first_only, budget) {
+                prop_assert_eq!(got, want);
+            }
+        }
+
         /// Random integer polynomials (roots anywhere, complex ones near
         /// the axis, a root at zero when c0 = 0).
         #[test]

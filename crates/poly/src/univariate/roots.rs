@@ -71,7 +71,8 @@ pub(crate) fn isolate_squarefree(sf: &UPoly) -> Vec<(Q, Q)> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::univariate::sturm::{count_real_roots, root_bound, taylor_shift_one};
+    use crate::univariate::isolate::shift_by_one;
+    use crate::univariate::sturm::{count_real_roots, root_bound};
     use num_bigint::BigInt;
     use proptest::prelude::*;
 
@@ -83,7 +84,7 @@ mod tests {
             prop_assume!(c[0] != 0 && *c.last().unwrap() != 0);
             let p = UPoly::from_ints(&c);
             let mut shifted: Vec<BigInt> = c.iter().map(|&x| BigInt::from(x)).collect();
-            taylor_shift_one(&mut shifted);
+            shift_by_one(&mut shifted).expect("BigInt never overflows");
             let composed = p.compose(&UPoly::from_ints(&[1, 1]));
             prop_assert_eq!(UPoly::new(shifted.into_iter().map(Q::from_integer).collect()), composed);
             let sf = p.squarefree();

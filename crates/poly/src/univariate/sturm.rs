@@ -386,32 +386,6 @@ pub fn root_bound(p: &UPoly) -> Q {
     Q::from_integer(BigInt::one() << floor.bits())
 }
 
-/// g(x) ↦ g(x + 1) in place (coefficients lowest first), by repeated
-/// synthetic division: n(n+1)/2 additions.
-pub(crate) fn taylor_shift_one(c: &mut [BigInt]) {
-    let n = c.len();
-    for i in 0..n {
-        for j in (i..n - 1).rev() {
-            let (lo, hi) = c.split_at_mut(j + 1);
-            lo[j] += &hi[0];
-        }
-    }
-}
-
-/// Sign changes of a coefficient sequence, zeros skipped.
-pub(crate) fn sign_changes(c: &[BigInt]) -> usize {
-    let mut last = None;
-    let mut count = 0;
-    for x in c.iter().filter(|x| !x.is_zero()) {
-        let s = x.is_positive();
-        if last.is_some_and(|l| l != s) {
-            count += 1;
-        }
-        last = Some(s);
-    }
-    count
-}
-
 /// [`isolate_squarefree`] by bisection with the Sturm chain's counts: the
 /// definition of the intervals, and the oracle of [`crate::univariate::isolate`].
 pub(crate) fn isolate_squarefree_sturm(sf: &UPoly) -> Vec<(Q, Q)> {
