@@ -181,11 +181,18 @@ def test_sympy_rationals_take_the_short_path_to_the_same_text():
 def test_entry_lists_take_the_fast_path_to_the_same_text():
     # _texts converts by a class lookup where it can; _entry is its oracle,
     # and an entry off the fast path is still named in its error.
+    import numpy
+
     from zcheck import _entry, _texts
 
     values = [0, 7, -3, "1/3", "sqrt(2)/4", sympy.Integer(5), sympy.Rational(-7, 9), sympy.S.Half,
-              sympy.S.One, sympy.S.Zero, sympy.S.NegativeOne, Fraction(3, 8), 0.1, sympy.sqrt(3) / 6, 10**40]
-    assert _texts(values, lambda i: f"v[{i}]") == [_entry(x, "v") for x in values]
+              sympy.S.One, sympy.S.Zero, sympy.S.NegativeOne, Fraction(3, 8), 0.1, sympy.sqrt(3) / 6, 10**40,
+              2.5, -0.0, 1e-05, 1e20, 5e-324, numpy.float64(1 / 3), numpy.float64(1e-07), numpy.float64(0.5)]
+    # Twice: float's subclasses join the fast path on first sight.
+    for _ in range(2):
+        assert _texts(values, lambda i: f"v[{i}]") == [_entry(x, "v") for x in values]
+    with pytest.raises(zcheck.Error, match=r"^bhat\[2\]: nan"):
+        zcheck.Method.from_tableau([[0, 0], [1, 0]], [0.5, 0.5], bhat=[numpy.float64(1), numpy.float64("nan")])
     with pytest.raises(zcheck.Error, match=r"A\[2\]\[1\]: True: expected a number, not a bool"):
         zcheck.Method.from_tableau([[0, 0], [True, 0]], [0, 1])
     with pytest.raises(zcheck.Error, match=r"b\[2\]: nan"):

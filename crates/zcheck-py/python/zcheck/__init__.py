@@ -155,9 +155,18 @@ def _sympy_rational(x):
     return str(x.p) if x.q == 1 else f"{x.p}/{x.q}"
 
 
-# Types whose every value converts without a check that can fail: a class
-# lookup, then the converter. SymPy's rational classes join on first sight.
-_FAST = {str: str, int: str}
+def _finite_float(x):
+    # A float's shortest decimal when repr writes it positionally; None
+    # (the slow path, which also names the entry in an error) otherwise:
+    # NaN, infinity, and exponents.
+    text = repr(float(x))
+    return None if "e" in text or "n" in text else text
+
+
+# A class lookup, then the converter: it gives the text, or None for a value
+# the slow path must see. SymPy's rational classes and float's subclasses
+# (numpy.float64) join on first sight.
+_FAST = {str: str, int: str, float: _finite_float}
 
 
 def _texts(xs, label):
@@ -166,7 +175,8 @@ def _texts(xs, label):
     out = []
     for i, x in enumerate(xs):
         f = _FAST.get(x.__class__)
-        out.append(f(x) if f is not None else _entry(x, label(i)))
+        t = None if f is None else f(x)
+        out.append(t if t is not None else _entry(x, label(i)))
     return out
 
 
@@ -190,6 +200,9 @@ def _entry(x, where):
         return f"{int(x.numerator)}/{int(x.denominator)}"
     if isinstance(x, _numbers.Real):
         from ._entries import float_entry
+
+        if isinstance(x, float):
+            _FAST[x.__class__] = _finite_float
 
         return float_entry(float(x), where)
     raise Error(
