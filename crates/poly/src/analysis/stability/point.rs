@@ -574,41 +574,70 @@ pub struct PqSigns {
 /// polynomials: the one sign table of second-order methods, used by the
 /// exact analysis (at rational and algebraic Φ) and by `check`.
 pub fn classify_pq(s: &PqSigns) -> RootClass {
+    classify_pq_with(|f| match f {
+        Pq::Disc => s.disc,
+        Pq::P => s.p,
+        Pq::PMinus1 => s.p_minus_1,
+        Pq::PPlus1 => s.p_plus_1,
+        Pq::QMinus1 => s.q_minus_1,
+        Pq::QPlus1 => s.q_plus_1,
+        Pq::Chi1 => s.chi_1,
+        Pq::ChiMinus1 => s.chi_minus_1,
+    })
+}
+
+/// A field of [`PqSigns`].
+#[derive(Clone, Copy)]
+enum Pq {
+    Disc,
+    P,
+    PMinus1,
+    PPlus1,
+    QMinus1,
+    QPlus1,
+    Chi1,
+    ChiMinus1,
+}
+
+/// [`classify_pq`] reading each sign through `s` when the table needs it:
+/// at an algebraic point a sign is an exact evaluation, and most classes
+/// need two or three of the eight.
+fn classify_pq_with(s: impl Fn(Pq) -> Ordering) -> RootClass {
     use Ordering::{Equal, Greater, Less};
     use RootClass::*;
-    match s.disc {
-        Less => match s.q_minus_1 {
+    match s(Pq::Disc) {
+        Less => match s(Pq::QMinus1) {
             Equal => Harmonic,
             Less => DampedOscillation,
             Greater => UnstableOscillation,
         },
         // A double real root at z = p.
-        Equal => match s.p {
+        Equal => match s(Pq::P) {
             Equal => Deadbeat,
-            _ if s.p_minus_1 == Equal || s.p_plus_1 == Equal => DoubleRootOnCircle,
-            Greater if s.p_minus_1 == Less => MonotonicStable,
+            _ if s(Pq::PMinus1) == Equal || s(Pq::PPlus1) == Equal => DoubleRootOnCircle,
+            Greater if s(Pq::PMinus1) == Less => MonotonicStable,
             Greater => MonotonicUnstable,
-            _ if s.p_plus_1 == Greater => AlternatingStable,
+            _ if s(Pq::PPlus1) == Greater => AlternatingStable,
             _ => AlternatingUnstable,
         },
         // Two distinct real roots p ± √(p² − q); the dominant one has the
         // sign of p, and χ(±1) tells on which side of ±1 the roots lie.
-        Greater => match s.p {
-            Equal => match s.q_plus_1 {
+        Greater => match s(Pq::P) {
+            Equal => match s(Pq::QPlus1) {
                 Equal => Alternating,
                 Greater => AlternatingStable,
                 Less => AlternatingUnstable,
             },
-            Greater => match s.chi_1 {
-                Equal if s.p_minus_1 == Less => Constant,
+            Greater => match s(Pq::Chi1) {
+                Equal if s(Pq::PMinus1) == Less => Constant,
                 Equal | Less => MonotonicUnstable,
-                Greater if s.p_minus_1 == Greater => MonotonicUnstable,
+                Greater if s(Pq::PMinus1) == Greater => MonotonicUnstable,
                 Greater => MonotonicStable,
             },
-            Less => match s.chi_minus_1 {
-                Equal if s.p_plus_1 == Greater => Alternating,
+            Less => match s(Pq::ChiMinus1) {
+                Equal if s(Pq::PPlus1) == Greater => Alternating,
                 Equal | Less => AlternatingUnstable,
-                Greater if s.p_plus_1 == Less => AlternatingUnstable,
+                Greater if s(Pq::PPlus1) == Less => AlternatingUnstable,
                 Greater => AlternatingStable,
             },
         },
@@ -649,33 +678,52 @@ where
         + std::ops::Mul<&'x T, Output = T>
         + std::ops::Neg<Output = T>,
 {
-    let two_a = a + a;
-    let ac = a * c;
-    let four_ac = &(&ac + &ac) + &(&ac + &ac);
-    vec![
-        a.clone(),
-        b.clone(),
-        -c,
-        -&(c + b),
-        b - c,
-        &(b * b) - &four_ac,
-        -b,
-        -&(b + &two_a),
-        &two_a - b,
-        c - a,
-        c + a,
-        &(a + b) + c,
-        &(a - b) + c,
-    ]
+    (0..QUADRATIC_TERMS).map(|k| quadratic_term(k, c, b, a)).collect()
+}
+
+/// The number of [`quadratic_terms`].
+const QUADRATIC_TERMS: usize = 13;
+
+/// Entry `k` of [`quadratic_terms`] alone (made when a sign table asks).
+fn quadratic_term<T>(k: usize, c: &T, b: &T, a: &T) -> T
+where
+    T: Clone,
+    for<'x> &'x T: std::ops::Add<&'x T, Output = T>
+        + std::ops::Sub<&'x T, Output = T>
+        + std::ops::Mul<&'x T, Output = T>
+        + std::ops::Neg<Output = T>,
+{
+    let two_a = || a + a;
+    match k {
+        Q_A => a.clone(),
+        Q_B => b.clone(),
+        Q_NEG_C => -c,
+        Q_NEG_C_PLUS_B => -&(c + b),
+        Q_B_MINUS_C => b - c,
+        Q_DISC => {
+            let ac = a * c;
+            &(b * b) - &(&(&ac + &ac) + &(&ac + &ac))
+        }
+        Q_NEG_B => -b,
+        Q_NEG_B_PLUS_2A => -&(b + &two_a()),
+        Q_2A_MINUS_B => &two_a() - b,
+        Q_C_MINUS_A => c - a,
+        Q_C_PLUS_A => c + a,
+        Q_CHI_1 => &(a + b) + c,
+        Q_CHI_MINUS_1 => &(a - b) + c,
+        _ => unreachable!("{k}: there are {QUADRATIC_TERMS} quadratic terms"),
+    }
 }
 
 /// The polynomials in Φ whose signs decide a second-order χ = c + b z + a z²
-/// (see [`classify_quadratic_by`]), formed once per χ, with their integer
-/// forms for signs at rationals.
+/// (see [`classify_quadratic_by`]), each formed with its integer form when
+/// a sign table first asks for it (most classes need three of the
+/// thirteen), then kept for the next point.
 #[derive(Clone, Debug)]
 pub(crate) struct QuadPolys {
-    pub polys: Vec<UPoly>,
-    pub ints: Vec<crate::univariate::sturm::IntPoly>,
+    /// c, b, a.
+    coeffs: [UPoly; 3],
+    entries: [std::sync::OnceLock<(UPoly, crate::univariate::sturm::IntPoly)>; QUADRATIC_TERMS],
 }
 
 const Q_A: usize = 0;
@@ -694,9 +742,21 @@ const Q_CHI_MINUS_1: usize = 12;
 
 impl QuadPolys {
     pub(crate) fn new(a: &[UPoly]) -> QuadPolys {
-        let polys = quadratic_terms(&a[0], &a[1], &a[2]);
-        let ints = polys.iter().map(crate::univariate::sturm::IntPoly::new).collect();
-        QuadPolys { polys, ints }
+        QuadPolys {
+            coeffs: [a[0].clone(), a[1].clone(), a[2].clone()],
+            entries: Default::default(),
+        }
+    }
+
+    /// Entry `k` of [`quadratic_terms`] and its integer form.
+    pub(crate) fn entry(&self, k: usize) -> (&UPoly, &crate::univariate::sturm::IntPoly) {
+        let (p, i) = self.entries[k].get_or_init(|| {
+            let [c, b, a] = &self.coeffs;
+            let p = quadratic_term(k, c, b, a);
+            let i = crate::univariate::sturm::IntPoly::new(&p);
+            (p, i)
+        });
+        (p, i)
     }
 }
 
@@ -720,17 +780,25 @@ pub(crate) fn classify_quadratic_by(sgn: impl Fn(usize) -> Ordering) -> RootClas
         );
     }
     let by_a = |o: Ordering| if sa == Ordering::Greater { o } else { o.reverse() };
-    let s = PqSigns {
-        disc: sgn(Q_DISC),
-        p: by_a(sgn(Q_NEG_B)),
-        p_minus_1: by_a(sgn(Q_NEG_B_PLUS_2A)),
-        p_plus_1: by_a(sgn(Q_2A_MINUS_B)),
-        q_minus_1: by_a(sgn(Q_C_MINUS_A)),
-        q_plus_1: by_a(sgn(Q_C_PLUS_A)),
-        chi_1: by_a(sgn(Q_CHI_1)),
-        chi_minus_1: by_a(sgn(Q_CHI_MINUS_1)),
+    // Each sign asked once, and only when the table reads it.
+    let memo: [std::cell::Cell<Option<Ordering>>; QUADRATIC_TERMS] = Default::default();
+    let sgn = |k: usize| {
+        memo[k].get().unwrap_or_else(|| {
+            let s = sgn(k);
+            memo[k].set(Some(s));
+            s
+        })
     };
-    classify_pq(&s)
+    classify_pq_with(|f| match f {
+        Pq::Disc => sgn(Q_DISC),
+        Pq::P => by_a(sgn(Q_NEG_B)),
+        Pq::PMinus1 => by_a(sgn(Q_NEG_B_PLUS_2A)),
+        Pq::PPlus1 => by_a(sgn(Q_2A_MINUS_B)),
+        Pq::QMinus1 => by_a(sgn(Q_C_MINUS_A)),
+        Pq::QPlus1 => by_a(sgn(Q_C_PLUS_A)),
+        Pq::Chi1 => by_a(sgn(Q_CHI_1)),
+        Pq::ChiMinus1 => by_a(sgn(Q_CHI_MINUS_1)),
+    })
 }
 
 // ---------------------------------------------------------------------------

@@ -23,8 +23,14 @@ use crate::univariate::number_field::{FPoly, Field};
 pub(crate) fn class_at_rational(chi: &Charpoly, phi: &Q) -> (RootClass, Counts) {
     let f = chi.at(phi);
     if chi.degree() == 2 {
-        let q = chi.quad();
-        let class = classify_quadratic_by(|k| q.ints[k].sign_at(phi));
+        // The signs of the sign polynomials at φ are the signs of the same
+        // expressions in χ(φ)'s coefficients (evaluation commutes with them),
+        // taken in integers: a positive scale keeps each sign. No polynomial
+        // in Φ is formed (`QuadPolys` waits for an irrational point).
+        let ints = crate::univariate::upoly::int_primitive(&f);
+        let coeff = |k: usize| ints.get(k).cloned().unwrap_or_default();
+        let values = super::point::quadratic_terms(&coeff(0), &coeff(1), &coeff(2));
+        let class = classify_quadratic_by(|k| values[k].cmp(&num_bigint::BigInt::zero()));
         let counts = match f.degree() {
             None => Counts::default(),
             Some(2) => quadratic_counts(&f),
@@ -44,7 +50,10 @@ pub(crate) fn class_at_point(chi: &Charpoly, phi: &Algebraic) -> Option<RootClas
     match chi.degree() {
         2 => {
             let q = chi.quad();
-            Some(classify_quadratic_by(|k| phi.sign_of_with(&q.polys[k], &q.ints[k])))
+            Some(classify_quadratic_by(|k| {
+                let (p, i) = q.entry(k);
+                phi.sign_of_with(p, i)
+            }))
         }
         1 => {
             // One root r = −a0/a1: signs of r, r − 1, r + 1 from polynomials.
@@ -550,6 +559,30 @@ mod tests {
     use proptest::prelude::*;
 
     proptest! {
+        /// The class of a second-order χ at a rational Φ from χ(Φ)'s own
+        /// coefficients is the one from the sign polynomials in Φ
+        /// (`QuadPolys`), and the general classifier's.
+        #[test]
+        fn class_at_a_rational_is_the_sign_polynomials_one(
+            c in proptest::collection::vec(proptest::collection::vec((-6i64..7, 1i64..5), 1..5), 3),
+            phi in (0i64..40, 1i64..9),
+        ) {
+            let a: Vec<UPoly> = (0..3)
+                .map(|k| UPoly::new(c[k].iter().map(|&(n, d)| crate::q(n, d)).collect()))
+                .collect();
+            prop_assume!(!a[2].is_zero());
+            let chi = Charpoly::from_coeffs(a);
+            let phi = crate::q(phi.0, phi.1);
+            let q = chi.quad();
+            let by_polys = classify_quadratic_by(|k| q.entry(k).1.sign_at(&phi));
+            let (class, counts) = class_at_rational(&chi, &phi);
+            prop_assert_eq!(class, by_polys);
+            let f = chi.at(&phi);
+            if f.degree() == Some(2) {
+                prop_assert_eq!((class, counts), classify_with_counts(&f));
+            }
+        }
+
         /// The lowest term of |z|² − 1 read off the walk's scaled
         /// coefficients is `series::dissipation_order`'s, from χ itself.
         #[test]
