@@ -300,7 +300,9 @@ class Method:
         if hasattr(method, "A") and hasattr(method, "b"):
             bhat = getattr(method, "bhat", None)
             bhat = None if bhat is None else list(bhat)
-            return cls.from_tableau([list(r) for r in method.A], list(method.b), name=label, bhat=bhat)
+            # NodePy's A is a numpy array of objects: tolist() makes the rows in C.
+            a = method.A.tolist() if hasattr(method.A, "tolist") else [list(r) for r in method.A]
+            return cls.from_tableau(a, list(method.b), name=label, bhat=bhat)
         if hasattr(method, "alpha") and hasattr(method, "beta"):
             return cls.from_multistep(list(method.alpha), list(method.beta), name=label)
         raise Error(f"{type(method).__name__}: expected a NodePy Runge-Kutta (A, b) or linear multistep (alpha, beta) method")
