@@ -670,47 +670,64 @@ pub(crate) fn class_of_single_root(
 /// `Q_*` indices): over Q\[Φ\] for the rational engine, over F\[Φ\] for
 /// χ with exact constants. The one root-class table is
 /// [`classify_quadratic_by`] with [`classify_pq`].
-pub(crate) fn quadratic_terms<T>(c: &T, b: &T, a: &T) -> Vec<T>
-where
-    T: Clone,
-    for<'x> &'x T: std::ops::Add<&'x T, Output = T>
-        + std::ops::Sub<&'x T, Output = T>
-        + std::ops::Mul<&'x T, Output = T>
-        + std::ops::Neg<Output = T>,
-{
+pub(crate) fn quadratic_terms<T: Ring>(c: &T, b: &T, a: &T) -> Vec<T> {
     (0..QUADRATIC_TERMS).map(|k| quadratic_term(k, c, b, a)).collect()
 }
 
 /// The number of [`quadratic_terms`].
 const QUADRATIC_TERMS: usize = 13;
 
-/// Entry `k` of [`quadratic_terms`] alone (made when a sign table asks).
-fn quadratic_term<T>(k: usize, c: &T, b: &T, a: &T) -> T
+/// The operations [`quadratic_terms`] takes its coefficients through:
+/// those of a ring on references (Q\[Φ\], F\[Φ\], the integers).
+pub(crate) trait Ring: Clone {
+    fn plus(&self, other: &Self) -> Self;
+    fn minus(&self, other: &Self) -> Self;
+    fn times(&self, other: &Self) -> Self;
+    fn negated(&self) -> Self;
+}
+
+impl<T: Clone> Ring for T
 where
-    T: Clone,
     for<'x> &'x T: std::ops::Add<&'x T, Output = T>
         + std::ops::Sub<&'x T, Output = T>
         + std::ops::Mul<&'x T, Output = T>
         + std::ops::Neg<Output = T>,
 {
-    let two_a = || a + a;
+    fn plus(&self, other: &Self) -> Self {
+        self + other
+    }
+    fn minus(&self, other: &Self) -> Self {
+        self - other
+    }
+    fn times(&self, other: &Self) -> Self {
+        self * other
+    }
+    fn negated(&self) -> Self {
+        -self
+    }
+}
+
+/// Entry `k` of [`quadratic_terms`] alone (made when a sign table asks).
+fn quadratic_term<T: Ring>(k: usize, c: &T, b: &T, a: &T) -> T {
+    let two_a = || a.plus(a);
     match k {
         Q_A => a.clone(),
         Q_B => b.clone(),
-        Q_NEG_C => -c,
-        Q_NEG_C_PLUS_B => -&(c + b),
-        Q_B_MINUS_C => b - c,
+        Q_NEG_C => c.negated(),
+        Q_NEG_C_PLUS_B => c.plus(b).negated(),
+        Q_B_MINUS_C => b.minus(c),
         Q_DISC => {
-            let ac = a * c;
-            &(b * b) - &(&(&ac + &ac) + &(&ac + &ac))
+            let ac = a.times(c);
+            let two_ac = ac.plus(&ac);
+            b.times(b).minus(&two_ac.plus(&two_ac))
         }
-        Q_NEG_B => -b,
-        Q_NEG_B_PLUS_2A => -&(b + &two_a()),
-        Q_2A_MINUS_B => &two_a() - b,
-        Q_C_MINUS_A => c - a,
-        Q_C_PLUS_A => c + a,
-        Q_CHI_1 => &(a + b) + c,
-        Q_CHI_MINUS_1 => &(a - b) + c,
+        Q_NEG_B => b.negated(),
+        Q_NEG_B_PLUS_2A => b.plus(&two_a()).negated(),
+        Q_2A_MINUS_B => two_a().minus(b),
+        Q_C_MINUS_A => c.minus(a),
+        Q_C_PLUS_A => c.plus(a),
+        Q_CHI_1 => a.plus(b).plus(c),
+        Q_CHI_MINUS_1 => a.minus(b).plus(c),
         _ => unreachable!("{k}: there are {QUADRATIC_TERMS} quadratic terms"),
     }
 }
