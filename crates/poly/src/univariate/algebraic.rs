@@ -247,6 +247,36 @@ impl Algebraic {
         }
     }
 
+    /// The same irrational number with its interval narrowed to `(lo, hi)`
+    /// (intersected with the one held), when it lies strictly inside
+    /// `(lo, hi)`: at most three signs decide, with no bisection, so a
+    /// bracket from floating point (the midpoints around the nearest f64)
+    /// is checked and kept in one step. `None` when it lies outside, and
+    /// for a rational.
+    pub fn narrowed(&self, lo: &Q, hi: &Q) -> Option<Algebraic> {
+        let Repr::Root { poly, ip, lo: l, hi: h } = &self.repr else { return None };
+        let (above, below) = (cmp(lo, l) == Ordering::Greater, cmp(hi, h) == Ordering::Less);
+        let (new_lo, new_hi) = (if above { lo } else { l }, if below { hi } else { h });
+        if cmp(new_lo, new_hi) != Ordering::Less {
+            return None;
+        }
+        // The one root in (l, h) is above a point x inside exactly when
+        // there is no sign change in (l, x] (the polynomial has no rational
+        // roots, so no sign inside is zero).
+        let s_lo = ip.sign_at(l);
+        if (above && ip.sign_at(new_lo) != s_lo) || (below && ip.sign_at(new_hi) == s_lo) {
+            return None;
+        }
+        Some(Algebraic {
+            repr: Repr::Root {
+                poly: poly.clone(),
+                ip: ip.clone(),
+                lo: new_lo.clone(),
+                hi: new_hi.clone(),
+            },
+        })
+    }
+
     /// A rational within `width` of the number (the midpoint of a refined
     /// interval); the number itself when it is rational.
     pub fn approx(&self, width: &Q) -> Q {
@@ -1004,6 +1034,10 @@ fn sqrt_parts(q: &Q) -> (Q, BigInt) {
 /// squares are out (the tests' trial division by every integer is the
 /// oracle), and each test is a remainder by a word.
 pub(crate) fn square_part(n: &BigInt, bound: u64) -> (BigInt, BigInt) {
+    if let Some(small) = num_traits::ToPrimitive::to_u64(n.magnitude()) {
+        let (out, rest) = square_part_u64(small, bound);
+        return (out.into(), rest.into());
+    }
     let mut rest = n.magnitude().clone();
     let mut out = BigInt::one();
     for &p in small_primes().iter().take_while(|&&p| p < bound) {
@@ -1022,6 +1056,28 @@ pub(crate) fn square_part(n: &BigInt, bound: u64) -> (BigInt, BigInt) {
     if &s * &s == rest {
         out *= s;
         rest = BigInt::one();
+    }
+    (out, rest)
+}
+
+/// [`square_part`] of a radicand that fits a word, in words (most do: the
+/// radicands of quadratic closed forms), with no big integer made.
+fn square_part_u64(n: u64, bound: u64) -> (u64, u64) {
+    let (mut rest, mut out) = (n, 1u64);
+    for &p in small_primes().iter().take_while(|&&p| p < bound) {
+        let pp = p * p;
+        if rest < pp {
+            break;
+        }
+        while rest % pp == 0 {
+            rest /= pp;
+            out *= p;
+        }
+    }
+    let s = rest.isqrt();
+    if s * s == rest {
+        // out·s ≤ √n: no overflow.
+        return (out * s, 1);
     }
     (out, rest)
 }
@@ -1385,6 +1441,41 @@ mod tests {
             for root in Algebraic::real_roots(&f) {
                 prop_assert_eq!(root.is_root_of(&g), root.sign_of(&g) == Ordering::Equal);
                 prop_assert_eq!(root.is_root_of(&p), root.sign_of(&p) == Ordering::Equal);
+            }
+        }
+    }
+
+    proptest! {
+        /// `narrowed` keeps the number exactly when it lies strictly inside
+        /// the bracket (the oracle: two comparisons), and then its interval
+        /// is the intersection of the two; brackets straddle, miss, touch
+        /// and contain the interval held, on roots of random quartics.
+        #[test]
+        fn narrowed_keeps_the_number_exactly_when_inside(
+            p in proptest::collection::vec(-9i64..=9, 3..6),
+            ends in proptest::collection::vec((-400i64..400, 1i64..64), 2..=2),
+            refine_bits in 0usize..12,
+        ) {
+            let p = UPoly::from_ints(&p);
+            prop_assume!(!p.is_zero());
+            let (x, y) = (Q::new(ends[0].0.into(), ends[0].1.into()), Q::new(ends[1].0.into(), ends[1].1.into()));
+            prop_assume!(x != y);
+            let (lo, hi) = if x < y { (x, y) } else { (y, x) };
+            let width = Q::new(BigInt::one(), BigInt::one() << refine_bits);
+            for a in Algebraic::real_roots(&p) {
+                let a = a.refine(&width);
+                let inside = a.cmp_rational(&lo) == Ordering::Greater
+                    && a.cmp_rational(&hi) == Ordering::Less;
+                match a.narrowed(&lo, &hi) {
+                    None => prop_assert!(!inside || a.is_rational(), "{a:?} in ({lo}, {hi})"),
+                    Some(n) => {
+                        prop_assert!(inside && !a.is_rational());
+                        prop_assert!(n == a && n.defining_poly() == a.defining_poly());
+                        let ((l, h), (nl, nh)) = (a.interval(), n.interval());
+                        prop_assert_eq!(nl, l.max(lo.clone()));
+                        prop_assert_eq!(nh, h.min(hi.clone()));
+                    }
+                }
             }
         }
     }

@@ -22,7 +22,19 @@ pub(crate) fn fine() -> Q {
 /// costs time, never the answer). `None` where f64 cannot tell (a
 /// rational, overflow, no sign change seen).
 pub(crate) fn guess(a: &Algebraic) -> Option<(Q, Q)> {
-    let (lo, hi) = a.interval();
+    let x = newton(a)?;
+    // Rounding in Horner's rule blurs the sign within a few ulps of a
+    // well-conditioned root: a margin of 8 ulps either side.
+    let m = x.abs() * f64::EPSILON;
+    let spread = 8.0 * if m > 0.0 { m } else { f64::MIN_POSITIVE };
+    Some((dyadic(x - spread)?, dyadic(x + spread)?))
+}
+
+/// Where Newton's method in f64 settles on an irrational `a`, kept inside
+/// its isolating interval by bisection ([`guess`]); `None` where f64
+/// cannot tell.
+fn newton(a: &Algebraic) -> Option<f64> {
+    let (lo, hi) = a.ends();
     let p = a.defining_poly();
     if p.degree().unwrap_or(0) < 2 {
         return None;
@@ -30,7 +42,8 @@ pub(crate) fn guess(a: &Algebraic) -> Option<(Q, Q)> {
     let c: Vec<f64> = p.coeffs().iter().map(|q| q.to_f64()).collect::<Option<_>>()?;
     // p and p′ together by Horner's rule.
     let f = |x: f64| c.iter().rev().fold((0.0, 0.0), |(v, d), &ci| (v * x + ci, d * x + v));
-    let (mut l, mut h) = (lo.to_f64()?, hi.to_f64()?);
+    let (lo, hi) = (lo.to_f64()?, hi.to_f64()?);
+    let (mut l, mut h) = (lo, hi);
     let (fl, fh) = (f(l).0, f(h).0);
     if !(fl.is_finite() && fh.is_finite()) || fl == 0.0 || fh == 0.0 || (fl < 0.0) == (fh < 0.0) {
         return None;
@@ -55,11 +68,39 @@ pub(crate) fn guess(a: &Algebraic) -> Option<(Q, Q)> {
         }
         x = next;
     }
-    // Rounding in Horner's rule blurs the sign within a few ulps of a
-    // well-conditioned root: a margin of 8 ulps either side.
-    let m = x.abs() * f64::EPSILON;
-    let spread = 8.0 * if m > 0.0 { m } else { f64::MIN_POSITIVE };
-    Some((dyadic(x - spread)?, dyadic(x + spread)?))
+    // Plain Horner's rounding leaves x an ulp or so off the root; Newton's
+    // steps on the value by compensated Horner (as if in twice the
+    // precision) settle on the nearest f64 of a well-conditioned root,
+    // where the rendering's bracket check wants it. Plain Horner's signs
+    // placed the bracket (l, h), so only the isolating interval bounds
+    // these steps.
+    for _ in 0..3 {
+        let (v, d) = (compensated_horner(&c, x), f(x).1);
+        let n = x - v / d;
+        if !(v.is_finite() && d != 0.0 && lo < n && n < hi) || n == x {
+            break;
+        }
+        x = n;
+    }
+    Some(x)
+}
+
+/// p(x) by compensated Horner (Graillat, Langlois and Louvet, 2005): the
+/// rounding errors of each product and sum, found exactly by FMA and
+/// TwoSum, summed by Horner's rule alongside; `c` lowest power first.
+fn compensated_horner(c: &[f64], x: f64) -> f64 {
+    let Some((&top, rest)) = c.split_last() else { return 0.0 };
+    let (mut s, mut err) = (top, 0.0);
+    for &ci in rest.iter().rev() {
+        let p = s * x;
+        let pe = s.mul_add(x, -p);
+        let t = p + ci;
+        let z = t - p;
+        let se = (p - (t - z)) + (ci - z);
+        s = t;
+        err = err * x + (pe + se);
+    }
+    s + err
 }
 
 /// A finite f64 as the exact rational it is (num-rational's `from_float`
@@ -115,6 +156,15 @@ fn midpoint(x: f64, y: f64) -> Option<Q> {
 pub(crate) fn nearest_f64(a: &Algebraic, guess: Option<&(Q, Q)>) -> f64 {
     if let Some(q) = a.as_rational() {
         return q.to_f64().unwrap_or(f64::NAN);
+    }
+    // num-rational's `to_f64` rounds correctly, and rounding is monotone:
+    // ends that round alike (as they mostly do once refined for a
+    // rendering) round `a` there too.
+    let (lo, hi) = a.ends();
+    if let (Some(xl), Some(xh)) = (lo.to_f64(), hi.to_f64()) {
+        if xl == xh && xl.is_finite() && xl != 0.0 {
+            return xl;
+        }
     }
     if let Some(x) = nearest_by_midpoints(a) {
         return x;
@@ -177,6 +227,35 @@ fn nearest_by_midpoints(a: &Algebraic) -> Option<f64> {
     None
 }
 
+/// `a` with an isolating interval no wider than `width`, and the f64
+/// nearest it (correctly rounded), for a rendering. The quick way first:
+/// where the two midpoints around Newton's f64 `x` lie within `width` of
+/// each other and bracket `a` ([`Algebraic::narrowed`], at most three
+/// signs), `x` is the nearest f64 and the bracket the interval. Else (`x`
+/// off by an ulp, an ulp wider than `width`, f64 out of range) `a`
+/// [`refined`] and [`nearest_f64`]; either way the value is the same, and
+/// the interval an isolating one no wider than `width`.
+pub(crate) fn narrowed_with_value(a: &Algebraic, width: &Q) -> (Algebraic, f64) {
+    if let Some(q) = a.as_rational() {
+        return (a.clone(), q.to_f64().unwrap_or(f64::NAN));
+    }
+    if let Some(x) = newton(a) {
+        let (below, above) = (x.next_down(), x.next_up());
+        // The bracket's width, (ulp below + ulp above)/2, is exact in f64.
+        let span = dyadic(0.5 * (above - below));
+        if let (Some(m1), Some(m2), Some(span)) = (midpoint(below, x), midpoint(x, above), span) {
+            if span <= *width {
+                if let Some(n) = a.narrowed(&m1, &m2) {
+                    return (n, x);
+                }
+            }
+        }
+    }
+    let (fine, g) = refined(a, width);
+    let value = nearest_f64(&fine, g.as_ref());
+    (fine, value)
+}
+
 /// `a` refined to `width`, from an f64 guess where one is found (the
 /// result is [`Algebraic::refine`]'s either way), and the guess.
 pub(crate) fn refined(a: &Algebraic, width: &Q) -> (Algebraic, Option<(Q, Q)>) {
@@ -194,11 +273,11 @@ pub(crate) fn refined(a: &Algebraic, width: &Q) -> (Algebraic, Option<(Q, Q)>) {
 pub(crate) fn number(a: &Algebraic, var: &str) -> Value {
     // Refined once: the interval, the description and the value read the
     // same number.
-    let (fine_a, g) = refined(a, &fine());
+    let (fine_a, value) = narrowed_with_value(a, &fine());
     let (lo, hi) = fine_a.interval();
     json!({
         "exact": fine_a.describe(var),
-        "value": nearest_f64(&fine_a, g.as_ref()),
+        "value": value,
         "defining_poly": a.defining_poly().to_string_in(var),
         "interval": [lo.to_string(), hi.to_string()],
     })
@@ -276,6 +355,14 @@ mod tests {
             );
             let width = num_traits::pow(two.recip(), width_bits as usize);
             for a in Algebraic::real_roots(&p) {
+                // The rendering's one step: the nearest f64, and an
+                // isolating interval inside the one held, no wider than
+                // `width`, of the same number.
+                let (narrow, value) = narrowed_with_value(&a, &width);
+                prop_assert_eq!(value.to_bits(), testkit::oracle::nearest_f64(&a).to_bits());
+                let ((l, h), (nl, nh)) = (a.interval(), narrow.interval());
+                prop_assert!(narrow == a && narrow.defining_poly() == a.defining_poly());
+                prop_assert!(l <= nl && nh <= h && &nh - &nl <= width, "{:?} in {:?}", narrow, a);
                 let (fast, g) = refined(&a, &width);
                 prop_assert_eq!(fast.interval(), a.refine(&width).interval());
                 let want = testkit::oracle::nearest_f64(&a);

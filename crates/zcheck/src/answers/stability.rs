@@ -289,12 +289,8 @@ pub(crate) fn render(a: &Algebraic) -> std::rc::Rc<Rendered> {
     if let Some(r) = hit {
         return r;
     }
-    let (fine_a, guess) = super::exact::refined(a, &fine());
-    let r = std::rc::Rc::new(Rendered {
-        value: super::exact::nearest_f64(&fine_a, guess.as_ref()),
-        exact: fine_a.describe("Phi"),
-        fine: fine_a,
-    });
+    let (fine_a, value) = super::exact::narrowed_with_value(a, &fine());
+    let r = std::rc::Rc::new(Rendered { value, exact: fine_a.describe("Phi"), fine: fine_a });
     RENDERED.with(|c| {
         let mut c = c.borrow_mut();
         if c.len() > 4096 {
