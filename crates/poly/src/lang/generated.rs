@@ -20,10 +20,11 @@ impl Tableau {
     /// is lowered only when something reads its lines: its header is known
     /// without it, and its derivation comes from the stability function.
     pub fn program(&self, file: &str, source: &str, damped: bool) -> Result<Method, Error> {
-        let text = self.to_zm(source, damped);
         if damped {
-            return Method::parse(file, &text);
+            return Method::parse(file, &self.to_zm(source, damped));
         }
+        let source = source.to_owned();
+        let text = move |t: &Tableau| t.to_zm(&source, false);
         let mut m = self.deferred(file, text, ["v", "y"], false)?;
         m.stability_function = self.stability_function()?;
         Ok(m)
@@ -32,28 +33,31 @@ impl Tableau {
     /// [`Tableau::scalar_method`] with the file name and `source` given,
     /// carrying the stability function as [`Tableau::program`] does.
     pub fn scalar_program(&self, file: &str, source: &str) -> Result<Method, Error> {
-        let text = self.to_scalar_zm(source);
+        let source = source.to_owned();
+        let text = move |t: &Tableau| t.to_scalar_zm(&source);
         let mut m = self.deferred(file, text, ["y"], true)?;
         m.stability_function = self.stability_function()?;
         Ok(m)
     }
 
-    /// The method of a generated program `text`: lowered now when an entry
+    /// The method of the program `text` writes: lowered now when an entry
     /// has a radical (its constants are the program's to read), else
-    /// deferred under the header every such program has (`state`, `Phi`
-    /// the only parameter, no history, implicit exactly when A is not
-    /// strictly lower triangular; tested against the lowered program on
-    /// every catalogue tableau and on random ones).
+    /// deferred, the text written only then, under the header every such
+    /// program has (`state`, `Phi` the only parameter, no history,
+    /// implicit exactly when A is not strictly lower triangular; tested
+    /// against the lowered program on every catalogue tableau and on
+    /// random ones).
     fn deferred<const N: usize>(
         &self,
         file: &str,
-        text: String,
+        text: impl Fn(&Tableau) -> String + Send + Sync + 'static,
         state: [&str; N],
         scalar: bool,
     ) -> Result<Method, Error> {
         if !self.constants.is_empty() {
-            return Method::parse(file, &text);
+            return Method::parse(file, &text(self));
         }
+        let tableau = self.clone();
         let file = file.to_owned();
         Ok(Method {
             name: self.name.clone(),
@@ -65,7 +69,7 @@ impl Tableau {
             implicit: !self.is_explicit(),
             stability_function: Default::default(),
             body: crate::lang::method::Body::deferred(Box::new(move || {
-                Method::parse(&file, &text)
+                Method::parse(&file, &text(&tableau))
             })),
         })
     }

@@ -55,6 +55,22 @@ impl Exact {
     /// Reads one entry. The error says what was expected; its caller knows
     /// where the entry stands (a file position, an index).
     pub fn parse(text: &str) -> Result<Exact, Error> {
+        let plain = text.trim();
+        if let Some((n, d)) = small_fraction(plain) {
+            return Ok(Exact {
+                expr: if d == 1 { n.to_string() } else { format!("{n}/{d}") },
+                radicals: Vec::new(),
+                zero: n == 0,
+                number: Some(crate::Q::new_raw(n.into(), d.into())),
+                value: None,
+            });
+        }
+        Exact::parse_general(text)
+    }
+
+    /// [`Exact::parse`] without the quick path for small fractions (the
+    /// tests' oracle for it).
+    pub(crate) fn parse_general(text: &str) -> Result<Exact, Error> {
         // A plain number (`-3/8`, `0.125`, `1e-3`) needs no program to test.
         let plain = text.trim();
         let (negative, digits) = match plain.strip_prefix('-') {
@@ -82,6 +98,31 @@ impl Exact {
     pub fn is_zero(&self) -> bool {
         self.zero
     }
+}
+
+/// `[-]N[/D]`, N and D of at most 18 decimal digits and D non-zero (most
+/// entries: NodePy's and the catalogue's), in lowest terms with D > 0, read
+/// in words; `None` sends anything else (and every error) the general way.
+fn small_fraction(text: &str) -> Option<(i64, i64)> {
+    let (negative, rest) = match text.strip_prefix('-') {
+        Some(rest) => (true, rest),
+        None => (false, text),
+    };
+    let word = |s: &str| -> Option<i64> {
+        if s.is_empty() || s.len() > 18 || !s.bytes().all(|b| b.is_ascii_digit()) {
+            return None;
+        }
+        s.parse().ok()
+    };
+    let (n, d) = match rest.split_once('/') {
+        Some((n, d)) => (word(n)?, word(d)?),
+        None => (word(rest)?, 1),
+    };
+    if d == 0 {
+        return None;
+    }
+    let g = num_integer::Integer::gcd(&n, &d);
+    Some((if negative { -n / g } else { n / g }, d / g))
 }
 
 pub(crate) fn entry_error(message: String) -> Error {
@@ -367,9 +408,10 @@ impl Tableau {
         b: &[&str],
         c: Option<&[&str]>,
     ) -> Result<Tableau, Error> {
-        let entry = |text: &str, at: String| {
+        // The entry's name is written only for an error.
+        let entry = |text: &str, at: &dyn Fn() -> String| {
             Exact::parse(text).map_err(|e| {
-                Error::new(e.kind(), Span::default(), format!("{at}: {}", e.message()))
+                Error::new(e.kind(), Span::default(), format!("{}: {}", at(), e.message()))
             })
         };
         let a = a
@@ -378,20 +420,20 @@ impl Tableau {
             .map(|(i, row)| {
                 row.iter()
                     .enumerate()
-                    .map(|(j, t)| entry(t, format!("A[{}][{}]", i + 1, j + 1)))
+                    .map(|(j, t)| entry(t, &|| format!("A[{}][{}]", i + 1, j + 1)))
                     .collect::<Result<Vec<_>, _>>()
             })
             .collect::<Result<Vec<_>, _>>()?;
         let b = b
             .iter()
             .enumerate()
-            .map(|(i, t)| entry(t, format!("b[{}]", i + 1)))
+            .map(|(i, t)| entry(t, &|| format!("b[{}]", i + 1)))
             .collect::<Result<Vec<_>, _>>()?;
         let c = c
             .map(|c| {
                 c.iter()
                     .enumerate()
-                    .map(|(i, t)| entry(t, format!("c[{}]", i + 1)))
+                    .map(|(i, t)| entry(t, &|| format!("c[{}]", i + 1)))
                     .collect::<Result<Vec<_>, _>>()
             })
             .transpose()?;
@@ -583,9 +625,38 @@ pub(crate) fn sum_of<'a>(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use proptest::prelude::*;
 
     fn e(s: &str) -> Exact {
         Exact::parse(s).unwrap()
+    }
+
+    proptest! {
+        /// The quick path for small fractions reads what the general one
+        /// reads (text, value, zero, or the same error), on fractions in
+        /// and out of its reach: signs, spaces, leading zeros, 17 to 21
+        /// digits, zero denominators, decimals and stray characters.
+        #[test]
+        fn small_fractions_read_as_the_general_path_reads(
+            sign in prop::sample::select(vec!["", "-", "+", "- ", " -"]),
+            n in "[0-9]{1,21}",
+            slash in prop::sample::select(vec!["", "/", "/", " / ", "."]),
+            d in "[0-9]{0,20}",
+            tail in prop::sample::select(vec!["", " ", "x", "/2"]),
+        ) {
+            let text = format!("{sign}{n}{slash}{}{tail}", if slash.is_empty() { "" } else { d.as_str() });
+            match (Exact::parse(&text), Exact::parse_general(&text)) {
+                (Ok(quick), Ok(general)) => {
+                    prop_assert_eq!(&quick.expr, &general.expr);
+                    prop_assert_eq!(quick.zero, general.zero);
+                    prop_assert_eq!(&quick.number, &general.number);
+                    prop_assert_eq!(&quick.radicals, &general.radicals);
+                    prop_assert_eq!(quick.value.is_some(), general.value.is_some());
+                }
+                (Err(quick), Err(general)) => prop_assert_eq!(quick, general),
+                (quick, general) => prop_assert!(false, "{text:?}: {quick:?} against {general:?}"),
+            }
+        }
     }
 
     /// Plain numbers are summed without a program, to what the program
