@@ -7,4 +7,5 @@
 //! Imports only from the layers below.
 
 pub(crate) mod implicit;
+pub(crate) mod oscillator;
 pub(crate) mod routes;

@@ -585,39 +585,15 @@ pub fn derive(method: &Method) -> Result<Derivation, Error> {
 fn derive_runge_kutta(method: &Method, p: &Poly, q: &Poly) -> Derivation {
     let fix = |x: Poly| crate::lang::system::fix(method, x);
     let z = Poly::sym(Sym::z());
+    let rational = || Some((p.to_upoly(Sym::w())?, q.to_upoly(Sym::w())?));
     let (transition_matrix, p_denominator, charpoly) = if method.is_scalar() {
         let chi = fix(&(&z * q) - p);
         (PolyMatrix::from_rows(vec![vec![p.clone()]]), q.clone(), chi)
     } else {
-        let phi = Poly::sym(Sym::phi());
-        // (re, im) of c(−iΦ), (−i)^k cycling 1, −i, −1, i.
-        let split = |c: &Poly| {
-            let (mut re, mut im) = (Poly::zero(), Poly::zero());
-            let mut power = Poly::one();
-            for (k, ck) in c.coeffs_in(Sym::w()).iter().enumerate() {
-                if !ck.is_zero() {
-                    let t = ck * &power;
-                    match k % 4 {
-                        0 => re += &t,
-                        1 => im -= &t,
-                        2 => re -= &t,
-                        _ => im += &t,
-                    }
-                }
-                power = &power * &phi;
-            }
-            (re, im)
-        };
-        let ((pr, pi), (qr, qi)) = (split(p), split(q));
-        let d = fix(&(&qr * &qr) + &(&qi * &qi));
-        let alpha = fix(&(&pr * &qr) + &(&pi * &qi));
-        let beta = fix(&(&pi * &qr) - &(&pr * &qi));
-        let modulus = fix(&(&pr * &pr) + &(&pi * &pi));
-        let two_alpha = alpha.scale(&crate::Q::from_integer(2.into()));
-        let chi = fix(&(&(&d * &(&z * &z)) - &(&two_alpha * &z)) + &modulus);
-        let dp =
-            PolyMatrix::from_rows(vec![vec![alpha.clone(), beta.clone()], vec![-&beta, alpha]]);
-        (dp, d, chi)
+        rational()
+            .filter(|_| method.constants().is_empty())
+            .and_then(|(p, q)| super::oscillator::in_words(&p, &q))
+            .unwrap_or_else(|| super::oscillator::general(method, p, q))
     };
     Derivation {
         method: method.clone(),
