@@ -292,6 +292,17 @@ impl Tableau {
     }
 
     fn compute_stability_function(&self) -> Result<StabilityFunction, Error> {
+        // An explicit tableau of plain numbers (most): P in integers, read
+        // from the entries' values, no polynomial made of an entry.
+        let plain_row = |row: &[Exact]| row.iter().map(plain).collect::<Option<Vec<_>>>();
+        if let (true, Some(b), Some(a)) = (
+            self.is_explicit(),
+            plain_row(&self.b),
+            self.a.iter().map(|row| plain_row(row)).collect::<Option<Vec<_>>>(),
+        ) {
+            let p = Poly::from_upoly(Sym::w(), &explicit_stability_polynomial(&a, &b));
+            return Ok(StabilityFunction(Some(Arc::new((p, Poly::one())))));
+        }
         let constants = !self.constants.is_empty();
         let fix = |p: Poly| if constants { field::reduce(&p) } else { p };
         let index = crate::lang::constant::radical_indices(&self.constants);
@@ -446,6 +457,47 @@ impl Tableau {
 /// so one rational is reduced per coefficient (not one per product: the
 /// decimals of a float-derived tableau are 17-digit fractions).
 fn explicit_stability_polynomial(a: &[Vec<crate::Q>], b: &[crate::Q]) -> crate::UPoly {
+    explicit_in_words(a, b).unwrap_or_else(|| explicit_in_big_integers(a, b))
+}
+
+/// [`explicit_stability_polynomial`] in `i128` while every denominator,
+/// product and sum fits (the catalogue's tableaux, not those read from
+/// 17-digit decimals); `None` at the first overflow.
+fn explicit_in_words(a: &[Vec<crate::Q>], b: &[crate::Q]) -> Option<crate::UPoly> {
+    use num_integer::Integer;
+    use num_traits::ToPrimitive;
+    let lcm = |l: Option<i128>, q: &crate::Q| {
+        let (l, d) = (l?, q.denom().to_i128()?);
+        (l / l.gcd(&d)).checked_mul(d)
+    };
+    let d = a.iter().flatten().fold(Some(1), lcm)?;
+    let db = b.iter().fold(Some(1), lcm)?;
+    let scaled = |q: &crate::Q, d: i128| q.numer().to_i128()?.checked_mul(d / q.denom().to_i128()?);
+    let ai = a
+        .iter()
+        .map(|r| r.iter().map(|q| scaled(q, d)).collect::<Option<Vec<_>>>())
+        .collect::<Option<Vec<_>>>()?;
+    let bi = b.iter().map(|q| scaled(q, db)).collect::<Option<Vec<_>>>()?;
+    let dot = |x: &[i128], y: &[i128]| {
+        x.iter().zip(y).try_fold(0i128, |s, (x, y)| s.checked_add(x.checked_mul(*y)?))
+    };
+    let mut v = vec![1i128; b.len()];
+    let mut den = db;
+    let mut coeffs = vec![crate::Q::from_integer(1.into())];
+    for k in 0..b.len() {
+        let num = dot(&bi, &v)?;
+        let g = num.gcd(&den);
+        coeffs.push(crate::Q::new_raw((num / g).into(), (den / g).into()));
+        if k + 1 < b.len() {
+            v = ai.iter().map(|row| dot(row, &v)).collect::<Option<Vec<_>>>()?;
+            den = den.checked_mul(d)?;
+        }
+    }
+    Some(crate::UPoly::new(coeffs))
+}
+
+/// [`explicit_stability_polynomial`] in big integers.
+fn explicit_in_big_integers(a: &[Vec<crate::Q>], b: &[crate::Q]) -> crate::UPoly {
     use num_bigint::BigInt;
     let lcm = |qs: &mut dyn Iterator<Item = &crate::Q>| {
         qs.fold(BigInt::from(1), |l, q| num_integer::Integer::lcm(&l, q.denom()))
@@ -629,6 +681,33 @@ mod tests {
 
     fn e(s: &str) -> Exact {
         Exact::parse(s).unwrap()
+    }
+
+    proptest! {
+        /// P of an explicit tableau in words is P in big integers, on
+        /// tableaux with entries up to 2^62 (the words overflow and fall
+        /// back) and zero weights.
+        #[test]
+        fn explicit_p_in_words_is_p_in_big_integers(
+            s in 1usize..6,
+            entries in proptest::collection::vec((-(1i64 << 20)..(1i64 << 20), 1i64..1000), 36),
+            big in prop::sample::select(vec![1i64, 1, 1 << 40, (1 << 62) - 57]),
+        ) {
+            // Every seventh entry times `big`.
+            let q = |k: usize| {
+                let scale: i64 = if k.is_multiple_of(7) { big } else { 1 };
+                crate::Q::new(entries[k].0.into(), entries[k].1.into()) * crate::Q::from_integer(scale.into())
+            };
+            let a: Vec<Vec<crate::Q>> = (0..s)
+                .map(|i| (0..s).map(|j| if j < i { q(i * 6 + j) } else { crate::Q::default() }).collect())
+                .collect();
+            let b: Vec<crate::Q> = (0..s).map(|j| q(30 + j)).collect();
+            let big_route = explicit_in_big_integers(&a, &b);
+            if let Some(words) = explicit_in_words(&a, &b) {
+                prop_assert_eq!(words, big_route);
+            }
+            prop_assert_eq!(explicit_stability_polynomial(&a, &b), explicit_in_big_integers(&a, &b));
+        }
     }
 
     proptest! {
