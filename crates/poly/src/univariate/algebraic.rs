@@ -19,7 +19,7 @@ use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
 
-use crate::arith::rational::{cmp, eq, shr};
+use crate::arith::rational::{add, cmp, eq, mul, shr};
 use crate::univariate::roots::isolate_squarefree;
 use crate::univariate::sturm::{
     count_real_roots, refine_int, refine_int_near, refine_quadratic, sign, IntPoly,
@@ -400,14 +400,14 @@ impl Algebraic {
             Some(2) => {
                 // x² + b x + c: roots −b/2 ± √(b²/4 − c); the number is the
                 // larger root exactly when it lies above −b/2.
-                let centre = -&c[1] / Q::from_integer(2.into());
+                let centre = shr(&-c[1].clone(), 1);
                 let plus = self.cmp_rational(&centre) == Ordering::Greater;
-                Some(quadratic_form(&centre, &(&centre * &centre - &c[0]), plus))
+                Some(quadratic_form(&centre, &add(&mul(&centre, &centre), &-c[0].clone()), plus))
             }
             Some(4) if c[1].is_zero() && c[3].is_zero() => {
                 // x⁴ + b x² + c: x² = −b/2 ± √(b²/4 − c).
-                let centre = -&c[2] / Q::from_integer(2.into());
-                let radicand = &centre * &centre - &c[0];
+                let centre = shr(&-c[2].clone(), 1);
+                let radicand = add(&mul(&centre, &centre), &-c[0].clone());
                 let shifted = UPoly::new(vec![-centre.clone(), Q::zero(), Q::one()]);
                 let plus = sign_at_root(poly, ip, lo, hi, &shifted, None) == Ordering::Greater;
                 let inner = quadratic_form(&centre, &radicand, plus);
@@ -1025,7 +1025,7 @@ fn sqrt_parts(q: &Q) -> (Q, BigInt) {
     // less reduced, and printing it no longer costs milliseconds.
     let bound: u64 = if n.bits() > 256 { 1_000 } else { 100_000 };
     let (out, rest) = square_part(&n, bound);
-    (Q::new(out, q.denom().clone()), rest)
+    (crate::arith::rational::ratio(out, q.denom().clone()), rest)
 }
 
 /// |n| = out²·rest, with the square of every prime below `bound` divided
