@@ -480,14 +480,14 @@ impl Poly {
     /// Terms in printing order: descending degree in `z`, then ascending
     /// total degree, then by symbol names.
     fn display_terms(&self) -> Vec<(&Monomial, &Q)> {
+        use std::cmp::Reverse;
         let z = Sym::z();
         let mut v: Vec<_> = self.terms.iter().collect();
-        v.sort_by(|(a, _), (b, _)| {
-            b.exponent(z).cmp(&a.exponent(z)).then(a.degree().cmp(&b.degree())).then_with(|| {
-                let na: Vec<_> = a.by_name().iter().map(|&(s, e)| (s.name(), e)).collect();
-                let nb: Vec<_> = b.by_name().iter().map(|&(s, e)| (s.name(), e)).collect();
-                nb.cmp(&na)
-            })
+        // Each key made once: z's exponent down, the degree up, then the
+        // factors by name, down.
+        v.sort_by_cached_key(|(m, _)| {
+            let names: Vec<_> = m.by_name().iter().map(|&(s, e)| (s.name(), e)).collect();
+            (Reverse(m.exponent(z)), m.degree(), Reverse(names))
         });
         v
     }
@@ -583,24 +583,30 @@ impl fmt::Display for Poly {
         }
         for (i, (m, c)) in self.display_terms().into_iter().enumerate() {
             let neg = c.is_negative();
-            let a = c.abs();
             match (i, neg) {
                 (0, true) => f.write_str("-")?,
                 (0, false) => {}
                 (_, true) => f.write_str(" - ")?,
                 (_, false) => f.write_str(" + ")?,
             }
-            let mono: Vec<String> = m
-                .by_name()
-                .iter()
-                .map(|&(s, e)| if e == 1 { s.name().to_owned() } else { format!("{s}^{e}") })
-                .collect();
-            if mono.is_empty() {
-                write!(f, "{a}")?;
-            } else if a.is_one() {
-                f.write_str(&mono.join("*"))?;
-            } else {
-                write!(f, "{a}*{}", mono.join("*"))?;
+            // |c|, written without a copy.
+            let (n, d) = (c.numer().magnitude(), c.denom());
+            let factors = m.by_name();
+            let unit = n.is_one() && d.is_one();
+            if factors.is_empty() || !unit {
+                write!(f, "{n}")?;
+                if !d.is_one() {
+                    write!(f, "/{d}")?;
+                }
+            }
+            for (k, &(s, e)) in factors.iter().enumerate() {
+                if k > 0 || !unit {
+                    f.write_str("*")?;
+                }
+                f.write_str(s.name())?;
+                if e != 1 {
+                    write!(f, "^{e}")?;
+                }
             }
         }
         Ok(())
@@ -727,5 +733,67 @@ impl Zero for Poly {
 impl One for Poly {
     fn one() -> Poly {
         Poly::one()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// The obvious writer: names compared afresh, monomials joined, |c| by num-rational.
+    fn written_by_parts(p: &Poly) -> String {
+        if p.is_zero() {
+            return "0".to_owned();
+        }
+        let z = Sym::z();
+        let mut v: Vec<_> = p.terms.iter().collect();
+        v.sort_by(|(a, _), (b, _)| {
+            b.exponent(z).cmp(&a.exponent(z)).then(a.degree().cmp(&b.degree())).then_with(|| {
+                let na: Vec<_> = a.by_name().iter().map(|&(s, e)| (s.name(), e)).collect();
+                let nb: Vec<_> = b.by_name().iter().map(|&(s, e)| (s.name(), e)).collect();
+                nb.cmp(&na)
+            })
+        });
+        let mut out = String::new();
+        for (i, (m, c)) in v.into_iter().enumerate() {
+            out.push_str(match (i, c.is_negative()) {
+                (0, true) => "-",
+                (0, false) => "",
+                (_, true) => " - ",
+                (_, false) => " + ",
+            });
+            let a = c.abs();
+            let mono: Vec<String> = m
+                .by_name()
+                .iter()
+                .map(|&(s, e)| if e == 1 { s.name().to_owned() } else { format!("{s}^{e}") })
+                .collect();
+            out.push_str(&if mono.is_empty() {
+                a.to_string()
+            } else if a.is_one() {
+                mono.join("*")
+            } else {
+                format!("{a}*{}", mono.join("*"))
+            });
+        }
+        out
+    }
+
+    proptest! {
+        /// `Display` writes what the obvious writer writes, on polynomials in
+        /// z, Φ, w and D with coefficients ±1, integers and fractions.
+        #[test]
+        fn display_is_the_obvious_writing(
+            terms in proptest::collection::vec(
+                ((-3i64..=3, 1i64..=4), proptest::collection::vec(0u32..4, 4)), 0..8),
+        ) {
+            let syms = [Sym::z(), Sym::phi(), Sym::w(), Sym::new("D")];
+            let p = Poly::from_terms(terms.iter().map(|((n, d), exps)| {
+                let factors = syms.iter().copied().zip(exps.iter().copied()).collect();
+                (Q::new((*n).into(), (*d).into()), Monomial::from_factors(factors))
+            }));
+            prop_assert_eq!(p.to_string(), written_by_parts(&p));
+        }
     }
 }

@@ -369,7 +369,8 @@ impl Algebraic {
                     // One cell boundary inside the interval (as after a
                     // refinement to 10^−digits): the sign there decides.
                     let two_scale = num_traits::pow(BigInt::from(10), digits) * 2;
-                    let boundary = Q::new(&a * 2 + 1, two_scale);
+                    // Unreduced: a comparison needs no lowest terms.
+                    let boundary = Q::new_raw(&a * 2 + 1, two_scale);
                     let n = if self.cmp_rational(&boundary) == Ordering::Less { a } else { b };
                     return units_text(&n, digits);
                 }
