@@ -175,7 +175,12 @@ def _texts(xs, label):
     out = []
     for i, x in enumerate(xs):
         f = _FAST.get(x.__class__)
-        t = None if f is None else f(x)
+        if f is _sympy_rational:
+            # NodePy's entries, inline: the call costs as much as the text.
+            q = x.q
+            t = str(x.p) if q == 1 else f"{x.p}/{q}"
+        else:
+            t = None if f is None else f(x)
         out.append(t if t is not None else _entry(x, label(i)))
     return out
 
@@ -298,11 +303,17 @@ class Method:
         # A NodePy RK method also has `alpha` and `beta` (its Shu-Osher
         # form): the tableau decides.
         if hasattr(method, "A") and hasattr(method, "b"):
+            # NodePy's arrays are numpy arrays of objects: tolist() makes the
+            # lists in C (a float array's become floats, read alike).
+            def rows(x):
+                return x.tolist() if hasattr(x, "tolist") else [list(r) for r in x]
+
+            def row(x):
+                return x.tolist() if hasattr(x, "tolist") else list(x)
+
             bhat = getattr(method, "bhat", None)
-            bhat = None if bhat is None else list(bhat)
-            # NodePy's A is a numpy array of objects: tolist() makes the rows in C.
-            a = method.A.tolist() if hasattr(method.A, "tolist") else [list(r) for r in method.A]
-            return cls.from_tableau(a, list(method.b), name=label, bhat=bhat)
+            bhat = None if bhat is None else row(bhat)
+            return cls.from_tableau(rows(method.A), row(method.b), name=label, bhat=bhat)
         if hasattr(method, "alpha") and hasattr(method, "beta"):
             return cls.from_multistep(list(method.alpha), list(method.beta), name=label)
         raise Error(f"{type(method).__name__}: expected a NodePy Runge-Kutta (A, b) or linear multistep (alpha, beta) method")

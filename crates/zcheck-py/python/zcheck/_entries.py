@@ -8,6 +8,7 @@ entries). This module only writes that text; the engine reads it.
 """
 
 import decimal
+import functools
 import math
 
 from ._native import Error
@@ -97,9 +98,14 @@ def _sympy(e):
     )
 
 
-def identifier(s):
-    """A ``.zm`` method name for a label: letters, digits and ``_``."""
-    s = "".join(c if (c.isascii() and (c.isalnum() or c == "_")) else "_" for c in str(s))
+@functools.lru_cache(maxsize=256)
+def _identifier(s):
+    s = "".join(c if (c.isascii() and (c.isalnum() or c == "_")) else "_" for c in s)
     if not s or s[0].isdigit():
         s = "m_" + s
     return s
+
+
+def identifier(s):
+    """A ``.zm`` method name for a label: letters, digits and ``_``."""
+    return _identifier(str(s))
