@@ -470,9 +470,13 @@ pub(crate) fn conditions_of(chi: &Charpoly, circle_only: bool) -> Vec<(Condition
 /// Φ), the other roots still cross s where (χ/(z − s)^m)(s) vanishes, and
 /// χ(s) itself would hide that.
 fn deflated_value_at_z(a: &[UPoly], s: &Q) -> UPoly {
+    let value = value_at_unit(a, s).unwrap_or_else(|| horner_at_z(a, s));
+    if !value.is_zero() || a.len() < 2 {
+        return value;
+    }
     let mut a = a.to_vec();
     loop {
-        let value = a.iter().rev().fold(UPoly::zero(), |acc, c| &acc.scale(s) + c);
+        let value = horner_at_z(&a, s);
         if !value.is_zero() || a.len() < 2 {
             return value;
         }
@@ -485,6 +489,36 @@ fn deflated_value_at_z(a: &[UPoly], s: &Q) -> UPoly {
         }
         a = b;
     }
+}
+
+/// χ(s) = Σ a_k(Φ) s^k by Horner's rule over polynomials in Φ.
+fn horner_at_z(a: &[UPoly], s: &Q) -> UPoly {
+    a.iter().rev().fold(UPoly::zero(), |acc, c| &acc.scale(s) + c)
+}
+
+/// χ(±1) when every a_k has integer coefficients (χ's integer scaling
+/// makes them so): sums and differences of the integers, with no
+/// denominators sought; `None` for another `s` or a fraction.
+fn value_at_unit(a: &[UPoly], s: &Q) -> Option<UPoly> {
+    use num_traits::Signed;
+    if !(s.is_integer() && s.numer().abs().is_one()) {
+        return None;
+    }
+    let alternate = s.is_negative();
+    let mut acc = vec![num_bigint::BigInt::default(); a.iter().map(|c| c.coeffs().len()).max()?];
+    for (k, c) in a.iter().enumerate() {
+        for (j, q) in c.coeffs().iter().enumerate() {
+            if !q.is_integer() {
+                return None;
+            }
+            if alternate && k % 2 == 1 {
+                acc[j] -= q.numer();
+            } else {
+                acc[j] += q.numer();
+            }
+        }
+    }
+    Some(UPoly::new(acc.into_iter().map(Q::from_integer).collect()))
 }
 
 /// χ has a self-reciprocal factor g = gcd(χ, χ*) over Q(Φ): conditions of g
@@ -567,6 +601,23 @@ pub(crate) fn critical_points(conditions: &[(Condition, UPoly)]) -> Vec<Critical
 mod tests {
     use super::*;
     use proptest::prelude::*;
+
+    proptest! {
+        /// χ(±1) by integer sums is Horner's rule's (and fractions decline).
+        #[test]
+        fn value_at_unit_is_horner(
+            a in proptest::collection::vec(proptest::collection::vec(-99i64..99, 0..5), 1..5),
+            den in 1i64..3,
+        ) {
+            let a: Vec<UPoly> = a.iter().map(|c| UPoly::from_ints(c).scale(&Q::new(1.into(), den.into()))).collect();
+            for s in [Q::one(), -Q::one()] {
+                match value_at_unit(&a, &s) {
+                    Some(v) => prop_assert_eq!(v, horner_at_z(&a, &s)),
+                    None => prop_assert!(den > 1 && a.iter().any(|c| !c.is_zero())),
+                }
+            }
+        }
+    }
 
     /// The slow, obvious route to the polynomials of squares and of pair
     /// products: power sums of the roots, Newton's identities.

@@ -67,8 +67,14 @@ pub fn circle_counts(f: &UPoly) -> Counts {
 /// vertex −b/(2a).
 pub(crate) fn quadratic_counts(f: &UPoly) -> Counts {
     debug_assert_eq!(f.degree(), Some(2));
+    quadratic_counts_of(crate::univariate::upoly::int_primitive(f))
+}
+
+/// [`quadratic_counts`] of c + b z + a z² given by integers proportional
+/// to its coefficients (a ≠ 0).
+pub(crate) fn quadratic_counts_of(mut k: Vec<BigInt>) -> Counts {
+    debug_assert_eq!(k.len(), 3);
     // Integer coefficients with a > 0 (the same roots).
-    let mut k = crate::univariate::upoly::int_primitive(f);
     if k[2].is_negative() {
         k.iter_mut().for_each(|x| *x = -&*x);
     }

@@ -11,7 +11,7 @@ use crate::{Poly, RootClass, UPoly, Q};
 use super::conditions::{conditions_of, critical_points, discriminant, Charpoly};
 use super::point::{
     circle_counts, class_of_single_root, classify_quadratic_by, classify_with_counts,
-    quadratic_counts, Counts,
+    quadratic_counts_of, Counts,
 };
 use super::report::{
     Boundary, ClassChange, ClassInterval, Condition, CriticalPoint, Marginal, Stability,
@@ -21,24 +21,48 @@ use crate::univariate::number_field::{FPoly, Field};
 
 /// The class and root counts of χ at a rational Φ.
 pub(crate) fn class_at_rational(chi: &Charpoly, phi: &Q) -> (RootClass, Counts) {
-    let f = chi.at(phi);
     if chi.degree() == 2 {
         // The signs of the sign polynomials at φ are the signs of the same
         // expressions in χ(φ)'s coefficients (evaluation commutes with them),
         // taken in integers: a positive scale keeps each sign. No polynomial
-        // in Φ is formed (`QuadPolys` waits for an irrational point).
-        let ints = crate::univariate::upoly::int_primitive(&f);
+        // in Φ is formed (`QuadPolys` waits for an irrational point), and no
+        // fraction: χ(φ)·q^n, made primitive.
+        let ints = crate::univariate::upoly::primitive(scaled_at(chi, phi));
         let coeff = |k: usize| ints.get(k).cloned().unwrap_or_default();
         let values = super::point::quadratic_terms(&coeff(0), &coeff(1), &coeff(2));
         let class = classify_quadratic_by(|k| values[k].cmp(&num_bigint::BigInt::zero()));
-        let counts = match f.degree() {
-            None => Counts::default(),
-            Some(2) => quadratic_counts(&f),
-            Some(_) => circle_counts(&f),
+        let counts = match ints.len() {
+            0 => Counts::default(),
+            3 => quadratic_counts_of(ints),
+            _ => circle_counts(&chi.at(phi)),
         };
         return (class, counts);
     }
-    classify_with_counts(&f)
+    classify_with_counts(&chi.at(phi))
+}
+
+/// χ(φ)'s coefficients in z times q^n, for φ = p/q and n the largest degree
+/// in Φ: integers (χ's a_k are integer polynomials), in the ratios of
+/// [`Charpoly::at`]'s and with its signs, each Σ c_j p^j q^(n−j) with no
+/// fraction reduced.
+fn scaled_at(chi: &Charpoly, phi: &Q) -> Vec<num_bigint::BigInt> {
+    use num_bigint::BigInt;
+    let (p, q) = (phi.numer(), phi.denom());
+    let n = chi.a.iter().map(|c| c.coeffs().len()).max().unwrap_or(1).saturating_sub(1);
+    let q_powers: Vec<BigInt> =
+        std::iter::successors(Some(BigInt::one()), |x| Some(x * q)).take(n + 1).collect();
+    chi.a
+        .iter()
+        .map(|c| {
+            let d = c.coeffs().len().saturating_sub(1);
+            let mut acc = BigInt::zero();
+            for (j, x) in c.coeffs().iter().enumerate().rev() {
+                debug_assert!(x.is_integer(), "χ's coefficients are integer polynomials");
+                acc = acc * p + x.numer() * &q_powers[d - j];
+            }
+            acc * &q_powers[n - d]
+        })
+        .collect()
 }
 
 /// The class of χ exactly at an algebraic Φ, when computed (rational Φ,
@@ -578,6 +602,9 @@ mod tests {
             let (class, counts) = class_at_rational(&chi, &phi);
             prop_assert_eq!(class, by_polys);
             let f = chi.at(&phi);
+            // χ(φ)·q^n in integers is χ(φ) up to a positive factor.
+            let scaled = crate::univariate::upoly::primitive(scaled_at(&chi, &phi));
+            prop_assert_eq!(scaled, crate::univariate::upoly::int_primitive_of(&f));
             if f.degree() == Some(2) {
                 prop_assert_eq!((class, counts), classify_with_counts(&f));
             }
